@@ -1,0 +1,168 @@
+// Tests of deforming_mesh.h: the DeformingMesh concept, Deforming_mesh, make_face_graph.
+#include "test_support.h"
+
+#include <deformseg/default_mesh.h>
+#include <deformseg/deforming_mesh.h>
+
+#include <CGAL/Polyhedron_3.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace deformseg;
+
+namespace {
+
+using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+
+// A tetrahedron, oriented outwards.
+const std::vector<std::array<double, 3>> tetra_points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+const std::vector<std::array<int, 3>> tetra_triangles{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+
+// Frame t moves every vertex by (t, 2t, 3t).
+std::vector<double> translated_frames(std::size_t frames) {
+  std::vector<double> xyz;
+  for (std::size_t t = 0; t < frames; ++t)
+    for (const auto& p : tetra_points)
+      for (int k = 0; k < 3; ++k) xyz.push_back(p[k] + double(t) * (k + 1));
+  return xyz;
+}
+
+// A type with every member but the frame point map: not a DeformingMesh.
+struct Without_point_map {
+  using Face_graph = Surface_mesh;
+  const Surface_mesh& face_graph() const;
+  std::size_t num_frames() const;
+};
+
+}  // namespace
+
+static_assert(FaceGraph<Surface_mesh>);
+static_assert(FaceGraph<Polyhedron>);
+static_assert(DeformingMesh<Deforming_mesh<Surface_mesh>>);
+static_assert(DeformingMesh<Deforming_mesh<Polyhedron, float>>);
+static_assert(!DeformingMesh<Without_point_map>);
+static_assert(!DeformingMesh<Surface_mesh>);
+
+TEMPLATE_TEST_CASE("Deforming_mesh: frames in, the same positions out", "[deforming_mesh]",
+                   Surface_mesh, Polyhedron) {
+  Deforming_mesh<TestType> animation(make_face_graph<TestType>(tetra_points, tetra_triangles),
+                                     translated_frames(3));
+  REQUIRE(animation.num_frames() == 3);
+  REQUIRE(animation.num_vertices() == 4);
+  REQUIRE(animation.num_faces() == 4);
+
+  // The index table follows the triangles given, up to the rotation of each cycle.
+  for (std::size_t j = 0; j < 4; ++j) {
+    auto tri = animation.triangles()[j];
+    auto expected = tetra_triangles[j];
+    std::rotate(tri.begin(), std::min_element(tri.begin(), tri.end()), tri.end());
+    CHECK(std::vector<int>(tri.begin(), tri.end()) ==
+          std::vector<int>(expected.begin(), expected.end()));
+  }
+
+  const auto positions = animation.frame_positions(2);
+  const auto points = animation.frame_point_map(2);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto p = get(points, animation.vertex_descriptors()[i]);
+    for (int k = 0; k < 3; ++k) {
+      CHECK(p[k] == tetra_points[i][k] + 2.0 * (k + 1));
+      CHECK(positions[3 * i + k] == p[k]);
+      CHECK(animation.frame_matrix(2)(k, Eigen::Index(i)) == p[k]);
+    }
+  }
+}
+
+TEST_CASE("Deforming_mesh: frames added one by one, or from a point map", "[deforming_mesh]") {
+  const auto graph = make_face_graph<Surface_mesh>(tetra_points, tetra_triangles);
+  Deforming_mesh<Surface_mesh, float> animation(graph);
+  CHECK(animation.num_frames() == 0);
+  animation.add_frame_from(get(CGAL::vertex_point, graph));
+  const auto xyz = translated_frames(2);
+  animation.add_frame(std::span<const double>(xyz).subspan(12, 12));
+  REQUIRE(animation.num_frames() == 2);
+  CHECK(animation.frame_positions(0)[3 * 3 + 2] == 1.0f);
+  CHECK(animation.frame_positions(1)[3 * 3 + 2] == 4.0f);
+
+  // A copy shares the connectivity but not the positions.
+  auto copy = animation;
+  copy.add_frame(std::span<const double>(xyz).subspan(0, 12));
+  CHECK(copy.num_frames() == 3);
+  CHECK(animation.num_frames() == 2);
+  CHECK(&copy.face_graph() == &animation.face_graph());
+}
+
+TEST_CASE("make_deforming_mesh copies any model, Polyhedron_3 handles included",
+          "[deforming_mesh]") {
+  Deforming_mesh<Polyhedron> original(make_face_graph<Polyhedron>(tetra_points, tetra_triangles),
+                                      translated_frames(2));
+  const auto copy = make_deforming_mesh<float>(original);
+  REQUIRE(copy.num_frames() == 2);
+  for (std::size_t i = 0; i < 3 * 4 * 2; ++i)
+    CHECK(copy.all_positions()[i] == float(original.all_positions()[i]));
+  CHECK(&copy.face_graph() != &original.face_graph());
+}
+
+TEST_CASE("Deforming_mesh rejects bad input with a clear message", "[deforming_mesh][errors]") {
+  const auto graph = make_face_graph<Surface_mesh>(tetra_points, tetra_triangles);
+
+  SECTION("a coordinate count that is not a multiple of 3 V") {
+    CHECK_THROWS_WITH(Surface_mesh_animation(graph, std::vector<double>(13, 0.0)),
+                      "expected a multiple of 3 x 4 coordinates, got 13");
+  }
+  SECTION("a NaN coordinate names its frame and vertex") {
+    auto xyz = translated_frames(3);
+    xyz[2 * 12 + 3 * 1 + 2] = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_WITH(Surface_mesh_animation(graph, xyz),
+                      "frame 2: vertex 1 has a non-finite coordinate");
+  }
+  SECTION("an infinite coordinate in an added frame") {
+    Surface_mesh_animation animation(graph, translated_frames(1));
+    std::vector<double> xyz(12, 0.0);
+    xyz[0] = std::numeric_limits<double>::infinity();
+    CHECK_THROWS_WITH(animation.add_frame(std::span<const double>(xyz)),
+                      "frame 1: vertex 0 has a non-finite coordinate");
+  }
+  SECTION("a frame with another vertex count") {
+    Surface_mesh_animation animation(graph);
+    std::vector<double> xyz(9, 0.0);
+    CHECK_THROWS_WITH(animation.add_frame(std::span<const double>(xyz)),
+                      "frame 0: frame has 3 vertices, the mesh 4");
+  }
+  SECTION("a frame out of range") {
+    Surface_mesh_animation animation(graph, translated_frames(2));
+    CHECK_THROWS_WITH(animation.frame_positions(2), "frame 2 asked of an animation of 2 frames");
+  }
+  SECTION("a quad face") {
+    Surface_mesh quad;
+    std::vector<Surface_mesh::Vertex_index> v;
+    for (int i = 0; i < 4; ++i) v.push_back(quad.add_vertex(Kernel::Point_3(i % 2, i / 2, 0)));
+    quad.add_face(v[0], v[1], v[3], v[2]);
+    CHECK_THROWS_WITH(Surface_mesh_animation(quad), "face 0 has 4 vertices; deformseg needs triangles");
+  }
+  SECTION("a Surface_mesh with removed vertices") {
+    Surface_mesh mesh = graph;
+    mesh.remove_vertex(*mesh.vertices().begin());
+    CHECK_THROWS_WITH(Surface_mesh_animation(mesh), Catch::Contains("collect_garbage()"));
+  }
+}
+
+TEST_CASE("make_face_graph names the triangle that cannot be added", "[deforming_mesh][errors]") {
+  SECTION("index out of range") {
+    const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {0, 1, 4}};
+    CHECK_THROWS_WITH(make_face_graph<Surface_mesh>(tetra_points, triangles),
+                      "triangle 1 has vertex index 4 out of range [0, 4)");
+  }
+  SECTION("a non-manifold edge") {
+    const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {0, 1, 3}};
+    CHECK_THROWS_WITH(make_face_graph<Surface_mesh>(tetra_points, triangles),
+                      Catch::StartsWith("triangle 1 cannot be added"));
+  }
+  SECTION("a degenerate triangle repeating a vertex") {
+    const std::vector<std::array<int, 3>> triangles{{0, 0, 2}};
+    CHECK_THROWS_WITH(make_face_graph<Polyhedron>(tetra_points, triangles),
+                      Catch::StartsWith("triangle 0 cannot be added"));
+  }
+}
