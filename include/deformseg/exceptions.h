@@ -47,10 +47,15 @@ public:
 
 private:
   static std::string format(const std::string& message, const Input_location& w) {
+    // Appends rather than operator+ chains, which GCC 12 misreports under -Wstringop-overflow.
     std::string s;
-    if (!w.file.empty()) s += w.file + (w.line ? ":" + std::to_string(*w.line) : "") + ": ";
-    if (w.frame) s += "frame " + std::to_string(*w.frame) + ": ";
-    return s + message;
+    if (!w.file.empty()) {
+      s.append(w.file);
+      if (w.line) s.append(":").append(std::to_string(*w.line));
+      s.append(": ");
+    }
+    if (w.frame) s.append("frame ").append(std::to_string(*w.frame)).append(": ");
+    return s.append(message);
   }
 
   std::string message_;
