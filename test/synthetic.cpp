@@ -136,6 +136,19 @@ TEST_CASE("bending tube: a zone narrower than a ring still marks the triangles i
   CHECK(std::count(tube.face_joint.begin(), tube.face_joint.end(), 0) == 2 * 16);
 }
 
+TEST_CASE("bending tube: rings on the edges of a zone follow one bone exactly", "[synthetic]") {
+  Bending_tube spec = bend_once();
+  spec.shape.rings = 40;
+  // Zones 0.25..0.35 and 0.65..0.75: edges on rings 10, 14, 26 and 30, however the subtraction
+  // rounds. Each zone deforms the 4 segments between its edge rings, and those edge rings stay
+  // rigid with their bone.
+  spec.joints = {{.position = 0.3, .blend_width = 0.1}, {.position = 0.7, .blend_width = 0.1}};
+  spec.schedule = {{4, {right_angle, right_angle}}};
+  const auto tube = make_bending_tube(spec);
+  CHECK(std::count(tube.face_joint.begin(), tube.face_joint.end(), 0) == 2 * 16 * 4);
+  CHECK(std::count(tube.face_joint.begin(), tube.face_joint.end(), 1) == 2 * 16 * 4);
+}
+
 TEST_CASE("bending tube: invalid specifications are rejected", "[synthetic][errors]") {
   Bending_tube spec = bend_once();
   SECTION("overlapping joints") {

@@ -151,9 +151,13 @@ inline std::vector<std::vector<double>> schedule_angles(const Bending_tube& spec
 }
 
 // Where joint j's blend zone puts a vertex at height z: its weight on the bone above the joint.
+// A ring lying on the zone's edge must follow one bone exactly, not get a weight of 1e-16 from
+// rounding, so weights this close to 0 or 1 are snapped.
 inline double blend_weight(const Tube_joint& joint, double length, double z) {
+  constexpr double snap = 1e-9;
   const double bottom = (joint.position - joint.blend_width / 2) * length;
-  return smooth_step((z - bottom) / (joint.blend_width * length));
+  const double w = smooth_step((z - bottom) / (joint.blend_width * length));
+  return w < snap ? 0.0 : w > 1 - snap ? 1.0 : w;
 }
 
 // Whether joint j deforms a triangle when it bends: unless its three vertices follow the same
