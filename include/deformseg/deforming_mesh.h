@@ -90,7 +90,9 @@ class Deforming_mesh {
 public:
   using Face_graph = Graph;                      ///< the connectivity type
   using coordinate_type = Coordinate;            ///< the stored coordinate type
+  /// @brief The graph's vertex descriptor.
   using vertex_descriptor = typename boost::graph_traits<Graph>::vertex_descriptor;
+  /// @brief The graph's face descriptor.
   using face_descriptor = typename boost::graph_traits<Graph>::face_descriptor;
   /// @brief The point type of the graph's vertex point map, which the frame point maps give.
   using Point_3 = typename boost::property_traits<

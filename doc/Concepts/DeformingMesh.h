@@ -1,0 +1,26 @@
+/// \page DeformingMeshConcept The DeformingMesh concept
+///
+/// An animation of one triangle mesh: fixed connectivity, vertex positions per frame. Every
+/// algorithm of deformseg takes a model of it, and checks it at compile time with the C++20
+/// concept deformseg::DeformingMesh.
+///
+/// A type `M` is a model when, for `const M& m` and a frame `t` in `[0, m.num_frames())`:
+///
+/// | expression | type | meaning |
+/// |---|---|---|
+/// | `M::Face_graph` | a model of CGAL's `FaceGraph` | the connectivity type; every face a triangle |
+/// | `m.face_graph()` | `const M::Face_graph&` | the connectivity |
+/// | `m.num_frames()` | convertible to `std::size_t` | the number of frames T |
+/// | `m.frame_point_map(t)` | a readable property map, vertex descriptor to point | the positions at frame t |
+///
+/// Frames are counted from 0. The positions must be finite.
+///
+/// \par Has models
+/// deformseg::Deforming_mesh<FaceGraph, Coordinate>, for any FaceGraph (tested with
+/// `CGAL::Surface_mesh` and `CGAL::Polyhedron_3`).
+///
+/// \par A type that is not a model
+/// is rejected at compile time: `static_assert(deformseg::DeformingMesh<M>)` names the first
+/// requirement it misses.
+///
+/// \sa deformseg::make_deforming_mesh, which copies any model into a deformseg::Deforming_mesh.
