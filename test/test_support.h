@@ -6,9 +6,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+
+#include <unistd.h>
 
 namespace deformseg::test {
 
@@ -23,9 +25,10 @@ inline fs::path environment_path(const char* name, const char* fallback) {
 /// [data] and are not run when it is absent.
 inline fs::path data_dir() { return environment_path("DEFORMSEG_DATA_DIR", "../shared/data"); }
 
-/// A scratch folder of the build tree for files that tests make.
+/// A scratch folder of the build tree for files that tests make: below the working directory,
+/// which CTest sets to the test folder of the build tree.
 inline fs::path scratch_dir() {
-  fs::path dir = environment_path("DEFORMSEG_SCRATCH_DIR", "deformseg-test-scratch");
+  fs::path dir = fs::absolute("scratch");
   fs::create_directories(dir);
   return dir;
 }
@@ -48,18 +51,21 @@ inline fs::path write_file(const std::string& name, const std::string& text) {
 
 /// Unpacks an archive of the shared data (path relative to data_dir()) into the scratch folder
 /// once, and gives the folder it was unpacked into.
+///
+/// CTest runs test cases in parallel processes, so the archive is unpacked into a folder of this
+/// process's own and renamed into place: a reader never sees a half-unpacked folder, and of two
+/// processes racing, the second one's rename fails and it keeps the first one's.
 inline fs::path unpacked(const std::string& archive) {
-  static std::mutex mutex;
-  std::lock_guard lock(mutex);
-  const fs::path source = data_dir() / archive;
   const fs::path target = scratch_dir() / "data" / fs::path(archive).stem().stem();
-  if (!fs::exists(target / ".unpacked")) {
-    fs::remove_all(target);
-    fs::create_directories(target);
-    const std::string command = "tar xf '" + source.string() + "' -C '" + target.string() + "'";
-    if (std::system(command.c_str()) != 0) throw std::runtime_error("failed: " + command);
-    std::ofstream(target / ".unpacked") << "done\n";
-  }
+  if (fs::exists(target)) return target;
+  const fs::path mine = target.string() + ".partial-" + std::to_string(::getpid());
+  fs::remove_all(mine);
+  fs::create_directories(mine);
+  const std::string command = "tar xf '" + (data_dir() / archive).string() + "' -C '" + mine.string() + "'";
+  if (std::system(command.c_str()) != 0) throw std::runtime_error("failed: " + command);
+  std::error_code already_there;
+  fs::rename(mine, target, already_there);
+  if (already_there) fs::remove_all(mine);
   return target;
 }
 

@@ -1,0 +1,297 @@
+/// @file frame_sequence.h
+/// @brief Reads an animation stored as one mesh file per frame: `list_frame_files` and
+/// `read_frame_sequence`.
+#pragma once
+
+#include <deformseg/default_mesh.h>
+#include <deformseg/deforming_mesh.h>
+#include <deformseg/exceptions.h>
+#include <deformseg/internal/text_scanner.h>
+#include <deformseg/io/read_mesh.h>
+#include <deformseg/io/triangle_soup.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <span>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace deformseg::internal {
+
+/// The natural order of file names: runs of digits compare by their value, so that "2.obj" comes
+/// before "10.obj" and "mesh_0009" before "mesh_0010"; other characters compare by their code.
+/// Names equal in that order ("1" and "01") fall back to the plain order, so that it is total.
+inline bool natural_less(std::string_view a, std::string_view b) {
+  const auto digits_from = [](std::string_view s, std::size_t i) {
+    std::size_t end = i;
+    while (end < s.size() && is_digit(s[end])) ++end;
+    return s.substr(i, end - i);
+  };
+  const auto without_leading_zeros = [](std::string_view run) {
+    return run.substr(std::min(run.find_first_not_of('0'), run.size()));
+  };
+  std::size_t i = 0;
+  std::size_t j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (is_digit(a[i]) && is_digit(b[j])) {
+      const std::string_view x = digits_from(a, i);
+      const std::string_view y = digits_from(b, j);
+      const std::string_view x_value = without_leading_zeros(x);
+      const std::string_view y_value = without_leading_zeros(y);
+      if (x_value.size() != y_value.size()) return x_value.size() < y_value.size();
+      if (x_value != y_value) return x_value < y_value;
+      i += x.size();
+      j += y.size();
+    } else {
+      if (a[i] != b[j]) return static_cast<unsigned char>(a[i]) < static_cast<unsigned char>(b[j]);
+      ++i;
+      ++j;
+    }
+  }
+  if (a.size() - i != b.size() - j) return a.size() - i < b.size() - j;
+  return a < b;
+}
+
+/// Whether `name` matches `pattern`, where `*` matches any run of characters and `?` any one.
+inline bool glob_match(std::string_view pattern, std::string_view name) {
+  std::size_t p = 0;
+  std::size_t n = 0;
+  std::size_t star = std::string_view::npos;  // the last '*' seen, to retry from on a mismatch
+  std::size_t star_n = 0;                     // where in `name` that '*' match ends for now
+  while (n < name.size()) {
+    if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == name[n])) {
+      ++p;
+      ++n;
+    } else if (p < pattern.size() && pattern[p] == '*') {
+      star = p++;
+      star_n = n;
+    } else if (star != std::string_view::npos) {
+      p = star + 1;
+      n = ++star_n;
+    } else {
+      return false;
+    }
+  }
+  while (p < pattern.size() && pattern[p] == '*') ++p;
+  return p == pattern.size();
+}
+
+inline bool has_wildcard(std::string_view s) { return s.find_first_of("*?") != std::string_view::npos; }
+
+inline std::string lower_extension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+inline bool is_frame_extension(const std::string& extension) {
+  return extension == ".obj" || extension == ".off" || extension == ".ply";
+}
+
+/// Hidden files (".name", such as the "._name" copies macOS leaves) are never frames.
+inline bool is_hidden(const std::filesystem::path& path) { return path.filename().string().starts_with('.'); }
+
+/// The .obj, .off and .ply files of `folder`, in any order; all of one format.
+inline std::vector<std::filesystem::path> frame_files_in(const std::filesystem::path& folder) {
+  std::vector<std::filesystem::path> files;
+  std::set<std::string> extensions;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string extension = lower_extension(entry.path());
+    if (!entry.is_regular_file() || is_hidden(entry.path()) || !is_frame_extension(extension)) continue;
+    files.push_back(entry.path());
+    extensions.insert(extension);
+  }
+  if (extensions.size() > 1)
+    throw invalid_input(join("the folder holds frames of several formats (", *extensions.begin(), " and ",
+                               *std::next(extensions.begin()), "): give a pattern such as \"",
+                               (folder / "*").string(), *extensions.begin(), "\" to choose"),
+                        {.file = folder.string()});
+  return files;
+}
+
+/// The files whose name matches the last part of `pattern`, in the folder its other parts name.
+inline std::vector<std::filesystem::path> files_matching(const std::filesystem::path& pattern) {
+  const std::filesystem::path folder = pattern.parent_path();
+  const std::string name_pattern = pattern.filename().string();
+  const auto fail = [&](const std::string& message) { throw invalid_input(message, {.file = pattern.string()}); };
+  if (has_wildcard(folder.string()))
+    fail("wildcards (* and ?) are only read in the file name, not in the folders above it");
+  std::error_code error;
+  if (!has_wildcard(name_pattern)) {
+    if (!std::filesystem::is_regular_file(pattern, error)) fail("no such folder or file");
+    return {pattern};
+  }
+  const std::filesystem::path listed = folder.empty() ? std::filesystem::path(".") : folder;
+  if (!std::filesystem::is_directory(listed, error))
+    fail(join("no such folder: \"", listed.string(), "\""));
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(listed)) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_regular_file() && !(is_hidden(name) && !name_pattern.starts_with('.')) &&
+        glob_match(name_pattern, name))
+      files.push_back(folder / name);
+  }
+  return files;
+}
+
+/// Reads the positions of frames `first` to `files.size() - 1` into their blocks of `positions`
+/// (`block` values each), on `threads` threads (0: all). The error of the lowest failing frame is
+/// thrown, located at its frame, whatever the number of threads: frames above a failed one are
+/// skipped, frames below it are always read.
+template <std::floating_point T>
+void read_frame_positions(std::span<const std::filesystem::path> files, std::size_t first,
+                          std::span<T> positions, std::size_t block, [[maybe_unused]] int threads) {
+  const std::size_t count = files.size();
+  std::vector<std::exception_ptr> errors(count);
+  std::atomic<std::size_t> lowest_failed{count};
+  const auto record_failure = [&](std::size_t t) {
+    std::size_t seen = lowest_failed.load();
+    while (t < seen && !lowest_failed.compare_exchange_weak(seen, t)) {
+      // `seen` now holds the value another thread stored: retry while t is still lower
+    }
+  };
+  const auto read_one = [&](std::size_t t) {
+    if (t > lowest_failed.load(std::memory_order_relaxed)) return;
+    try {
+      io::read_mesh_points(files[t], positions.subspan(t * block, block));
+    } catch (const invalid_input& e) {
+      errors[t] = std::make_exception_ptr(e.located({.frame = t}));
+    } catch (...) {
+      errors[t] = std::current_exception();
+    }
+    if (errors[t]) record_failure(t);
+  };
+#ifdef _OPENMP
+  const int team = threads > 0 ? threads : omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 1) num_threads(team)
+  for (std::int64_t t = static_cast<std::int64_t>(first); t < static_cast<std::int64_t>(count); ++t)
+    read_one(static_cast<std::size_t>(t));
+#else
+  for (std::size_t t = first; t < count; ++t) read_one(t);
+#endif
+  for (const std::exception_ptr& error : errors)
+    if (error) std::rethrow_exception(error);
+}
+
+}  // namespace deformseg::internal
+
+namespace deformseg::io {
+
+/// @brief The frame files of an animation, in natural order.
+///
+/// @param directory_or_glob either a folder, whose `.obj`, `.off` and `.ply` files (extension in
+/// any case, all of one format) are the frames; or a pattern whose file name part may hold `*`
+/// (any run of characters) and `?` (any one character), such as `"horse/0*.obj"`; or the path of
+/// one file. Hidden files (whose name starts with `.`) are left out unless the pattern starts
+/// with `.`.
+/// @return the files, in the natural order of their names: runs of digits compare by value, so
+/// `2.obj` comes before `10.obj` and `mesh_0009.obj` before `mesh_0010.obj`.
+/// @throws invalid_input naming `directory_or_glob` when nothing matches (a folder with no frame
+/// file, a pattern that matches no file, a path that does not exist), when a folder holds frames
+/// of several formats, or when a wildcard is outside the file name.
+/// @par Complexity O(n log n) for n files in the folder.
+inline std::vector<std::filesystem::path> list_frame_files(const std::string& directory_or_glob) {
+  const std::filesystem::path input(directory_or_glob);
+  std::error_code error;
+  const bool is_folder = std::filesystem::is_directory(input, error);
+  std::vector<std::filesystem::path> files = is_folder ? internal::frame_files_in(input) : internal::files_matching(input);
+  if (files.empty())
+    throw invalid_input(is_folder ? "no frame file (.obj, .off or .ply) in the folder" : "no file matches the pattern",
+                        {.file = directory_or_glob});
+  std::sort(files.begin(), files.end(), [](const std::filesystem::path& a, const std::filesystem::path& b) {
+    return internal::natural_less(a.filename().string(), b.filename().string());
+  });
+  return files;
+}
+
+/// @brief How `read_frame_sequence` reads an animation.
+struct Frame_sequence_options {
+  /// @brief A mesh file (.obj, .off or .ply) whose faces give the connectivity instead of the
+  /// first frame's; every frame is then read for its positions only. Default: none.
+  std::optional<std::filesystem::path> topology{};
+  /// @brief Fan-triangulate polygons of the connectivity instead of rejecting them (see
+  /// `Mesh_read_options`). Default: false.
+  bool triangulate = false;
+  /// @brief Threads that read frames in parallel: 0 (default) uses OpenMP's default, all the
+  /// cores unless `OMP_NUM_THREADS` says otherwise. Ignored when deformseg is built without
+  /// OpenMP. The result does not depend on it.
+  int threads = 0;
+};
+
+/// @brief Reads an animation stored as one mesh file per frame (OBJ, OFF or PLY), all with the
+/// same vertices in the same order.
+///
+/// The first frame's file (or `options.topology`) gives the connectivity, through
+/// `make_face_graph<Graph>`, which keeps the file's vertex order; each other frame gives only its
+/// positions (`read_mesh_points`), parsed straight into its block of one contiguous array of
+/// `T x 3V` coordinates. The frames are read in parallel with OpenMP; the result, or the error
+/// thrown, is the same for any number of threads.
+///
+/// @tparam Graph the connectivity type, a `FaceGraph` (default `Surface_mesh`).
+/// @tparam Coordinate the stored coordinate type (default `double`); with `float` each number is
+/// rounded once, straight from its decimal text.
+/// @param directory_or_glob the frames, as for `list_frame_files`: a folder, a pattern with `*` and
+/// `?` in the file name part, or one file.
+/// @param options `topology` (default: the first frame), `triangulate` (default false), `threads`
+/// (default 0: all).
+/// @return the animation, frame `t` from the `t`-th file in natural order.
+/// @pre every frame has as many vertices as the connectivity, all with finite coordinates; the
+/// connectivity is an oriented 2-manifold of triangles (or polygons, with `triangulate`). The
+/// faces of frames other than the first are not read: they are assumed to be the same.
+/// @throws invalid_input naming the file, the frame and, for a malformed number, the line of the
+/// first problem: no frame file, a file that cannot be read or parsed, a face that is not a
+/// triangle, a connectivity that is not a manifold, a frame with another vertex count, a
+/// non-finite coordinate. When several frames are bad, the lowest one is reported.
+/// @par Complexity O(total size of the files), divided among the threads.
+/// @sa list_frame_files, read_mesh, read_mesh_points
+template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
+Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& directory_or_glob,
+                                                      const Frame_sequence_options& options = {}) {
+  if (options.threads < 0)
+    throw invalid_input(internal::join("threads must be 0 (all) or more, not ", std::to_string(options.threads)));
+  const std::vector<std::filesystem::path> files = list_frame_files(directory_or_glob);
+  const std::filesystem::path topology_file = options.topology.value_or(files.front());
+  const Input_location topology_location{.file = topology_file.string(),
+                                         .frame = options.topology ? std::nullopt : std::optional<std::size_t>(0)};
+
+  Triangle_soup soup;
+  Graph graph;
+  try {
+    soup = read_mesh(topology_file, {.triangulate = options.triangulate});
+    graph = make_face_graph<Graph>(points_of(soup), soup.triangles);
+  } catch (const invalid_input& e) {
+    throw e.located(topology_location);
+  }
+
+  // The first frame's positions are those just read, unless they come from elsewhere or are to
+  // be rounded to another type, when reading them again rounds each number once.
+  const std::size_t block = soup.points.size();
+  std::vector<Coordinate> positions(files.size() * block);
+  std::size_t first_to_read = 0;
+  if (!options.topology && std::same_as<Coordinate, double>) {
+    std::copy(soup.points.begin(), soup.points.end(), positions.begin());
+    first_to_read = 1;
+  }
+  soup = {};
+  internal::read_frame_positions(std::span<const std::filesystem::path>(files), first_to_read,
+                                 std::span<Coordinate>(positions), block, options.threads);
+  return Deforming_mesh<Graph, Coordinate>(std::move(graph), std::move(positions));
+}
+
+}  // namespace deformseg::io

@@ -1,0 +1,152 @@
+/// @file off.h
+/// @brief Reads an OFF mesh (Object File Format, text): `read_off`.
+#pragma once
+
+#include <deformseg/exceptions.h>
+#include <deformseg/internal/text_scanner.h>
+#include <deformseg/io/triangle_soup.h>
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace deformseg::internal {
+
+/// The counts an OFF header gives.
+struct Off_header {
+  std::size_t vertices = 0;
+  std::size_t faces = 0;
+};
+
+/// Reads the keyword line and the counts, leaving the scanner at the first vertex line. The
+/// keyword may be OFF, COFF, NOFF or CNOFF: the colours and normals these add after the
+/// coordinates are not read. The counts may follow the keyword on its line.
+inline Off_header read_off_header(Text_scanner& scanner) {
+  scanner.skip_empty_lines();
+  const char* start = scanner.position();
+  const std::string_view keyword = scanner.word();
+  if (keyword != "OFF" && keyword != "COFF" && keyword != "NOFF" && keyword != "CNOFF") {
+    if (keyword.ends_with("OFF"))
+      scanner.fail_at(start, join("unsupported OFF variant \"", keyword,
+                                    "\": deformseg reads OFF, COFF, NOFF and CNOFF"));
+    scanner.fail_at(start, join("not an OFF file: it starts with \"", Text_scanner::token_at(start),
+                                  "\" instead of OFF"));
+  }
+  scanner.skip_blanks();
+  if (scanner.peek() == 'B')  // "OFF BINARY"
+    scanner.fail_at(start, "binary OFF is not supported: write it as text");
+  if (scanner.at_line_end()) {
+    scanner.next_line();
+    scanner.skip_empty_lines();
+  }
+  if (scanner.at_end()) scanner.file().fail("the OFF header has no vertex and face counts");
+  Off_header header;
+  header.vertices = scanner.count("a vertex count");
+  header.faces = scanner.count("a face count");  // an edge count may follow; OFF ignores it
+  scanner.next_line();
+  return header;
+}
+
+/// Moves to the next line with content, failing when the file ends before item `index` of `total`.
+inline void expect_line(Text_scanner& scanner, const char* what, std::size_t index, std::size_t total) {
+  scanner.skip_empty_lines();
+  if (scanner.at_end())
+    scanner.file().fail(join("the file ends after ", std::to_string(index), " of ", std::to_string(total),
+                               " ", what, " that its header announces"));
+}
+
+/// Reads the vertex lines of an OFF text into `xyz`, which has room for `count` vertices.
+template <std::floating_point T>
+void read_off_vertices(Text_scanner& scanner, std::size_t count, T* xyz) {
+  for (std::size_t i = 0; i < count; ++i) {
+    expect_line(scanner, "vertices", i, count);
+    read_xyz(scanner, "vertex", xyz + 3 * i);
+    scanner.next_line();
+  }
+}
+
+/// Reads one face line "n i0 ... in-1 [colour]" of indices from 0, checked against `vertices`.
+inline void read_off_face(Text_scanner& scanner, std::size_t vertices, const io::Mesh_read_options& options,
+                          std::vector<std::uint32_t>& corners, io::Triangle_soup& soup) {
+  const char* start = scanner.position();
+  const std::size_t n = scanner.count("a face's vertex count");
+  if (const std::string problem = polygon_problem(n, options); !problem.empty()) scanner.fail_at(start, problem);
+  corners.clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    scanner.skip_blanks();
+    const char* where = scanner.position();
+    if (scanner.at_line_end())
+      scanner.fail_at(where, join("the face has ", std::to_string(k), " of its ", std::to_string(n), " indices"));
+    const std::size_t index = scanner.count("a vertex index");
+    if (index >= vertices)
+      scanner.fail_at(where, join("vertex index ", std::to_string(index), " out of range [0, ",
+                                    std::to_string(vertices), ")"));
+    corners.push_back(static_cast<std::uint32_t>(index));
+  }
+  append_fan(corners, soup.triangles);
+}
+
+/// Reads the vertices and faces of an OFF text.
+inline io::Triangle_soup read_off_soup(const Text_file& file, const io::Mesh_read_options& options) {
+  Text_scanner scanner(file);
+  const Off_header header = read_off_header(scanner);
+  if (header.vertices == 0) file.fail("no vertex: the mesh is empty");
+  io::Triangle_soup soup;
+  soup.points.resize(3 * header.vertices);
+  read_off_vertices(scanner, header.vertices, soup.points.data());
+  soup.triangles.reserve(header.faces);
+  std::vector<std::uint32_t> corners;
+  for (std::size_t j = 0; j < header.faces; ++j) {
+    expect_line(scanner, "faces", j, header.faces);
+    read_off_face(scanner, header.vertices, options, corners, soup);
+    scanner.next_line();
+  }
+  return soup;
+}
+
+/// Reads only the vertex positions of an OFF text into `xyz` (3 V values).
+template <std::floating_point T>
+void read_off_points(const Text_file& file, std::span<T> xyz) {
+  Text_scanner scanner(file);
+  const Off_header header = read_off_header(scanner);
+  if (3 * header.vertices != xyz.size())
+    file.fail(join("has ", std::to_string(header.vertices), " vertices instead of ",
+                     std::to_string(xyz.size() / 3)));
+  read_off_vertices(scanner, header.vertices, xyz.data());
+}
+
+}  // namespace deformseg::internal
+
+namespace deformseg::io {
+
+/// @brief Reads an OFF mesh (text): its vertices and triangles.
+///
+/// The file starts with `OFF` (or `COFF`, `NOFF`, `CNOFF`), then the counts `V F E` (on the
+/// keyword's line or the next), then one vertex per line (`x y z`, anything after the third number,
+/// such as a colour or a normal, not read), then one face per line (`n i0 ... in-1`, indices from
+/// 0, a colour after them not read). `#` comments and blank lines may come anywhere; LF and CRLF
+/// endings are both read. Parsed in memory after one read of the whole file, like `read_obj`.
+///
+/// @param path the file to read.
+/// @param options `triangulate` (default false): fan-triangulate faces of more than 3 vertices
+/// instead of rejecting them.
+/// @return the vertices and triangles in the order of the file.
+/// @pre the file is a text OFF with at least one vertex, finite coordinates, and faces of 3
+/// vertices (or more, with `triangulate`) whose indices are in `[0, V)`.
+/// @throws invalid_input naming the file, and the line where there is one, when the file is
+/// missing or unreadable, is not a text OFF, has a malformed or non-finite number, a vertex line
+/// with fewer than 3 coordinates, a face that is not a triangle, an index out of range, fewer
+/// lines than its header announces, or no vertex.
+/// @par Complexity O(size of the file).
+inline Triangle_soup read_off(const std::filesystem::path& path, const Mesh_read_options& options = {}) {
+  const internal::Text_file file(path);
+  return internal::read_off_soup(file, options);
+}
+
+}  // namespace deformseg::io

@@ -1,0 +1,270 @@
+// Tests of io/off.h (read_off), io/ply.h (read_ply) and io/read_mesh.h (read_mesh, read_mesh_points
+// for OFF and PLY, the choice by extension), on small files made here.
+#include "test_support.h"
+
+#include <deformseg/exceptions.h>
+#include <deformseg/io/off.h>
+#include <deformseg/io/ply.h>
+#include <deformseg/io/read_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+using deformseg::invalid_input;
+using deformseg::io::read_mesh;
+using deformseg::io::read_mesh_points;
+using deformseg::io::read_off;
+using deformseg::io::read_ply;
+using deformseg::io::Triangle_soup;
+using Catch::Matchers::Message;
+namespace fs = std::filesystem;
+
+namespace {
+
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+const std::vector<double> tetrahedron_points{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+const Triangles tetrahedron_triangles{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+const std::string tetrahedron_off =
+    "OFF\n"
+    "4 4 6\n"
+    "0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+    "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+
+fs::path file(const std::string& name, const std::string& text) {
+  return deformseg::test::write_file("io_off_ply/" + name, text);
+}
+
+std::string at(const fs::path& path, std::size_t line, const std::string& message) {
+  return path.string() + ":" + std::to_string(line) + ": " + message;
+}
+
+// The bytes of `value` in little-endian order, as binary_little_endian PLY stores it.
+template <class T>
+std::string little_endian(T value) {
+  std::array<char, sizeof(T)> bytes;
+  std::memcpy(bytes.data(), &value, sizeof(T));
+  if constexpr (std::endian::native == std::endian::big) std::reverse(bytes.begin(), bytes.end());
+  return std::string(bytes.data(), bytes.size());
+}
+
+// A binary PLY tetrahedron with double coordinates; `points` may replace its vertices.
+std::string binary_ply(const std::vector<double>& points = tetrahedron_points) {
+  std::string text =
+      "ply\nformat binary_little_endian 1.0\ncomment made by deformseg's tests\n"
+      "element vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
+      "element face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const double c : points) text += little_endian(c);
+  for (const auto& t : tetrahedron_triangles) {
+    text += little_endian(std::uint8_t{3});
+    for (const std::uint32_t i : t) text += little_endian(static_cast<std::int32_t>(i));
+  }
+  return text;
+}
+
+const std::string ascii_ply_header =
+    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+    "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+
+}  // namespace
+
+TEST_CASE("read_off: vertices and triangles, indices from 0", "[io][off]") {
+  const Triangle_soup soup = read_off(file("tetrahedron.off", tetrahedron_off));
+  CHECK(soup.points == tetrahedron_points);
+  CHECK(soup.triangles == tetrahedron_triangles);
+}
+
+TEST_CASE("read_off: COFF colours, counts on the keyword line, comments, CRLF", "[io][off]") {
+  const std::string text =
+      "COFF 4 4 0 # counts on the keyword line\r\n"
+      "# a comment line\r\n"
+      "0 0 0 255 0 0 255\r\n1 0 0 0 255 0 255\r\n\r\n0 1 0 0 0 255 255\r\n0 0 1 9 9 9 255\r\n"
+      "3 0 2 1 255 0 0\r\n3 0 1 3\r\n3\t1 2 3 # face colours come after the indices\r\n3 0 3 2";
+  const Triangle_soup soup = read_off(file("coff.off", text));
+  CHECK(soup.points == tetrahedron_points);
+  CHECK(soup.triangles == tetrahedron_triangles);
+}
+
+TEST_CASE("read_off: polygons are rejected, or fan-triangulated on request", "[io][off]") {
+  const fs::path quad = file("quad.off", "OFF\n4 1 4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+  CHECK_THROWS_MATCHES(read_off(quad), invalid_input,
+                       Message(at(quad, 7, "a face with 4 vertices, not a triangle: set the option `triangulate` "
+                                           "to fan-triangulate polygons")));
+  CHECK(read_off(quad, {.triangulate = true}).triangles == Triangles{{0, 1, 2}, {0, 2, 3}});
+}
+
+TEST_CASE("read_off: each error names the file and the line", "[io][off][errors]") {
+  SECTION("a missing file") {
+    const fs::path missing = deformseg::test::scratch_dir() / "io_off_ply" / "missing.off";
+    CHECK_THROWS_MATCHES(read_off(missing), invalid_input, Message(missing.string() + ": cannot open: no such file"));
+  }
+  SECTION("not an OFF file, or a variant deformseg does not read") {
+    const fs::path ply = file("not-off.off", "ply\nformat ascii 1.0\n");
+    CHECK_THROWS_MATCHES(read_off(ply), invalid_input,
+                         Message(at(ply, 1, "not an OFF file: it starts with \"ply\" instead of OFF")));
+    const fs::path four = file("4off.off", "4OFF\n1 0 0\n0 0 0 1\n");
+    CHECK_THROWS_MATCHES(read_off(four), invalid_input,
+                         Message(at(four, 1, "unsupported OFF variant \"4OFF\": deformseg reads OFF, COFF, NOFF and CNOFF")));
+    const fs::path binary = file("binary.off", "OFF BINARY\n");
+    CHECK_THROWS_MATCHES(read_off(binary), invalid_input,
+                         Message(at(binary, 1, "binary OFF is not supported: write it as text")));
+  }
+  SECTION("a malformed or missing count") {
+    const fs::path bad = file("bad-count.off", "OFF\n# counts\n4 x 0\n");
+    CHECK_THROWS_MATCHES(read_off(bad), invalid_input, Message(at(bad, 3, "expected a face count, found \"x\"")));
+    const fs::path none = file("no-count.off", "OFF\n");
+    CHECK_THROWS_MATCHES(read_off(none), invalid_input,
+                         Message(none.string() + ": the OFF header has no vertex and face counts"));
+  }
+  SECTION("a malformed or non-finite number") {
+    const fs::path bad = file("bad-number.off", "OFF\n3 0 0\n0 0 0\n1 0,5 0\n0 1 0\n");
+    CHECK_THROWS_MATCHES(read_off(bad), invalid_input, Message(at(bad, 4, "malformed number \"0,5\"")));
+    const fs::path nan = file("nan.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 NaN 0\n");
+    CHECK_THROWS_MATCHES(read_off(nan), invalid_input, Message(at(nan, 5, "non-finite coordinate \"NaN\"")));
+  }
+  SECTION("fewer than 3 coordinates") {
+    const fs::path short_line = file("short.off", "OFF\n3 0 0\n0 0 0\n1 0\n0 1 0\n");
+    CHECK_THROWS_MATCHES(read_off(short_line), invalid_input,
+                         Message(at(short_line, 4, "a vertex line needs 3 coordinates, it has 2")));
+  }
+  SECTION("an index out of range, or missing") {
+    const fs::path beyond = file("beyond.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 3\n");
+    CHECK_THROWS_MATCHES(read_off(beyond), invalid_input, Message(at(beyond, 7, "vertex index 3 out of range [0, 3)")));
+    const fs::path negative = file("negative.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n");
+    CHECK_THROWS_MATCHES(read_off(negative), invalid_input,
+                         Message(at(negative, 6, "expected a vertex index, found \"-1\"")));
+    const fs::path missing = file("missing-index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n");
+    CHECK_THROWS_MATCHES(read_off(missing), invalid_input, Message(at(missing, 6, "the face has 2 of its 3 indices")));
+  }
+  SECTION("fewer lines than the header announces") {
+    const fs::path vertices = file("few-vertices.off", "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+    CHECK_THROWS_MATCHES(read_off(vertices), invalid_input,
+                         Message(vertices.string() + ": the file ends after 3 of 4 vertices that its header announces"));
+    const fs::path faces = file("few-faces.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n# the end\n");
+    CHECK_THROWS_MATCHES(read_off(faces), invalid_input,
+                         Message(faces.string() + ": the file ends after 1 of 2 faces that its header announces"));
+  }
+  SECTION("an empty mesh") {
+    const fs::path empty = file("empty.off", "OFF\n0 0 0\n");
+    CHECK_THROWS_MATCHES(read_off(empty), invalid_input, Message(empty.string() + ": no vertex: the mesh is empty"));
+  }
+}
+
+TEST_CASE("read_ply: text and binary, float and double coordinates", "[io][ply]") {
+  SECTION("ascii, float coordinates and vertex colours") {
+    const std::string text = ascii_ply_header +
+                             "element face 4\nproperty list uchar int vertex_indices\nend_header\n"
+                             "0 0 0 255 0 0\n1 0 0 255 0 0\n0 1 0 255 0 0\n0 0 1 255 0 0\n"
+                             "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+    const Triangle_soup soup = read_ply(file("ascii.ply", text));
+    CHECK(soup.points == tetrahedron_points);
+    CHECK(soup.triangles == tetrahedron_triangles);
+  }
+  SECTION("binary little endian, double coordinates") {
+    const std::vector<double> points{0.1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1e-300};
+    const Triangle_soup soup = read_ply(file("binary.ply", binary_ply(points)));
+    CHECK(soup.points == points);
+    CHECK(soup.triangles == tetrahedron_triangles);
+  }
+}
+
+TEST_CASE("read_ply: polygons are rejected, or fan-triangulated on request", "[io][ply]") {
+  const fs::path quad = file("quad.ply",
+                             "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+                             "property double z\nelement face 1\nproperty list uchar uint vertex_indices\nend_header\n"
+                             "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+  CHECK_THROWS_MATCHES(read_ply(quad), invalid_input,
+                       Message(quad.string() + ": face 0: a face with 4 vertices, not a triangle: set the option "
+                                               "`triangulate` to fan-triangulate polygons"));
+  CHECK(read_ply(quad, {.triangulate = true}).triangles == Triangles{{0, 1, 2}, {0, 2, 3}});
+}
+
+TEST_CASE("read_ply: each error names the file, and the face or vertex", "[io][ply][errors]") {
+  SECTION("a missing file") {
+    const fs::path missing = deformseg::test::scratch_dir() / "io_off_ply" / "missing.ply";
+    CHECK_THROWS_MATCHES(read_ply(missing), invalid_input, Message(missing.string() + ": cannot open: no such file"));
+  }
+  SECTION("not a PLY file") {
+    const fs::path off = file("not-ply.ply", tetrahedron_off);
+    CHECK_THROWS_MATCHES(read_ply(off), invalid_input,
+                         Message(off.string() + ": not a PLY file: it does not start with the line \"ply\""));
+  }
+  SECTION("a truncated body") {
+    const std::string whole = binary_ply();
+    const fs::path truncated = file("truncated.ply", whole.substr(0, whole.size() - 10));
+    CHECK_THROWS_MATCHES(read_ply(truncated), invalid_input,
+                         Message(truncated.string() + ": cannot read as a PLY polygon mesh: a malformed header, a "
+                                                      "truncated body, or no vertex_indices list in its faces "
+                                                      "(CGAL::IO::read_PLY failed)"));
+  }
+  SECTION("an index out of range") {
+    const fs::path beyond = file("beyond.ply", ascii_ply_header +
+                                                   "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                                                   "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n"
+                                                   "3 0 1 2\n3 0 1 7\n");
+    CHECK_THROWS_MATCHES(read_ply(beyond), invalid_input,
+                         Message(beyond.string() + ": face 1 has vertex index 7 out of range [0, 4)"));
+  }
+  SECTION("a non-finite coordinate") {
+    std::vector<double> points = tetrahedron_points;
+    points[4] = std::numeric_limits<double>::quiet_NaN();
+    const fs::path nan = file("nan.ply", binary_ply(points));
+    CHECK_THROWS_MATCHES(read_ply(nan), invalid_input, Message(nan.string() + ": vertex 1 has a non-finite coordinate"));
+  }
+  SECTION("an empty mesh") {
+    const fs::path empty = file("empty.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+                                "property float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n");
+    CHECK_THROWS_MATCHES(read_ply(empty), invalid_input, Message(empty.string() + ": no vertex: the mesh is empty"));
+  }
+}
+
+TEST_CASE("read_mesh: the reader chosen by the extension, in any case", "[io][read_mesh]") {
+  const std::string tetrahedron_obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+  for (const auto& [name, text] : std::vector<std::pair<std::string, std::string>>{
+           {"tetra.obj", tetrahedron_obj}, {"TETRA.OBJ", tetrahedron_obj}, {"tetra.off", tetrahedron_off},
+           {"tetra.Off", tetrahedron_off}, {"tetra.ply", binary_ply()}}) {
+    INFO(name);
+    const Triangle_soup soup = read_mesh(file(name, text));
+    CHECK(soup.points == tetrahedron_points);
+    CHECK(soup.triangles == tetrahedron_triangles);
+  }
+  const fs::path stl = file("tetra.stl", "solid tetra\n");
+  CHECK_THROWS_MATCHES(read_mesh(stl), invalid_input,
+                       Message(stl.string() + ": unknown mesh format \".stl\": deformseg reads .obj, .off and .ply files"));
+  const fs::path none = file("tetra", tetrahedron_off);
+  CHECK_THROWS_MATCHES(read_mesh(none), invalid_input,
+                       Message(none.string() + ": unknown mesh format \"\": deformseg reads .obj, .off and .ply files"));
+}
+
+TEST_CASE("read_mesh_points: positions only, from OFF and PLY", "[io][read_mesh]") {
+  std::vector<double> xyz(12);
+  read_mesh_points(file("points.off", tetrahedron_off), xyz);
+  CHECK(xyz == tetrahedron_points);
+
+  const std::vector<double> moved{0.5, 0, 0, 1.5, 0, 0, 0.5, 1, 0, 0.5, 0, 1};
+  std::vector<float> xyz_float(12);
+  read_mesh_points(file("points.ply", binary_ply(moved)), xyz_float);
+  CHECK(xyz_float == std::vector<float>(moved.begin(), moved.end()));
+
+  std::vector<double> three(9);
+  const fs::path off = file("points-count.off", tetrahedron_off);
+  CHECK_THROWS_MATCHES(read_mesh_points(off, three), invalid_input,
+                       Message(off.string() + ": has 4 vertices instead of 3"));
+  const fs::path ply = file("points-count.ply", binary_ply());
+  CHECK_THROWS_MATCHES(read_mesh_points(ply, three), invalid_input,
+                       Message(ply.string() + ": has 4 vertices instead of 3"));
+
+  std::vector<double> big = tetrahedron_points;
+  big[5] = 1e300;
+  const fs::path beyond_float = file("points-big.ply", binary_ply(big));
+  CHECK_THROWS_MATCHES(read_mesh_points(beyond_float, xyz_float), invalid_input,
+                       Message(beyond_float.string() + ": vertex 1 has a coordinate out of the range of float"));
+}
