@@ -1,0 +1,24 @@
+// deformseg: the command-line tool. Each sub-command is a thin layer over the library; errors
+// end the run with one line on standard error and a non-zero exit status.
+#include "command.h"
+
+#include <deformseg/exceptions.h>
+
+#include <exception>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App app{"deformseg: segmentation and motion similarity of deforming meshes"};
+  app.require_subcommand(1);
+  deformseg::tool::add_info_command(app);
+  deformseg::tool::add_synth_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "deformseg: error: " << e.what() << '\n';
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,17 @@
+# Runs COMMAND (a ;-list) and checks it: EXIT is "zero" or "nonzero"; every regular expression
+# in MATCH must match its standard output and error together, none in REJECT may.
+execute_process(COMMAND ${COMMAND} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(all "${out}${err}")
+if((EXIT STREQUAL "zero" AND NOT status EQUAL 0) OR (EXIT STREQUAL "nonzero" AND status EQUAL 0))
+  message(FATAL_ERROR "exit status ${status}, expected ${EXIT}:\n${all}")
+endif()
+foreach(pattern IN LISTS MATCH)
+  if(NOT all MATCHES "${pattern}")
+    message(FATAL_ERROR "output does not match '${pattern}':\n${all}")
+  endif()
+endforeach()
+foreach(pattern IN LISTS REJECT)
+  if(all MATCHES "${pattern}")
+    message(FATAL_ERROR "output matches '${pattern}':\n${all}")
+  endif()
+endforeach()
