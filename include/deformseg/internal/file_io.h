@@ -92,22 +92,48 @@ inline File_bytes read_file_bytes(const std::filesystem::path& path,
   return bytes;
 }
 
-/// Writes `bytes` to `path`, replacing the file, with one call.
-/// Throws invalid_input naming the file when it cannot be created or written in full, after
-/// removing what was written of it: no partial file is left to be mistaken for a whole one.
-inline void write_file_bytes(const std::filesystem::path& path, std::string_view bytes) {
-  const auto fail = [&](const std::string& message) { throw invalid_input(message, {.file = path.string()}); };
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) fail("cannot write: it is a folder, not a file");
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) fail(join("cannot write: ", last_system_error()));
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) {
+/// A file written piece by piece, so that large outputs need no copy in memory. Throws
+/// invalid_input naming the file when it cannot be created or written in full, after removing
+/// what was written of it: no partial file is left to be mistaken for a whole one.
+class Streamed_file {
+public:
+  explicit Streamed_file(const std::filesystem::path& path) : path_(path) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) fail("cannot write: it is a folder, not a file");
+    out_.open(path, std::ios::binary | std::ios::trunc);
+    if (!out_) fail(join("cannot write: ", last_system_error()));
+  }
+
+  void write(std::string_view bytes) {
+    out_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out_) abandon();
+  }
+
+  void close() {
+    out_.close();
+    if (!out_) abandon();
+  }
+
+private:
+  [[noreturn]] void fail(const std::string& message) const { throw invalid_input(message, {.file = path_.string()}); }
+
+  [[noreturn]] void abandon() {
     const std::string reason = last_system_error();
-    if (std::filesystem::is_regular_file(path, error)) std::filesystem::remove(path, error);  // not a device
+    out_.close();
+    std::error_code error;
+    if (std::filesystem::is_regular_file(path_, error)) std::filesystem::remove(path_, error);  // not a device
     fail(join("cannot write: ", reason));
   }
+
+  std::filesystem::path path_;
+  std::ofstream out_;
+};
+
+/// Writes `bytes` to `path`, replacing the file, with one call; fails as `Streamed_file`.
+inline void write_file_bytes(const std::filesystem::path& path, std::string_view bytes) {
+  Streamed_file file(path);
+  file.write(bytes);
+  file.close();
 }
 
 /// Throws invalid_input naming `path` unless `frame < num_frames`.
