@@ -14,7 +14,7 @@ void add_input_options(CLI::App& command, Input_options& options) {
                      "Mesh file giving the connectivity (required for a point cache)");
   command.add_flag("--triangulate", options.triangulate,
                    "Fan-triangulate polygons instead of rejecting them");
-  command.add_option("--threads", options.threads, "Threads reading frames (0: all)")
+  command.add_option("--threads", options.threads, "Threads to use (0: all)")
       ->check(CLI::NonNegativeNumber);
 }
 

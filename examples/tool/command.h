@@ -34,5 +34,6 @@ void progress(const std::string& line);
 
 void add_info_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
+void add_strain_command(CLI::App& app);
 
 }  // namespace deformseg::tool

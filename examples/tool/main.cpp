@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   deformseg::tool::add_info_command(app);
   deformseg::tool::add_synth_command(app);
+  deformseg::tool::add_strain_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
