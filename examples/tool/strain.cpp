@@ -106,7 +106,8 @@ void print(const nlohmann::json& s) {
   std::cout << std::setprecision(6) << "frames      " << s["frames"] << "\ntriangles   " << s["triangles"] << "\nsigma       "
             << s["sigma"].dump() << "\ndegenerate  " << s["degenerate_count"] << "\nframe  min  max  mean\n";
   for (const auto& f : s["per_frame"])
-    std::cout << f["frame"] << "  " << f["min"] << "  " << f["max"] << "  " << f["mean"] << '\n';
+    std::cout << f["frame"] << "  " << f["min"].get<double>() << "  " << f["max"].get<double>() << "  "
+              << f["mean"].get<double>() << '\n';
 }
 
 void run(const Strain_command_options& o) {
