@@ -406,6 +406,14 @@ std::size_t parallel_sum(std::size_t items, [[maybe_unused]] int threads, const 
   return sum;
 }
 
+// The frame and the first triangle of work item `item`, the items of (frame, chunk of triangles)
+// taken chunk after chunk: the items a thread takes one after another then share a chunk, whose
+// triangles, reference bases and (for previous-pose strain) positions at the frame before stay in
+// its cache, and memory traffic is the positions of each frame, once.
+inline std::pair<std::size_t, std::size_t> work_item(std::size_t item, std::size_t frames) {
+  return {item % frames, item / frames * strain_chunk};
+}
+
 // The reference bases of `triangles` at the positions `xyz`, on `threads` threads.
 template <class Coordinate>
 Reference_bases reference_bases(const Coordinate* xyz, std::span<const Triangle_indices> triangles,
@@ -457,8 +465,7 @@ std::size_t fixed_reference_strains(std::span<const Coordinate> positions, std::
   const std::size_t block = positions.size() / frames;
   const std::size_t chunks = (faces + strain_chunk - 1) / strain_chunk;
   parallel_sum(frames * chunks, threads, [&](std::size_t item) -> std::size_t {
-    const std::size_t t = item / chunks;
-    const std::size_t first = (item % chunks) * strain_chunk;
+    const auto [t, first] = work_item(item, frames);
     const std::size_t count = std::min(strain_chunk, faces - first);
     const Coordinate* xyz = positions.data() + t * block;
     const Frame_output<Value> out = frame_output(strain, directions, faces, t).advanced(first);
@@ -482,8 +489,7 @@ std::size_t previous_pose_strains(std::span<const Coordinate> positions, std::si
   const std::size_t block = positions.size() / frames;
   const std::size_t chunks = (faces + strain_chunk - 1) / strain_chunk;
   return parallel_sum(frames * chunks, threads, [&](std::size_t item) -> std::size_t {
-    const std::size_t t = item / chunks;
-    const std::size_t first = (item % chunks) * strain_chunk;
+    const auto [t, first] = work_item(item, frames);
     const std::size_t count = std::min(strain_chunk, faces - first);
     const Coordinate* xyz = positions.data() + t * block;
     const Frame_output<Value> out = frame_output(strain, directions, faces, t).advanced(first);
