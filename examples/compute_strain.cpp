@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <iostream>
 #include <numbers>
+#include <vector>
 
 int main() {
   using namespace deformseg;
@@ -24,6 +25,13 @@ int main() {
   std::cout << "frame 20: largest normalised strain " << *std::max_element(frame_20.begin(), frame_20.end())
             << ", triangles above 0.5: "
             << std::count_if(frame_20.begin(), frame_20.end(), [](float s) { return s > 0.5f; }) << '\n';
+
+  // The sigma the default normalisation chose, found again from the raw strains (frame 0, the
+  // rest frame, is 0 by definition and left out).
+  const auto raw = compute_strain(animation, Strain_options{.normalization = No_normalization{}});
+  std::vector<float> values(raw.values().begin(), raw.values().end());
+  const double sigma = Gaussian_normalization{}.sigma_of(Raw_strain_field<float>{values, raw.num_faces(), 0});
+  std::cout << "sigma from the raw strains: " << sigma << '\n';
 
   // Motion: strain of each frame against the one before; it is 0 while the tube holds still.
   const auto motion = compute_strain(animation, {.reference = Strain_reference::previous_pose});
