@@ -98,6 +98,7 @@ TEST_CASE("Segment_cost: Ds equals the average over all pairs, by brute force", 
       const double length = double(n - m + 1);
       CHECK(cost(m, n) == Approx(sum / (length * length)).margin(1e-12));
       CHECK(cost.weighted(m, n) == Approx(sum / length).margin(1e-12));
+      CHECK(cost.distance(m, n) == Approx(d(Eigen::Index(m), Eigen::Index(n))).margin(1e-12));
     }
   CHECK(cost(5, 5) == 0);
   CHECK(cost.mean_distance() == Approx(d.sum() / (13.0 * 12.0)));

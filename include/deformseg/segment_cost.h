@@ -58,6 +58,14 @@ public:
     return at(n + 1, n + 1) - at(m, n + 1) - at(n + 1, m) + at(m, m);
   }
 
+  /// @brief The frame distance `D(i, j)`, recovered from the prefix sums (to a rounding error
+  /// of about 1e-16 times the sum of all distances).
+  /// @pre `i, j < num_frames()` (unchecked).
+  /// @par Complexity O(1).
+  double distance(std::size_t i, std::size_t j) const noexcept {
+    return clamp_rounding(at(i + 1, j + 1) - at(i, j + 1) - at(i + 1, j) + at(i, j));
+  }
+
   /// @brief `Ds(m, n)`, the average distance between the frames of [m, n] (0 for one frame).
   /// @pre `m <= n < num_frames()` (unchecked).
   /// @par Complexity O(1).

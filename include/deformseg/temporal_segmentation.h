@@ -9,6 +9,7 @@
 #include <deformseg/frame_distances.h>
 #include <deformseg/segment_cost.h>
 #include <deformseg/strain.h>
+#include <deformseg/temporal/barbic_pca.h>
 #include <deformseg/temporal/binary_split.h>
 #include <deformseg/temporal/optimal_partition.h>
 #include <deformseg/temporal/segments.h>

@@ -38,7 +38,7 @@ struct Segmentation_threshold {
 /// `policy(cost)` returns intervals that cover `[0, cost.num_frames() - 1]` without gap or
 /// overlap, in any order (`segment_frames` sorts and checks them). The policy holds its own
 /// parameters (threshold, number of segments, ...). Has models: `Optimal_partition` (the
-/// default), `Binary_split`, `Thesis_greedy`.
+/// default), `Binary_split`, `Thesis_greedy`, `Barbic_pca`.
 /// @code
 /// // Segments of a fixed length, a policy of one's own.
 /// struct Fixed_length {
