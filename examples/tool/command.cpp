@@ -1,5 +1,7 @@
 #include "command.h"
 
+#include <stb/stb_image_write.h>
+
 #include <fstream>
 #include <iostream>
 
@@ -36,5 +38,14 @@ void write_json(const nlohmann::json& document, const std::string& path) {
 }
 
 void progress(const std::string& line) { std::cerr << "deformseg: " << line << '\n'; }
+
+}  // namespace deformseg::tool
+
+namespace deformseg::tool {
+
+void write_png(const Image& image, const std::string& path) {
+  if (!stbi_write_png(path.c_str(), image.width, image.height, 3, image.pixels.data(), image.width * 3))
+    throw std::runtime_error("cannot write " + path);
+}
 
 }  // namespace deformseg::tool

@@ -1,0 +1,161 @@
+// deformseg temporal INPUT: intervals of similar poses, from the normalised rest-pose strain.
+#include "command.h"
+
+#include <deformseg/internal/file_io.h>
+#include <deformseg/temporal_segmentation.h>
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+namespace deformseg::tool {
+namespace {
+
+struct Temporal_command_options {
+  Input_options input;
+  std::size_t rest_frame = 0;
+  std::string method = "optimal";
+  std::string metric = "euclidean";
+  std::optional<double> threshold;
+  bool absolute = false;
+  std::optional<std::size_t> segments;
+  std::size_t min_length = 1;
+  std::string json;
+  std::string png;
+  std::string matrix;
+};
+
+// The threshold (or penalty) the options give, or the policy's default.
+Segmentation_threshold threshold_of(const Temporal_command_options& o, Segmentation_threshold fallback) {
+  if (!o.threshold) return fallback;
+  return {.value = *o.threshold, .relative = !o.absolute};
+}
+
+// The segmentation with the policy the options name; also what threshold it used.
+Temporal_segmentation segment(const Temporal_command_options& o, const Segment_cost& cost,
+                              Segmentation_threshold& used) {
+  if (o.segments && o.method != "optimal") throw invalid_input("--segments asks for --method optimal");
+  if (o.method == "binary-split") {
+    const Binary_split policy{.threshold = threshold_of(o, Binary_split{}.threshold), .min_length = o.min_length};
+    used = policy.threshold;
+    return segment_frames(cost, policy);
+  }
+  if (o.method == "greedy") {
+    const Thesis_greedy policy{.threshold = threshold_of(o, Thesis_greedy{}.threshold)};
+    used = policy.threshold;
+    return segment_frames(cost, policy);
+  }
+  if (o.method == "barbic") return segment_frames(cost, Barbic_pca{});
+  const Optimal_partition policy{
+      .penalty = threshold_of(o, Optimal_partition{}.penalty), .segments = o.segments, .min_length = o.min_length};
+  used = policy.penalty;
+  return segment_frames(cost, policy);
+}
+
+void write_matrix(const Eigen::MatrixXf& d, const std::string& path) {
+  progress("writing the frame distance matrix to " + path);
+  internal::Streamed_file file(path);
+  std::string line;
+  for (Eigen::Index i = 0; i < d.rows(); ++i) {
+    line.clear();
+    for (Eigen::Index j = 0; j < d.cols(); ++j) {
+      if (j > 0) line += ',';
+      internal::append_shortest(line, d(i, j));
+    }
+    line += '\n';
+    file.write(line);
+  }
+  file.close();
+}
+
+// The matrix in grey (black: distance 0, white: the largest), scaled up to at least 400 pixels,
+// with each segment's diagonal block outlined in red, as the thesis draws them.
+void write_figure(const Eigen::MatrixXf& d, const Temporal_segmentation& s, const std::string& path) {
+  progress("writing the figure to " + path);
+  const int frames = int(d.rows());
+  const int scale = std::max(1, (400 + frames - 1) / frames);
+  Image image(frames * scale, frames * scale);
+  const float largest = std::max(d.maxCoeff(), std::numeric_limits<float>::min());
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const auto grey = std::uint8_t(std::lround(255.0f * d(y / scale, x / scale) / largest));
+      image.set(x, y, {grey, grey, grey});
+    }
+  const Rgb red{230, 30, 30};
+  const int thickness = std::max(1, scale / 3);
+  for (const auto& segment : s.segments) {
+    const int low = int(segment.first) * scale, high = int(segment.last + 1) * scale - 1;
+    for (int k = low; k <= high; ++k)
+      for (int w = 0; w < std::min(thickness, high - low + 1); ++w) {
+        image.set(k, low + w, red), image.set(k, high - w, red);
+        image.set(low + w, k, red), image.set(high - w, k, red);
+      }
+  }
+  write_png(image, path);
+}
+
+nlohmann::json document(const Temporal_command_options& o, const Temporal_segmentation& s,
+                        const Segmentation_threshold& threshold) {
+  nlohmann::json segments = nlohmann::json::array();
+  for (const auto& segment : s.segments)
+    segments.push_back({{"first", segment.first}, {"last", segment.last}, {"cost", segment.cost}});
+  nlohmann::json result = {{"input", o.input.input}, {"frames", s.frames}, {"method", o.method},
+                           {"metric", o.metric}, {"threshold", nullptr}, {"segments", segments}};
+  if (o.method != "barbic" && !o.segments)
+    result["threshold"] = {{"value", threshold.value}, {"relative", threshold.relative}};
+  return result;
+}
+
+void run(const Temporal_command_options& o) {
+  const Surface_mesh_animation animation = read_input(o.input);
+  progress("computing the strain and the frame distances of " + std::to_string(animation.num_frames()) + " frames");
+  const auto field = compute_strain(animation, {.rest_frame = o.rest_frame, .threads = o.input.threads});
+  const Frame_metric metric = o.metric == "l1" ? Frame_metric::l1
+                              : o.metric == "cosine" ? Frame_metric::cosine
+                                                     : Frame_metric::euclidean;
+  const Eigen::MatrixXf distances = frame_distances(field, {.metric = metric, .threads = o.input.threads});
+  Segmentation_threshold used;
+  const Temporal_segmentation result = segment(o, Segment_cost(distances), used);
+  if (!o.matrix.empty()) write_matrix(distances, o.matrix);
+  if (!o.png.empty()) write_figure(distances, result, o.png);
+  const nlohmann::json json = document(o, result, used);
+  if (!o.json.empty()) return write_json(json, o.json);
+  std::cout << result.frames << " frames, " << result.segments.size() << " segments (first last cost):\n";
+  for (const auto& segment : result.segments)
+    std::cout << segment.first << ' ' << segment.last << ' ' << segment.cost << '\n';
+}
+
+}  // namespace
+
+void add_temporal_command(CLI::App& app) {
+  auto options = std::make_shared<Temporal_command_options>();
+  CLI::App* command =
+      app.add_subcommand("temporal", "Temporal segmentation: frame intervals of similar poses, from the "
+                                     "normalised rest-pose strain");
+  add_input_options(*command, options->input);
+  command->add_option("--rest-frame", options->rest_frame, "The rest pose of the strain. Default: 0");
+  command->add_option("--method", options->method,
+                      "optimal: least length-weighted cost, with a penalty per segment or --segments "
+                      "(default); binary-split; greedy: the thesis' Algorithm 4-1; barbic: PCA change "
+                      "detection (Barbic et al. 2004)")
+      ->check(CLI::IsMember({"optimal", "binary-split", "greedy", "barbic"}));
+  command->add_option("--metric", options->metric, "Frame distance: euclidean (default), l1, cosine")
+      ->check(CLI::IsMember({"euclidean", "l1", "cosine"}));
+  command->add_option("--threshold", options->threshold,
+                      "binary-split and greedy: the largest within-segment dissimilarity (default 0.5 and "
+                      "0.2); optimal: the penalty per segment (default 0.03); relative to the mean frame "
+                      "distance (optimal: to the one-segment cost) unless --absolute")
+      ->check(CLI::NonNegativeNumber);
+  command->add_flag("--absolute", options->absolute, "--threshold is absolute, in frame distance units");
+  command->add_option("--segments", options->segments, "Exactly K segments (--method optimal)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--min-length", options->min_length, "Fewest frames of a segment (optimal, binary-split)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--json", options->json, "Write the segments as JSON to FILE ('-': standard output)");
+  command->add_option("--png", options->png, "Draw the frame distance matrix and the segments into FILE.png");
+  command->add_option("--matrix", options->matrix, "Write the frame distance matrix as CSV to FILE");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace deformseg::tool
