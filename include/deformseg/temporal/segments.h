@@ -15,6 +15,7 @@ namespace deformseg {
 struct Frame_interval {
   std::size_t first = 0;  ///< the first frame
   std::size_t last = 0;   ///< the last frame, `>= first`
+  /// @brief Equal when both ends are.
   friend bool operator==(const Frame_interval&, const Frame_interval&) = default;
 };
 
