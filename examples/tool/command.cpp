@@ -39,10 +39,6 @@ void write_json(const nlohmann::json& document, const std::string& path) {
 
 void progress(const std::string& line) { std::cerr << "deformseg: " << line << '\n'; }
 
-}  // namespace deformseg::tool
-
-namespace deformseg::tool {
-
 void write_png(const Image& image, const std::string& path) {
   if (!stbi_write_png(path.c_str(), image.width, image.height, 3, image.pixels.data(), image.width * 3))
     throw std::runtime_error("cannot write " + path);
