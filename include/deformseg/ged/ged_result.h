@@ -1,0 +1,33 @@
+/// @file ged/ged_result.h
+/// @brief What a graph edit distance policy returns, and the `GedPolicy` concept.
+#pragma once
+
+#include <deformseg/ged/cost_model.h>
+
+#include <concepts>
+#include <vector>
+
+namespace deformseg::ged {
+
+/// @brief The result of a graph edit distance computation between graphs A and B.
+///
+/// `lower <= distance <= upper` always. When `exact` is true, `distance == lower == upper` is the
+/// graph edit distance; otherwise `distance` is `upper`, the cost of `mapping` (or, for a pure
+/// lower-bound policy, `lower`, with an empty mapping).
+struct Ged_result {
+  double distance = 0;       ///< the distance found (exact or the best upper bound)
+  bool exact = false;        ///< whether `distance` is proven to be the graph edit distance
+  double lower = 0;          ///< a proven lower bound on the graph edit distance
+  double upper = 0;          ///< the cost of `mapping`, an upper bound
+  std::vector<int> mapping;  ///< node i of A -> node of B, or -1 when i is deleted
+};
+
+/// @brief A graph edit distance policy: `policy(a, b, costs)` compares two labelled graphs under
+/// a cost model and returns a `Ged_result`.
+template <class P, class G, class C>
+concept GedPolicy = LabelledGraph<G> && GedCostModel<C, label_t<G>> &&
+                    requires(const P& p, const G& a, const G& b, const C& costs) {
+                      { p(a, b, costs) } -> std::same_as<Ged_result>;
+                    };
+
+}  // namespace deformseg::ged
