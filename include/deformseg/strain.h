@@ -333,7 +333,7 @@ std::vector<double> reference_positions(const Deforming_mesh<Graph, Coordinate>&
 /// O(T F), in parallel over (frame, block of triangles) work items, plus O(T F) for the
 /// normalisation. Measured (test/bench/strain.cpp, 2-core AMD EPYC): 95 to 120 million
 /// triangle-frames per second on one thread and 190 to 250 million on two, normalised, when
-/// compiled for AVX2 (`-march=native`); about 1.6 times fewer with the SSE2 of a default x86-64
+/// compiled for AVX2 (`-march=x86-64-v3`); about 1.6 times fewer with the SSE2 of a default x86-64
 /// build. Gathering the vertices of each triangle through the index table takes most of the time.
 /// @sa Strain_options, Strain_field, put_strain_frame
 template <std::floating_point Value = float, DeformingMesh Mesh, StrainMeasure Measure = Max_principal_strain,
