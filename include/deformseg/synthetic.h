@@ -39,11 +39,18 @@ struct Tube_joint {
   double direction = 0.0;     ///< side it bends towards, an angle around the axis (0: towards +x)
 };
 
-/// @brief One phase of a schedule: during `frames` frames the joint angles move smoothly from
-/// their values at the start of the phase to `angles`.
+/// @brief How the joint angles move during a phase of a schedule.
+enum class Easing {
+  smooth,  ///< a smooth step: starting and stopping softly, fastest in the middle (the default)
+  linear   ///< at constant speed, starting and stopping at once
+};
+
+/// @brief One phase of a schedule: during `frames` frames the joint angles move from their values
+/// at the start of the phase to `angles`, as `easing` says.
 struct Tube_phase {
-  std::size_t frames = 1;      ///< frames the phase adds to the animation, at least 1
-  std::vector<double> angles;  ///< target angle of each joint in radians; empty: hold the pose
+  std::size_t frames = 1;          ///< frames the phase adds to the animation, at least 1
+  std::vector<double> angles;      ///< target angle of each joint in radians; empty: hold the pose
+  Easing easing = Easing::smooth;  ///< how the angles move. Default: `Easing::smooth`
 };
 
 /// @brief A similarity transform applied to every frame: scale, then rotate, then translate.
@@ -141,7 +148,8 @@ inline std::vector<std::vector<double>> schedule_angles(const Bending_tube& spec
     const std::vector<double>& to = phase.angles.empty() ? from : phase.angles;
     phase_frames.push_back({angles.size(), angles.size() + phase.frames - 1});
     for (std::size_t f = 1; f <= phase.frames; ++f) {
-      const double u = smooth_step(double(f) / double(phase.frames));
+      const double progress = double(f) / double(phase.frames);
+      const double u = phase.easing == Easing::smooth ? smooth_step(progress) : progress;
       std::vector<double> pose(from.size());
       for (std::size_t j = 0; j < pose.size(); ++j) pose[j] = from[j] + u * (to[j] - from[j]);
       angles.push_back(std::move(pose));
@@ -197,7 +205,8 @@ inline Eigen::Vector3d skin(const Bending_tube& spec, const std::vector<double>&
 ///
 /// Frame 0 has every joint angle 0 (a straight tube); each phase of `spec.schedule` then adds its
 /// frames, the angles moving from their value at the start of the phase to its targets with a
-/// smooth step, so the last frame of a phase reaches them. Placement is applied to every frame.
+/// smooth step or at constant speed, as the phase's `easing` says, so the last frame of a phase
+/// reaches them. Placement is applied to every frame.
 ///
 /// Example, a tube bending once by 90 degrees in the middle: rest 10 frames, bend 10, hold 10,
 /// unbend 10:

@@ -1,0 +1,262 @@
+// Tests of frame_segments.h and evolving_graph.h: each frame's graph against a brute force on
+// random label volumes, the key frames of bending tubes written out by hand, invariance, real data.
+#include "test_support.h"
+
+#include <deformseg/evolving_graph.h>
+#include <deformseg/io/frame_sequence.h>
+#include <deformseg/synthetic.h>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <Eigen/Geometry>
+
+#include <numbers>
+#include <random>
+#include <set>
+#include <sstream>
+#include <vector>
+
+using namespace deformseg;
+
+namespace {
+
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+// A flat grid of n x n squares, two triangles each: square (i, j) holds triangles 2 (i n + j) and
+// 2 (i n + j) + 1.
+Triangles grid(std::uint32_t n) {
+  Triangles triangles;
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const std::uint32_t a = i * (n + 1) + j, b = a + 1, c = a + n + 1, d = c + 1;
+      triangles.push_back({a, b, d});
+      triangles.push_back({a, d, c});
+    }
+  return triangles;
+}
+
+bool share_edge(const Triangles& triangles, std::size_t f, std::size_t g) {
+  int shared = 0;
+  for (auto v : triangles[f]) shared += std::count(triangles[g].begin(), triangles[g].end(), v) ? 1 : 0;
+  return f != g && shared == 2;
+}
+
+// A graph as text: its nodes in order (R, or D and the segment id), then its edges.
+std::string shape(const Segment_graph& g) {
+  std::ostringstream text;
+  for (std::size_t v = 0; v < boost::num_vertices(g); ++v)
+    text << (v ? " " : "") << (g[v].kind == Segment_kind::rigid ? "R" : "D" + std::to_string(g[v].segment));
+  std::set<std::pair<std::size_t, std::size_t>> edges;
+  for (auto e : boost::make_iterator_range(boost::edges(g)))
+    edges.emplace(std::min(boost::source(e, g), boost::target(e, g)), std::max(boost::source(e, g), boost::target(e, g)));
+  text << " |";
+  for (auto [u, v] : edges) text << ' ' << u << '-' << v;
+  return text.str();
+}
+
+// The key frames as "first-last: shape".
+std::vector<std::string> key_frames(const Evolving_graph& graph) {
+  std::vector<std::string> out;
+  for (const Key_frame& k : graph)
+    out.push_back(std::to_string(k.first_frame) + "-" + std::to_string(k.last_frame) + ": " + shape(k.graph));
+  return out;
+}
+
+constexpr double right = std::numbers::pi / 2;
+constexpr auto linear = Easing::linear;
+// A low threshold: linear blend skinning strains the bend's neutral axis about ten times less
+// than its outside, and the deformed band closes into a ring only when those cells count too.
+const Spatiotemporal_options tube_options{.threshold = 0.01};
+
+Bending_tube two_joints() {
+  Bending_tube spec;
+  spec.joints = {{.position = 0.3}, {.position = 0.7}};
+  return spec;
+}
+
+}  // namespace
+
+TEST_CASE("frame segments: each frame's graph equals a brute force on random label volumes", "[evolving_graph]") {
+  std::mt19937 random(11);
+  for (int trial = 0; trial < 30; ++trial) {
+    const Triangles triangles = grid(3 + std::uint32_t(trial % 4));
+    const std::size_t faces = triangles.size(), frames = 1 + std::size_t(trial % 4);
+    std::bernoulli_distribution coin(0.25 + 0.1 * double(trial % 4));
+      std::vector<std::uint8_t> deformed(faces * frames);
+    for (auto& d : deformed) d = coin(random);
+    Strain_field<float>::Storage values(deformed.size());
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] = deformed[i] ? 1.0f : 0.0f;
+    const Strain_field<float> field(faces, frames, std::move(values), {}, std::nullopt, 0);
+    const auto s = spatiotemporal_segmentation(field, triangles, {.min_triangles = 1, .min_frames = 1, .max_island = 0});
+    std::vector<double> areas(faces);
+    for (std::size_t f = 0; f < faces; ++f) areas[f] = 1.0 + double(f % 3);
+    const Frame_segments segments(s, triangles, areas);
+    for (std::size_t t = 0; t < frames; ++t) {
+      const Segment_graph g = segments.graph(t);
+      const std::vector<std::uint32_t> node = segments.face_nodes(t);
+      // Same node if and only if the same deformed segment, or both rigid and joined by a path
+      // of rigid triangles (found here by repeated relaxation, the slow way).
+      std::vector<std::size_t> region(faces);
+      std::iota(region.begin(), region.end(), std::size_t{0});
+      for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t f = 0; f < faces; ++f)
+          for (std::size_t h = 0; h < faces; ++h)
+            if (s.label(f, t) == -1 && s.label(h, t) == -1 && share_edge(triangles, f, h) && region[h] < region[f])
+              region[f] = region[h], changed = true;
+      }
+      double total_area = 0, node_area_sum = 0;
+      std::size_t node_triangles = 0;
+      for (std::size_t v = 0; v < boost::num_vertices(g); ++v)
+        node_area_sum += g[v].area, node_triangles += g[v].triangles;
+      for (double a : areas) total_area += a;
+      CHECK(node_triangles == faces);
+      CHECK(node_area_sum == Approx(1.0));
+      std::vector<double> area_of(boost::num_vertices(g), 0.0);
+      for (std::size_t f = 0; f < faces; ++f) {
+        area_of[node[f]] += areas[f] / total_area;
+        const Segment_node& n = g[node[f]];
+        CHECK(n.segment == s.label(f, t));
+        CHECK((n.kind == Segment_kind::rigid) == (s.label(f, t) == -1));
+        for (std::size_t h = 0; h < faces; ++h) {
+          const bool same = s.label(f, t) == -1 ? s.label(h, t) == -1 && region[f] == region[h]
+                                                : s.label(h, t) == s.label(f, t);
+          CHECK((node[f] == node[h]) == same);
+          if (share_edge(triangles, f, h) && node[f] != node[h]) CHECK(boost::edge(node[f], node[h], g).second);
+        }
+      }
+      for (std::size_t v = 0; v < boost::num_vertices(g); ++v) CHECK(g[v].area == Approx(area_of[v]));
+      // Every edge joins two nodes with triangles that share a mesh edge.
+      for (auto e : boost::make_iterator_range(boost::edges(g))) {
+        bool touching = false;
+        for (std::size_t f = 0; f < faces && !touching; ++f)
+          for (std::size_t h = 0; h < faces && !touching; ++h)
+            touching = node[f] == boost::source(e, g) && node[h] == boost::target(e, g) && share_edge(triangles, f, h);
+        CHECK(touching);
+      }
+      // Canonical order: deformed nodes by segment id, then rigid ones.
+      for (std::size_t v = 1; v < boost::num_vertices(g); ++v) {
+        const bool both_deformed = g[v - 1].kind == Segment_kind::deformed && g[v].kind == Segment_kind::deformed;
+        CHECK(!(g[v - 1].kind == Segment_kind::rigid && g[v].kind == Segment_kind::deformed));
+        if (both_deformed) CHECK(g[v - 1].segment < g[v].segment);
+      }
+    }
+  }
+}
+
+TEST_CASE("frame segments: a band across a grid cuts its rigid part in two", "[evolving_graph]") {
+  // A 4 x 4 grid; the squares of row 1 deformed (segment 0), so rows 0 and 2-3 are two rigid
+  // regions touching it. Rigid nodes come after it, by first triangle.
+  const Triangles triangles = grid(4);
+  std::vector<std::int32_t> labels(32, -1);
+  for (std::size_t f = 8; f < 16; ++f) labels[f] = 0;
+  const Spatiotemporal_segmentation s(32, 1, labels);
+  const Frame_segments segments(s, triangles);
+  const Segment_graph g = segments.graph(0);
+  CHECK(shape(g) == "D0 R R | 0-1 0-2");
+  CHECK(g[0].triangles == 8);
+  CHECK(g[1].triangles == 8);   // row 0
+  CHECK(g[2].triangles == 16);  // rows 2 and 3
+  CHECK(g[2].area == Approx(0.5));
+  const auto node = segments.face_nodes(0);
+  CHECK(node[0] == 1);
+  CHECK(node[31] == 2);
+  CHECK(node[9] == 0);
+  CHECK_THROWS_WITH(segments.graph(1), Catch::Contains("frame 1"));
+  CHECK_THROWS_WITH(Frame_segments(s, grid(3)), Catch::Contains("18 triangles"));
+  CHECK_THROWS_WITH(Frame_segments(s, triangles, std::vector<double>(32, 0.0)), Catch::Contains("sum to 0"));
+  CHECK_THROWS_WITH(Frame_segments(s, triangles, std::vector<double>(3, 1.0)), Catch::Contains("3 face areas"));
+}
+
+TEST_CASE("evolving graph: a tube bending once gives R, then R - D - R, then R", "[evolving_graph]") {
+  Bending_tube spec;
+  spec.schedule = {{10, {0.0}}, {10, {right}, linear}, {10, {}}};
+  const auto tube = make_bending_tube(spec);
+  const Evolving_graph graph = evolving_graph(tube.animation, tube_options);
+  // Previous-pose strain: deformed exactly while the joint moves (frames 11-20).
+  CHECK(key_frames(graph) == std::vector<std::string>{"0-10: R |", "11-20: D0 R R | 0-1 0-2", "21-30: R |"});
+  CHECK(graph.num_frames() == 31);
+  CHECK(graph.num_segments() == 1);
+  CHECK(graph.key_frame_of(0) == 0);
+  CHECK(graph.key_frame_of(11) == 1);
+  CHECK(graph.key_frame_of(30) == 2);
+  CHECK_THROWS_WITH(graph.key_frame_of(31), Catch::Contains("frame 31"));
+  // The band lies in the blend zone, 15 % of the length, 13.6 % of the area with the caps (17.4 %
+  // with the rings on its edges); the two rigid ends hold the rest, alike.
+  const Segment_graph& bent = graph[1].graph;
+  CHECK(bent[0].area > 0.136 / 2);
+  CHECK(bent[0].area < 0.174);
+  CHECK(bent[0].area + bent[1].area + bent[2].area == Approx(1.0));
+  CHECK(bent[1].area == Approx(bent[2].area).epsilon(0.05));
+  CHECK(graph[0].graph[0].triangles == tube.animation.num_faces());
+  // Rest-pose strain measures the pose: the tube stays deformed while it is bent, hold included.
+  const Evolving_graph rest = evolving_graph(tube.animation, {.reference = Strain_reference::rest_pose, .threshold = 0.01});
+  REQUIRE(rest.size() >= 2);
+  CHECK(shape(rest[0].graph) == "R |");
+  CHECK(shape(rest[rest.size() - 1].graph) == "D0 R R | 0-1 0-2");
+  CHECK(rest[rest.size() - 1].last_frame == 30);
+}
+
+TEST_CASE("evolving graph: two joints bending one after the other, and overlapping", "[evolving_graph]") {
+  Bending_tube spec = two_joints();
+  spec.schedule = {{5, {0.0, 0.0}}, {10, {right, 0.0}, linear}, {5, {}}, {10, {right, right}, linear}, {5, {}}};
+  CHECK(key_frames(evolving_graph(make_bending_tube(spec).animation, tube_options)) ==
+        std::vector<std::string>{"0-5: R |", "6-15: D0 R R | 0-1 0-2", "16-20: R |", "21-30: D1 R R | 0-1 0-2",
+                                 "31-35: R |"});
+  // The upper joint starts while the lower one is half way: for six frames both bend, and the
+  // middle of the tube is a rigid region between the two bands (it touches segments 0 and 1).
+  spec.schedule = {{5, {0.0, 0.0}}, {6, {right / 2, 0.0}, linear}, {6, {right, right / 2}, linear},
+                   {6, {right, right}, linear}, {5, {}}};
+  CHECK(key_frames(evolving_graph(make_bending_tube(spec).animation, tube_options)) ==
+        std::vector<std::string>{"0-5: R |", "6-11: D0 R R | 0-1 0-2", "12-17: D0 D1 R R R | 0-2 0-3 1-3 1-4",
+                                 "18-23: D1 R R | 0-1 0-2", "24-28: R |"});
+}
+
+TEST_CASE("evolving graph: a moved, turned and scaled tube gives the same evolving graph", "[evolving_graph]") {
+  Bending_tube spec = two_joints();
+  spec.schedule = {{4, {0.0, 0.0}}, {8, {right, 0.0}}, {8, {right, -right}, linear}, {4, {0.0, 0.0}}};
+  const Evolving_graph a = evolving_graph(make_bending_tube(spec).animation, tube_options);
+  spec.placement = {.scale = 0.02,
+                    .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, -2, 3).normalized())),
+                    .translation = Eigen::Vector3d(-7, 300, 12)};
+  const Evolving_graph b = evolving_graph(make_bending_tube(spec).animation, tube_options);
+  REQUIRE(key_frames(a) == key_frames(b));
+  CHECK(a.size() > 3);
+  for (std::size_t k = 0; k < a.size(); ++k)
+    for (std::size_t v = 0; v < boost::num_vertices(a[k].graph); ++v) {
+      CHECK(a[k].graph[v].triangles == b[k].graph[v].triangles);
+      CHECK(a[k].graph[v].area == Approx(b[k].graph[v].area).margin(1e-9));
+    }
+}
+
+TEST_CASE("evolving graph: key frames must cover the frames in order", "[evolving_graph]") {
+  std::vector<Key_frame> gap;
+  gap.push_back({0, 3, Segment_graph(1)});
+  gap.push_back({5, 6, Segment_graph(1)});
+  CHECK_THROWS_WITH(Evolving_graph(7, 0, gap), Catch::Contains("frames 5-6") && Catch::Contains("frame 4"));
+  CHECK_THROWS_WITH(Evolving_graph(9, 0, {{0, 8, Segment_graph(1)}, {9, 9, Segment_graph(1)}}),
+                    Catch::Contains("cover 10 of 9"));
+  CHECK(Evolving_graph(0, 0, {}).empty());
+}
+
+TEST_CASE("evolving graph: the horse gallop and the samba, deterministic", "[evolving_graph][data]") {
+  for (const char* name : {"horse-gallop", "samba"}) {
+    const auto folder = test::unpacked(std::string(name) + "/" + name + ".tar.xz") / name;
+    const auto animation = io::read_frame_sequence(folder.string());
+    const Evolving_graph a = evolving_graph(animation);
+    const Evolving_graph b = evolving_graph(animation);
+    std::size_t largest = 0, nodes = 0;
+    for (const Key_frame& k : a) {
+      largest = std::max(largest, boost::num_vertices(k.graph));
+      nodes += boost::num_vertices(k.graph);
+    }
+    INFO(name << ": " << a.size() << " key frames of " << a.num_frames() << " frames, " << a.num_segments()
+              << " segments, " << double(nodes) / double(a.size()) << " nodes per key frame, at most " << largest);
+    CHECK(key_frames(a) == key_frames(b));
+    CHECK(a.num_frames() == animation.num_frames());
+    CHECK(a.size() > 5);
+    CHECK(a.size() < a.num_frames());
+    CHECK(largest < 100);
+    WARN(name << ": " << a.size() << " key frames of " << a.num_frames() << " frames, " << a.num_segments()
+              << " segments, " << double(nodes) / double(a.size()) << " nodes per key frame, at most " << largest);
+  }
+}
