@@ -44,7 +44,7 @@ bool share_edge(const Triangles& triangles, std::size_t f, std::size_t g) {
 std::string shape(const Segment_graph& g) {
   std::ostringstream text;
   for (std::size_t v = 0; v < boost::num_vertices(g); ++v)
-    text << (v ? " " : "") << (g[v].kind == Segment_kind::rigid ? "R" : "D" + std::to_string(g[v].segment));
+    text << (v ? " " : "") << node_label(g[v]);
   std::set<std::pair<std::size_t, std::size_t>> edges;
   for (auto e : boost::make_iterator_range(boost::edges(g)))
     edges.emplace(std::min(boost::source(e, g), boost::target(e, g)), std::max(boost::source(e, g), boost::target(e, g)));

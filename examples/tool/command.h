@@ -53,5 +53,6 @@ void add_info_command(CLI::App& app);
 void add_synth_command(CLI::App& app);
 void add_strain_command(CLI::App& app);
 void add_temporal_command(CLI::App& app);
+void add_spatiotemporal_command(CLI::App& app);
 
 }  // namespace deformseg::tool

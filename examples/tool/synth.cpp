@@ -22,6 +22,7 @@ struct Synth_options {
   std::vector<double> directions;
   double blend_width = 0.15;
   std::vector<std::string> schedule{"10:0", "10:90", "10:", "10:0"};
+  std::string easing = "smooth";
   Tube_shape shape;
   double scale = 1.0;
   std::vector<double> rotate{0, 0, 1, 0};
@@ -58,7 +59,10 @@ Bending_tube specification(const Synth_options& o) {
   for (std::size_t j = 0; j < o.joints.size(); ++j)
     spec.joints.push_back({.position = o.joints[j], .blend_width = o.blend_width,
                            .direction = j < o.directions.size() ? o.directions[j] * degree : 0.0});
-  for (const auto& phase : o.schedule) spec.schedule.push_back(parse_phase(phase));
+  for (const auto& phase : o.schedule) {
+    spec.schedule.push_back(parse_phase(phase));
+    spec.schedule.back().easing = o.easing == "linear" ? Easing::linear : Easing::smooth;
+  }
   const Eigen::Vector3d axis(o.rotate[0], o.rotate[1], o.rotate[2]);
   if (axis.norm() == 0) throw invalid_input("--rotate: the axis must not be zero");
   spec.placement = {.scale = o.scale,
@@ -119,6 +123,10 @@ void add_synth_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--schedule", o->schedule,
                       "Phases FRAMES:ANGLE[,ANGLE...] in degrees, one angle per joint; FRAMES: holds")
+      ->capture_default_str();
+  command->add_option("--easing", o->easing,
+                      "How the angles move in each phase: smooth (soft start and stop) or linear (constant speed)")
+      ->check(CLI::IsMember({"smooth", "linear"}))
       ->capture_default_str();
   command->add_option("--radius", o->shape.radius, "Tube radius")->capture_default_str();
   command->add_option("--length", o->shape.length, "Tube length")->capture_default_str();

@@ -45,6 +45,15 @@ struct Segment_node {
   friend bool operator==(const Segment_node&, const Segment_node&) = default;
 };
 
+/// @brief A node's short name: "R" for a rigid node, "D" and the segment id for a deformed one
+/// ("D3"), as figures, DOT files and the tool show it.
+inline std::string node_label(const Segment_node& node) {
+  if (node.kind == Segment_kind::rigid) return "R";
+  std::string label = "D";
+  label += std::to_string(node.segment);
+  return label;
+}
+
 /// @brief The spatial segments of a frame: a node per segment (`Segment_node`), an edge between
 /// two segments whose triangles share a mesh edge. Vertices are numbered 0..n-1 (`vecS`) in the
 /// canonical order of `Frame_segments`.

@@ -1,0 +1,110 @@
+// deformseg spatiotemporal INPUT: spatio-temporal segments and the evolving graph of their
+// key frames, as JSON, DOT files and meshes coloured by segment.
+#include "command.h"
+
+#include <deformseg/evolving_graph.h>
+#include <deformseg/face_areas.h>
+#include <deformseg/io/write_evolving_graph.h>
+#include <deformseg/io/write_sequence.h>
+#include <deformseg/segment_colors.h>
+
+#include <iostream>
+#include <memory>
+
+namespace deformseg::tool {
+namespace {
+
+struct Spatiotemporal_command_options {
+  Input_options input;
+  std::string reference = "previous";
+  Spatiotemporal_options segments;
+  std::string json;
+  std::string dot;
+  std::string mesh_dir;
+};
+
+nlohmann::json key_frame_json(const Key_frame& k) {
+  nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
+  const Segment_graph& g = k.graph;
+  for (std::size_t v = 0; v < boost::num_vertices(g); ++v) {
+    const bool rigid = g[v].kind == Segment_kind::rigid;
+    nodes.push_back({{"id", v},
+                     {"kind", rigid ? "rigid" : "deformed"},
+                     {"segment", rigid ? nlohmann::json(nullptr) : nlohmann::json(g[v].segment)},
+                     {"triangles", g[v].triangles},
+                     {"area", g[v].area}});
+  }
+  for (auto e : boost::make_iterator_range(boost::edges(g)))
+    edges.push_back({std::min(boost::source(e, g), boost::target(e, g)), std::max(boost::source(e, g), boost::target(e, g))});
+  return {{"first", k.first_frame}, {"last", k.last_frame}, {"nodes", nodes}, {"edges", edges}};
+}
+
+nlohmann::json document_of(const Evolving_graph& graph) {
+  nlohmann::json key_frames = nlohmann::json::array();
+  for (const Key_frame& k : graph) key_frames.push_back(key_frame_json(k));
+  return {{"frames", graph.num_frames()}, {"segments", graph.num_segments()}, {"key_frames", key_frames}};
+}
+
+void print(const Evolving_graph& graph) {
+  std::cout << "frames      " << graph.num_frames() << "\nsegments    " << graph.num_segments() << "\nkey frames  "
+            << graph.size() << "\nkey frame  frames  nodes (R rigid, D<segment> deformed)  edges\n";
+  for (std::size_t k = 0; k < graph.size(); ++k) {
+    const Segment_graph& g = graph[k].graph;
+    std::cout << k << "  " << graph[k].first_frame << "-" << graph[k].last_frame << " ";
+    for (std::size_t v = 0; v < boost::num_vertices(g); ++v) std::cout << ' ' << node_label(g[v]);
+    std::cout << "  " << boost::num_edges(g) << '\n';
+  }
+}
+
+void run(const Spatiotemporal_command_options& o) {
+  const Surface_mesh_animation animation = read_input(o.input);
+  Spatiotemporal_options options = o.segments;
+  options.reference = o.reference == "rest" ? Strain_reference::rest_pose : Strain_reference::previous_pose;
+  progress("segmenting " + std::to_string(animation.num_faces()) + " triangles x " +
+           std::to_string(animation.num_frames()) + " frames");
+  const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(animation, options);
+  const std::vector<double> areas = face_areas(animation, 0);
+  const Frame_segments frames(segmentation, animation.triangles(), areas);
+  const Evolving_graph graph = evolving_graph(frames);
+  if (!o.dot.empty()) {
+    progress("writing " + std::to_string(graph.size()) + " key frame graphs to " + o.dot);
+    io::write_key_frames_dot(graph, o.dot);
+  }
+  if (!o.mesh_dir.empty()) {
+    progress("writing " + std::to_string(animation.num_frames()) + " meshes coloured by segment to " + o.mesh_dir);
+    io::write_sequence(animation, o.mesh_dir,
+                       {.face_colors = [&](std::size_t t) { return segment_face_colors(frames, t); }});
+  }
+  if (o.json.empty())
+    print(graph);
+  else
+    write_json(document_of(graph), o.json);
+}
+
+}  // namespace
+
+void add_spatiotemporal_command(CLI::App& app) {
+  auto options = std::make_shared<Spatiotemporal_command_options>();
+  CLI::App* command = app.add_subcommand(
+      "spatiotemporal", "Spatio-temporal segments and the evolving graph of their key frames: JSON, DOT, coloured meshes");
+  add_input_options(*command, options->input);
+  command->add_option("--reference", options->reference,
+                      "previous: deformed while it moves (default); rest: deformed while away from frame 0")
+      ->check(CLI::IsMember({"previous", "rest"}));
+  command->add_option("--threshold", options->segments.threshold,
+                      "A cell is deformed above this normalised strain. Default: 0.5");
+  command->add_option("--min-triangles", options->segments.min_triangles,
+                      "Segments whose largest slice has fewer triangles become rigid. Default: 10");
+  command->add_option("--min-frames", options->segments.min_frames,
+                      "Segments lasting fewer frames become rigid. Default: 2");
+  command->add_option("--max-island", options->segments.max_island,
+                      "Rigid islands of at most this many triangles inside one segment join it (0: none). "
+                      "Default: 30");
+  command->add_option("--json", options->json, "Write the evolving graph as JSON to FILE ('-': standard output)");
+  command->add_option("--dot", options->dot, "Write each key frame's graph as a Graphviz DOT file into DIR");
+  command->add_option("--mesh-dir", options->mesh_dir,
+                      "Write every frame as a PLY mesh coloured by segment (rigid: grey) into DIR");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace deformseg::tool
