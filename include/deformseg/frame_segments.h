@@ -93,8 +93,10 @@ struct Frame_segments_access;
 /// Keeps references to the segmentation and nothing per frame: each call computes its frame.
 class Frame_segments {
 public:
-  /// @brief Prepares the frames of `segmentation`, whose triangles are `triangles` (their
-  /// face-vertex index table, for a `Deforming_mesh` its `triangles()`).
+  /// @brief Prepares the frames of a segmentation.
+  /// @param segmentation the spatio-temporal segmentation.
+  /// @param triangles the face-vertex index table of its triangles (for a `Deforming_mesh`, its
+  /// `triangles()`), which gives their adjacency.
   /// @param face_areas the area of each triangle, for the nodes' area shares (typically in the
   /// rest frame; any scale); empty (default): every triangle weighs the same.
   /// @pre `segmentation` outlives this object; `triangles.size() == segmentation.num_faces()`;
