@@ -7,6 +7,10 @@
 
 #include <catch2/catch.hpp>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <limits>
 #include <random>
 #include <string>
@@ -230,4 +234,30 @@ TEST_CASE("cluster: a policy of one's own compiles and runs", "[clustering]") {
   CHECK(c.silhouette == Approx(silhouette(blobs.distances, c.labels)));
   CHECK(is_canonical(c));
   CHECK_THROWS_AS(cluster(blobs.distances, Too_few_labels{}), deformseg::invalid_input);
+}
+
+TEST_CASE("cluster: the same result whatever the number of threads", "[clustering]") {
+  const auto blobs = make_blobs({40, 50, 30, 45}, 2, 3.0);  // overlapping blobs: close calls
+  const Eigen::MatrixXd& d = blobs.distances;
+  const auto all = [&] {
+    return std::vector<Clustering>{cluster(d, K_medoids{}), cluster(d, Agglomerative{}),
+                                   cluster(d, Agglomerative{.linkage = Linkage::complete, .clusters = 6}),
+                                   cluster(d, K_means{}), cluster(d, K_means{.clusters = 7, .seed = 9})};
+  };
+#ifdef _OPENMP
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const std::vector<Clustering> one = all();
+  omp_set_num_threads(3);
+  const std::vector<Clustering> three = all();
+  omp_set_num_threads(threads);
+#else
+  const std::vector<Clustering> one = all(), three = all();
+#endif
+  for (std::size_t p = 0; p < one.size(); ++p) {
+    INFO("policy " << p);
+    CHECK(one[p].labels == three[p].labels);
+    CHECK(one[p].medoids == three[p].medoids);
+    CHECK(one[p].silhouette == three[p].silhouette);  // bit-identical
+  }
 }

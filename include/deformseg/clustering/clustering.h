@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <concepts>
 #include <cstddef>
@@ -112,9 +113,15 @@ inline void check_distance_matrix(const Eigen::MatrixXd& distances, std::string_
       if (!std::isfinite(d)) throw invalid_input(prefix + entry(i, j) + " is not finite");
       if (d < 0) throw invalid_input(prefix + entry(i, j) + " is negative");
       if (i == j && d != 0) throw invalid_input(prefix + entry(i, j) + " is on the diagonal, which must be 0");
-      if (d != distances(j, i))
-        throw invalid_input(prefix + entry(i, j) + " but " + entry(j, i) + ": the matrix must be symmetric");
     }
+  // Symmetry tile by tile, so that the transposed reads stay in cache.
+  constexpr Eigen::Index tile = 64;
+  for (Eigen::Index tj = 0; tj < distances.cols(); tj += tile)
+    for (Eigen::Index ti = 0; ti <= tj; ti += tile)
+      for (Eigen::Index j = tj; j < std::min(tj + tile, distances.cols()); ++j)
+        for (Eigen::Index i = ti; i < std::min({ti + tile, j, distances.rows()}); ++i)
+          if (distances(i, j) != distances(j, i))
+            throw invalid_input(prefix + entry(j, i) + " but " + entry(i, j) + ": the matrix must be symmetric");
 }
 
 namespace internal {
@@ -285,15 +292,8 @@ Clustering given_or_best_k(std::size_t groups, std::size_t items, std::optional<
   return best;
 }
 
-}  // namespace internal
-
-/// @brief Merges the items at distance exactly 0 into groups (connected components of the
-/// zero-distance graph), for a `WeightedClusteringPolicy`.
-/// @param distances an n x n distance matrix.
-/// @pre `distances` passes `check_distance_matrix` (not checked here).
-/// @return the groups, their weights (sizes) and distances (mean over their items' pairs).
-/// @par Complexity O(n^2) time, O(g^2) extra memory for g groups.
-inline Grouped_items group_identical_items(const Eigen::MatrixXd& distances) {
+// The groups of items at distance 0 (union-find over such pairs), without their distances.
+inline Grouped_items zero_distance_groups(const Eigen::MatrixXd& distances) {
   const auto n = std::size_t(distances.rows());
   std::vector<std::size_t> parent(n);
   std::iota(parent.begin(), parent.end(), std::size_t{0});
@@ -320,6 +320,20 @@ inline Grouped_items group_identical_items(const Eigen::MatrixXd& distances) {
     g.group_of_item[i] = group_of_root[r];
     g.weights[g.group_of_item[i]] += 1.0;
   }
+  return g;
+}
+
+}  // namespace internal
+
+/// @brief Merges the items at distance exactly 0 into groups (connected components of the
+/// zero-distance graph), for a `WeightedClusteringPolicy`.
+/// @param distances an n x n distance matrix.
+/// @pre `distances` passes `check_distance_matrix` (not checked here).
+/// @return the groups, their weights (sizes) and distances (mean over their items' pairs).
+/// @par Complexity O(n^2) time, O(g^2) extra memory for g groups.
+inline Grouped_items group_identical_items(const Eigen::MatrixXd& distances) {
+  Grouped_items g = internal::zero_distance_groups(distances);
+  const auto n = std::size_t(distances.rows());
   const auto groups = Eigen::Index(g.first_item.size());
   g.distances = Eigen::MatrixXd::Zero(groups, groups);
   for (std::size_t j = 0; j < n; ++j)
@@ -381,18 +395,23 @@ template <ClusteringPolicy Policy>
 Clustering cluster(const Eigen::MatrixXd& distances, const Policy& policy) {
   check_distance_matrix(distances, "cluster");
   const auto n = std::size_t(distances.rows());
-  Grouped_items groups = group_identical_items(distances);
+  if (internal::zero_distance_groups(distances).first_item.size() == n) {  // no items at distance 0
+    Clustering c = policy(distances);
+    if (c.labels.size() != n)
+      throw invalid_input("cluster: the policy gave " + std::to_string(c.labels.size()) + " labels for " +
+                          std::to_string(n) + " items");
+    return internal::finish(distances, std::vector<double>(n, 1.0), std::move(c));
+  }
+  const Grouped_items groups = group_identical_items(distances);
   const std::size_t g = groups.weights.size();
   Clustering c;
-  if (g == n)
-    c = policy(distances);
-  else if constexpr (WeightedClusteringPolicy<Policy>)
+  if constexpr (WeightedClusteringPolicy<Policy>)
     c = policy(groups);
   else
     c = policy(groups.distances);
   if (c.labels.size() != g)
     throw invalid_input("cluster: the policy gave " + std::to_string(c.labels.size()) + " labels for " +
-                        std::to_string(g) + (g == n ? " items" : " groups of items at distance 0"));
+                        std::to_string(g) + " groups of items at distance 0");
   // Canonical on the groups first, so that the policy's medoids are checked and kept.
   c = internal::finish(groups.distances, groups.weights, std::move(c));
   Clustering result{std::vector<std::size_t>(n), c.clusters, {}, 0.0, c.iterations, c.converged};
