@@ -35,7 +35,8 @@
 /// | deformseg::clustering::K_means | given, or best silhouette over 2..10 | `clusters` (none), `max_clusters` (10), `prototypes` (all items), `seed` (0), `max_iterations` (100), `restarts` (3) |
 ///
 /// All three are weighted models, deterministic for their options and seed and whatever the number
-/// of threads. `examples/own_clustering_policy.cpp` adds a policy of its own.
+/// of threads. `examples/own_clustering_policy.cpp` adds a policy of its own:
+/// @include own_clustering_policy.cpp
 ///
 /// \par A type that is not a model
 /// is rejected at compile time: `cluster(distances, p)` with such a `p` fails with the message
