@@ -112,6 +112,8 @@ inline Clustering cut(const std::vector<Merge>& merges, std::size_t n, std::size
 /// which for average and complete linkage gives the merges of the textbook algorithm (ties
 /// apart). A model of `WeightedClusteringPolicy`: a group of w items at distance 0 is a cluster
 /// of w items from the start (for average linkage, w items in the means).
+/// Called on a matrix directly, the policy does not merge items at distance 0 (more clusters than
+/// distinct items split them); through `cluster` they always share a label.
 ///
 /// Options, as aggregate members (`Agglomerative{.linkage = Linkage::complete, .height = 2.0}`):
 /// - `linkage`: default `Linkage::average`.

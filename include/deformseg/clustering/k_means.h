@@ -187,6 +187,8 @@ private:
 /// A model of `WeightedClusteringPolicy`: a group of w items at distance 0 counts w times in the
 /// means, and with all items as prototypes its coordinate counts w times in the norm, so that the
 /// geometry is that of the items.
+/// Called on a matrix directly, the policy does not merge items at distance 0 (more clusters than
+/// distinct items split them); through `cluster` they always share a label.
 ///
 /// Options, as aggregate members (`K_means{.clusters = 3, .seed = 7}`):
 /// - `clusters`: k; default none: the k in 2..`max_clusters` of best mean silhouette.

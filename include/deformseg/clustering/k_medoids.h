@@ -113,6 +113,8 @@ inline Swap best_swap_for(const Eigen::MatrixXd& d, const std::vector<double>& w
 /// stopped it (`converged == false`); `iterations` is the number of swaps made. The medoids are in
 /// `Clustering::medoids`. A model of `WeightedClusteringPolicy`: a group of w items at distance 0
 /// counts w times in the total distance.
+/// Called on a matrix directly, the policy does not merge items at distance 0 (more clusters than
+/// distinct items split them); through `cluster` they always share a label.
 ///
 /// Options, as aggregate members for designated initializers
 /// (`K_medoids{.clusters = 4}`):
