@@ -8,6 +8,8 @@
 #include <deformseg/strain_histograms.h>
 #include <deformseg/synthetic.h>
 
+#include <CGAL/Polyhedron_3.h>
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -183,6 +185,25 @@ TEST_CASE("strain_histograms: the options choose the strain", "[strain_histogram
   CHECK(normalised.cols() == 10);
   CHECK(normalised(0, 0) == 1.0);  // the rest frame
   CHECK_THROWS_WITH(strain_histograms(animation, {.strain = {.rest_frame = 99}}), Catch::Contains("rest frame 99"));
+}
+
+TEST_CASE("strain_histograms: Surface_mesh, Polyhedron_3 and any DeformingMesh give the same histograms",
+          "[strain_histograms]") {
+  using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+  const Bending_tube spec = two_joint_tube({.sectors = 8, .rings = 20});
+  const auto on_polyhedron = make_bending_tube<Polyhedron>(spec);
+  // A model of DeformingMesh that is not a Deforming_mesh: a view of one, through its point maps.
+  struct View {
+    using Face_graph = Polyhedron;
+    const Deforming_mesh<Polyhedron>* animation;
+    const Face_graph& face_graph() const { return animation->face_graph(); }
+    std::size_t num_frames() const { return animation->num_frames(); }
+    auto frame_point_map(std::size_t t) const { return animation->frame_point_map(t); }
+  };
+  static_assert(DeformingMesh<View>);
+  const Strain_histograms expected = strain_histograms(make_bending_tube<Surface_mesh>(spec).animation);
+  CHECK(strain_histograms(on_polyhedron.animation) == expected);
+  CHECK(strain_histograms(View{&on_polyhedron.animation}) == expected);
 }
 
 TEST_CASE("strain_histograms data: the horse gallop's second cycle repeats the first", "[strain_histograms][data]") {
