@@ -168,6 +168,21 @@ TEST_CASE("strain_histograms: another mesh of the same tube gives alike histogra
   CHECK(same_frame < 0.25 * other_frames);
 }
 
+TEST_CASE("strain_histograms: which of two alike joints bends first is invisible (a known limitation)",
+          "[strain_histograms]") {
+  // Histograms forget where the strain lies: two joints of equal blend zones, bent in either order
+  // on a symmetric tube, give the same histograms frame by frame.
+  const double right = std::numbers::pi / 2;
+  Bending_tube first = two_joint_tube({});
+  first.schedule = {{4, {}}, {8, {right, 0.0}}, {8, {0.0, right}}, {8, {0.0, 0.0}}};
+  Bending_tube second = first;
+  second.schedule = {{4, {}}, {8, {0.0, right}}, {8, {right, 0.0}}, {8, {0.0, 0.0}}};
+  const auto a = strain_histograms(make_bending_tube(first).animation);
+  const auto b = strain_histograms(make_bending_tube(second).animation);
+  CHECK(histogram_distances(a, b).diagonal().maxCoeff() < 1e-3);
+  CHECK(histogram_distances(a, a).maxCoeff() > 0.01);  // while the frames themselves differ
+}
+
 TEST_CASE("strain_histograms: the options choose the strain", "[strain_histograms]") {
   const auto animation = make_bending_tube(two_joint_tube({})).animation;
   const auto field = compute_strain(animation, Strain_options{.reference = Strain_reference::previous_pose,

@@ -168,7 +168,8 @@ std::vector<double> triangle_areas(const Deforming_mesh<Graph, Coordinate>& anim
 /// magnitude `|s|` at frame t falls in column k (see `histogram_edges`): `sum of weights[j] over
 /// those j / sum of all weights`. Triangles of weight 0 (degenerate ones, when the weights are
 /// areas) count for nothing; the strain 0 that `compute_strain` gives degenerate reference
-/// triangles falls in the underflow bin, and an infinite strain in the overflow bin.
+/// triangles falls in the underflow bin, and an infinite strain in the overflow bin. A `float`
+/// strain is compared with the (double) edges after its exact conversion to double.
 ///
 /// Frames are computed in parallel, each by one thread in triangle order, so the result is the
 /// same for any number of threads.
