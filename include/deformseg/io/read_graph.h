@@ -164,7 +164,8 @@ inline Graph_format format_of(const std::filesystem::path& path) {
 /// @pre an undirected simple graph: no `digraph` / `edgedefault="directed"`, no self loop, no two
 /// edges between the same nodes, except in a DOT `strict graph`, where an edge given twice
 /// (either way round) is one edge.
-/// @param in the stream; @param format DOT or GraphML.
+/// @param in the stream.
+/// @param format DOT or GraphML.
 /// @param name how errors name the input (a file name), may be empty.
 /// @throws invalid_input naming `name` and the problem: a parse error, a directed graph, a node
 /// without label (by DOT name, or by index for GraphML), a self loop, a parallel edge.
