@@ -152,8 +152,9 @@ private:
 /// @brief GED policy (models `GedPolicy`): the exact graph edit distance, by depth-first branch
 /// and bound over node mappings.
 ///
-/// The nodes of A are mapped in a fixed order (largest degree first, then always the node with
-/// most edges to those already mapped), each onto a free node of B or deleted. The first upper
+/// The nodes of the smaller graph (A, or B when A has more nodes) are mapped in a fixed order
+/// (largest degree first, then always the node with most edges to those already mapped), each
+/// onto a free node of the other graph or deleted. The first upper
 /// bound is Bipartite_ged's; each partial mapping is priced by its exact cost so far plus an
 /// admissible bound on the rest: an optimal assignment of the open nodes (node costs, exact costs
 /// of their pairs with mapped nodes, half the least cost of their edges among open nodes; see
@@ -193,10 +194,16 @@ struct Exact_ged {
       throw invalid_input("Exact_ged: max_seconds = " + std::to_string(max_seconds) + " must be >= 0");
     const internal::Ged_instance instance = internal::make_instance(a, b, costs, "Exact_ged");
     Ged_result start = Bipartite_ged{}(a, b, costs);
-    internal::Exact_search search(instance, max_expanded, max_seconds);
     double upper = start.upper;
     std::vector<int> mapping = std::move(start.mapping);
+    // The search maps the nodes of the smaller graph (depth n, m + 1 choices each): from B when
+    // A is larger, which gives the same distance.
+    const bool from_b = instance.n > instance.m;
+    const internal::Ged_instance searched = from_b ? internal::reversed(instance) : internal::Ged_instance{};
+    internal::Exact_search search(from_b ? searched : instance, max_expanded, max_seconds);
+    if (from_b) mapping = internal::inverted(mapping, instance.m);
     const double lower = search.run(mapping, upper);
+    if (from_b) mapping = internal::inverted(mapping, instance.n);
     upper = edit_cost(a, b, mapping, costs);  // the cost of the mapping as edit_cost sums it
     if (!search.stopped() || lower >= upper)  // a stopped search may still have closed the gap
       return {.distance = upper, .exact = true, .lower = upper, .upper = upper, .mapping = std::move(mapping)};

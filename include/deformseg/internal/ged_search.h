@@ -118,6 +118,31 @@ Ged_instance make_instance(const G& a, const G& b, const C& costs, const char* c
   return in;
 }
 
+// The same problem seen from B: turning B into A costs what turning A into B does, with
+// insertions and deletions exchanged and substitutions read the other way.
+inline Ged_instance reversed(const Ged_instance& in) {
+  Ged_instance r;
+  r.n = in.m;
+  r.m = in.n;
+  r.adjacency_a = in.adjacency_b;
+  r.adjacency_b = in.adjacency_a;
+  r.substitution.resize(in.n * in.m);
+  for (std::size_t i = 0; i < in.n; ++i)
+    for (std::size_t j = 0; j < in.m; ++j) r.substitution[j * in.n + i] = in.substitution[i * in.m + j];
+  r.deletion = in.insertion;
+  r.insertion = in.deletion;
+  r.edge = {.insertion = in.edge.deletion, .deletion = in.edge.insertion, .substitution = in.edge.substitution};
+  return r;
+}
+
+// A node mapping of A (n nodes) into B turned into one of B (m nodes) into A.
+inline std::vector<int> inverted(const std::vector<int>& mapping, std::size_t m) {
+  std::vector<int> inverse(m, -1);
+  for (std::size_t i = 0; i < mapping.size(); ++i)
+    if (mapping[i] >= 0) inverse[static_cast<std::size_t>(mapping[i])] = static_cast<int>(i);
+  return inverse;
+}
+
 // The least total of an assignment of every row to a distinct column (rows <= columns) of a
 // row-major matrix, by shortest augmenting paths with potentials; the buffers are reused so that
 // the search allocates nothing per bound.
