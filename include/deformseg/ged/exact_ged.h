@@ -92,7 +92,7 @@ private:
     std::vector<Child>& children = children_[depth];
     children.clear();
     for (int w = -1; w < static_cast<int>(in_.m); ++w) {
-      if (w >= 0 && current_image_of_b(static_cast<std::size_t>(w))) continue;
+      if (w >= 0 && !state_.is_open_in_b(static_cast<std::size_t>(w))) continue;
       const double child_cost = cost + state_.step_cost(v, w);
       if (child_cost >= upper_) continue;
       state_.map(v, w);
@@ -117,17 +117,11 @@ private:
       }
       if (child.bound >= upper_) break;
       current_[v] = child.image;
-      if (child.image >= 0) used_b_.push_back(static_cast<std::size_t>(child.image));
       state_.map(v, child.image);
       expand(depth + 1, child.cost, child.bound);
       state_.unmap(v, child.image);
-      if (child.image >= 0) used_b_.pop_back();
       current_[v] = -1;
     }
-  }
-
-  bool current_image_of_b(std::size_t j) const {
-    return std::find(used_b_.begin(), used_b_.end(), j) != used_b_.end();
   }
 
   const Ged_instance& in_;
@@ -135,7 +129,6 @@ private:
   std::vector<std::size_t> order_;
   std::vector<std::vector<Child>> children_;  // per depth, reused
   std::vector<int> current_, best_;
-  std::vector<std::size_t> used_b_;
   Lsap_workspace lsap_;
   std::vector<double> matrix_;
   double upper_ = 0;

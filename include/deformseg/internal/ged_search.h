@@ -244,6 +244,8 @@ public:
     return in.substitute(v, j) + anchored_substitution(v, j);
   }
 
+  bool is_open_in_b(std::size_t j) const { return open_b_.test(0, j); }
+
   void map(std::size_t v, int w) { update(v, w, true); }
   void unmap(std::size_t v, int w) { update(v, w, false); }
 
