@@ -25,6 +25,18 @@
 /// `upper` bracket the graph edit distance and whose `mapping` costs `upper`
 /// (deformseg::ged::edit_cost).
 ///
+/// Models:
+/// - deformseg::ged::Exact_ged: the exact distance by depth-first branch and bound
+///   (`exact == true`), or, when its node or time limit is hit, the best mapping found and a
+///   proven lower bound (`exact == false`, `lower < upper`).
+/// - deformseg::ged::Bipartite_ged: Riesen & Bunke's assignment approximation, an upper bound
+///   (`lower == 0`).
+/// - deformseg::ged::Assignment_lower_bound: a lower bound only (`upper` is +infinity, `mapping`
+///   empty), admissible for every cost model.
+///
+/// Any model plugs into deformseg::ged::ged_matrix and deformseg::ged::ged_matrix_results, the
+/// pairwise matrix of a set of graphs.
+///
 /// \par A type that is not a model
 /// is rejected at compile time: `static_assert(deformseg::ged::GedPolicy<P, G, C>)` names the
 /// first requirement it misses.

@@ -54,5 +54,7 @@ void add_synth_command(CLI::App& app);
 void add_strain_command(CLI::App& app);
 void add_temporal_command(CLI::App& app);
 void add_spatiotemporal_command(CLI::App& app);
+void add_ged_command(CLI::App& app);
+void add_ged_matrix_command(CLI::App& app);
 
 }  // namespace deformseg::tool

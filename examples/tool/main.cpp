@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
   deformseg::tool::add_strain_command(app);
   deformseg::tool::add_temporal_command(app);
   deformseg::tool::add_spatiotemporal_command(app);
+  deformseg::tool::add_ged_command(app);
+  deformseg::tool::add_ged_matrix_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,156 @@
+// deformseg ged A B and deformseg ged-matrix FILE...: graph edit distances between the user's
+// labelled graphs (Graphviz DOT or GraphML, nodes with a `label` attribute).
+#include "command.h"
+
+#include <deformseg/ged/exact_ged.h>
+#include <deformseg/ged/ged_matrix.h>
+#include <deformseg/ged/lower_bound.h>
+#include <deformseg/internal/file_io.h>
+#include <deformseg/io/read_graph.h>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+
+namespace deformseg::tool {
+namespace {
+
+struct Ged_method_options {
+  std::string method = "exact";
+  std::size_t max_expanded = ged::Exact_ged{}.max_expanded;
+  double max_seconds = 0;
+};
+
+struct Ged_command_options {
+  std::string a, b;
+  Ged_method_options method;
+  std::string json = "-";
+};
+
+struct Ged_matrix_command_options {
+  std::vector<std::string> files;
+  Ged_method_options method;
+  int threads = 0;
+  std::string json;
+  std::string csv;
+};
+
+void add_method_options(CLI::App& command, Ged_method_options& o) {
+  command.add_option("--method", o.method,
+                     "exact: branch and bound, exact unless --max-expanded is hit (default); bipartite: "
+                     "Riesen & Bunke's assignment approximation, an upper bound; lower: an assignment "
+                     "lower bound")
+      ->check(CLI::IsMember({"exact", "bipartite", "lower"}));
+  command.add_option("--max-expanded", o.max_expanded,
+                     "exact: the most partial mappings expanded before reporting bounds. Default: " +
+                         std::to_string(o.max_expanded));
+  command.add_option("--max-seconds", o.max_seconds, "exact: a time limit per pair in seconds (0: none, the default)")
+      ->check(CLI::NonNegativeNumber);
+}
+
+// Runs the policy the options name on a pair.
+template <class Work>
+auto with_policy(const Ged_method_options& o, const Work& work) {
+  if (o.method == "bipartite") return work(ged::Bipartite_ged{});
+  if (o.method == "lower") return work(ged::Assignment_lower_bound{});
+  return work(ged::Exact_ged{.max_expanded = o.max_expanded, .max_seconds = o.max_seconds});
+}
+
+nlohmann::json number_or_null(double value) { return std::isinf(value) ? nlohmann::json(nullptr) : nlohmann::json(value); }
+
+io::Labelled_graph read_graph(const std::string& path) {
+  progress("reading " + path);
+  return io::read_labelled_graph(path);
+}
+
+void run_ged(const Ged_command_options& o) {
+  const io::Labelled_graph a = read_graph(o.a), b = read_graph(o.b);
+  const ged::Ged_result r = with_policy(o.method, [&](const auto& policy) { return policy(a, b, ged::Unit_costs{}); });
+  nlohmann::json mapping = nlohmann::json::array();
+  for (std::size_t i = 0; i < r.mapping.size(); ++i) mapping.push_back({i, r.mapping[i]});
+  const nlohmann::json document = {{"a", o.a}, {"b", o.b}, {"nodes", {boost::num_vertices(a), boost::num_vertices(b)}},
+                                   {"method", o.method.method}, {"distance", r.distance}, {"exact", r.exact},
+                                   {"lower", r.lower}, {"upper", number_or_null(r.upper)}, {"mapping", mapping}};
+  write_json(document, o.json);
+}
+
+nlohmann::json rows_of(const Eigen::MatrixXd& m) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (Eigen::Index j = 0; j < m.cols(); ++j) row.push_back(number_or_null(m(i, j)));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+void write_csv(const Eigen::MatrixXd& d, const std::string& path) {
+  std::string text;
+  for (Eigen::Index i = 0; i < d.rows(); ++i) {
+    for (Eigen::Index j = 0; j < d.cols(); ++j) {
+      if (j > 0) text += ',';
+      internal::append_shortest(text, d(i, j));
+    }
+    text += '\n';
+  }
+  if (path == "-") {
+    std::cout << text;
+    return;
+  }
+  progress("writing the distance matrix to " + path);
+  internal::Streamed_file file(path);
+  file.write(text);
+  file.close();
+}
+
+void run_ged_matrix(const Ged_matrix_command_options& o) {
+  std::vector<io::Labelled_graph> graphs;
+  for (const std::string& file : o.files) graphs.push_back(read_graph(file));
+  const std::size_t pairs = graphs.size() * (graphs.size() - 1) / 2;
+  progress("comparing " + std::to_string(pairs) + " pairs of graphs");
+  const std::size_t step = std::max<std::size_t>(1, pairs / 10);
+  const ged::Ged_matrix_options options{.threads = o.threads, .on_pair = [step](std::size_t done, std::size_t total) {
+    if (done % step == 0 || done == total) progress(std::to_string(done) + " of " + std::to_string(total) + " pairs");
+    return true;
+  }};
+  const ged::Ged_matrix_result r = with_policy(
+      o.method, [&](const auto& policy) { return ged::ged_matrix_results(graphs, policy, ged::Unit_costs{}, options); });
+  if (!o.csv.empty()) write_csv(r.distance, o.csv);
+  if (!o.csv.empty() && o.json.empty()) return;
+  const nlohmann::json document = {{"files", o.files}, {"method", o.method.method}, {"exact", r.exact},
+                                   {"distance", rows_of(r.distance)}, {"lower", rows_of(r.lower)},
+                                   {"upper", rows_of(r.upper)}};
+  write_json(document, o.json.empty() ? "-" : o.json);
+}
+
+}  // namespace
+
+void add_ged_command(CLI::App& app) {
+  auto options = std::make_shared<Ged_command_options>();
+  CLI::App* command = app.add_subcommand(
+      "ged", "Graph edit distance between two labelled graphs (Graphviz DOT or GraphML, each node with a "
+             "'label' attribute; unit costs), as JSON: distance, exact, lower, upper, mapping [[i, j], ...] "
+             "(j = -1: node i deleted)");
+  command->add_option("a", options->a, "The first graph (.dot, .gv, .graphml)")->required();
+  command->add_option("b", options->b, "The second graph")->required();
+  add_method_options(*command, options->method);
+  command->add_option("--json", options->json, "Write the JSON to FILE ('-': standard output, the default)");
+  command->callback([options] { run_ged(*options); });
+}
+
+void add_ged_matrix_command(CLI::App& app) {
+  auto options = std::make_shared<Ged_matrix_command_options>();
+  CLI::App* command = app.add_subcommand(
+      "ged-matrix", "Graph edit distances between every two of the labelled graphs given, in parallel: a "
+                    "symmetric matrix, pair i < j computed as i -> j");
+  command->add_option("files", options->files, "The graphs (.dot, .gv, .graphml)")->required();
+  add_method_options(*command, options->method);
+  command->add_option("--threads", options->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_option("--csv", options->csv, "Write the distance matrix as CSV to FILE ('-': standard output)");
+  command->add_option("--json", options->json,
+                      "Write distances and bounds as JSON to FILE ('-': standard output, the default "
+                      "without --csv)");
+  command->callback([options] { run_ged_matrix(*options); });
+}
+
+}  // namespace deformseg::tool
