@@ -65,6 +65,9 @@ public:
   /// @brief 0 when `a[i] == b[j]`, else 1.
   /// @pre `i < a.size()`, `j < b.size()` (not checked: this is the inner loop).
   double operator()(std::size_t i, std::size_t j) const { return a_[i] == b_[j] ? 0.0 : 1.0; }
+  /// @brief Its values are 0 or 1, so the policies need not check them. (A dissimilarity of one's
+  /// own may declare the same to skip the checks.)
+  static constexpr bool values_are_valid = true;
 
 private:
   std::span<const LabelA> a_;

@@ -23,8 +23,10 @@ namespace internal {
 
 inline constexpr double dtw_unreachable = std::numeric_limits<double>::infinity();
 
-// Trace byte of a cell: the predecessor of its cheapest path.
-inline constexpr std::uint8_t dtw_diagonal = 0, dtw_up = 1, dtw_left = 2;
+// Trace byte of a cell, the predecessor of its cheapest path, as two bits set without branches
+// (the choice is data, branches on it mispredict): bit 0 when up beat the diagonal, bit 1 when
+// left beat both. So: left when bit 1, else up when bit 0, else the diagonal.
+inline constexpr std::uint8_t dtw_up_bit = 1, dtw_left_bit = 2;
 
 // Where warping paths may start and end on a rows x cols grid. Rows are the outer loop.
 struct Dtw_ends {
@@ -76,20 +78,18 @@ private:
 template <bool Trace>
 struct Dtw_row {
   const double* cost = nullptr;  // cost[j - 1]: d of cell j
-  std::uint8_t* trace = nullptr;
+  Trace_byte* trace = nullptr;
   double diagonal = dtw_unreachable, left = dtw_unreachable;
 
   // Cell j (1-based column): at[j] holds the row above's cumulative cost there and gets this
   // row's. On ties the diagonal is preferred, then up, then left.
   void step(std::size_t j, double* at) {
     const double up = at[j];
-    double best = diagonal;
-    std::uint8_t from = dtw_diagonal;
-    from = up < best ? dtw_up : from;
-    best = std::min(best, up);
-    from = left < best ? dtw_left : from;
+    const bool up_wins = up < diagonal;
+    double best = std::min(diagonal, up);
+    const bool left_wins = left < best;
     best = std::min(best, left);
-    if constexpr (Trace) trace[j - 1] = from;
+    if constexpr (Trace) trace[j - 1] = Trace_byte(unsigned(up_wins) | unsigned(left_wins) << 1);
     diagonal = up;
     at[j] = left = best + cost[j - 1];
   }
@@ -104,7 +104,7 @@ struct Dtw_pass {
   const D& d;
   const Band& band;
   Dtw_ends ends;
-  std::uint8_t* trace;
+  Trace_byte* trace;
   const char* who;
 
   // The cost of the best path and the cell where it ends (0-based).
@@ -167,14 +167,15 @@ struct Dtw_pass {
 // The pairs of the path ending at (i, j), followed back through the trace bytes until it leaves
 // the grid (through the virtual cell before (0, 0), or a free start).
 inline std::vector<std::pair<std::size_t, std::size_t>> dtw_traceback(std::size_t i, std::size_t j, std::size_t cols,
-                                                                       const std::vector<std::uint8_t>& trace) {
+                                                                       const Trace_byte* trace) {
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (;;) {
     pairs.emplace_back(i, j);
-    const std::uint8_t from = trace[i * cols + j];
-    if ((from != dtw_left && i == 0) || (from != dtw_up && j == 0)) break;
-    if (from != dtw_left) --i;
-    if (from != dtw_up) --j;
+    const auto from = std::uint8_t(trace[i * cols + j]);
+    const bool left = from & dtw_left_bit, up = !left && (from & dtw_up_bit);
+    if ((!left && i == 0) || (!up && j == 0)) break;
+    if (!left) --i;
+    if (!up) --j;
   }
   std::reverse(pairs.begin(), pairs.end());
   return pairs;
@@ -183,9 +184,9 @@ inline std::vector<std::pair<std::size_t, std::size_t>> dtw_traceback(std::size_
 template <class D>
 Alignment dtw_align(std::size_t rows, std::size_t cols, const D& d, const Band& band, Dtw_ends ends,
                     const char* who) {
-  std::vector<std::uint8_t> trace = trace_matrix(rows, cols, who);
-  const auto end = Dtw_pass<true, D>{rows, cols, d, band, ends, trace.data(), who}.run();
-  return {end.cost, dtw_traceback(end.row, end.col, cols, trace)};
+  const auto trace = trace_matrix(rows, cols, who);
+  const auto end = Dtw_pass<true, D>{rows, cols, d, band, ends, trace.get(), who}.run();
+  return {end.cost, dtw_traceback(end.row, end.col, cols, trace.get())};
 }
 
 template <class D>

@@ -20,10 +20,13 @@ namespace deformseg::alignment {
 
 namespace internal {
 
-// Trace byte of a cell: bits 0-1 where H came from; bit 2 whether the vertical gap state F
-// extended a gap (else it opened one from H above); bit 3 the same for the horizontal state E.
-inline constexpr std::uint8_t sw_stop = 0, sw_diagonal = 1, sw_vertical = 2, sw_horizontal = 3;
-inline constexpr std::uint8_t sw_vertical_extends = 4, sw_horizontal_extends = 8;
+// Trace byte of a cell, set without branches (the choices are data, branches on them
+// mispredict). Where H came from: bit 0 when the diagonal beat 0, bit 1 when the vertical gap beat
+// both, bit 2 when the horizontal gap beat all three; so the highest bit set tells, none meaning
+// a fresh start. Bit 3 when the vertical gap state F extended a gap (else it opened one from H
+// above), bit 4 the same for the horizontal state E.
+inline constexpr std::uint8_t sw_diagonal_bit = 1, sw_vertical_bit = 2, sw_horizontal_bit = 4;
+inline constexpr std::uint8_t sw_vertical_extends = 8, sw_horizontal_extends = 16;
 
 struct Sw_scores {
   double match, spread, open, extend;  // substitution = match - spread * d
@@ -39,7 +42,7 @@ struct Sw_end {
 template <bool Affine, bool Trace>
 struct Sw_row {
   const double* substitution = nullptr;  // substitution[j - 1]: score of cell j
-  std::uint8_t* trace = nullptr;         // this row's trace bytes, when Trace
+  Trace_byte* trace = nullptr;         // this row's trace bytes, when Trace
   double diagonal = 0, left = 0, horizontal_gap = -std::numeric_limits<double>::infinity();
   double best = 0;
   std::size_t best_col = 0;
@@ -50,7 +53,7 @@ struct Sw_row {
   void step(std::size_t j, double* h, double* vertical_gap, const Sw_scores& sc) {
     const double up = h[j];
     double vertical = up - sc.open, horizontal = left - sc.open;
-    std::uint8_t gap_bits = 0;
+    unsigned gap_bits = 0;
     if constexpr (Affine) {
       const double vertical_extended = vertical_gap[j] - sc.extend;
       gap_bits |= vertical_extended > vertical ? sw_vertical_extends : 0;
@@ -62,13 +65,13 @@ struct Sw_row {
       horizontal_gap = horizontal;
     }
     double v = diagonal + substitution[j - 1];
-    std::uint8_t from = v > 0.0 ? sw_diagonal : sw_stop;
+    const unsigned diagonal_wins = v > 0.0;
     v = std::max(v, 0.0);
-    from = vertical > v ? sw_vertical : from;
+    const unsigned vertical_wins = vertical > v;
     v = std::max(v, vertical);
-    from = horizontal > v ? sw_horizontal : from;
+    const unsigned horizontal_wins = horizontal > v;
     v = std::max(v, horizontal);
-    if constexpr (Trace) trace[j - 1] = std::uint8_t(from | gap_bits);
+    if constexpr (Trace) trace[j - 1] = Trace_byte(diagonal_wins | vertical_wins << 1 | horizontal_wins << 2 | gap_bits);
     diagonal = up;
     h[j] = left = v;
     if (v > best) {
@@ -80,8 +83,8 @@ struct Sw_row {
 
 // K consecutive rows from `first` (1-based), walked together (walk_skewed).
 template <std::size_t K, bool Affine, bool Trace, class D>
-void sw_rows(std::size_t first, std::size_t cols, const D& d, const Sw_scores& sc, double* h, double* vertical_gap,
-             double* substitution, std::uint8_t* trace, Sw_end& end) {
+void sw_rows(std::size_t first, std::size_t cols, const D& d, const Sw_scores sc, double* h, double* vertical_gap,
+             double* substitution, Trace_byte* trace, Sw_end& end) {
   std::array<Sw_row<Affine, Trace>, K> rows;
   for_each_index<K>([&](auto k) {
     double* s = substitution + k * cols;
@@ -99,7 +102,7 @@ void sw_rows(std::size_t first, std::size_t cols, const D& d, const Sw_scores& s
 // The whole rows x cols grid, rows outer, four rows at a time: the best local score and where it
 // ends (the first best cell in row-major order), and the trace bytes when Trace.
 template <bool Affine, bool Trace, class D>
-Sw_end sw_pass(std::size_t rows, std::size_t cols, const D& d, const Sw_scores& sc, std::uint8_t* trace) {
+Sw_end sw_pass(std::size_t rows, std::size_t cols, const D& d, const Sw_scores& sc, Trace_byte* trace) {
   constexpr std::size_t band = 4;
   require_row_length(cols, "Smith_waterman");
   std::vector<double> h(cols + 1, 0.0), substitution(band * cols);
@@ -116,12 +119,12 @@ Sw_end sw_pass(std::size_t rows, std::size_t cols, const D& d, const Sw_scores& 
 // The pairs of the alignment ending at `end`, followed back through the trace bytes until a cell
 // that started afresh (score 0).
 inline std::vector<std::pair<std::size_t, std::size_t>> sw_traceback(const Sw_end& end, std::size_t cols,
-                                                                      const std::vector<std::uint8_t>& trace) {
+                                                                      const Trace_byte* trace) {
   enum class State { h, vertical, horizontal } state = State::h;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   std::size_t i = end.row, j = end.col;
   while (i > 0 && j > 0) {
-    const std::uint8_t t = trace[(i - 1) * cols + (j - 1)];
+    const auto t = std::uint8_t(trace[(i - 1) * cols + (j - 1)]);
     if (state == State::vertical) {
       state = t & sw_vertical_extends ? State::vertical : State::h;
       --i;
@@ -129,15 +132,17 @@ inline std::vector<std::pair<std::size_t, std::size_t>> sw_traceback(const Sw_en
       state = t & sw_horizontal_extends ? State::horizontal : State::h;
       --j;
     } else {
-      const std::uint8_t from = t & 3;
-      if (from == sw_stop) break;
-      if (from == sw_diagonal) {
+      if (t & sw_horizontal_bit) {
+        state = State::horizontal;
+      } else if (t & sw_vertical_bit) {
+        state = State::vertical;
+      } else if (t & sw_diagonal_bit) {
         pairs.emplace_back(i - 1, j - 1);
         --i;
         --j;
+      } else {
+        break;  // a fresh start
       }
-      if (from == sw_vertical) state = State::vertical;
-      if (from == sw_horizontal) state = State::horizontal;
     }
   }
   std::reverse(pairs.begin(), pairs.end());
@@ -185,10 +190,10 @@ struct Smith_waterman {
   template <Dissimilarity D>
   Alignment align(std::size_t n, std::size_t m, const D& d) const {
     const internal::Sw_scores sc = checked_scores();
-    std::vector<std::uint8_t> trace = internal::trace_matrix(n, m, "Smith_waterman");
-    const internal::Sw_end end = affine() ? internal::sw_pass<true, true>(n, m, d, sc, trace.data())
-                                          : internal::sw_pass<false, true>(n, m, d, sc, trace.data());
-    return {end.score, internal::sw_traceback(end, m, trace)};
+    const auto trace = internal::trace_matrix(n, m, "Smith_waterman");
+    const internal::Sw_end end = affine() ? internal::sw_pass<true, true>(n, m, d, sc, trace.get())
+                                          : internal::sw_pass<false, true>(n, m, d, sc, trace.get());
+    return {end.score, internal::sw_traceback(end, m, trace.get())};
   }
 
   /// @brief The score of `align(n, m, d)` alone, computed over the shorter sequence's length.
