@@ -100,8 +100,8 @@ TEST_CASE("Dtw: equals the brute force over all warping paths, with and without 
     const std::optional<std::size_t> window =
         trial % 3 == 0 ? std::nullopt : std::optional<std::size_t>(random() % 4);
     const std::size_t w = window.value_or(1000);
-    const double expected =
-        deformseg::test::brute_force_warping(d, 0, m - 1, [&](std::size_t i, std::size_t j) { return in_band(i, j, n, m, w); });
+    const double expected = deformseg::test::brute_force_warping(
+        d, 0, m - 1, [&](std::size_t i, std::size_t j) { return in_band(i, j, n, m, w); });
     INFO("trial " << trial << ", " << n << " x " << m << ", window " << w);
     const Dtw dtw{.window = window};
     if (std::isinf(expected)) {  // the band does not connect the corners
@@ -137,7 +137,8 @@ TEST_CASE("Dtw: a negative dissimilarity is an error naming the cell", "[alignme
   Eigen::MatrixXd d = Eigen::MatrixXd::Ones(3, 3);
   d(2, 0) = -1;
   CHECK_THROWS_WITH(Dtw{}.align(3, 3, deformseg::alignment::matrix_dissimilarity(d)), Catch::Contains("d(2, 0)"));
-  CHECK_THROWS_AS(Dtw{.window = 2}.score(3, 3, deformseg::alignment::matrix_dissimilarity(d)), deformseg::invalid_input);
+  CHECK_THROWS_AS(Dtw{.window = 2}.score(3, 3, deformseg::alignment::matrix_dissimilarity(d)),
+                  deformseg::invalid_input);
   // Outside the window, d is not read.
   CHECK(Dtw{.window = 1}.score(3, 3, deformseg::alignment::matrix_dissimilarity(d)) == 3);
 }

@@ -170,7 +170,8 @@ TEST_CASE("Smith_waterman: score alone equals align on long sequences either way
   std::vector<int> a(300), b(517);
   for (auto& x : a) x = int(random() % 4);
   for (auto& x : b) x = int(random() % 4);
-  for (const Smith_waterman& p : {Smith_waterman{}, Smith_waterman{.mismatch = -0.5, .gap_open = 2, .gap_extend = 0.25}}) {
+  const Smith_waterman affine{.mismatch = -0.5, .gap_open = 2, .gap_extend = 0.25};
+  for (const Smith_waterman& p : {Smith_waterman{}, affine}) {
     const Alignment ab = deformseg::alignment::align(a, b, p), ba = deformseg::alignment::align(b, a, p);
     CHECK(ab.score == ba.score);
     CHECK(p.score(a.size(), b.size(), deformseg::alignment::label_mismatch(a, b)) == ab.score);

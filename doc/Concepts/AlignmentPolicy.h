@@ -10,7 +10,10 @@
 /// `>= 0`, typically in [0, 1]: deformseg::alignment::label_mismatch gives 0 for equal labels and
 /// 1 for different ones; deformseg::alignment::matrix_dissimilarity reads a precomputed `n x m`
 /// matrix (distances between frames or between cluster medoids). The library's policies throw
-/// deformseg::invalid_input, naming the cell, for a value that is negative, NaN or infinite.
+/// deformseg::invalid_input, naming the cell, for a value that is negative, NaN or infinite,
+/// unless the dissimilarity declares `static constexpr bool values_are_valid = true` (as
+/// deformseg::alignment::Label_mismatch does). They read `d` one row `i` at a time, in order of
+/// `j`, into a contiguous buffer, so `d` may be a lambda computing a distance on the fly.
 ///
 /// A type `P` is a model when it is copyable and, for `const P& p`, `std::size_t n, m` and a
 /// dissimilarity `d`:

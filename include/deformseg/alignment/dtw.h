@@ -97,7 +97,8 @@ struct Dtw_row {
 
 // The cumulative costs of a rows x cols grid, rows outer: `at[1 + j]` ends as the last row's, and
 // `end` is told each row's cost at the last column (on_last_col ends). The trace bytes when Trace.
-// Without a band, four rows at a time (walk_skewed); with one, a row at a time over its columns.
+// Without a band, `rows_at_once` rows at a time (walk_skewed); with one, a row at a time over its
+// columns.
 template <bool Trace, class D>
 struct Dtw_pass {
   std::size_t rows, cols;
@@ -116,14 +117,15 @@ struct Dtw_pass {
   Result run() const {
     require_row_length(cols, who);
     const double start = ends.start_on_first_row ? 0.0 : dtw_unreachable;
-    std::vector<double> at(cols + 1, start), cost(4 * cols);
+    std::vector<double> at(cols + 1, start), cost(rows_at_once * cols);
     at[0] = 0;  // the virtual cell before (0, 0)
     Result best;
     std::size_t i = 0;
     if (band.windowed()) {
       for (; i < rows; ++i) banded_row(i, at.data(), cost.data());
     } else {
-      for (; i + 4 <= rows; i += 4) rows_together<4>(i, at.data(), cost.data(), best);
+      for (; i + rows_at_once <= rows; i += rows_at_once)
+        rows_together<rows_at_once>(i, at.data(), cost.data(), best);
       for (; i < rows; ++i) rows_together<1>(i, at.data(), cost.data(), best);
     }
     if (ends.end == Dtw_ends::End::corner) return {at[cols], rows - 1, cols - 1};

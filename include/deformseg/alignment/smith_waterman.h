@@ -42,7 +42,7 @@ struct Sw_end {
 template <bool Affine, bool Trace>
 struct Sw_row {
   const double* substitution = nullptr;  // substitution[j - 1]: score of cell j
-  Trace_byte* trace = nullptr;         // this row's trace bytes, when Trace
+  Trace_byte* trace = nullptr;           // this row's trace bytes, when Trace
   double diagonal = 0, left = 0, horizontal_gap = -std::numeric_limits<double>::infinity();
   double best = 0;
   std::size_t best_col = 0;
@@ -71,7 +71,8 @@ struct Sw_row {
     v = std::max(v, vertical);
     const unsigned horizontal_wins = horizontal > v;
     v = std::max(v, horizontal);
-    if constexpr (Trace) trace[j - 1] = Trace_byte(diagonal_wins | vertical_wins << 1 | horizontal_wins << 2 | gap_bits);
+    if constexpr (Trace)
+      trace[j - 1] = Trace_byte(diagonal_wins | vertical_wins << 1 | horizontal_wins << 2 | gap_bits);
     diagonal = up;
     h[j] = left = v;
     if (v > best) {
@@ -99,20 +100,19 @@ void sw_rows(std::size_t first, std::size_t cols, const D& d, const Sw_scores sc
   });
 }
 
-// The whole rows x cols grid, rows outer, four rows at a time: the best local score and where it
-// ends (the first best cell in row-major order), and the trace bytes when Trace.
+// The whole rows x cols grid, rows outer, `rows_at_once` rows at a time: the best local score and
+// where it ends (the first best cell in row-major order), and the trace bytes when Trace.
 template <bool Affine, bool Trace, class D>
 Sw_end sw_pass(std::size_t rows, std::size_t cols, const D& d, const Sw_scores& sc, Trace_byte* trace) {
-  constexpr std::size_t band = 4;
   require_row_length(cols, "Smith_waterman");
-  std::vector<double> h(cols + 1, 0.0), substitution(band * cols);
+  std::vector<double> h(cols + 1, 0.0), substitution(rows_at_once * cols);
   std::vector<double> vertical_gap(Affine ? cols + 1 : 0, -std::numeric_limits<double>::infinity());
   Sw_end end;
   std::size_t i = 1;
-  for (; i + band <= rows + 1; i += band)
-    sw_rows<band, Affine, Trace>(i, cols, d, sc, h.data(), vertical_gap.data(), substitution.data(), trace, end);
-  for (; i <= rows; ++i)
-    sw_rows<1, Affine, Trace>(i, cols, d, sc, h.data(), vertical_gap.data(), substitution.data(), trace, end);
+  double* const gap = vertical_gap.data();
+  for (; i + rows_at_once <= rows + 1; i += rows_at_once)
+    sw_rows<rows_at_once, Affine, Trace>(i, cols, d, sc, h.data(), gap, substitution.data(), trace, end);
+  for (; i <= rows; ++i) sw_rows<1, Affine, Trace>(i, cols, d, sc, h.data(), gap, substitution.data(), trace, end);
   return end;
 }
 

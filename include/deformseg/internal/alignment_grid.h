@@ -58,6 +58,10 @@ template <std::size_t K, class F>
       std::make_index_sequence<K>{});
 }
 
+// How many rows the passes walk together: enough chains to hide the latency of one (a few
+// dependent additions and maxima per cell); 8 gained nothing here.
+inline constexpr std::size_t rows_at_once = 4;
+
 // Walks K consecutive rows of a grid together as a skewed band: at step j, row k is at column
 // j - k (columns 1-based, 1..cols), so row k reads what row k - 1 wrote at the step before and the
 // K dependency chains along the rows overlap in the processor. visit(row, k, column) does one
