@@ -13,7 +13,7 @@ namespace {
 
 using deformseg::alignment::Alignment;
 using deformseg::alignment::Dtw;
-using deformseg::test::Pairs;
+using deformseg::alignment_test::Pairs;
 
 Eigen::MatrixXd absolute_differences(const std::vector<double>& x, const std::vector<double>& y) {
   Eigen::MatrixXd d(static_cast<Eigen::Index>(x.size()), static_cast<Eigen::Index>(y.size()));
@@ -22,10 +22,11 @@ Eigen::MatrixXd absolute_differences(const std::vector<double>& x, const std::ve
   return d;
 }
 
-// The Sakoe–Chiba band as documented: |i (m - 1) - j (n - 1)| <= w max(n - 1, m - 1).
+// The Sakoe–Chiba band as documented: |i (m - 1) - j (n - 1)| <= w min(n - 1, m - 1):
+// within w cells, counted along the longer sequence, of the line from corner to corner.
 bool in_band(std::size_t i, std::size_t j, std::size_t n, std::size_t m, std::size_t w) {
   const long long along = (long long)(i * (m - 1)) - (long long)(j * (n - 1));
-  return std::llabs(along) <= (long long)(w * std::max(n - 1, m - 1));
+  return std::llabs(along) <= (long long)(w * std::min(n - 1, m - 1));
 }
 
 }  // namespace
@@ -74,7 +75,9 @@ TEST_CASE("Dtw: a window too narrow to connect the corners is an error naming th
       ++narrowest;
     }
   }
-  REQUIRE(narrowest > 0);
+  // By hand: with w = 4 row 0 keeps the columns with |2 j| <= 8, 0 to 4, and row 1 those with
+  // |19 - 2 j| <= 8, 6 to 13, which do not touch; with w = 5, 0 to 5 and 5 to 14 do.
+  CHECK(narrowest == 5);
   CHECK_THROWS_WITH(deformseg::alignment::align(a, b, Dtw{.window = narrowest - 1}),
                     Catch::Contains("narrowest that does is " + std::to_string(narrowest)));
   CHECK_THROWS_AS(Dtw{.window = narrowest - 1}.score(a.size(), b.size(), deformseg::alignment::label_mismatch(a, b)),
@@ -95,12 +98,12 @@ TEST_CASE("Dtw: equals the brute force over all warping paths, with and without 
   std::mt19937 random(11);
   for (int trial = 0; trial < 400; ++trial) {
     const std::size_t n = 1 + random() % 6, m = 1 + random() % 6;
-    const Eigen::MatrixXd d = deformseg::test::random_dissimilarities(n, m, trial, random);
+    const Eigen::MatrixXd d = deformseg::alignment_test::random_dissimilarities(n, m, trial, random);
     const auto dis = deformseg::alignment::matrix_dissimilarity(d);
     const std::optional<std::size_t> window =
         trial % 3 == 0 ? std::nullopt : std::optional<std::size_t>(random() % 4);
     const std::size_t w = window.value_or(1000);
-    const double expected = deformseg::test::brute_force_warping(
+    const double expected = deformseg::alignment_test::brute_force_warping(
         d, 0, m - 1, [&](std::size_t i, std::size_t j) { return in_band(i, j, n, m, w); });
     INFO("trial " << trial << ", " << n << " x " << m << ", window " << w);
     const Dtw dtw{.window = window};
@@ -111,7 +114,7 @@ TEST_CASE("Dtw: equals the brute force over all warping paths, with and without 
     }
     const Alignment result = dtw.align(n, m, dis);
     CHECK(result.score == Approx(expected).margin(1e-12));
-    CHECK(deformseg::test::check_warping_path(result.pairs, d, 0, m - 1) == Approx(result.score).margin(1e-12));
+    CHECK(deformseg::alignment_test::check_warping_path(result.pairs, d, 0, m - 1) == Approx(result.score).margin(1e-12));
     for (const auto& [i, j] : result.pairs) CHECK(in_band(i, j, n, m, w));
     CHECK(dtw.score(n, m, dis) == result.score);
   }
@@ -120,12 +123,12 @@ TEST_CASE("Dtw: equals the brute force over all warping paths, with and without 
 TEST_CASE("Dtw: score alone equals align on long sequences, four rows at a time or banded", "[alignment]") {
   std::mt19937 random(5);
   for (const auto& [n, m] : {std::pair<std::size_t, std::size_t>{203, 150}, {150, 203}, {7, 300}, {301, 2}}) {
-    const Eigen::MatrixXd d = deformseg::test::random_dissimilarities(n, m, 1, random);
+    const Eigen::MatrixXd d = deformseg::alignment_test::random_dissimilarities(n, m, 1, random);
     const auto dis = deformseg::alignment::matrix_dissimilarity(d);
     for (const std::optional<std::size_t> window : {std::optional<std::size_t>{}, std::optional<std::size_t>{160}}) {
       const Dtw dtw{.window = window};
       const Alignment result = dtw.align(n, m, dis);
-      CHECK(deformseg::test::check_warping_path(result.pairs, d, 0, m - 1) == Approx(result.score));
+      CHECK(deformseg::alignment_test::check_warping_path(result.pairs, d, 0, m - 1) == Approx(result.score));
       CHECK(dtw.score(n, m, dis) == result.score);
       const Eigen::MatrixXd transposed = d.transpose();
       CHECK(dtw.score(m, n, deformseg::alignment::matrix_dissimilarity(transposed)) == result.score);

@@ -13,14 +13,14 @@ namespace {
 using deformseg::alignment::Alignment;
 using deformseg::alignment::Subsequence_dtw;
 using deformseg::alignment::Subsequence_query;
-using deformseg::test::Pairs;
+using deformseg::alignment_test::Pairs;
 
 // The least cost of warping all rows of d onto columns first..last, over every such part.
 double brute_force_subsequence(const Eigen::MatrixXd& d) {
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t first = 0; first < std::size_t(d.cols()); ++first)
     for (std::size_t last = first; last < std::size_t(d.cols()); ++last)
-      best = std::min(best, deformseg::test::brute_force_warping(d, first, last,
+      best = std::min(best, deformseg::alignment_test::brute_force_warping(d, first, last,
                                                                  [](std::size_t, std::size_t) { return true; }));
   return best;
 }
@@ -81,7 +81,7 @@ TEST_CASE("Subsequence_dtw: equals the brute force over all parts and paths", "[
   std::mt19937 random(13);
   for (int trial = 0; trial < 400; ++trial) {
     const std::size_t n = 1 + random() % 5, m = 1 + random() % 7;
-    const Eigen::MatrixXd d = deformseg::test::random_dissimilarities(n, m, trial, random);
+    const Eigen::MatrixXd d = deformseg::alignment_test::random_dissimilarities(n, m, trial, random);
     const auto dis = deformseg::alignment::matrix_dissimilarity(d);
     INFO("trial " << trial << ", " << n << " x " << m);
     for (const Subsequence_query query : {Subsequence_query::first, Subsequence_query::shorter}) {
@@ -95,7 +95,7 @@ TEST_CASE("Subsequence_dtw: equals the brute force over all parts and paths", "[
         for (auto& [i, j] : along_query) std::swap(i, j);
       REQUIRE(!along_query.empty());
       const double sum =
-          deformseg::test::check_warping_path(along_query, q, along_query.front().second, along_query.back().second);
+          deformseg::alignment_test::check_warping_path(along_query, q, along_query.front().second, along_query.back().second);
       CHECK(sum == Approx(result.score).margin(1e-12));
       CHECK(policy.score(n, m, dis) == result.score);
     }
@@ -105,7 +105,7 @@ TEST_CASE("Subsequence_dtw: equals the brute force over all parts and paths", "[
 TEST_CASE("Subsequence_dtw: score alone equals align on long sequences", "[alignment]") {
   std::mt19937 random(17);
   for (const auto& [n, m] : {std::pair<std::size_t, std::size_t>{40, 333}, {333, 40}, {101, 101}, {1, 9}, {9, 1}}) {
-    const Eigen::MatrixXd d = deformseg::test::random_dissimilarities(n, m, 1, random);
+    const Eigen::MatrixXd d = deformseg::alignment_test::random_dissimilarities(n, m, 1, random);
     const auto dis = deformseg::alignment::matrix_dissimilarity(d);
     for (const Subsequence_query query : {Subsequence_query::first, Subsequence_query::shorter}) {
       const Subsequence_dtw policy{.query = query};

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-namespace deformseg::test {
+namespace deformseg::alignment_test {
 
 using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;
 
@@ -86,4 +86,4 @@ inline Eigen::MatrixXd random_dissimilarities(std::size_t n, std::size_t m, int 
   return d;
 }
 
-}  // namespace deformseg::test
+}  // namespace deformseg::alignment_test

@@ -37,7 +37,7 @@ struct Dtw_ends {
 };
 
 // The Sakoe–Chiba band of half-width w on a rows x cols grid: the cells with
-// |i (cols - 1) - j (rows - 1)| <= w max(rows - 1, cols - 1), that is within w cells (of the
+// |i (cols - 1) - j (rows - 1)| <= w min(rows - 1, cols - 1), that is within w cells (of the
 // longer sequence) of the straight line from (0, 0) to (rows - 1, cols - 1). Symmetric under
 // transposition. Without a window every cell is in.
 class Band {
@@ -48,7 +48,7 @@ public:
     if (longest >= (std::size_t(1) << 32))
       throw invalid_input("Dtw: a window is supported for sequences of fewer than 2^32 elements");
     windowed_ = true;
-    reach_ = *window * (longest - 1);
+    reach_ = *window * (std::min(rows, cols) - 1);
   }
   bool windowed() const { return windowed_; }
   std::size_t first(std::size_t i) const {  // first column of row i
@@ -208,7 +208,7 @@ double dtw_cost(std::size_t rows, std::size_t cols, const D& d, const Band& band
 /// step that leaves j (an element of B matched again), then one that leaves i.
 ///
 /// `window` (default: none) is a Sakoe–Chiba band of half-width w: only the cells with
-/// `|i (m - 1) - j (n - 1)| <= w max(n - 1, m - 1)` are used, those within w cells (counted along
+/// `|i (m - 1) - j (n - 1)| <= w min(n - 1, m - 1)` are used, those within w cells (counted along
 /// the longer sequence) of the straight line from (0, 0) to (n - 1, m - 1); for n = m, `|i - j|
 /// <= w`. `w = 0` with n = m is the diagonal alone. A window too narrow to connect the two corners
 /// (which happens when w is below about half the ratio of the lengths) is an error whose message
