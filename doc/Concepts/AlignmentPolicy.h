@@ -24,6 +24,9 @@
 /// | `p.score(n, m, d)` | `double` | the same score alone; the library's policies need memory linear in `min(n, m)` |
 /// | `P::higher_is_better` | `constexpr bool` | true when the score is to be maximised, false when it is a cost |
 ///
+/// `align` and `score` are templates over the dissimilarity's type (the concept checks them with
+/// an archetype, a class with only `double operator()(std::size_t, std::size_t) const`).
+///
 /// A caller that normalises scores generically reads `higher_is_better`: Smith–Waterman's score
 /// grows with similarity, the DTW costs shrink.
 ///
