@@ -1,0 +1,267 @@
+/// @file alignment/dtw.h
+/// @brief `Dtw`: dynamic time warping, the global alignment of two sequences of least total
+/// dissimilarity, with an optional Sakoe–Chiba window.
+#pragma once
+
+#include <deformseg/alignment/alignment.h>
+#include <deformseg/exceptions.h>
+#include <deformseg/internal/alignment_grid.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace deformseg::alignment {
+
+namespace internal {
+
+inline constexpr double dtw_unreachable = std::numeric_limits<double>::infinity();
+
+// Trace byte of a cell, the predecessor of its cheapest path, as two bits set without branches
+// (the choice is data, branches on it mispredict): bit 0 when up beat the diagonal, bit 1 when
+// left beat both. So: left when bit 1, else up when bit 0, else the diagonal.
+inline constexpr std::uint8_t dtw_up_bit = 1, dtw_left_bit = 2;
+
+// Where warping paths may start and end on a rows x cols grid. Rows are the outer loop.
+struct Dtw_ends {
+  bool start_on_first_col = false;  // paths may start anywhere in column 0 (else only at (0, 0))
+  bool start_on_first_row = false;  // paths may start anywhere in row 0
+  // Where paths end: the far corner, anywhere in the last row, or anywhere in the last column.
+  enum class End { corner, on_last_row, on_last_col } end = End::corner;
+};
+
+// The Sakoe–Chiba band of half-width w on a rows x cols grid: the cells with
+// |i (cols - 1) - j (rows - 1)| <= w min(rows - 1, cols - 1), that is within w cells (of the
+// longer sequence) of the straight line from (0, 0) to (rows - 1, cols - 1). Symmetric under
+// transposition. Without a window every cell is in.
+class Band {
+public:
+  Band(std::size_t rows, std::size_t cols, std::optional<std::size_t> window) : rows_(rows), cols_(cols) {
+    const std::size_t longest = std::max(rows, cols);
+    if (!window || *window >= longest) return;
+    if (longest >= (std::size_t(1) << 32))
+      throw invalid_input("Dtw: a window is supported for sequences of fewer than 2^32 elements");
+    windowed_ = true;
+    reach_ = *window * (std::min(rows, cols) - 1);
+  }
+  bool windowed() const { return windowed_; }
+  std::size_t first(std::size_t i) const {  // first column of row i
+    if (!windowed_ || rows_ == 1) return 0;
+    const std::size_t along = i * (cols_ - 1);
+    return along <= reach_ ? 0 : (along - reach_ + rows_ - 2) / (rows_ - 1);
+  }
+  std::size_t last(std::size_t i) const {  // last column of row i
+    if (!windowed_ || rows_ == 1) return cols_ - 1;
+    return std::min(cols_ - 1, (i * (cols_ - 1) + reach_) / (rows_ - 1));
+  }
+  // Whether a warping path from (0, 0) to the far corner stays inside: every row's columns meet
+  // or touch the row above's.
+  bool connected() const {
+    for (std::size_t i = 0; i < rows_; ++i)
+      if (first(i) > last(i) || (i > 0 && first(i) > last(i - 1) + 1)) return false;
+    return true;
+  }
+
+private:
+  std::size_t rows_, cols_;
+  bool windowed_ = false;
+  std::size_t reach_ = 0;
+};
+
+// One row as the pass walks along it.
+template <bool Trace>
+struct Dtw_row {
+  const double* cost = nullptr;  // cost[j - 1]: d of cell j
+  Trace_byte* trace = nullptr;
+  double diagonal = dtw_unreachable, left = dtw_unreachable;
+
+  // Cell j (1-based column): at[j] holds the row above's cumulative cost there and gets this
+  // row's. On ties the diagonal is preferred, then up, then left.
+  void step(std::size_t j, double* at) {
+    const double up = at[j];
+    const bool up_wins = up < diagonal;
+    double best = std::min(diagonal, up);
+    const bool left_wins = left < best;
+    best = std::min(best, left);
+    if constexpr (Trace) trace[j - 1] = Trace_byte(unsigned(up_wins) | unsigned(left_wins) << 1);
+    diagonal = up;
+    at[j] = left = best + cost[j - 1];
+  }
+};
+
+// The cumulative costs of a rows x cols grid, rows outer: `at[1 + j]` ends as the last row's, and
+// `end` is told each row's cost at the last column (on_last_col ends). The trace bytes when Trace.
+// Without a band, `rows_at_once` rows at a time (walk_skewed); with one, a row at a time over its
+// columns.
+template <bool Trace, class D>
+struct Dtw_pass {
+  std::size_t rows, cols;
+  const D& d;
+  const Band& band;
+  Dtw_ends ends;
+  Trace_byte* trace;
+  const char* who;
+
+  // The cost of the best path and the cell where it ends (0-based).
+  struct Result {
+    double cost = dtw_unreachable;
+    std::size_t row = 0, col = 0;
+  };
+
+  Result run() const {
+    require_row_length(cols, who);
+    const double start = ends.start_on_first_row ? 0.0 : dtw_unreachable;
+    std::vector<double> at(cols + 1, start), cost(rows_at_once * cols);
+    at[0] = 0;  // the virtual cell before (0, 0)
+    Result best;
+    std::size_t i = 0;
+    if (band.windowed()) {
+      for (; i < rows; ++i) banded_row(i, at.data(), cost.data());
+    } else {
+      for (; i + rows_at_once <= rows; i += rows_at_once)
+        rows_together<rows_at_once>(i, at.data(), cost.data(), best);
+      for (; i < rows; ++i) rows_together<1>(i, at.data(), cost.data(), best);
+    }
+    if (ends.end == Dtw_ends::End::corner) return {at[cols], rows - 1, cols - 1};
+    if (ends.end == Dtw_ends::End::on_last_row) {
+      const auto last = std::min_element(at.begin() + 1, at.end());
+      return {*last, rows - 1, std::size_t(last - at.begin()) - 1};
+    }
+    return best;
+  }
+
+  template <std::size_t K>
+  void rows_together(std::size_t first, double* at, double* cost, Result& best) const {
+    std::array<Dtw_row<Trace>, K> row;
+    const double before_column_0 = ends.start_on_first_col ? 0.0 : dtw_unreachable;
+    for_each_index<K>([&](auto k) {
+      read_row(d, first + k, 0, cols, cost + k * cols, who);
+      row[k].cost = cost + k * cols;
+      if constexpr (Trace) row[k].trace = trace + (first + k) * cols;
+      row[k].diagonal = first + k == 0 ? 0.0 : before_column_0;
+      row[k].left = before_column_0;
+    });
+    walk_skewed(row, cols, [&](auto& r, std::size_t, std::size_t j) { r.step(j, at); });
+    for_each_index<K>([&](auto k) {
+      if (row[k].left < best.cost) best = {row[k].left, first + k, cols - 1};
+    });
+  }
+
+  // Row i over its band only; cells outside the band hold `dtw_unreachable` when read.
+  void banded_row(std::size_t i, double* at, double* cost) const {
+    const std::size_t lo = band.first(i), hi = band.last(i);
+    read_row(d, i, lo, hi - lo + 1, cost + lo, who);
+    Dtw_row<Trace> row;
+    row.cost = cost;
+    if constexpr (Trace) row.trace = trace + i * cols;
+    row.diagonal = at[lo];
+    for (std::size_t j = lo + 1; j <= hi + 1; ++j) row.step(j, at);
+    at[lo] = dtw_unreachable;  // column lo - 1 is outside the band of every later row
+  }
+};
+
+// The pairs of the path ending at (i, j), followed back through the trace bytes until it leaves
+// the grid (through the virtual cell before (0, 0), or a free start).
+inline std::vector<std::pair<std::size_t, std::size_t>> dtw_traceback(std::size_t i, std::size_t j, std::size_t cols,
+                                                                       const Trace_byte* trace) {
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (;;) {
+    pairs.emplace_back(i, j);
+    const auto from = std::uint8_t(trace[i * cols + j]);
+    const bool left = from & dtw_left_bit, up = !left && (from & dtw_up_bit);
+    if ((!left && i == 0) || (!up && j == 0)) break;
+    if (!left) --i;
+    if (!up) --j;
+  }
+  std::reverse(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+template <class D>
+Alignment dtw_align(std::size_t rows, std::size_t cols, const D& d, const Band& band, Dtw_ends ends,
+                    const char* who) {
+  const auto trace = trace_matrix(rows, cols, who);
+  const auto end = Dtw_pass<true, D>{rows, cols, d, band, ends, trace.get(), who}.run();
+  return {end.cost, dtw_traceback(end.row, end.col, cols, trace.get())};
+}
+
+template <class D>
+double dtw_cost(std::size_t rows, std::size_t cols, const D& d, const Band& band, Dtw_ends ends, const char* who) {
+  return Dtw_pass<false, D>{rows, cols, d, band, ends, nullptr, who}.run().cost;
+}
+
+}  // namespace internal
+
+/// @brief Alignment policy (models `AlignmentPolicy`): dynamic time warping, the warping path
+/// from (0, 0) to (n - 1, m - 1), with steps (1, 0), (0, 1) and (1, 1), of least total
+/// dissimilarity `sum of d(i, j)` over its cells. The score is that total cost: lower is better,
+/// the opposite sense of Smith_waterman, as `higher_is_better == false` says.
+///
+/// Every element of both sequences is in at least one pair; `Alignment::pairs` is the path, from
+/// (0, 0) to (n - 1, m - 1). On ties the path is followed back preferring a diagonal step, then a
+/// step that leaves j (an element of B matched again), then one that leaves i.
+///
+/// `window` (default: none) is a Sakoe–Chiba band of half-width w: only the cells with
+/// `|i (m - 1) - j (n - 1)| <= w min(n - 1, m - 1)` are used, those within w cells (counted along
+/// the longer sequence) of the straight line from (0, 0) to (n - 1, m - 1); for n = m, `|i - j|
+/// <= w`. `w = 0` with n = m is the diagonal alone. A window too narrow to connect the two corners
+/// (which happens when w is below about half the ratio of the lengths) is an error whose message
+/// gives the narrowest that does. Outside the window, d is neither read nor checked.
+struct Dtw {
+  std::optional<std::size_t> window{};  ///< Sakoe–Chiba half-width in cells; none by default
+
+  /// @brief The score is a cost, to be minimised.
+  static constexpr bool higher_is_better = false;
+
+  /// @brief The least-cost warping path between A (n elements) and B (m elements) under `d`.
+  /// @param n, m the lengths: both 0 (cost 0, no pairs) or both at least 1.
+  /// @param d the dissimilarity, each value finite and `>= 0`.
+  /// @return its total cost and its pairs, from (0, 0) to (n - 1, m - 1).
+  /// @throws invalid_input when exactly one sequence is empty, when the window does not connect
+  /// the corners, when a value of d is not finite and `>= 0`, or when an n x m byte matrix cannot
+  /// be addressed.
+  /// @par Complexity O(n m) time (O(n w + m w) cells with a window), O(n m) bytes for the
+  /// traceback plus O(m) doubles.
+  template <Dissimilarity D>
+  Alignment align(std::size_t n, std::size_t m, const D& d) const {
+    if (n == 0 && m == 0) return {};
+    const internal::Band band = checked_band(n, m);
+    return internal::dtw_align(n, m, d, band, {}, "Dtw");
+  }
+
+  /// @brief The cost of `align(n, m, d)` alone, computed over the shorter sequence's length.
+  /// @throws invalid_input as `align`, but never for the size of the grid.
+  /// @par Complexity O(n m) time (less with a window), O(min(n, m)) memory.
+  template <Dissimilarity D>
+  double score(std::size_t n, std::size_t m, const D& d) const {
+    if (n == 0 && m == 0) return 0;
+    const internal::Band band = checked_band(n, m);
+    if (m > n) return internal::dtw_cost(m, n, internal::Transposed<D>{d}, internal::Band(m, n, window), {}, "Dtw");
+    return internal::dtw_cost(n, m, d, band, {}, "Dtw");
+  }
+
+private:
+  internal::Band checked_band(std::size_t n, std::size_t m) const {
+    if (n == 0 || m == 0)
+      throw invalid_input("Dtw: cannot warp an empty sequence onto one of " + std::to_string(std::max(n, m)) +
+                          " elements");
+    const internal::Band band(n, m, window);
+    if (band.connected()) return band;
+    std::size_t narrow = *window, wide = std::max(n, m);  // not connected / connected
+    while (wide - narrow > 1) {
+      const std::size_t mid = narrow + (wide - narrow) / 2;
+      (internal::Band(n, m, mid).connected() ? wide : narrow) = mid;
+    }
+    throw invalid_input("Dtw: the window " + std::to_string(*window) + " does not connect (0, 0) to (" +
+                        std::to_string(n - 1) + ", " + std::to_string(m - 1) + "); the narrowest that does is " +
+                        std::to_string(wide));
+  }
+};
+
+}  // namespace deformseg::alignment
