@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <limits>
 #include <random>
 
@@ -28,15 +30,14 @@ double medoid_cost(const Eigen::MatrixXd& d, const std::vector<std::size_t>& med
 // The least cost over all sets of k medoids.
 double brute_force_cost(const Eigen::MatrixXd& d, std::size_t k) {
   const auto n = std::size_t(d.rows());
-  std::vector<char> pick(n, 0);
-  std::fill(pick.begin(), pick.begin() + std::ptrdiff_t(k), char{1});
   double best = std::numeric_limits<double>::infinity();
-  do {
+  for (std::uint32_t set = 0; set < (1u << n); ++set) {  // every subset of the n <= 9 items
+    if (std::size_t(std::popcount(set)) != k) continue;
     std::vector<std::size_t> medoids;
     for (std::size_t i = 0; i < n; ++i)
-      if (pick[i]) medoids.push_back(i);
+      if (set >> i & 1u) medoids.push_back(i);
     best = std::min(best, medoid_cost(d, medoids));
-  } while (std::prev_permutation(pick.begin(), pick.end()));
+  }
   return best;
 }
 

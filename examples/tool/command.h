@@ -56,5 +56,7 @@ void add_temporal_command(CLI::App& app);
 void add_spatiotemporal_command(CLI::App& app);
 void add_ged_command(CLI::App& app);
 void add_ged_matrix_command(CLI::App& app);
+void add_similarity_command(CLI::App& app);
+void add_matrix_command(CLI::App& app);
 
 }  // namespace deformseg::tool

@@ -1,0 +1,34 @@
+/// \page SimilarityPolicyConcept The SimilarityPolicy concept
+///
+/// How two animations are compared into a deformseg::Similarity, in two steps so that a set of N
+/// animations is described N times, not N^2: `describe` computes what the policy compares of one
+/// animation, `compare` compares two such descriptions. deformseg::motion_similarity runs both
+/// for two animations, deformseg::similarity_matrix for every pair of a set. The C++20 concept
+/// deformseg::SimilarityPolicy checks a policy at compile time.
+///
+/// A type `P` is a model for animations of type `Mesh` when it is copyable and, for `const P& p`,
+/// `const Mesh& mesh` and `const typename P::Description& a, b`:
+///
+/// | expression | type | meaning |
+/// |---|---|---|
+/// | `P::Description` | a type | what is kept of one animation |
+/// | `p.describe(mesh)` | `P::Description` | that, for one animation |
+/// | `p.compare(a, b)` | deformseg::Similarity | the value in [0, 1], the raw score, the frame-to-frame alignment, the labels aligned and what was compared |
+///
+/// `compare(a, a)` should give 1, and `compare` should be safe to call from several threads at
+/// once (deformseg::similarity_matrix runs pairs in parallel).
+///
+/// \par Has models
+///
+/// | policy | header | describes an animation by | needs a correspondence |
+/// |---|---|---|---|
+/// | deformseg::Strain_distribution_similarity (the default, deformseg::Default_similarity) | `similarity/strain_distribution_similarity.h` | per-frame histograms of the strain | no |
+/// | deformseg::Evolving_graph_similarity (the thesis') | `similarity/evolving_graph_similarity.h` | its evolving graph and the GEDs of its key frames | no |
+///
+/// Both take an alignment policy (@ref AlignmentPolicyConcept) and a normalisation of its score,
+/// deformseg::Best_score_normalization by default; the thesis' also takes a GED policy and cost
+/// model (@ref GedConcepts; deformseg::Segment_costs by default) and a clustering policy
+/// (@ref ClusteringPolicyConcept).
+///
+/// \par A policy of one's own
+/// @include own_similarity_policy.cpp

@@ -1,0 +1,27 @@
+// The similarity matrix of four animations: two schedules, each on two tubes. Each animation is
+// described once; the pairs run in parallel.
+#include <deformseg/motion_similarity.h>
+#include <deformseg/synthetic.h>
+
+#include <iostream>
+#include <numbers>
+#include <vector>
+
+int main() {
+  using namespace deformseg;
+  const double right = std::numbers::pi / 2;
+  const std::vector<std::vector<Tube_phase>> schedules{
+      {{5, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {5, {}}},
+      {{5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {}}}};
+  const std::vector<Tube_shape> shapes{{}, {.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false}};
+  std::vector<Surface_mesh_animation> animations;
+  for (const auto& schedule : schedules)
+    for (const auto& shape : shapes) {
+      Bending_tube spec;
+      spec.shape = shape;
+      spec.schedule = schedule;
+      animations.push_back(make_bending_tube(spec).animation);
+    }
+  const Eigen::MatrixXd m = similarity_matrix(animations);
+  std::cout << "one bend (thin, thick), two bends (thin, thick):\n" << m << '\n';
+}

@@ -1,0 +1,217 @@
+// deformseg similarity A B and deformseg matrix INPUT...: how alike two animations move, with
+// their frame-to-frame alignment, and the similarity matrix of a set of animations.
+#include "command.h"
+
+#include <deformseg/alignment/dtw.h>
+#include <deformseg/alignment/subsequence_dtw.h>
+#include <deformseg/internal/file_io.h>
+#include <deformseg/motion_similarity.h>
+#include <deformseg/strain_colors.h>
+
+#include <algorithm>
+#include <array>
+#include <iostream>
+#include <memory>
+
+namespace deformseg::tool {
+namespace {
+
+struct Policy_options {
+  std::string policy = "histogram";
+  std::string alignment = "smith-waterman";
+  double threshold = Spatiotemporal_options{}.threshold;
+};
+
+void add_policy_options(CLI::App& command, Policy_options& o) {
+  command.add_option("--policy", o.policy,
+                     "histogram: per-frame histograms of the strain, no correspondence needed (default); "
+                     "graph: the thesis' evolving graphs, GED, clustering and label alignment")
+      ->check(CLI::IsMember({"histogram", "graph"}));
+  command.add_option("--alignment", o.alignment,
+                     "smith-waterman (local, default), dtw (global) or subsequence-dtw (open begin and end)")
+      ->check(CLI::IsMember({"smith-waterman", "dtw", "subsequence-dtw"}));
+  command.add_option("--threshold", o.threshold, "graph: the deformed threshold of the segmentation. Default: 0.5");
+}
+
+// Calls `run` with the similarity policy the options name.
+template <class Run>
+auto with_policy(const Policy_options& o, const Run& run) {
+  const auto with_alignment = [&](auto aligner) {
+    using Aligner = decltype(aligner);
+    if (o.policy == "graph") {
+      Evolving_graph_similarity<ged::Bipartite_ged, Segment_costs, clustering::K_medoids, Aligner> policy;
+      policy.segmentation.threshold = o.threshold;
+      return run(policy);
+    }
+    return run(Strain_distribution_similarity<Aligner>{});
+  };
+  if (o.alignment == "dtw") return with_alignment(alignment::Dtw{});
+  if (o.alignment == "subsequence-dtw") return with_alignment(alignment::Subsequence_dtw{});
+  return with_alignment(alignment::Smith_waterman{});
+}
+
+// ---- deformseg similarity A B ----------------------------------------------------------------
+
+struct Similarity_command_options {
+  Input_options a, b;
+  Policy_options policy;
+  std::string json;
+  std::string png;
+};
+
+// The frame grid of A (rows) and B (columns), scaled up to at least 400 pixels, grey lines every
+// 10 frames, the aligned pairs in red.
+void write_alignment_figure(const Similarity& s, std::size_t frames_a, std::size_t frames_b, const std::string& path) {
+  progress("writing the alignment path to " + path);
+  const std::size_t longer = std::max<std::size_t>(1, std::max(frames_a, frames_b));
+  const int scale = std::max(1, int((400 + longer - 1) / longer));
+  Image image(int(frames_b) * scale, int(frames_a) * scale);
+  const auto on_grid_line = [scale](int pixel) { return pixel % (10 * scale) == 0; };
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (on_grid_line(x) || on_grid_line(y)) image.set(x, y, {210, 210, 210});
+  for (const auto& [i, j] : s.alignment)
+    for (int y = 0; y < scale; ++y)
+      for (int x = 0; x < scale; ++x) image.set(int(j) * scale + x, int(i) * scale + y, {220, 30, 30});
+  write_png(image, path);
+}
+
+void run_similarity(const Similarity_command_options& o) {
+  const Surface_mesh_animation a = read_input(o.a), b = read_input(o.b);
+  progress("comparing " + std::to_string(a.num_frames()) + " and " + std::to_string(b.num_frames()) + " frames");
+  const Similarity s = with_policy(o.policy, [&](const auto& policy) { return motion_similarity(a, b, policy); });
+  if (!o.png.empty()) write_alignment_figure(s, a.num_frames(), b.num_frames(), o.png);
+  nlohmann::json pairs = nlohmann::json::array();
+  for (const auto& [i, j] : s.alignment) pairs.push_back({i, j});
+  const nlohmann::json document = {{"a", o.a.input}, {"b", o.b.input}, {"policy", o.policy.policy},
+                                   {"alignment_policy", o.policy.alignment}, {"similarity", s.value},
+                                   {"score", s.score}, {"labels_a", s.labels_a}, {"labels_b", s.labels_b},
+                                   {"alignment", pairs}, {"compared", s.compared}};
+  if (!o.json.empty()) return write_json(document, o.json);
+  std::cout << "similarity  " << s.value << "\nscore       " << s.score << "\naligned     " << s.alignment.size()
+            << " frame pairs\ncompared    " << s.compared << '\n';
+}
+
+// ---- deformseg matrix INPUT... ---------------------------------------------------------------
+
+struct Matrix_command_options {
+  std::vector<std::string> inputs;
+  std::string topology;
+  int threads = 0;
+  Policy_options policy;
+  std::string csv;
+  std::string json;
+  std::string png;
+};
+
+// Digits 0-9 as 3 x 5 bitmaps, a row of 3 bits each, for the heat map's labels.
+constexpr std::array<std::array<std::uint8_t, 5>, 10> digit_rows{{{7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7},
+                                                                   {7, 1, 7, 1, 7}, {5, 5, 7, 1, 1}, {7, 4, 7, 1, 7},
+                                                                   {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1}, {7, 5, 7, 5, 7},
+                                                                   {7, 5, 7, 1, 7}}};
+
+void draw_number(Image& image, std::size_t number, int x, int y, int pixel) {
+  const std::string text = std::to_string(number);
+  for (std::size_t c = 0; c < text.size(); ++c)
+    for (int row = 0; row < 5; ++row)
+      for (int col = 0; col < 3; ++col)
+        if (digit_rows[std::size_t(text[c] - '0')][std::size_t(row)] & (4 >> col))
+          for (int dy = 0; dy < pixel; ++dy)
+            for (int dx = 0; dx < pixel; ++dx)
+              image.set(x + (int(c) * 4 + col) * pixel + dx, y + row * pixel + dy, {0, 0, 0});
+}
+
+// Cells coloured by viridis from the smallest value (dark) to 1 (yellow), the animations'
+// indices along the top and the left.
+void write_heat_map(const Eigen::MatrixXd& m, const std::string& path) {
+  progress("writing the heat map to " + path);
+  const int n = int(m.rows()), cell = std::max(12, 480 / std::max(1, n)), margin = 40;
+  const double low = m.minCoeff(), span = std::max(1.0 - low, 1e-12);
+  Image image(margin + n * cell, margin + n * cell);
+  for (int i = 0; i < n; ++i) {
+    draw_number(image, std::size_t(i), margin + i * cell + 2, 10, 3);
+    draw_number(image, std::size_t(i), 4, margin + i * cell + 2, 3);
+    for (int j = 0; j < n; ++j)
+      for (int y = 1; y < cell; ++y)
+        for (int x = 1; x < cell; ++x)
+          image.set(margin + j * cell + x, margin + i * cell + y, strain_color((m(i, j) - low) / span));
+  }
+  write_png(image, path);
+}
+
+void write_csv(const Eigen::MatrixXd& m, const std::vector<std::string>& names, const std::string& path) {
+  progress("writing the matrix to " + path);
+  std::string text = "animation";
+  for (const auto& name : names) text += "," + name;
+  text += '\n';
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    text += names[std::size_t(i)];
+    for (Eigen::Index j = 0; j < m.cols(); ++j) {
+      text += ',';
+      internal::append_shortest(text, m(i, j));
+    }
+    text += '\n';
+  }
+  internal::write_file_bytes(path, text);
+}
+
+void run_matrix(const Matrix_command_options& o) {
+  std::vector<Surface_mesh_animation> animations;
+  for (const auto& input : o.inputs)
+    animations.push_back(read_input({.input = input, .topology = o.topology, .triangulate = false, .threads = o.threads}));
+  progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
+  const Eigen::MatrixXd m = with_policy(o.policy, [&](const auto& policy) { return similarity_matrix(animations, policy); });
+  if (!o.csv.empty()) write_csv(m, o.inputs, o.csv);
+  if (!o.png.empty()) write_heat_map(m, o.png);
+  nlohmann::json rows = nlohmann::json::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    rows.push_back(nlohmann::json::array());
+    for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
+  }
+  const nlohmann::json document = {{"inputs", o.inputs}, {"policy", o.policy.policy},
+                                   {"alignment_policy", o.policy.alignment}, {"similarity", rows}};
+  if (!o.json.empty()) return write_json(document, o.json);
+  for (std::size_t i = 0; i < o.inputs.size(); ++i) {
+    std::cout << i << "  " << o.inputs[i] << "\n  ";
+    for (Eigen::Index j = 0; j < m.cols(); ++j) std::cout << ' ' << m(Eigen::Index(i), j);
+    std::cout << '\n';
+  }
+}
+
+}  // namespace
+
+void add_similarity_command(CLI::App& app) {
+  auto o = std::make_shared<Similarity_command_options>();
+  CLI::App* command = app.add_subcommand("similarity", "How alike two animations move: a value in [0, 1], the "
+                                                       "score and the frame-to-frame alignment");
+  command->add_option("a", o->a.input, "The first animation (a folder, a quoted glob or a point cache)")->required();
+  command->add_option("b", o->b.input, "The second animation")->required();
+  command->add_option("--topology-a", o->a.topology, "Connectivity of A, for a point cache");
+  command->add_option("--topology-b", o->b.topology, "Connectivity of B, for a point cache");
+  command->add_option("--threads", o->a.threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
+  add_policy_options(*command, o->policy);
+  command->add_option("--json", o->json, "Write the result as JSON to FILE ('-': standard output)");
+  command->add_option("--png", o->png, "Draw the alignment path over the frame grid (A down, B across) into FILE.png");
+  command->callback([o] {
+    o->b.threads = o->a.threads;
+    run_similarity(*o);
+  });
+}
+
+void add_matrix_command(CLI::App& app) {
+  auto o = std::make_shared<Matrix_command_options>();
+  CLI::App* command = app.add_subcommand("matrix", "The similarity of every pair of a set of animations");
+  command->add_option("inputs", o->inputs, "Two or more animations (folders, quoted globs, point caches)")
+      ->required()
+      ->expected(2, -1);
+  command->add_option("--topology", o->topology, "Connectivity for point caches (all inputs share it)");
+  command->add_option("--threads", o->threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
+  add_policy_options(*command, o->policy);
+  command->add_option("--csv", o->csv, "Write the matrix as CSV, with the inputs as row and column names, to FILE");
+  command->add_option("--json", o->json, "Write the matrix as JSON to FILE ('-': standard output)");
+  command->add_option("--png", o->png,
+                      "Draw a heat map (viridis, from the smallest value to 1), inputs numbered as listed, into FILE.png");
+  command->callback([o] { run_matrix(*o); });
+}
+
+}  // namespace deformseg::tool

@@ -1,0 +1,167 @@
+/// @file similarity/evolving_graph_similarity.h
+/// @brief `Evolving_graph_similarity`: the thesis' motion similarity (METHOD.md section 4): the
+/// key-frame graphs of two evolving graphs compared by graph edit distance, clustered into labels,
+/// and the two label sequences aligned.
+#pragma once
+
+#include <deformseg/alignment/alignment.h>
+#include <deformseg/alignment/smith_waterman.h>
+#include <deformseg/clustering/clustering.h>
+#include <deformseg/clustering/k_medoids.h>
+#include <deformseg/evolving_graph.h>
+#include <deformseg/ged/bipartite_ged.h>
+#include <deformseg/ged/ged_matrix.h>
+#include <deformseg/similarity/segment_costs.h>
+#include <deformseg/similarity/similarity.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <exception>
+#include <string>
+#include <vector>
+
+namespace deformseg {
+
+/// @brief How `Evolving_graph_similarity` scores a pair of frames from their cluster labels.
+enum class Label_dissimilarity {
+  mismatch,  ///< 0 for the same cluster, 1 for different ones (METHOD.md's match / mismatch)
+  medoids    ///< the edit distance between the two clusters' medoids over the largest such distance
+};
+
+/// @brief Similarity policy (models `SimilarityPolicy`), the thesis' pipeline: each animation's
+/// evolving graph (`evolving_graph` with `segmentation`); the graph edit distances (`ged`, under
+/// `costs`) between all key-frame graphs of both animations; their clustering (`clustering`,
+/// through `clustering::cluster`, so graphs at distance 0 share a label); each frame labelled with
+/// its key frame's cluster (key frames expanded by their durations); the two label sequences
+/// aligned (`alignment`, the dissimilarity of two labels as `labels` says); `normalization` turns
+/// the score into the similarity.
+///
+/// What to expect of it: the graphs describe where an animation deforms, not how much, so the
+/// comparison depends on how each mesh breaks into segments: a thick leg may close a deformed
+/// band into a ring where a thin one does not, and the threshold changes the graphs. The default
+/// cost model (`Segment_costs`) prices area shares besides kinds to soften this; the tests record
+/// where it ranks motions the wrong way.
+/// @tparam Ged a `ged::GedPolicy` for `Segment_graph` (default `ged::Bipartite_ged`: the exact
+/// distance is exponential, and key-frame graphs of real data reach a dozen nodes).
+/// @tparam Costs a `ged::GedCostModel` for `Segment_node` (default `Segment_costs`).
+/// @tparam Clustering a `clustering::ClusteringPolicy` (default `clustering::K_medoids`, k by
+/// silhouette).
+/// @tparam Alignment an `alignment::AlignmentPolicy` (default `alignment::Smith_waterman`).
+/// @tparam Normalization as for `Strain_distribution_similarity`.
+/// @par Complexity `describe`: the evolving graph, O(T F), and the GEDs among its K key frames;
+/// `compare`: Ka Kb GEDs, the clustering of Ka + Kb graphs, and the alignment's O(Ta Tb).
+template <class Ged = ged::Bipartite_ged, class Costs = Segment_costs, class Clustering = clustering::K_medoids,
+          alignment::AlignmentPolicy Alignment = alignment::Smith_waterman, class Normalization = Best_score_normalization>
+  requires ged::GedPolicy<Ged, Segment_graph, Costs> && clustering::ClusteringPolicy<Clustering>
+struct Evolving_graph_similarity {
+  /// @brief The spatio-temporal segmentation. Default: `Spatiotemporal_options` (previous pose,
+  /// threshold 0.5).
+  Spatiotemporal_options segmentation{};
+  /// @brief The graph edit distance. Default: `ged::Bipartite_ged`.
+  Ged ged{};
+  /// @brief Its costs. Default: `Segment_costs` (kinds and area shares).
+  Costs costs{};
+  /// @brief The clustering of the key-frame graphs. Default: `clustering::K_medoids` (k by
+  /// silhouette, from 2 to 10).
+  Clustering clustering{};
+  /// @brief The dissimilarity of two frames' labels. Default: `Label_dissimilarity::mismatch`.
+  Label_dissimilarity labels = Label_dissimilarity::mismatch;
+  /// @brief The alignment of the label sequences. Default: Smith–Waterman, +1 / -1 / -1.
+  Alignment alignment{};
+  /// @brief How the score becomes the similarity. Default: `Best_score_normalization`.
+  Normalization normalization{};
+
+  /// @brief What is compared of one animation: its evolving graph, its key-frame graphs and their
+  /// edit distances among themselves.
+  struct Description {
+    Evolving_graph graph;               ///< the evolving graph
+    std::vector<Segment_graph> graphs;  ///< its key frames' graphs, in order
+    Eigen::MatrixXd distances;          ///< their pairwise edit distances (`ged::ged_matrix`)
+  };
+
+  /// @brief The evolving graph of `animation` and the edit distances of its key frames.
+  /// @tparam Mesh a `DeformingMesh`.
+  /// @throws invalid_input as `evolving_graph`.
+  template <DeformingMesh Mesh>
+  Description describe(const Mesh& animation) const {
+    Description d{evolving_graph(animation, segmentation), {}, {}};
+    for (const Key_frame& k : d.graph) d.graphs.push_back(k.graph);
+    d.distances = ged::ged_matrix(d.graphs, ged, costs);
+    return d;
+  }
+
+  /// @brief The similarity of two animations from their descriptions.
+  /// @throws invalid_input as the policies do.
+  Similarity compare(const Description& a, const Description& b) const {
+    const Eigen::MatrixXd distances = joint_distances(a, b);
+    const clustering::Clustering clusters = clustering::cluster(distances, clustering);
+    Similarity result;
+    result.labels_a = frame_labels(a.graph, clusters.labels, 0);
+    result.labels_b = frame_labels(b.graph, clusters.labels, a.graphs.size());
+    const std::size_t n = result.labels_a.size(), m = result.labels_b.size();
+    alignment::Alignment aligned;
+    if (labels == Label_dissimilarity::mismatch) {
+      aligned = alignment.align(n, m, alignment::label_mismatch(result.labels_a, result.labels_b));
+    } else {
+      const Eigen::MatrixXd between = medoid_distances(distances, clusters);
+      const auto& la = result.labels_a;
+      const auto& lb = result.labels_b;
+      aligned = alignment.align(n, m, [&](std::size_t i, std::size_t j) { return between(la[i], lb[j]); });
+    }
+    result.value = normalization(alignment, aligned, n, m);
+    result.score = aligned.score;
+    result.alignment = std::move(aligned.pairs);
+    result.compared = "key-frame graphs of the evolving graphs (" + std::to_string(a.graphs.size()) + " and " +
+                      std::to_string(b.graphs.size()) + "), clustered by graph edit distance into " +
+                      std::to_string(clusters.clusters) + " labels, frame labels aligned in time";
+    return result;
+  }
+
+private:
+  // The edit distances of all key-frame graphs, A's then B's: the two descriptions' own blocks
+  // and the A x B block computed here, pair after pair in parallel.
+  Eigen::MatrixXd joint_distances(const Description& a, const Description& b) const {
+    const Eigen::Index na = Eigen::Index(a.graphs.size()), nb = Eigen::Index(b.graphs.size());
+    Eigen::MatrixXd d(na + nb, na + nb);
+    d.topLeftCorner(na, na) = a.distances;
+    d.bottomRightCorner(nb, nb) = b.distances;
+    std::vector<std::exception_ptr> failures(std::size_t(na * nb));
+#pragma omp parallel for schedule(dynamic)
+    for (Eigen::Index p = 0; p < na * nb; ++p) {
+      const Eigen::Index i = p / nb, j = p % nb;
+      try {
+        d(i, na + j) = d(na + j, i) = ged(a.graphs[std::size_t(i)], b.graphs[std::size_t(j)], costs).distance;
+      } catch (...) {
+        failures[std::size_t(p)] = std::current_exception();
+      }
+    }
+    for (const auto& failure : failures)
+      if (failure) std::rethrow_exception(failure);
+    return d;
+  }
+
+  // Per frame, the cluster of its key frame's graph (graph `offset + k` of the clustering for
+  // key frame k).
+  static std::vector<std::size_t> frame_labels(const Evolving_graph& graph, const std::vector<std::size_t>& clusters,
+                                               std::size_t offset) {
+    std::vector<std::size_t> labels;
+    labels.reserve(graph.num_frames());
+    for (std::size_t k = 0; k < graph.size(); ++k) labels.insert(labels.end(), graph[k].num_frames(), clusters[offset + k]);
+    return labels;
+  }
+
+  // The distances between the clusters' medoids, over the largest (all 0 for a single cluster).
+  static Eigen::MatrixXd medoid_distances(const Eigen::MatrixXd& d, const clustering::Clustering& c) {
+    const Eigen::Index k = Eigen::Index(c.clusters);
+    Eigen::MatrixXd between(k, k);
+    for (Eigen::Index u = 0; u < k; ++u)
+      for (Eigen::Index v = 0; v < k; ++v)
+        between(u, v) = d(Eigen::Index(c.medoids[std::size_t(u)]), Eigen::Index(c.medoids[std::size_t(v)]));
+    const double largest = between.maxCoeff();
+    if (largest > 0) between /= largest;
+    return between;
+  }
+};
+
+}  // namespace deformseg

@@ -1,0 +1,194 @@
+// Tests of motion_similarity.h and the similarity policies: self-similarity and invariance, the
+// rankings the issue asks for on synthetic tubes and on the cat and lion poses, the matrix. Each
+// ranking runs with both policies and prints its values. Both pass them; what neither can see
+// (which of two alike joints bends first) is checked as the known limitation it is, so that a
+// policy that learns to see it has to update this test and the manual.
+#include "test_support.h"
+
+#include <deformseg/alignment/dtw.h>
+#include <deformseg/io/frame_sequence.h>
+#include <deformseg/motion_similarity.h>
+#include <deformseg/synthetic.h>
+
+#include <Eigen/Geometry>
+
+#include <numbers>
+#include <vector>
+
+using namespace deformseg;
+
+namespace {
+
+constexpr double right = std::numbers::pi / 2;
+
+// The frames of `a` in the order `frames` gives (a frame may repeat).
+Surface_mesh_animation frames_of(const Surface_mesh_animation& a, const std::vector<std::size_t>& frames) {
+  std::vector<double> positions;
+  for (std::size_t t : frames) {
+    const auto xyz = a.frame_positions(t);
+    positions.insert(positions.end(), xyz.begin(), xyz.end());
+  }
+  return Surface_mesh_animation(a.face_graph(), std::move(positions));
+}
+
+std::vector<std::size_t> reversed_frames(std::size_t count) {
+  std::vector<std::size_t> frames(count);
+  for (std::size_t t = 0; t < count; ++t) frames[t] = count - 1 - t;
+  return frames;
+}
+
+Surface_mesh_animation tube(const std::vector<Tube_phase>& schedule, const Tube_shape& shape = {},
+                            std::vector<Tube_joint> joints = {Tube_joint{}}) {
+  Bending_tube spec;
+  spec.shape = shape;
+  spec.joints = std::move(joints);
+  spec.schedule = schedule;
+  return make_bending_tube(spec).animation;
+}
+
+const std::vector<Tube_phase> bend_hold_unbend{{5, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {5, {}}};
+const Tube_shape other_tube{.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false};
+
+// The policy's values for the tube rankings, printed, and whether each ranking holds.
+template <class Policy>
+void check_tubes(const Policy& policy, const char* name) {
+  const auto a = tube(bend_hold_unbend);
+  const double same_motion_other_tube = motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
+  const double other_timing =
+      motion_similarity(a, tube({{5, {0.0}}, {3, {right}}, {22, {}}, {3, {0.0}}, {5, {}}}), policy).value;
+  const double two_bends = motion_similarity(
+      a, tube({{5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {}}}), policy).value;
+  WARN(name << ": same schedule on another tube " << same_motion_other_tube << ", other timing " << other_timing
+            << ", two bends " << two_bends);
+  CHECK(same_motion_other_tube > other_timing);
+  CHECK(same_motion_other_tube > two_bends);
+
+  // A fast bend and a slow unbend, against the same played backwards (a slow bend and a fast
+  // unbend): not the same motion, so below 1, yet nearer than a motion of other timing.
+  const auto fast_slow = tube({{5, {0.0}}, {3, {right}}, {6, {}}, {15, {0.0}}, {5, {}}});
+  const double reversal = motion_similarity(fast_slow, frames_of(fast_slow, reversed_frames(fast_slow.num_frames())), policy).value;
+  WARN(name << ": a schedule against its time reversal " << reversal);
+  CHECK(reversal < 0.999);
+}
+
+// Which of two alike joints bends first: a policy that ignores where the strain lies cannot
+// tell; the value is printed either way.
+template <class Policy>
+double which_joint_first(const Policy& policy) {
+  const std::vector<Tube_joint> joints{{.position = 0.3}, {.position = 0.7}};
+  const auto lower_first = tube({{5, {0.0, 0.0}}, {8, {right, 0.0}}, {8, {right, right}}, {5, {}}}, {}, joints);
+  const auto upper_first = tube({{5, {0.0, 0.0}}, {8, {0.0, right}}, {8, {right, right}}, {5, {}}}, {}, joints);
+  const auto other_tube_lower_first =
+      tube({{5, {0.0, 0.0}}, {8, {right, 0.0}}, {8, {right, right}}, {5, {}}}, other_tube, joints);
+  const double swapped = motion_similarity(lower_first, upper_first, policy).value;
+  const double same = motion_similarity(lower_first, other_tube_lower_first, policy).value;
+  WARN("which joint first: swapped " << swapped << ", same order on another tube " << same);
+  return swapped - same;
+}
+
+struct Cat_lion {
+  Surface_mesh_animation cat, lion, cat_reordered, samba;
+};
+
+// The nine poses of the cat and of the lion (their reference pose left out), the cat's in
+// another order, and the first nine frames of the samba.
+const Cat_lion& cat_lion() {
+  static const Cat_lion data = [] {
+    const auto cat_dir = test::unpacked("cat-lion-poses/cat-poses.tgz") / "cat-poses";
+    const auto lion_dir = test::unpacked("cat-lion-poses/lion-poses.tgz") / "lion-poses";
+    const auto samba_dir = test::unpacked("samba/samba.tar.xz") / "samba";
+    const auto cat = io::read_frame_sequence((cat_dir / "cat-0?.obj").string());
+    const auto samba = io::read_frame_sequence(samba_dir.string());
+    return Cat_lion{cat, io::read_frame_sequence((lion_dir / "lion-0?.obj").string()),
+                    frames_of(cat, {4, 7, 1, 8, 3, 0, 6, 2, 5}), frames_of(samba, {0, 1, 2, 3, 4, 5, 6, 7, 8})};
+  }();
+  return data;
+}
+
+template <class Policy>
+void check_cat_lion(const Policy& policy, const char* name) {
+  const Cat_lion& d = cat_lion();
+  REQUIRE(d.cat.num_frames() == 9);
+  REQUIRE(d.lion.num_frames() == 9);
+  const double lion = motion_similarity(d.cat, d.lion, policy).value;
+  const double reordered = motion_similarity(d.cat, d.cat_reordered, policy).value;
+  const double samba = motion_similarity(d.cat, d.samba, policy).value;
+  WARN(name << ": cat poses against the lion's " << lion << ", against themselves reordered " << reordered
+            << ", against the samba " << samba);
+  CHECK(lion > reordered);
+  CHECK(lion > samba);
+}
+
+template <class Policy>
+void check_self_and_copy(const Policy& policy) {
+  const auto a = tube(bend_hold_unbend);
+  Bending_tube placed;
+  placed.schedule = bend_hold_unbend;
+  placed.placement = {.scale = 7.5,
+                      .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(2.5, Eigen::Vector3d(1, 1, -2).normalized())),
+                      .translation = Eigen::Vector3d(40, -3, 9)};
+  const Similarity self = motion_similarity(a, a, policy);
+  CHECK(self.value == Approx(1.0));
+  CHECK(self.alignment.size() == a.num_frames());
+  CHECK(motion_similarity(a, make_bending_tube(placed).animation, policy).value == Approx(1.0).margin(1e-9));
+  CHECK(!self.compared.empty());
+}
+
+}  // namespace
+
+TEST_CASE("motion similarity: an animation and itself, or a moved, turned, scaled copy, give 1", "[similarity]") {
+  check_self_and_copy(Strain_distribution_similarity<>{});
+  check_self_and_copy(Evolving_graph_similarity<>{});
+  const Similarity s = motion_similarity(tube(bend_hold_unbend), tube(bend_hold_unbend));
+  CHECK(s.value == Approx(1.0));
+  CHECK(s.labels_a.empty());
+  const Similarity g = motion_similarity(tube(bend_hold_unbend), tube(bend_hold_unbend), Evolving_graph_similarity<>{});
+  CHECK(g.labels_a == g.labels_b);
+  CHECK(g.labels_a.size() == tube(bend_hold_unbend).num_frames());
+}
+
+TEST_CASE("motion similarity: tubes, the same schedule on another tube is nearer than other schedules", "[similarity]") {
+  check_tubes(Strain_distribution_similarity<>{}, "strain distribution");
+  check_tubes(Strain_distribution_similarity<alignment::Dtw>{}, "strain distribution, DTW");
+}
+
+TEST_CASE("motion similarity: tubes, with the thesis' evolving graph policy", "[similarity]") {
+  check_tubes(Evolving_graph_similarity<>{}, "evolving graph");
+}
+
+TEST_CASE("motion similarity: which joint bends first, a known limitation of the strain distribution", "[similarity]") {
+  // Alike joints on one tube strain alike: the histograms of the two orders are the same.
+  CHECK(which_joint_first(Strain_distribution_similarity<>{}) > -1e-9);
+  // The evolving graph sees two segments one after the other either way, at the same area shares:
+  // it cannot tell them apart either. (It also rates the same order on the other tube far lower,
+  // 0.30 here: that tube's graphs have other shapes.)
+  CHECK(which_joint_first(Evolving_graph_similarity<>{}) > -1e-9);
+}
+
+TEST_CASE("motion similarity: the cat's poses are nearest the lion's same poses", "[similarity][data]") {
+  check_cat_lion(Strain_distribution_similarity<>{}, "strain distribution");
+}
+
+TEST_CASE("motion similarity: the cat and the lion with the thesis' evolving graph policy",
+          "[similarity][data]") {
+  check_cat_lion(Evolving_graph_similarity<>{}, "evolving graph");
+}
+
+TEST_CASE("similarity matrix: symmetric, ones on the diagonal, equal to the pairwise calls", "[similarity]") {
+  const std::vector<Surface_mesh_animation> animations{
+      tube(bend_hold_unbend), tube(bend_hold_unbend, other_tube),
+      tube({{5, {0.0}}, {3, {right}}, {22, {}}, {3, {0.0}}, {5, {}}})};
+  const auto check = [&](const auto& policy) {
+    const Eigen::MatrixXd m = similarity_matrix(animations, policy);
+    REQUIRE(m.rows() == 3);
+    CHECK(m.isApprox(m.transpose(), 0.0));
+    for (Eigen::Index i = 0; i < 3; ++i) {
+      CHECK(m(i, i) == Approx(1.0));
+      for (Eigen::Index j = i + 1; j < 3; ++j)
+        CHECK(m(i, j) == motion_similarity(animations[std::size_t(i)], animations[std::size_t(j)], policy).value);
+    }
+  };
+  check(Strain_distribution_similarity<>{});
+  check(Evolving_graph_similarity<>{});
+  CHECK(similarity_matrix(std::vector<Surface_mesh_animation>{}).size() == 0);
+}
