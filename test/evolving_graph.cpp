@@ -19,20 +19,8 @@ using namespace deformseg;
 
 namespace {
 
-using Triangles = std::vector<std::array<std::uint32_t, 3>>;
-
-// A flat grid of n x n squares, two triangles each: square (i, j) holds triangles 2 (i n + j) and
-// 2 (i n + j) + 1.
-Triangles grid(std::uint32_t n) {
-  Triangles triangles;
-  for (std::uint32_t i = 0; i < n; ++i)
-    for (std::uint32_t j = 0; j < n; ++j) {
-      const std::uint32_t a = i * (n + 1) + j, b = a + 1, c = a + n + 1, d = c + 1;
-      triangles.push_back({a, b, d});
-      triangles.push_back({a, d, c});
-    }
-  return triangles;
-}
+using test::grid;
+using test::Triangles;
 
 bool share_edge(const Triangles& triangles, std::size_t f, std::size_t g) {
   int shared = 0;

@@ -3,12 +3,15 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include <unistd.h>
 
@@ -67,6 +70,22 @@ inline fs::path unpacked(const std::string& archive) {
   fs::rename(mine, target, already_there);
   if (already_there) fs::remove_all(mine);
   return target;
+}
+
+/// A face-vertex index table.
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+/// A flat grid of n x n squares, two triangles each: square (i, j) holds triangles 2 (i n + j)
+/// and 2 (i n + j) + 1.
+inline Triangles grid(std::uint32_t n) {
+  Triangles triangles;
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const std::uint32_t a = i * (n + 1) + j, b = a + 1, c = a + n + 1, d = c + 1;
+      triangles.push_back({a, b, d});
+      triangles.push_back({a, d, c});
+    }
+  return triangles;
 }
 
 }  // namespace deformseg::test
