@@ -112,6 +112,10 @@ public:
                           " triangles for a segmentation of " + std::to_string(segmentation.num_faces()));
   }
 
+  /// @brief Deleted: the object would refer to a temporary segmentation.
+  Frame_segments(Spatiotemporal_segmentation&&, std::span<const std::array<std::uint32_t, 3>>,
+                 std::span<const double> = {}) = delete;
+
   /// @brief The number of frames.
   std::size_t num_frames() const noexcept { return segmentation_->num_frames(); }
   /// @brief The segmentation the frames come from.
