@@ -18,10 +18,12 @@ int main() {
 
   // The defaults: rest pose = frame 0, maximal absolute principal strain, Gaussian normalisation
   // with sigma = the 95th percentile of the raw strains.
+  // [defaults]
   const Strain_field<float> pose = compute_strain(animation);
   const auto frame_20 = pose.frame(20);  // bent and held: one contiguous vector of F strains
   std::cout << pose.num_faces() << " triangles x " << pose.num_frames() << " frames, sigma " << *pose.sigma()
             << ", degenerate " << pose.degenerate_count() << '\n';
+  // [defaults]
   std::cout << "frame 20: largest normalised strain " << *std::max_element(frame_20.begin(), frame_20.end())
             << ", triangles above 0.5: "
             << std::count_if(frame_20.begin(), frame_20.end(), [](float s) { return s > 0.5f; }) << '\n';
@@ -34,24 +36,30 @@ int main() {
   std::cout << "sigma from the raw strains: " << sigma << '\n';
 
   // Motion: strain of each frame against the one before; it is 0 while the tube holds still.
+  // [motion]
   const auto motion = compute_strain(animation, {.reference = Strain_reference::previous_pose});
+  // [motion]
   for (std::size_t t : {10, 18, 25}) {
     const auto frame = motion.frame(t);
     std::cout << "motion, frame " << t << ": largest " << *std::max_element(frame.begin(), frame.end()) << '\n';
   }
 
   // Raw Green-Lagrange strain in double, with principal directions.
+  // [measure]
   const auto green = compute_strain<double>(
       animation, Strain_options{.measure = Green_lagrange_strain{}, .normalization = No_normalization{},
                                 .principal_directions = true});
+  // [measure]
   const std::size_t bent = std::size_t(std::max_element(green.frame(20).begin(), green.frame(20).end()) -
                                        green.frame(20).begin());
   std::cout << "most strained triangle at frame 20: " << bent << ", Green-Lagrange " << green(bent, 20)
             << ", stretched along " << green.principal_directions(20).row(Eigen::Index(bent)) << '\n';
 
   // A reference mesh of its own (here the straight tube, as a Surface_mesh) in place of a frame.
+  // [reference_mesh]
   const Surface_mesh straight = animation.face_graph();
   const auto against_mesh = compute_strain(animation, straight, {.normalization = {.sigma = 0.1}});
+  // [reference_mesh]
   std::cout << "against the straight mesh, sigma given " << *against_mesh.sigma() << ", frame 20 triangle " << bent
             << ": " << against_mesh(bent, 20) << '\n';
 }

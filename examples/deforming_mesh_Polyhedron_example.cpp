@@ -15,6 +15,7 @@ int main() {
   const std::vector<std::array<double, 3>> points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   const std::vector<std::array<int, 3>> triangles{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
 
+  // [polyhedron]
   Deforming_mesh<Polyhedron> animation(make_face_graph<Polyhedron>(points, triangles));
   for (int t = 0; t < 5; ++t) {  // the tetrahedron sliding along x
     std::vector<double> frame;
@@ -24,6 +25,7 @@ int main() {
   static_assert(DeformingMesh<Deforming_mesh<Polyhedron>>);
 
   const Deforming_mesh<Polyhedron, float> compact = make_deforming_mesh<float>(animation);
+  // [polyhedron]
   std::cout << compact.num_frames() << " frames; " << animation.memory_bytes() << " bytes as double, "
             << compact.memory_bytes() << " as float\n";
   std::cout << "frame 4, vertex 1: " << compact.frame_matrix(4).col(1).transpose() << '\n';

@@ -16,8 +16,10 @@ int main() {
   const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(animation, {.threshold = 0.01});
 
   // Area shares from the rest frame's triangle areas.
+  // [frame_graphs]
   const std::vector<double> areas = face_areas(animation, 0);
   const Frame_segments frames(segmentation, animation.triangles(), areas);
+  // [frame_graphs]
   for (std::size_t t : {5, 15}) {
     const Segment_graph g = frames.graph(t);
     std::cout << "frame " << t << ": " << boost::num_vertices(g) << " node(s), " << boost::num_edges(g) << " edge(s)\n";

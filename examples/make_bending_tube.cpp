@@ -8,6 +8,7 @@
 int main() {
   using namespace deformseg;
   const double right = std::numbers::pi / 2;
+  // [spec]
   Bending_tube spec;
   spec.shape = {.radius = 0.1, .length = 1.0, .sectors = 12, .rings = 40, .caps = true};
   spec.joints = {{.position = 0.3, .blend_width = 0.1}, {.position = 0.7, .blend_width = 0.1}};
@@ -19,6 +20,7 @@ int main() {
                     .translation = Eigen::Vector3d(1, 2, 3)};
 
   const auto tube = make_bending_tube(spec);
+  // [spec]
   std::cout << tube.animation.num_frames() << " frames, " << tube.animation.num_vertices()
             << " vertices, " << tube.animation.num_faces() << " triangles\n";
   for (int joint : {-1, 0, 1})

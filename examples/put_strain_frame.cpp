@@ -14,11 +14,13 @@ int main() {
   const auto field = compute_strain(tube.animation, {.principal_directions = true});
 
   // A copy of the connectivity, with two face properties.
+  // [property_maps]
   Surface_mesh mesh = tube.animation.face_graph();
   auto strain = mesh.add_property_map<Surface_mesh::Face_index, float>("f:strain", 0.0f).first;
   auto direction = mesh.add_property_map<Surface_mesh::Face_index, Kernel::Vector_3>("f:stretch_direction").first;
   put_strain_frame(field, 8, mesh, strain);
   put_principal_directions(field, 8, mesh, direction);
+  // [property_maps]
 
   std::size_t strained = 0;
   Surface_mesh::Face_index most = *faces(mesh).begin();

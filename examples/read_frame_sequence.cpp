@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   try {
     const std::string input = argc > 1 ? argv[1] : write_strip_frames();
 
+    // [read]
     const auto files = deformseg::io::list_frame_files(input);
     std::cout << files.size() << " frame files in natural order (frame_9 before frame_10):";
     for (std::size_t t = 0; t < files.size(); t += std::max<std::size_t>(1, files.size() / 6))
@@ -55,6 +56,7 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     const auto animation = deformseg::io::read_frame_sequence(input);  // all threads; {.threads = 1} for one
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // [read]
     std::cout << animation.num_frames() << " frames, " << animation.num_vertices() << " vertices, "
               << animation.num_faces() << " triangles, read in " << seconds << " s\n";
 

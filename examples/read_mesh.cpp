@@ -46,12 +46,14 @@ int main(int argc, char** argv) {
     write_pyramid();
     for (const char* path : {"pyramid.obj", "pyramid.off"}) print(path, deformseg::io::read_mesh(path, {.triangulate = true}));
 
+    // [error]
     // Without `triangulate`, the quad is an error that names the file and the line.
     try {
       deformseg::io::read_mesh("pyramid.obj");
     } catch (const deformseg::invalid_input& e) {
       std::cout << "without triangulate: " << e.what() << '\n';
     }
+    // [error]
 
     // Positions only: the size of the output says how many vertices the file must have.
     std::vector<double> xyz(3 * 5);

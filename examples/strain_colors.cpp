@@ -20,8 +20,10 @@ int main() {
   spec.schedule = {{6, {std::numbers::pi / 2}}};
   const auto tube = make_bending_tube(spec);
   const auto field = compute_strain(tube.animation);
+  // [colors]
   const std::vector<Rgb> colors = strain_colors(field.frame(6));
   // io::write_ply(tube.animation, 6, "frame_6.ply", colors) writes it as a coloured mesh.
+  // [colors]
   std::size_t not_darkest = 0;
   for (const Rgb& c : colors) not_darkest += c == strain_colormap.front() ? 0 : 1;
   std::cout << colors.size() << " face colours for frame 6, " << not_darkest << " of them above the colour of 0\n";

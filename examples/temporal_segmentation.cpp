@@ -42,11 +42,13 @@ int main() {
   print("optimal partition", temporal_segmentation(animation));
 
   // From a strain field, with other policies; the distances once, for all of them.
+  // [policies]
   const Segment_cost cost(frame_distances(compute_strain(animation)));
   print("3 segments", segment_frames(cost, Optimal_partition{.segments = 3}));
   print("binary split", segment_frames(cost, Binary_split{}));
   print("thesis greedy", segment_frames(cost, Thesis_greedy{.threshold = {.value = 0.1}}));
   print("Barbic PCA", segment_frames(cost, Barbic_pca{}));
+  // [policies]
   const auto own = segment_frames(cost, Fixed_length{.length = 22});
   print("fixed length", own);
   std::cout << "frame 30 is in segment " << own.segment_of(30) << ", of cost " << own.segments[own.segment_of(30)].cost

@@ -17,16 +17,20 @@ int main() {
   spec.joints = {{.position = 0.3}, {.position = 0.7}};
   spec.schedule = {{5, {0.0, 0.0}}, {10, {right, 0.0}, Easing::linear}, {10, {right, right}, Easing::linear}};
   const auto animation = make_bending_tube(spec).animation;
+  // [dot]
   const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(animation, {.threshold = 0.01});
   const Frame_segments frames(segmentation, animation.triangles(), face_areas(animation, 0));
   const Evolving_graph graph = evolving_graph(frames);
 
   for (const auto& file : io::write_key_frames_dot(graph, "two_joints_dot")) std::cout << file.string() << '\n';
+  // [dot]
   std::cout << "key frame 1 as DOT:\n";
   io::write_segment_graph_dot(std::cout, graph[1].graph);
 
   // Segment 0 has the same colour in every frame; rigid triangles are grey.
+  // [colors]
   const auto files = io::write_sequence(animation, "two_joints_segments",
                                         {.face_colors = [&](std::size_t t) { return segment_face_colors(frames, t); }});
+  // [colors]
   std::cout << files.size() << " coloured meshes in two_joints_segments/\n";
 }

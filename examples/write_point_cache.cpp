@@ -16,6 +16,7 @@ int main() {
   const auto tube = make_bending_tube(spec);
   const auto animation = make_deforming_mesh<float>(tube.animation);
 
+  // [caches]
   io::write_pc2(animation, "tube.pc2", {.start_frame = 1});  // Blender's first frame is 1
   io::write_mdd(animation, "tube.mdd", 24);                  // 24 frames per second
 
@@ -29,6 +30,7 @@ int main() {
   // The caches hold no connectivity: vertex i of the cache is vertex index i of the topology.
   const auto from_pc2 = io::read_pc2<Surface_mesh, float>("tube.pc2", animation.face_graph());
   const auto from_mdd = io::read_mdd<Surface_mesh, float>("tube.mdd", animation.face_graph());
+  // [caches]
   const bool same = std::ranges::equal(from_pc2.all_positions(), animation.all_positions()) &&
                     std::ranges::equal(from_mdd.all_positions(), animation.all_positions());
   std::cout << "read back: " << (same ? "the same positions, to the last bit" : "DIFFERENT positions") << '\n';

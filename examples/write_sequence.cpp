@@ -29,8 +29,10 @@ int main() {
     return colors;
   };
 
+  // [write]
   const auto ply = io::write_sequence(animation, "tube_ply", {.face_colors = moved});
   const auto obj = io::write_sequence(animation, "tube_obj", {.format = io::Mesh_format::obj});
+  // [write]
   // The name a frame gets: zero-padded so that plain and natural sorting agree.
   std::cout << "frame 7 of 16 is written as " << io::sequence_file_name(7, 16, {.format = io::Mesh_format::obj}) << '\n';
   std::cout << ply.size() << " PLY files, " << ply.front().string() << " to " << ply.back().string() << '\n'

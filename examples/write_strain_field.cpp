@@ -17,10 +17,12 @@ int main() {
 
   const auto folder = std::filesystem::temp_directory_path() / "deformseg-write-strain-field";
   std::filesystem::create_directories(folder);
+  // [write]
   io::write_strain_csv(field, folder / "strain.csv");     // 16 lines of 1568 values
   io::write_strain_binary(field, folder / "strain.bin");  // header line, then 16 x 1568 float32
 
   std::ifstream binary(folder / "strain.bin", std::ios::binary);
+  // [write]
   std::string header;
   std::getline(binary, header);
   std::cout << "strain.csv: " << std::filesystem::file_size(folder / "strain.csv") << " bytes\n"
