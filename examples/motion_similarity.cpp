@@ -19,19 +19,15 @@ int main() {
   const auto b = make_bending_tube(thick).animation;
   const auto c = make_bending_tube(other).animation;
 
-  // [default]
   const Similarity same = motion_similarity(a, b);  // Default_similarity: strain histograms
   std::cout << "same schedule, thin and thick tube: " << same.value << " (" << same.alignment.size()
             << " frame pairs aligned)\n";
   std::cout << "other schedule, same tube:          " << motion_similarity(a, c).value << '\n';
   std::cout << "compared: " << same.compared << "\n\n";
-  // [default]
 
-  // [thesis]
   const Evolving_graph_similarity<> thesis;
   const Similarity graphs = motion_similarity(a, b, thesis);
   std::cout << "thesis' policy, thin and thick:      " << graphs.value << "\nframe labels of the thin tube:";
   for (std::size_t label : graphs.labels_a) std::cout << ' ' << label;
   std::cout << "\nthesis' policy, other schedule:      " << motion_similarity(a, c, thesis).value << '\n';
-  // [thesis]
 }

@@ -9,7 +9,6 @@
 #include <numbers>
 #include <optional>
 
-// [measure]
 // The stretch of the most stretched direction, l1 - 1, or 0 where the triangle only shrinks.
 struct Stretch_only {
   template <std::floating_point T>
@@ -18,9 +17,7 @@ struct Stretch_only {
   }
 };
 static_assert(deformseg::StrainMeasure<Stretch_only>);
-// [measure]
 
-// [normalization]
 // Every strain over the largest one (left as it is when all are 0); the largest is the parameter.
 struct Divide_by_largest {
   template <std::floating_point T>
@@ -34,17 +31,14 @@ struct Divide_by_largest {
   }
 };
 static_assert(deformseg::StrainNormalization<Divide_by_largest>);
-// [normalization]
 
 int main() {
   using namespace deformseg;
   Bending_tube spec;  // rests, bends by 90 degrees, holds, straightens: 31 frames
   spec.schedule = {{5, {0.0}}, {10, {std::numbers::pi / 2}}, {5, {}}, {10, {0.0}}};
   const auto animation = make_bending_tube(spec).animation;
-  // [use]
   const Strain_options<Stretch_only, Divide_by_largest> options{};
   const Strain_field<float> stretch = compute_strain(animation, options);
-  // [use]
   const auto bent = stretch.frame(20);
   const auto stretched = std::count_if(bent.begin(), bent.end(), [](float s) { return s > 0.01f; });
   std::cout << "largest stretch " << *stretch.sigma() << "; frame 20: largest "
