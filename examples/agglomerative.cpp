@@ -25,9 +25,11 @@ int main() {
 
   // {0, 2} merge first; then 5 is at a mean distance 4 of them but 4.5 from 9.5 (average joins
   // it to {0, 2}), and at most 5 from them (complete joins it to 9.5 instead).
+  // [linkage]
   const auto average = dc::cluster(distances, dc::Agglomerative{.linkage = dc::Linkage::average, .clusters = 2});
   const auto complete = dc::cluster(distances, dc::Agglomerative{.linkage = dc::Linkage::complete, .clusters = 2});
   const auto cut = dc::cluster(distances, dc::Agglomerative{.linkage = dc::Linkage::complete, .height = 3.0});
+  // [linkage]
   print("average, k = 2 ", average);    // 0 0 0 1
   print("complete, k = 2", complete);   // 0 0 1 1
   print("complete, h = 3", cut);        // 0 0 1 2

@@ -16,8 +16,10 @@ int main() {
   for (const auto& [i, j] : free.pairs) std::cout << " (" << i << ", " << j << ")";
   std::cout << '\n';
 
+  // [window]
   const al::Dtw banded{.window = 1};  // within one cell of the scaled diagonal
   std::cout << "with window 1: " << banded.score(x.size(), y.size(), cost) << '\n';
+  // [window]
 
   const std::vector<int> a{1, 1, 2, 2, 2, 3}, b{1, 2, 3, 3};
   std::cout << "labels: " << al::align(a, b, al::Dtw{}).score << '\n';  // the same motion, slower

@@ -4,10 +4,12 @@
 
 #include <iostream>
 
+// [costs]
 struct Expensive_edges : deformseg::ged::Unit_costs {  // a user cost model: edges cost 3
   double edge_insertion() const { return 3.0; }
   double edge_deletion() const { return 3.0; }
 };
+// [costs]
 
 int main() {
   using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, int>;
@@ -20,7 +22,9 @@ int main() {
   boost::add_edge(0, 2, triangle);
   const std::vector<int> identity{0, 1, 2};
   const double unit = deformseg::ged::edit_cost(path, triangle, identity);
+  // [use]
   const double custom = deformseg::ged::edit_cost(path, triangle, identity, Expensive_edges{});
+  // [use]
   std::cout << "path -> triangle by the identity: " << unit << " with unit costs, " << custom
             << " with expensive edges\n";  // one edge inserted: 1 and 3
   return unit == 1.0 && custom == 3.0 ? 0 : 1;

@@ -20,11 +20,13 @@ int main() {
   const auto a = make_bending_tube(once).animation;
   const auto b = make_bending_tube(twice).animation;
 
+  // [policy]
   Evolving_graph_similarity<ged::Exact_ged, Segment_costs, clustering::Agglomerative, alignment::Dtw> policy;
   policy.segmentation.threshold = 0.01;  // the tube's whole blend zone deforms while it moves
   policy.costs.area_weight = 0;          // unit costs on the kinds, as METHOD.md's default
   policy.clustering.clusters = 3;
   policy.labels = Label_dissimilarity::medoids;
+  // [policy]
   const Similarity s = motion_similarity(a, b, policy);
   std::cout << "one bend against two: " << s.value << " (DTW cost " << s.score << ")\n" << s.compared << '\n';
   std::cout << "one bend against itself: " << motion_similarity(a, a, policy).value << '\n';

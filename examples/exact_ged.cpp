@@ -22,9 +22,11 @@ int main() {
             << "; mapping";
   for (std::size_t i = 0; i < exact.mapping.size(); ++i) std::cout << ' ' << i << "->" << exact.mapping[i];
   std::cout << '\n';
+  // [limit]
   // With almost no search allowed, the answer says so and brackets the distance.
   const auto rough = deformseg::ged::Exact_ged{.max_expanded = 2}(a, b);
   std::cout << "after 2 expansions: " << rough.lower << " <= distance <= " << rough.upper
             << (rough.exact ? " (exact)" : " (not exact)") << '\n';
+  // [limit]
   return exact.exact && rough.lower <= exact.distance && exact.distance <= rough.upper ? 0 : 1;
 }

@@ -15,7 +15,9 @@ int main() {
     for (std::size_t v = 1; v < n; ++v) boost::add_edge(v - 1, v, g);
     paths.push_back(g);
   }
+  // [matrix]
   const Eigen::MatrixXd d = deformseg::ged::ged_matrix(paths);
+  // [matrix]
   std::cout << "distances between paths of 2 to 5 nodes:\n" << d << '\n';
   // The same with Bipartite_ged, both directions, and a progress report.
   const auto r = deformseg::ged::ged_matrix_results(

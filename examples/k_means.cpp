@@ -23,9 +23,11 @@ int main() {
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) distances(i, j) = (points[std::size_t(i)] - points[std::size_t(j)]).norm();
 
+  // [cluster]
   const dc::Clustering all = dc::cluster(distances, dc::K_means{.clusters = 2, .seed = 42});
   // Two prototypes are enough here: each item's distances to items 0 and 1.
   const dc::Clustering two = dc::cluster(distances, dc::K_means{.clusters = 2, .prototypes = {0, 1}});
+  // [cluster]
   std::cout << "labels:";
   for (const std::size_t l : all.labels) std::cout << ' ' << l;  // 0 1 0 1 ...
   std::cout << "\nLloyd steps " << all.iterations << ", silhouette " << all.silhouette

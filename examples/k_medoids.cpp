@@ -14,8 +14,10 @@ int main() {
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) distances(i, j) = std::abs(x[i] - x[j]);
 
+  // [cluster]
   const dc::Clustering given = dc::cluster(distances, dc::K_medoids{.clusters = 3});
   const dc::Clustering chosen = dc::cluster(distances, dc::K_medoids{});  // k by silhouette, 2..10
+  // [cluster]
   std::cout << "labels:";
   for (const std::size_t l : given.labels) std::cout << ' ' << l;  // 0 0 1 0 1 2 1 2 0
   std::cout << "\nmedoids:";

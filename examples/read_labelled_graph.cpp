@@ -11,7 +11,9 @@ int main() {
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "deformseg_read_labelled_graph.dot";
   std::ofstream(path) << "graph arm {\n  shoulder [label=joint]; elbow [label=joint]; hand [label=end];\n"
                          "  shoulder -- elbow -- hand;\n}\n";
+  // [read]
   const deformseg::io::Labelled_graph arm = deformseg::io::read_labelled_graph(path);
+  // [read]
   std::filesystem::remove(path);
   std::cout << boost::num_vertices(arm) << " nodes, " << boost::num_edges(arm) << " edges; labels";
   for (std::size_t v = 0; v < boost::num_vertices(arm); ++v) std::cout << ' ' << arm[v];

@@ -22,6 +22,8 @@ int main() {
       spec.schedule = schedule;
       animations.push_back(make_bending_tube(spec).animation);
     }
+  // [matrix]
   const Eigen::MatrixXd m = similarity_matrix(animations);
+  // [matrix]
   std::cout << "one bend (thin, thick), two bends (thin, thick):\n" << m << '\n';
 }

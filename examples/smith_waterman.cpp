@@ -11,6 +11,7 @@ int main() {
   namespace al = deformseg::alignment;
   // Two label sequences, say the cluster labels of the key frames of two animations.
   const std::string a = "aabbbccaa", b = "xxbbbcyccaz";
+  // [labels]
   const al::Alignment linear = al::align(a, b, al::Smith_waterman{});
   std::cout << "linear gaps: score " << linear.score << ", pairs";
   for (const auto& [i, j] : linear.pairs) std::cout << " (" << i << ", " << j << ")";
@@ -18,6 +19,7 @@ int main() {
 
   const al::Smith_waterman affine{.gap_open = 2, .gap_extend = 0.5};
   std::cout << "affine gaps: score " << al::align(a, b, affine).score << '\n';
+  // [labels]
 
   // A continuous dissimilarity: 0 for equal values, 1 and above for values 1 apart or more.
   const double x[] = {0.0, 1.0, 2.0, 3.0}, y[] = {5.0, 1.1, 2.2, 2.9, 7.0};

@@ -10,9 +10,11 @@ int main() {
   namespace al = deformseg::alignment;
   const std::vector<int> query{2, 3, 3, 4};
   const std::vector<int> longer{1, 1, 2, 2, 3, 4, 4, 1, 1};
+  // [find]
   const al::Alignment found = al::align(query, longer, al::Subsequence_dtw{});  // 2 3 4 at 3 to 5
   std::cout << "cost " << found.score << ", found at frames " << found.pairs.front().second << " to "
             << found.pairs.back().second << " of the longer sequence\n";
+  // [find]
 
   // The policy can also match whichever sequence is the shorter, given in any order.
   const al::Subsequence_dtw shorter{.query = al::Subsequence_query::shorter};

@@ -16,6 +16,7 @@ void print(const std::string& name, const deformseg::Temporal_segmentation& resu
   std::cout << '\n';
 }
 
+// [policy]
 // Segments of a fixed length: a policy of one's own, a model of TemporalSegmentationPolicy.
 struct Fixed_length {
   std::size_t length = 10;
@@ -26,6 +27,7 @@ struct Fixed_length {
     return out;
   }
 };
+// [policy]
 
 }  // namespace
 
@@ -49,8 +51,10 @@ int main() {
   print("thesis greedy", segment_frames(cost, Thesis_greedy{.threshold = {.value = 0.1}}));
   print("Barbic PCA", segment_frames(cost, Barbic_pca{}));
   // [policies]
+  // [use]
   const auto own = segment_frames(cost, Fixed_length{.length = 22});
   print("fixed length", own);
+  // [use]
   std::cout << "frame 30 is in segment " << own.segment_of(30) << ", of cost " << own.segments[own.segment_of(30)].cost
             << '\n';
 }
