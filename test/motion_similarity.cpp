@@ -192,3 +192,20 @@ TEST_CASE("similarity matrix: symmetric, ones on the diagonal, equal to the pair
   check(Evolving_graph_similarity<>{});
   CHECK(similarity_matrix(std::vector<Surface_mesh_animation>{}).size() == 0);
 }
+
+TEST_CASE("motion similarity: a motion found whole inside a longer one, by the shorter or the longer", "[similarity]") {
+  // Standing still for 6 frames is all of the first 6 frames of a tube that then bends.
+  const auto still = tube({{5, {}}});
+  const auto bends = tube({{5, {}}, {10, {right}}, {10, {}}});
+  const auto check = [&](auto policy, const char* name) {
+    const double by_shorter = motion_similarity(still, bends, policy).value;
+    policy.normalization.length = Normalize_by::longer;
+    const double by_longer = motion_similarity(still, bends, policy).value;
+    WARN(name << ": still against bending, by the shorter " << by_shorter << ", by the longer " << by_longer);
+    CHECK(by_shorter == Approx(1.0).margin(1e-6));
+    CHECK(by_longer < 0.5);
+    CHECK(motion_similarity(bends, bends, policy).value == Approx(1.0));
+  };
+  check(Strain_distribution_similarity<>{}, "strain distribution");
+  check(Evolving_graph_similarity<>{}, "evolving graph");
+}

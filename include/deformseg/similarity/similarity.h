@@ -45,11 +45,20 @@ concept SimilarityPolicy = std::copy_constructible<P> && requires(const P& p, co
   { p.compare(d, d) } -> std::same_as<Similarity>;
 };
 
+/// @brief Which length `Best_score_normalization` measures a maximising alignment against.
+enum class Normalize_by {
+  shorter,  ///< the shorter sequence's self-score (METHOD.md section 4): a motion found whole inside a longer one scores 1
+  longer    ///< the longer one's: a motion scores 1 only against one of its own length
+};
+
 /// @brief The default normalisation of an alignment into a similarity in [0, 1].
 ///
 /// For a policy that maximises a score (`higher_is_better`, such as `alignment::Smith_waterman`):
-/// the score over the best score two sequences of the shorter length can reach (every pair at
-/// dissimilarity 0: the shorter sequence's self-score, METHOD.md section 4). For a policy that
+/// the score over the best score two sequences of `length`'s length can reach (every pair at
+/// dissimilarity 0: that sequence's self-score); by default the shorter one, as METHOD.md section
+/// 4 says, so that a local alignment which finds the whole shorter motion inside the longer one
+/// gives 1 (a tube standing still for 6 frames against one that stands still for 6 frames and then
+/// bends); `Normalize_by::longer` counts what the longer motion does besides. For a policy that
 /// minimises a cost (`alignment::Dtw`, `alignment::Subsequence_dtw`): 1 minus the mean
 /// dissimilarity along the aligned pairs, which needs dissimilarities in [0, 1]. Either way the
 /// value is clamped to [0, 1], an empty sequence gives 0, and two identical sequences give 1.
@@ -57,15 +66,19 @@ concept SimilarityPolicy = std::copy_constructible<P> && requires(const P& p, co
 /// Not invariant under time reversal: a motion played backwards is another motion, and it scores
 /// as much as its alignment with the original finds alike.
 struct Best_score_normalization {
+  /// @brief The sequence whose self-score is the best possible score. Default: the shorter.
+  Normalize_by length = Normalize_by::shorter;
+
   /// @brief The similarity of `result`, the alignment by `policy` of sequences of `n` and `m`
   /// elements.
-  /// @par Complexity O(min(n, m)) for a maximising policy (its score on the best case), else O(1).
+  /// @par Complexity O(min(n, m)) (or O(max(n, m))) for a maximising policy (its score on the best
+  /// case), else O(1).
   template <alignment::AlignmentPolicy Policy>
   double operator()(const Policy& policy, const alignment::Alignment& result, std::size_t n, std::size_t m) const {
     if (n == 0 || m == 0) return 0.0;
     double value = 0;
     if constexpr (Policy::higher_is_better) {
-      const std::size_t k = std::min(n, m);
+      const std::size_t k = length == Normalize_by::shorter ? std::min(n, m) : std::max(n, m);
       const double best = policy.score(k, k, [](std::size_t, std::size_t) { return 0.0; });
       value = best > 0 ? result.score / best : 0.0;
     } else {
