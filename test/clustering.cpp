@@ -17,17 +17,10 @@
 
 using namespace deformseg::clustering;
 using deformseg_clustering_test::make_blobs;
+using deformseg_clustering_test::on_a_line;
 
 namespace {
 
-// Points on a line, with their distances |x - y|.
-Eigen::MatrixXd on_a_line(const std::vector<double>& x) {
-  const auto n = Eigen::Index(x.size());
-  Eigen::MatrixXd d(n, n);
-  for (Eigen::Index i = 0; i < n; ++i)
-    for (Eigen::Index j = 0; j < n; ++j) d(i, j) = std::abs(x[std::size_t(i)] - x[std::size_t(j)]);
-  return d;
-}
 
 // A policy of one's own: the items within `radius` of item 0 form one cluster, the rest another.
 struct Near_the_first {

@@ -10,6 +10,7 @@
 
 using namespace deformseg::clustering;
 using deformseg_clustering_test::make_blobs;
+using deformseg_clustering_test::on_a_line;
 
 namespace {
 
@@ -56,13 +57,6 @@ std::vector<std::size_t> brute_force_cut(const Eigen::MatrixXd& d, Linkage linka
   return canonical(labels);
 }
 
-Eigen::MatrixXd on_a_line(const std::vector<double>& x) {
-  const auto n = Eigen::Index(x.size());
-  Eigen::MatrixXd d(n, n);
-  for (Eigen::Index i = 0; i < n; ++i)
-    for (Eigen::Index j = 0; j < n; ++j) d(i, j) = std::abs(x[std::size_t(i)] - x[std::size_t(j)]);
-  return d;
-}
 
 }  // namespace
 

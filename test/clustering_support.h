@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <random>
 #include <utility>
@@ -61,6 +62,15 @@ inline Eigen::MatrixXd random_distances(std::size_t n, std::mt19937& random, int
   std::vector<Eigen::Vector2d> points(n);
   for (auto& p : points) p = Eigen::Vector2d(coordinate(random), coordinate(random));
   return euclidean_distances(points);
+}
+
+// Points on a line, with their distances |x - y|.
+inline Eigen::MatrixXd on_a_line(const std::vector<double>& x) {
+  const auto n = Eigen::Index(x.size());
+  Eigen::MatrixXd d(n, n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) d(i, j) = std::abs(x[std::size_t(i)] - x[std::size_t(j)]);
+  return d;
 }
 
 }  // namespace deformseg_clustering_test

@@ -2,6 +2,7 @@
 // whose strains are known in closed form, against an independent long double computation, on the
 // bending tube's ground truth, across mesh types and thread counts, and on bad input.
 #include "test_support.h"
+#include "deforming_mesh_view.h"
 
 #include <deformseg/default_mesh.h>
 #include <deformseg/internal/strain_math.h>
@@ -423,14 +424,7 @@ TEST_CASE("strain: Surface_mesh, Polyhedron_3 and any DeformingMesh give the sam
   const auto on_surface_mesh = make_bending_tube<Surface_mesh>(spec);
   const auto on_polyhedron = make_bending_tube<Polyhedron>(spec);
 
-  // A model of DeformingMesh that is not a Deforming_mesh: a view of one, through its point maps.
-  struct View {
-    using Face_graph = Polyhedron;
-    const Deforming_mesh<Polyhedron>* animation;
-    const Face_graph& face_graph() const { return animation->face_graph(); }
-    std::size_t num_frames() const { return animation->num_frames(); }
-    auto frame_point_map(std::size_t t) const { return animation->frame_point_map(t); }
-  };
+  using View = test::Deforming_mesh_view<Polyhedron>;
   static_assert(DeformingMesh<View>);
   const View view{&on_polyhedron.animation};
 

@@ -2,6 +2,7 @@
 // their sides, brute force on random fields, invariance to placement, independence of the mesh,
 // and the shared real animations ([data]).
 #include "test_support.h"
+#include "deforming_mesh_view.h"
 
 #include <deformseg/histogram_distance.h>
 #include <deformseg/io/read_animation.h>
@@ -207,14 +208,7 @@ TEST_CASE("strain_histograms: Surface_mesh, Polyhedron_3 and any DeformingMesh g
   using Polyhedron = CGAL::Polyhedron_3<Kernel>;
   const Bending_tube spec = two_joint_tube({.sectors = 8, .rings = 20});
   const auto on_polyhedron = make_bending_tube<Polyhedron>(spec);
-  // A model of DeformingMesh that is not a Deforming_mesh: a view of one, through its point maps.
-  struct View {
-    using Face_graph = Polyhedron;
-    const Deforming_mesh<Polyhedron>* animation;
-    const Face_graph& face_graph() const { return animation->face_graph(); }
-    std::size_t num_frames() const { return animation->num_frames(); }
-    auto frame_point_map(std::size_t t) const { return animation->frame_point_map(t); }
-  };
+  using View = test::Deforming_mesh_view<Polyhedron>;
   static_assert(DeformingMesh<View>);
   const Strain_histograms expected = strain_histograms(make_bending_tube<Surface_mesh>(spec).animation);
   CHECK(strain_histograms(on_polyhedron.animation) == expected);

@@ -6,6 +6,8 @@
 // The yardstick: networkx's exact graph_edit_distance, median 0.29 s at 8 nodes, 26 s at 10.
 //
 //   build/test/bench/ged [--benchmark_filter=...]
+#include "../ged_support.h"
+
 #include <deformseg/ged/exact_ged.h>
 
 #include <benchmark/benchmark.h>
@@ -17,17 +19,11 @@
 
 namespace {
 
-using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, int>;
+using Graph = deformseg::test::Ged_graph;
 
+// Three labels, as key-frame graphs have few kinds.
 Graph random_graph(std::mt19937& rng, std::size_t nodes, double edge_probability) {
-  Graph g(nodes);
-  std::uniform_int_distribution<int> kind(0, 2);
-  std::bernoulli_distribution edge(edge_probability);
-  for (std::size_t v = 0; v < nodes; ++v) g[v] = kind(rng);
-  for (std::size_t u = 0; u < nodes; ++u)
-    for (std::size_t v = u + 1; v < nodes; ++v)
-      if (edge(rng)) boost::add_edge(u, v, g);
-  return g;
+  return deformseg::test::random_labelled_graph(rng, nodes, 3, edge_probability);
 }
 
 // `count` pairs of `nodes`-node graphs; sparse unless `dense`.
