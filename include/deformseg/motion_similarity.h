@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/similarity/evolving_graph_similarity.h>
 #include <deformseg/similarity/similarity.h>
 #include <deformseg/similarity/strain_distribution_similarity.h>
@@ -11,7 +12,6 @@
 #include <Eigen/Core>
 
 #include <cstddef>
-#include <exception>
 #include <ranges>
 #include <vector>
 
@@ -59,19 +59,11 @@ Eigen::MatrixXd similarity_matrix(const Animations& animations, const Policy& po
     for (std::size_t j = i; j < n; ++j) pairs.emplace_back(i, j);
   const auto size = Eigen::Index(n);
   Eigen::MatrixXd values(size, size);
-  std::vector<std::exception_ptr> failures(pairs.size());
-#pragma omp parallel for schedule(dynamic)
-  for (std::ptrdiff_t p = 0; p < std::ptrdiff_t(pairs.size()); ++p) {
-    const auto [i, j] = pairs[std::size_t(p)];
-    try {
-      const double v = policy.compare(descriptions[i], descriptions[j]).value;
-      values(Eigen::Index(i), Eigen::Index(j)) = values(Eigen::Index(j), Eigen::Index(i)) = v;
-    } catch (...) {
-      failures[std::size_t(p)] = std::current_exception();
-    }
-  }
-  for (const auto& failure : failures)
-    if (failure) std::rethrow_exception(failure);
+  internal::parallel_for_each_index(pairs.size(), [&](std::size_t p) {
+    const auto [i, j] = pairs[p];
+    const double v = policy.compare(descriptions[i], descriptions[j]).value;
+    values(Eigen::Index(i), Eigen::Index(j)) = values(Eigen::Index(j), Eigen::Index(i)) = v;
+  });
   return values;
 }
 

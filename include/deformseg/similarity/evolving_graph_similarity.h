@@ -11,13 +11,13 @@
 #include <deformseg/evolving_graph.h>
 #include <deformseg/ged/bipartite_ged.h>
 #include <deformseg/ged/ged_matrix.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/similarity/segment_costs.h>
 #include <deformseg/similarity/similarity.h>
 
 #include <Eigen/Core>
 
 #include <cstddef>
-#include <exception>
 #include <string>
 #include <vector>
 
@@ -120,24 +120,16 @@ struct Evolving_graph_similarity {
 
 private:
   // The edit distances of all key-frame graphs, A's then B's: the two descriptions' own blocks
-  // and the A x B block computed here, pair after pair in parallel.
+  // and the A x B block computed here, pairs in parallel.
   Eigen::MatrixXd joint_distances(const Description& a, const Description& b) const {
     const Eigen::Index na = Eigen::Index(a.graphs.size()), nb = Eigen::Index(b.graphs.size());
     Eigen::MatrixXd d(na + nb, na + nb);
     d.topLeftCorner(na, na) = a.distances;
     d.bottomRightCorner(nb, nb) = b.distances;
-    std::vector<std::exception_ptr> failures(std::size_t(na * nb));
-#pragma omp parallel for schedule(dynamic)
-    for (Eigen::Index p = 0; p < na * nb; ++p) {
-      const Eigen::Index i = p / nb, j = p % nb;
-      try {
-        d(i, na + j) = d(na + j, i) = ged(a.graphs[std::size_t(i)], b.graphs[std::size_t(j)], costs).distance;
-      } catch (...) {
-        failures[std::size_t(p)] = std::current_exception();
-      }
-    }
-    for (const auto& failure : failures)
-      if (failure) std::rethrow_exception(failure);
+    internal::parallel_for_each_index(std::size_t(na * nb), [&](std::size_t p) {
+      const Eigen::Index i = Eigen::Index(p) / nb, j = Eigen::Index(p) % nb;
+      d(i, na + j) = d(na + j, i) = ged(a.graphs[std::size_t(i)], b.graphs[std::size_t(j)], costs).distance;
+    });
     return d;
   }
 

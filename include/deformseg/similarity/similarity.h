@@ -71,8 +71,9 @@ struct Best_score_normalization {
 
   /// @brief The similarity of `result`, the alignment by `policy` of sequences of `n` and `m`
   /// elements.
-  /// @par Complexity O(min(n, m)) (or O(max(n, m))) for a maximising policy (its score on the best
-  /// case), else O(1).
+  /// @par Complexity for a maximising policy, its score of two perfect sequences of the chosen
+  /// length k: O(k^2) for Smith–Waterman (by default k = min(n, m), so no more than the alignment
+  /// itself); else O(1).
   template <alignment::AlignmentPolicy Policy>
   double operator()(const Policy& policy, const alignment::Alignment& result, std::size_t n, std::size_t m) const {
     if (n == 0 || m == 0) return 0.0;
