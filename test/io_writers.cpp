@@ -1,4 +1,4 @@
-// Tests of io/write_obj.h, io/write_ply.h and io/write_sequence.h: exact text, numbers that read
+// Tests of io/write_obj.h, io/write_off.h, io/write_ply.h and io/write_sequence.h: exact text, numbers that read
 // back identically, PLY face colours read back by CGAL, file names that sort in frame order, and
 // the errors.
 #include "test_support.h"
@@ -8,7 +8,9 @@
 #include <deformseg/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/frame_sequence.h>
+#include <deformseg/io/off.h>
 #include <deformseg/io/write_obj.h>
+#include <deformseg/io/write_off.h>
 #include <deformseg/io/write_ply.h>
 #include <deformseg/io/write_sequence.h>
 
@@ -32,6 +34,7 @@
 
 using namespace deformseg;
 using Catch::Matchers::Message;
+using Catch::Matchers::StartsWith;
 namespace fs = std::filesystem;
 
 namespace {
@@ -163,6 +166,26 @@ TEST_CASE("write_obj: the vertices as their shortest exact text, the triangles 1
       CHECK(std::bit_cast<std::uint64_t>(value) == std::bit_cast<std::uint64_t>(frame1[3 * i + k]));
     }
   }
+}
+
+TEST_CASE("write_off: the counts, the vertices as their shortest exact text, the triangles 0-based",
+          "[io][writers][off]") {
+  std::vector<double> xyz(12, 0.0);
+  const std::vector<double> frame1{0.1, 1.0 / 3, -2.5, 1e-300, 123456789.125, -0.0, 2.0 / 3, 1e21, 5e-324, 0, 0, 1};
+  xyz.insert(xyz.end(), frame1.begin(), frame1.end());
+  const Deforming_mesh<Surface_mesh> animation(tetrahedron<Surface_mesh>(), xyz);
+  const fs::path file = output("off_text", "frame1.off");
+  io::write_off(animation, 1, file);
+  CHECK(file_text(file) == "OFF\n# deformseg: frame 1 of 2\n4 4 0\n"
+                           "0.1 0.3333333333333333 -2.5\n"
+                           "1e-300 123456789.125 -0\n"
+                           "0.6666666666666666 1e+21 5e-324\n"
+                           "0 0 1\n" +
+                               face_lines(animation, "3", 0, {}));
+  const io::Triangle_soup soup = io::read_off(file);
+  CHECK(std::ranges::equal(soup.points, frame1));
+  CHECK(std::ranges::equal(soup.triangles, animation.triangles()));
+  CHECK_THROWS_WITH(io::write_off(animation, 2, file), StartsWith(file.string() + ": "));
 }
 
 TEST_CASE("write_obj: a float animation is written in float's shortest form", "[io][writers][obj]") {
@@ -305,6 +328,7 @@ TEST_CASE("sequence_file_name: zero-padded to the width of the last frame", "[io
   CHECK(io::sequence_file_name(99999, 100000) == "frame_99999.ply");
   CHECK(io::sequence_file_name(3, 12, {.format = io::Mesh_format::obj, .prefix = "m", .min_digits = 1}) == "m03.obj");
   CHECK(io::sequence_file_name(0, 1, {.min_digits = 0}) == "frame_0.ply");
+  CHECK(io::sequence_file_name(2, 3, {.format = io::Mesh_format::off}) == "frame_0002.off");
 }
 
 TEST_CASE("write_sequence: names that sort the same plainly and naturally", "[io][writers][sequence]") {
@@ -324,13 +348,13 @@ TEST_CASE("write_sequence: names that sort the same plainly and naturally", "[io
 TEMPLATE_TEST_CASE("write_sequence then read_frame_sequence: the same positions", "[io][writers][sequence]", float,
                    double) {
   const auto animation = moving_tetrahedron<Surface_mesh, TestType>(5);
-  for (const auto format : {io::Mesh_format::obj, io::Mesh_format::ply}) {
-    const bool obj = format == io::Mesh_format::obj;
-    const fs::path folder =
-        test::fresh_dir(std::string("io_writers/round_trip_") + (sizeof(TestType) == 4 ? "float_" : "double_") + (obj ? "obj" : "ply"));
+  for (const auto format : {io::Mesh_format::obj, io::Mesh_format::off, io::Mesh_format::ply}) {
+    const std::string extension = internal::file_extension(format);
+    const fs::path folder = test::fresh_dir(std::string("io_writers/round_trip_") +
+                                            (sizeof(TestType) == 4 ? "float" : "double") + extension);
     const auto files = io::write_sequence(animation, folder, {.format = format});
     REQUIRE(files.size() == 5);
-    CHECK(files[4].filename() == (obj ? "frame_0004.obj" : "frame_0004.ply"));
+    CHECK(files[4].filename() == "frame_0004" + extension);
     const auto read = io::read_frame_sequence<Surface_mesh, TestType>(folder.string());
     REQUIRE(read.num_frames() == 5);
     CHECK(std::ranges::equal(read.all_positions(), animation.all_positions()));
@@ -369,7 +393,7 @@ TEST_CASE("write_sequence rejects bad options, naming the folder or the file", "
     const auto none = [](std::size_t) { return std::vector<Rgb>{}; };
     CHECK_THROWS_MATCHES(io::write_sequence(animation, folder, {.format = io::Mesh_format::obj, .face_colors = none}),
                          invalid_input,
-                         Message(folder.string() + ": face colours need the PLY format: OBJ files have none"));
+                         Message(folder.string() + ": face colours need the PLY format: OBJ and OFF files have none"));
   }
   SECTION("a frame with a wrong number of colours") {
     const auto colors = [](std::size_t t) {

@@ -1,5 +1,5 @@
 /// @file write_sequence.h
-/// @brief Writes every frame of an animation into a folder, one OBJ or PLY file per frame:
+/// @brief Writes every frame of an animation into a folder, one OBJ, OFF or PLY file per frame:
 /// `write_sequence`.
 #pragma once
 
@@ -8,6 +8,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/file_io.h>
 #include <deformseg/io/write_obj.h>
+#include <deformseg/io/write_off.h>
 #include <deformseg/io/write_ply.h>
 
 #include <algorithm>
@@ -25,6 +26,7 @@ namespace deformseg::io {
 /// @brief The mesh file formats `write_sequence` writes.
 enum class Mesh_format {
   obj,  ///< Wavefront OBJ, text, no colours
+  off,  ///< OFF, text, no colours
   ply   ///< PLY, binary or text, with optional face colours
 };
 
@@ -47,6 +49,24 @@ struct Sequence_write_options {
   Ply_encoding ply_encoding = Ply_encoding::binary;
 };
 
+}  // namespace deformseg::io
+
+namespace deformseg::internal {
+
+/// The extension of the files of `format`, with its dot.
+constexpr const char* file_extension(io::Mesh_format format) noexcept {
+  switch (format) {
+    case io::Mesh_format::obj: return ".obj";
+    case io::Mesh_format::off: return ".off";
+    case io::Mesh_format::ply: return ".ply";
+  }
+  return ".ply";
+}
+
+}  // namespace deformseg::internal
+
+namespace deformseg::io {
+
 /// @brief The file name `write_sequence` gives frame `frame` of an animation of `num_frames`
 /// frames: the prefix, the frame number padded with zeros to the same width for every frame,
 /// and the extension, such as `frame_0007.ply`.
@@ -64,7 +84,7 @@ inline std::string sequence_file_name(std::size_t frame, std::size_t num_frames,
   const std::string number = std::to_string(frame);
   const std::size_t width = std::max({options.min_digits, last.size(), number.size()});
   return internal::join(options.prefix, std::string(width - number.size(), '0'), number,
-                        options.format == Mesh_format::obj ? ".obj" : ".ply");
+                        internal::file_extension(options.format));
 }
 
 }  // namespace deformseg::io
@@ -87,6 +107,8 @@ void format_frame(const Deforming_mesh<Graph, Coordinate>& animation, std::size_
   bytes.clear();
   if (options.format == io::Mesh_format::obj) {
     append_obj(animation, frame, bytes);
+  } else if (options.format == io::Mesh_format::off) {
+    append_off(animation, frame, bytes);
   } else {
     const std::vector<Rgb> colors = options.face_colors ? options.face_colors(frame) : std::vector<Rgb>{};
     check_face_colors(colors.size(), animation.num_faces(), file, frame);
@@ -101,7 +123,7 @@ namespace deformseg::io {
 /// @brief Writes every frame of an animation into `directory`, one file per frame, named by
 /// `sequence_file_name` (`frame_0000.ply`, `frame_0001.ply`, ...).
 ///
-/// Each file is what `write_obj` or `write_ply` writes for its frame, built in one buffer reused
+/// Each file is what `write_obj`, `write_off` or `write_ply` writes for its frame, built in one buffer reused
 /// from frame to frame and written with one call. Reading the folder back with
 /// `read_frame_sequence`, into the same `Coordinate` type, gives the same positions exactly.
 ///
@@ -112,19 +134,19 @@ namespace deformseg::io {
 /// @param options `format` (default PLY), `prefix` (default `"frame_"`), `min_digits` (default
 /// 4), `face_colors` (default none; PLY only) and `ply_encoding` (default binary).
 /// @return the files written, in frame order; none for an animation without frames.
-/// @pre `options.face_colors` is empty for OBJ, and gives either no colour or one per face for
+/// @pre `options.face_colors` is empty for OBJ and OFF, and gives either no colour or one per face for
 /// every frame; `options.prefix` is a file name part, without a folder separator.
 /// @throws invalid_input naming the file or folder when a precondition fails, the folder cannot
 /// be created, or a file cannot be written (the frame, for a wrong number of colours). The
 /// frames before the failing one are written.
 /// @par Complexity O(T (V + F)).
-/// @sa write_obj, write_ply, sequence_file_name
+/// @sa write_obj, write_off, write_ply, sequence_file_name
 template <FaceGraph Graph, std::floating_point Coordinate>
 std::vector<std::filesystem::path> write_sequence(const Deforming_mesh<Graph, Coordinate>& animation,
                                                   const std::filesystem::path& directory,
                                                   const Sequence_write_options& options = {}) {
-  if (options.face_colors && options.format == Mesh_format::obj)
-    throw invalid_input("face colours need the PLY format: OBJ files have none", {.file = directory.string()});
+  if (options.face_colors && options.format != Mesh_format::ply)
+    throw invalid_input("face colours need the PLY format: OBJ and OFF files have none", {.file = directory.string()});
   if (options.prefix.find_first_of("/\\") != std::string::npos)
     throw invalid_input(internal::join("the prefix \"", options.prefix, "\" holds a folder separator"),
                         {.file = directory.string()});
