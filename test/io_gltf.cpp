@@ -1,0 +1,410 @@
+// glTF reader: hand-made files with positions computed by hand, and the shared characters.
+#include "gltf_writer.h"
+#include "test_support.h"
+
+#include <deformseg/io/gltf.h>
+#include <deformseg/strain.h>
+
+#include <tiny_gltf.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using deformseg::invalid_input;
+using deformseg::io::Gltf_read_options;
+using deformseg::io::Sampled_gltf;
+using deformseg::io::sample_gltf;
+using deformseg::test::Gltf_writer;
+using Catch::Matchers::Contains;
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+const double half_root2 = std::sqrt(0.5);
+
+// Checks vertex `v` of frame `t` against (x, y, z), to `eps` absolute.
+void check_point(const Sampled_gltf& s, std::size_t t, std::size_t v, double x, double y, double z,
+                 double eps = 1e-12) {
+  INFO("frame " << t << " vertex " << v);
+  REQUIRE(t < s.report.frames);
+  const double* p = s.positions.data() + (t * s.num_vertices + v) * 3;
+  CHECK(p[0] == Approx(x).margin(eps).epsilon(0));
+  CHECK(p[1] == Approx(y).margin(eps).epsilon(0));
+  CHECK(p[2] == Approx(z).margin(eps).epsilon(0));
+}
+
+fs::path write(const Gltf_writer& w, const std::string& name) {
+  const fs::path path = deformseg::test::scratch_dir() / "gltf" / name;
+  fs::create_directories(path.parent_path());
+  if (path.extension() == ".glb")
+    w.write_glb(path);
+  else
+    w.write_gltf(path);
+  return path;
+}
+
+// A triangle (0,0,0), (1,0,0), (0,1,0) as mesh `name`; gives the mesh index.
+int add_triangle_mesh(Gltf_writer& w, const std::string& name = "triangle") {
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  return w.push("meshes", {{"name", name}, {"primitives", json::array({{{"attributes", {{"POSITION", position}}}}})}});
+}
+
+// A channel of `node`'s `path` with keys at `times` and `values` (of `type`).
+void add_channel(json& animation, Gltf_writer& w, int node, const std::string& path, const std::vector<float>& times,
+                 const std::vector<float>& values, const std::string& type, const std::string& interpolation = "LINEAR") {
+  const int input = w.floats(times, "SCALAR");
+  const int output = w.floats(values, type);
+  animation["samplers"].push_back({{"input", input}, {"output", output}, {"interpolation", interpolation}});
+  animation["channels"].push_back(
+      {{"sampler", animation["samplers"].size() - 1}, {"target", {{"node", node}, {"path", path}}}});
+}
+
+json new_animation(const std::string& name) {
+  return {{"name", name}, {"samplers", json::array()}, {"channels", json::array()}};
+}
+
+// Three clips moving one node that shows a triangle: "linear", "step", "cubic".
+Gltf_writer sampler_scene() {
+  Gltf_writer w;
+  const int mesh = add_triangle_mesh(w);
+  w.push("nodes", {{"name", "mover"}, {"mesh", mesh}});
+  w.push("scenes", {{"nodes", {0}}});
+  // Translation keys 0..1 s; rotation keys 0.5..1.5 s, the second stored negated (the same
+  // rotation, 90 degrees about z): the shortest path turns by +90 degrees, not -270.
+  json linear = new_animation("linear");
+  add_channel(linear, w, 0, "translation", {0, 1}, {0, 0, 0, 2, 4, 0}, "VEC3");
+  const float s = float(half_root2);
+  add_channel(linear, w, 0, "rotation", {0.5f, 1.5f}, {0, 0, 0, 1, 0, 0, -s, -s}, "VEC4");
+  w.push("animations", linear);
+  json step = new_animation("step");
+  add_channel(step, w, 0, "translation", {0, 1, 2}, {0, 0, 0, 1, 0, 0, 5, 0, 0}, "VEC3", "STEP");
+  w.push("animations", step);
+  // CUBICSPLINE: per key in-tangent, value, out-tangent; keys at 0 and 2 s.
+  json cubic = new_animation("cubic");
+  add_channel(cubic, w, 0, "translation", {0, 2}, {9, 9, 9, 0, 0, 0, 3, 0, 0, -1, 0, 0, 1, 0, 0, 7, 7, 7}, "VEC3",
+              "CUBICSPLINE");
+  add_channel(cubic, w, 0, "rotation", {0, 2}, {0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0},
+              "VEC4", "CUBICSPLINE");
+  w.push("animations", cubic);
+  return w;
+}
+
+}  // namespace
+
+TEST_CASE("gltf: LINEAR translation and shortest-path slerp rotation, clamped outside their keys", "[gltf]") {
+  const fs::path path = write(sampler_scene(), "samplers.gltf");
+  const Sampled_gltf s = sample_gltf(path, {.clip = "linear", .fps = 2});
+  REQUIRE(s.num_vertices == 3);
+  REQUIRE(s.triangles.size() == 1);
+  CHECK(s.report.clip == "linear");
+  CHECK(s.report.clip_index == 0);
+  CHECK(s.report.start == 0);
+  CHECK(s.report.end == 1.5);
+  REQUIRE(s.report.frames == 4);  // 0, 0.5, 1, 1.5 s
+  // Vertex 1 at (1,0,0): the translation, plus (1,0,0) rotated.
+  check_point(s, 0, 1, 1, 0, 0);              // rotation clamped before its first key
+  check_point(s, 1, 1, 2, 2, 0);              // translation (1,2,0), rotation at its first key
+  check_point(s, 2, 1, 2 + half_root2, 4 + half_root2, 0, 1e-6);  // 45 degrees; float keys
+  check_point(s, 3, 1, 2, 5, 0, 1e-6);        // translation clamped after its last key; 90 degrees
+  check_point(s, 3, 2, 1, 4, 0, 1e-6);        // (0,1,0) turned to (-1,0,0)
+}
+
+TEST_CASE("gltf: STEP holds each key until the next", "[gltf]") {
+  const fs::path path = write(sampler_scene(), "samplers.gltf");
+  const Sampled_gltf s = sample_gltf(path, {.clip = "step", .fps = 2});
+  REQUIRE(s.report.frames == 5);
+  const double x[] = {0, 0, 1, 1, 5};
+  for (std::size_t t = 0; t < 5; ++t) check_point(s, t, 0, x[t], 0, 0);
+}
+
+TEST_CASE("gltf: CUBICSPLINE Hermite with tangents scaled by the key interval, quaternions normalised", "[gltf]") {
+  const fs::path path = write(sampler_scene(), "samplers.gltf");
+  const Sampled_gltf s = sample_gltf(path, {.clip = "2", .fps = 2});  // the clip by index
+  CHECK(s.report.clip == "cubic");
+  REQUIRE(s.report.frames == 5);
+  // x(u) = h10 * 2 * 3 + h01 * 1 + h11 * 2 * (-1), by hand at u = 0, 1/4, 1/2, 3/4, 1.
+  const double x[] = {0, 1.09375, 1.5, 1.40625, 1};
+  for (std::size_t t = 0; t < 5; ++t) check_point(s, t, 0, x[t], 0, 0);
+  // Rotation halfway between identity and 180 degrees about z, no tangents: (0,0,1/2,1/2)
+  // normalised is 90 degrees, so vertex 1 (1,0,0) goes to (0,1,0).
+  check_point(s, 2, 1, 1.5, 1, 0);
+  check_point(s, 4, 1, 1 - 1, 0, 0);  // 180 degrees at the last key: (1,0,0) -> (-1,0,0)
+}
+
+TEST_CASE("gltf: two-bone skinned strip, the skinned mesh node's own scale ignored", "[gltf]") {
+  Gltf_writer w;
+  // Six vertices: x = 0, 1, 2 on y = 0, then on y = 1. Joint 0 (root) at the origin, joint 1
+  // (tip) at x = 1; the middle column is half on each.
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0}, "VEC3");
+  const int joints = w.values(std::vector<std::uint8_t>{0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0,
+                                                        1, 0, 0, 0},
+                              Gltf_writer::ubyte_type, "VEC4");
+  // Weights not summing to 1 (2 and 1 + 1): they are normalised.
+  const int weights = w.floats({2, 0, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0, 1, 0, 0, 0}, "VEC4");
+  const int indices = w.indices({0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4});
+  const int ibm = w.floats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,    //
+                            1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 1},  // translate(-1, 0, 0)
+                           "MAT4");
+  w.push("meshes", {{"name", "strip"},
+                    {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"JOINTS_0", joints},
+                                                                 {"WEIGHTS_0", weights}}},
+                                                 {"indices", indices}}})}});
+  w.push("nodes", {{"name", "root"}, {"children", {1}}});
+  w.push("nodes", {{"name", "tip"}, {"translation", {1, 0, 0}}});
+  w.push("nodes", {{"name", "body"}, {"mesh", 0}, {"skin", 0}, {"scale", {5, 5, 5}}, {"translation", {7, 0, 0}}});
+  w.push("skins", {{"joints", {0, 1}}, {"inverseBindMatrices", ibm}});
+  w.push("scenes", {{"nodes", {0, 2}}});
+  json bend = new_animation("bend");
+  const float s = float(half_root2);
+  add_channel(bend, w, 1, "rotation", {0, 1}, {0, 0, 0, 1, 0, 0, s, s}, "VEC4");
+  w.push("animations", bend);
+  const fs::path path = write(w, "strip.gltf");
+
+  const Sampled_gltf s30 = sample_gltf(path);
+  REQUIRE(s30.report.frames == 31);
+  REQUIRE(s30.num_vertices == 6);
+  REQUIRE(s30.triangles.size() == 4);
+  // Rest pose: the file's positions, the node's scale and translation not applied.
+  const double rest[6][3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
+  for (std::size_t v = 0; v < 6; ++v) check_point(s30, 0, v, rest[v][0], rest[v][1], rest[v][2]);
+  // At 1 s the tip turned 90 degrees about z around (1,0,0): (2,0,0) -> (1,1,0), (2,1,0) ->
+  // (0,1,0); (1,1,0) half rigid, half turned to (0,0,0): (0.5,0.5,0).
+  const double bent[6][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0}, {0, 1, 0}};
+  for (std::size_t v = 0; v < 6; ++v) check_point(s30, 30, v, bent[v][0], bent[v][1], bent[v][2], 1e-6);
+  // At 0.5 s, 45 degrees: (2,0,0) -> (1 + c, c, 0); (1,1,0) -> ((1 + 1 - c) / 2, (1 + c) / 2, 0).
+  const double c = half_root2;
+  check_point(s30, 15, 2, 1 + c, c, 0, 1e-6);
+  check_point(s30, 15, 4, (2 - c) / 2, (1 + c) / 2, 0, 1e-6);
+
+  SECTION("the same as a .glb, and on one thread or two") {
+    const fs::path glb = write(w, "strip.glb");
+    const Sampled_gltf one = sample_gltf(glb, {.threads = 1});
+    const Sampled_gltf two = sample_gltf(glb, {.threads = 2});
+    CHECK(one.positions == s30.positions);
+    CHECK(two.positions == s30.positions);
+    CHECK(one.triangles == s30.triangles);
+  }
+  SECTION("read_gltf gives a Deforming_mesh with the report") {
+    deformseg::io::Gltf_read_report report;
+    const auto animation = deformseg::io::read_gltf(path, {.repair = {.weld = false}}, &report);
+    CHECK(animation.num_frames() == 31);
+    CHECK(animation.num_vertices() == 6);
+    CHECK(animation.num_faces() == 4);
+    CHECK(report.clip == "bend");
+    CHECK(report.repair.input_vertices == 6);
+    CHECK(animation.frame_positions(30)[3 * 2 + 1] == Approx(1).margin(1e-6));
+  }
+}
+
+TEST_CASE("gltf: animated morph target weights, node and mesh weights at rest", "[gltf]") {
+  Gltf_writer w;
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  const int lift = w.floats({0, 0, 0, 0, 0, 0, 0, 0, 1}, "VEC3");     // target 0: vertex 2 up
+  const int stretch = w.floats({0, 0, 0, 1, 0, 0, 0, 0, 0}, "VEC3");  // target 1: vertex 1 out
+  w.push("meshes", {{"name", "face"},
+                    {"weights", {0.25, 0.75}},
+                    {"primitives", json::array({{{"attributes", {{"POSITION", position}}},
+                                                 {"targets", json::array({{{"POSITION", lift}}, {{"POSITION", stretch}}})}}})}});
+  w.push("nodes", {{"mesh", 0}, {"translation", {1, 2, 3}}});
+  w.push("scenes", {{"nodes", {0}}});
+
+  SECTION("the mesh's weights without an animation") {
+    const Sampled_gltf s = sample_gltf(write(w, "morph_mesh.gltf"));
+    REQUIRE(s.report.frames == 1);
+    CHECK(s.report.clip_index == deformseg::io::Gltf_read_report::no_clip);
+    check_point(s, 0, 1, 1 + 1.75, 2, 3);
+    check_point(s, 0, 2, 1, 3, 3.25);
+  }
+  SECTION("the node's weights before the mesh's") {
+    w.doc["nodes"][0]["weights"] = {1, 0};
+    const Sampled_gltf s = sample_gltf(write(w, "morph_node.gltf"));
+    check_point(s, 0, 1, 2, 2, 3);
+    check_point(s, 0, 2, 1, 3, 4);
+  }
+  SECTION("the animated weights before both") {
+    w.doc["nodes"][0]["weights"] = {1, 0};
+    json talk = new_animation("talk");
+    add_channel(talk, w, 0, "weights", {0, 1}, {0, 0, 1, 0.5f}, "SCALAR");
+    w.push("animations", talk);
+    const Sampled_gltf s = sample_gltf(write(w, "morph_animated.gltf"), {.fps = 2});
+    REQUIRE(s.report.frames == 3);
+    check_point(s, 0, 1, 2, 2, 3);
+    check_point(s, 0, 2, 1, 3, 3);
+    check_point(s, 1, 1, 2.25, 2, 3);  // weights (0.5, 0.25)
+    check_point(s, 1, 2, 1, 3, 3.5);
+    check_point(s, 2, 1, 2.5, 2, 3);
+    check_point(s, 2, 2, 1, 3, 4);
+  }
+}
+
+TEST_CASE("gltf: a matrix node, and a rigid mesh child of an animated node", "[gltf]") {
+  Gltf_writer w;
+  const int mesh = add_triangle_mesh(w);
+  // Column-major: rotation by 90 degrees about z, scale 2, translation (1,2,3).
+  w.push("nodes", {{"name", "frame"}, {"matrix", {0, 2, 0, 0, -2, 0, 0, 0, 0, 0, 2, 0, 1, 2, 3, 1}}, {"children", {1}}});
+  w.push("nodes", {{"name", "arm"}, {"translation", {1, 0, 0}}, {"children", {2}}});
+  w.push("nodes", {{"name", "hand"}, {"mesh", mesh}, {"translation", {0, 0, 1}}});
+  w.push("scenes", {{"nodes", {0}}});
+
+  SECTION("static") {
+    const Sampled_gltf s = sample_gltf(write(w, "matrix.gltf"));
+    // hand (x,y,z) -> arm (x + 1, y, z + 1) -> frame (1 - 2y, 2 (x + 1) + 2, 2 (z + 1) + 3)
+    check_point(s, 0, 0, 1, 4, 5);
+    check_point(s, 0, 1, 1, 6, 5);
+    check_point(s, 0, 2, -1, 4, 5);
+  }
+  SECTION("the arm moving carries the hand") {
+    json lift = new_animation("lift");
+    add_channel(lift, w, 1, "translation", {0, 1}, {1, 0, 0, 1, 0, 2}, "VEC3");
+    w.push("animations", lift);
+    const Sampled_gltf s = sample_gltf(write(w, "matrix_animated.gltf"), {.fps = 2});
+    REQUIRE(s.report.frames == 3);
+    check_point(s, 1, 0, 1, 4, 7);  // arm at (1,0,1): z doubled by the frame's scale
+    check_point(s, 2, 1, 1, 6, 9);
+  }
+}
+
+TEST_CASE("gltf: normalised, strided and sparse accessors (KHR_mesh_quantization)", "[gltf]") {
+  Gltf_writer w;
+  w.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+  w.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+  // Normalised shorts, 8 bytes apart (6 of data, 2 of padding).
+  const std::vector<std::int16_t> interleaved = {0, 0, 0, 99, 32767, 0, 0, 99, 0, 16384, 0, 99, 5, 5, 5, 99};
+  const int view = w.view(interleaved.data(), interleaved.size() * 2, 8);
+  const int position = w.accessor(view, Gltf_writer::short_type, 4, "VEC3", true);
+  // Vertex 3 replaced by (-32767, -32768, 0): (-1, -1, 0), -32768 clamped to -1.
+  const std::vector<std::uint8_t> sparse_index = {3};
+  const std::vector<std::int16_t> sparse_value = {-32767, -32768, 0};
+  const int index_view = w.view(sparse_index.data(), 1);
+  const int value_view = w.view(sparse_value.data(), 6);
+  w.doc["accessors"][position]["sparse"] = {{"count", 1},
+                                            {"indices", {{"bufferView", index_view}, {"componentType", Gltf_writer::ubyte_type}}},
+                                            {"values", {{"bufferView", value_view}}}};
+  const int indices = w.values(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3}, Gltf_writer::ushort_type, "SCALAR");
+  w.push("meshes", {{"primitives", json::array({{{"attributes", {{"POSITION", position}}}, {"indices", indices}}})}});
+  w.push("nodes", {{"mesh", 0}});
+  w.push("scenes", {{"nodes", {0}}});
+  // A rotation stored as normalised shorts: (0,0,1,1) / sqrt 2 after normalisation.
+  json turn = new_animation("turn");
+  const int input = w.floats({0, 1}, "SCALAR");
+  const int output = w.values(std::vector<std::int16_t>{0, 0, 0, 32767, 0, 0, 32767, 32767}, Gltf_writer::short_type, "VEC4", true);
+  turn["samplers"].push_back({{"input", input}, {"output", output}});
+  turn["channels"].push_back({{"sampler", 0}, {"target", {{"node", 0}, {"path", "rotation"}}}});
+  w.push("animations", turn);
+
+  const Sampled_gltf s = sample_gltf(write(w, "quantized.gltf"), {.fps = 1});
+  REQUIRE(s.report.frames == 2);
+  REQUIRE(s.num_vertices == 4);
+  check_point(s, 0, 1, 1, 0, 0);
+  check_point(s, 0, 2, 0, 16384.0 / 32767.0, 0);
+  check_point(s, 0, 3, -1, -1, 0);
+  check_point(s, 1, 1, 0, 1, 0);  // turned 90 degrees about z
+  check_point(s, 1, 3, 1, -1, 0);
+}
+
+TEST_CASE("gltf: the frame count rule", "[gltf]") {
+  const auto frames_for = [](float end, const std::string& name) {
+    Gltf_writer w;
+    add_triangle_mesh(w);
+    w.push("nodes", {{"mesh", 0}});
+    json move = new_animation("move");
+    add_channel(move, w, 0, "translation", {0, end}, {0, 0, 0, end, 0, 0}, "VEC3");
+    w.push("animations", move);
+    return sample_gltf(write(w, name));
+  };
+  CHECK(frames_for(1, "frames_1.gltf").report.frames == 31);
+  const Sampled_gltf longer = frames_for(1.05f, "frames_1_05.gltf");
+  REQUIRE(longer.report.frames == 33);  // 0, 1/30, ..., 31/30, then 1.05 itself
+  check_point(longer, 31, 0, 31.0 / 30, 0, 0, 1e-6);
+  check_point(longer, 32, 0, 1.05, 0, 0, 1e-6);
+  CHECK(frames_for(float(10.0 / 30), "frames_float.gltf").report.frames == 11);  // no spurious 12th
+  CHECK(frames_for(0, "frames_0.gltf").report.frames == 1);
+  CHECK(deformseg::io::gltf_contents(write(Gltf_writer(sampler_scene()), "samplers.gltf"), 2).clips.at(2).frames == 5);
+}
+
+TEST_CASE("gltf: a non-TRIANGLES primitive is skipped and reported", "[gltf]") {
+  Gltf_writer w;
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  w.push("meshes", {{"name", "wire"},
+                    {"primitives", json::array({{{"attributes", {{"POSITION", position}}}},
+                                                {{"attributes", {{"POSITION", position}}}, {"mode", 1}}})}});
+  w.push("nodes", {{"mesh", 0}});
+  const Sampled_gltf s = sample_gltf(write(w, "lines.gltf"));  // no scene: every root node
+  CHECK(s.num_vertices == 3);
+  REQUIRE(s.report.skipped.size() == 1);
+  CHECK(s.report.skipped[0] == "mesh 'wire' primitive 1: mode LINES, skipped");
+  const auto contents = deformseg::io::gltf_contents(write(w, "lines.gltf"));
+  REQUIRE(contents.meshes.size() == 1);
+  CHECK(contents.meshes[0].primitives.at(1).mode == "LINES");
+  CHECK(contents.meshes[0].instances == 1);
+  CHECK(contents.vertices == 3);
+  CHECK(contents.triangles == 1);
+}
+
+TEST_CASE("gltf: refusals name the file and what is wrong", "[gltf]") {
+  SECTION("a clip that does not exist lists the clips that do") {
+    const fs::path path = write(sampler_scene(), "samplers.gltf");
+    CHECK_THROWS_WITH(sample_gltf(path, {.clip = "dance"}),
+                      Contains(path.string()) && Contains("no clip 'dance'") && Contains("'linear', 'step', 'cubic'"));
+    CHECK_THROWS_AS(sample_gltf(path, {.clip = "3"}), invalid_input);
+  }
+  SECTION("Draco compression, an unknown required extension") {
+    Gltf_writer w = sampler_scene();
+    w.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    w.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    const fs::path path = write(w, "draco.gltf");
+    CHECK_THROWS_WITH(sample_gltf(path), Contains(path.string()) && Contains("KHR_draco_mesh_compression"));
+    w.doc["extensionsRequired"] = {"EXT_unheard_of"};
+    CHECK_THROWS_WITH(sample_gltf(write(w, "unknown.gltf")), Contains("EXT_unheard_of"));
+  }
+  SECTION("no triangle") {
+    Gltf_writer w;
+    w.push("nodes", {{"name", "empty"}});
+    CHECK_THROWS_WITH(sample_gltf(write(w, "empty.gltf")), Contains("no triangle"));
+  }
+  SECTION("a missing file, a parse error, a truncated GLB") {
+    const fs::path missing = deformseg::test::scratch_dir() / "gltf" / "missing.glb";
+    CHECK_THROWS_WITH(sample_gltf(missing), Contains(missing.string()));
+    const fs::path broken = deformseg::test::write_file("gltf/broken.gltf", "{\"asset\": {\"version\": \"2.0\"");
+    CHECK_THROWS_WITH(sample_gltf(broken), Contains(broken.string()) && Contains("not a valid glTF"));
+    const fs::path glb = write(sampler_scene(), "whole.glb");
+    std::ifstream in(glb, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (std::size_t cut : {std::size_t(10), bytes.size() / 2, bytes.size() - 4}) {
+      const fs::path truncated = deformseg::test::write_file("gltf/truncated.glb", bytes.substr(0, cut));
+      CHECK_THROWS_WITH(sample_gltf(truncated), Contains(truncated.string()));
+    }
+  }
+  SECTION("accessors and indices outside their buffers") {
+    Gltf_writer w = sampler_scene();
+    w.doc["accessors"][0]["count"] = 4;  // 48 bytes from a view of 36
+    CHECK_THROWS_WITH(sample_gltf(write(w, "bounds.gltf")), Contains("bounds.gltf") && Contains("accessor 0"));
+    w.doc["accessors"][0]["count"] = std::size_t(1) << 62;  // an overflow, not an allocation
+    CHECK_THROWS_AS(sample_gltf(write(w, "huge.gltf")), invalid_input);
+    w = sampler_scene();
+    w.doc["bufferViews"][0]["byteLength"] = 1000000;
+    CHECK_THROWS_WITH(sample_gltf(write(w, "view.gltf")), Contains("buffer view 0"));
+    w = sampler_scene();
+    const int indices = w.indices({0, 1, 3});
+    w.doc["meshes"][0]["primitives"][0]["indices"] = indices;
+    CHECK_THROWS_WITH(sample_gltf(write(w, "index.gltf")), Contains("mesh 'triangle' primitive 0") && Contains("index 2"));
+    w = sampler_scene();
+    w.doc["animations"][0]["samplers"][0]["input"] = 99;
+    CHECK_THROWS_WITH(sample_gltf(write(w, "sampler.gltf")), Contains("accessor 99"));
+  }
+  SECTION("a node hierarchy with a cycle") {
+    Gltf_writer w = sampler_scene();
+    w.doc["scenes"][0]["nodes"] = json::array();
+    w.push("nodes", {{"children", {2}}});
+    w.push("nodes", {{"children", {1}}});
+    CHECK_THROWS_WITH(sample_gltf(write(w, "cycle.gltf")), Contains("cycle"));
+  }
+}
