@@ -408,3 +408,209 @@ TEST_CASE("gltf: refusals name the file and what is wrong", "[gltf]") {
     CHECK_THROWS_WITH(sample_gltf(write(w, "cycle.gltf")), Contains("cycle"));
   }
 }
+
+// ---- The shared characters (../shared/data/characters, SOURCE.md and motions.csv) ------------
+
+namespace {
+
+fs::path characters() { return deformseg::test::data_dir() / "characters"; }
+
+struct Source_clip {
+  double start = 0, end = 0;
+  std::size_t channels = 0;
+};
+
+struct Source_file {
+  std::size_t vertices = 0, triangles = 0;
+  std::map<std::string, Source_clip> clips;
+};
+
+// SOURCE.md: per file a "## NAME.glb: ..." section with a "- totals: V vertices, F triangles"
+// line and a table "| clip | start s | end s | duration s | channels | ...".
+std::map<std::string, Source_file> read_source_md() {
+  std::ifstream in(characters() / "SOURCE.md");
+  std::map<std::string, Source_file> files;
+  std::string line, current;
+  while (std::getline(in, line)) {
+    if (line.starts_with("## ") && line.find(".glb:") != std::string::npos) {
+      current = line.substr(3, line.find(".glb:") + 1);
+    } else if (!current.empty() && line.starts_with("- totals: ")) {
+      std::istringstream(line.substr(10)) >> files[current].vertices;
+      std::istringstream(line.substr(line.find("vertices, ") + 10)) >> files[current].triangles;
+    } else if (!current.empty() && line.starts_with("| ") && !line.starts_with("| clip") && !line.starts_with("|--")) {
+      std::vector<std::string> cells;
+      std::stringstream row(line.substr(1));
+      for (std::string cell; std::getline(row, cell, '|');) cells.push_back(cell.substr(1, cell.size() - 2));
+      if (cells.size() < 5) continue;
+      files[current].clips[cells[0]] = {std::stod(cells[1]), std::stod(cells[2]), std::stoul(cells[4])};
+    }
+  }
+  return files;
+}
+
+// motions.csv: file -> the clips it lists.
+std::map<std::string, std::vector<std::string>> read_motions_csv() {
+  std::ifstream in(characters() / "motions.csv");
+  std::map<std::string, std::vector<std::string>> clips;
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    const std::size_t comma = line.find(','), second = line.find(',', comma + 1);
+    if (second != std::string::npos) clips[line.substr(0, comma)].push_back(line.substr(comma + 1, second - comma - 1));
+  }
+  return clips;
+}
+
+// The sampling rule counted frame by frame: t = start + k / fps while t <= end (to a thousandth
+// of a frame), then the end when it is off the grid.
+std::size_t frames_by_rule(double start, double end, double fps) {
+  std::size_t k = 0;
+  while (start + double(k + 1) / fps <= end + 1e-3 / fps) ++k;
+  return k + 1 + (end - (start + double(k) / fps) > 1e-3 / fps ? 1 : 0);
+}
+
+}  // namespace
+
+TEST_CASE("gltf: every clip of motions.csv reads, with the frames of the sampling rule", "[gltf][data]") {
+  const auto source = read_source_md();
+  const auto motions = read_motions_csv();
+  REQUIRE(motions.size() == 7);
+  std::size_t clips_read = 0;
+  for (const auto& [name, clips] : motions) {
+    INFO(name);
+    const fs::path path = characters() / name;
+    const Source_file& expected = source.at(name);
+    const auto contents = deformseg::io::gltf_contents(path);
+    CHECK(contents.vertices == expected.vertices);
+    CHECK(contents.triangles == expected.triangles);
+    std::map<std::string, deformseg::io::Gltf_clip_info> info;
+    for (const auto& clip : contents.clips) info[clip.name] = clip;
+    CHECK(info.size() == expected.clips.size());
+    const deformseg::io::Gltf_file file(path);
+    for (const std::string& clip : clips) {
+      INFO(clip);
+      const Source_clip& times = expected.clips.at(clip);
+      const auto& listed = info.at(clip);
+      CHECK(std::abs(listed.start - times.start) <= 5e-4);  // SOURCE.md has 3 decimals
+      CHECK(std::abs(listed.end - times.end) <= 5e-4);
+      CHECK(listed.channels == times.channels);
+      const Sampled_gltf s = file.sample({.clip = clip});
+      CHECK(s.report.clip == clip);
+      CHECK(s.report.frames == frames_by_rule(listed.start, listed.end, 30));
+      CHECK(s.report.frames == listed.frames);
+      CHECK(s.num_vertices == expected.vertices);
+      CHECK(s.triangles.size() == expected.triangles);
+      CHECK(s.positions.size() == s.report.frames * 3 * s.num_vertices);
+      CHECK(std::all_of(s.positions.begin(), s.positions.end(), [](double x) { return std::isfinite(x); }));
+      ++clips_read;
+    }
+  }
+  CHECK(clips_read == 362);
+}
+
+TEST_CASE("gltf: the five KayKit bodies give the same frames per clip", "[gltf][data]") {
+  const auto knight = deformseg::io::gltf_contents(characters() / "Knight.glb");
+  REQUIRE(knight.clips.size() == 76);
+  std::size_t zero_second = 0;
+  for (const auto& clip : knight.clips) zero_second += clip.duration == 0 ? 1 : 0;
+  CHECK(zero_second == 7);
+  for (const char* body : {"Barbarian.glb", "Mage.glb", "Rogue.glb", "Rogue_Hooded.glb"}) {
+    INFO(body);
+    const auto other = deformseg::io::gltf_contents(characters() / body);
+    REQUIRE(other.clips.size() == knight.clips.size());
+    for (std::size_t c = 0; c < knight.clips.size(); ++c) {
+      CHECK(other.clips[c].name == knight.clips[c].name);
+      CHECK(other.clips[c].frames == knight.clips[c].frames);
+    }
+    REQUIRE(other.skins.size() == 1);
+    CHECK(other.skins[0].joints == 41);
+  }
+}
+
+namespace {
+
+bool keep_no_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+// A copy of `from` whose scene roots hang below a new node that rotates, moves and scales them.
+fs::path moved_copy(const fs::path& from, const std::string& name) {
+  tinygltf::TinyGLTF gltf;
+  gltf.SetImageLoader(&keep_no_image, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  REQUIRE(gltf.LoadBinaryFromFile(&model, &err, &warn, from.string()));
+  model.images.clear();  // geometry only: no texture to write back
+  model.textures.clear();
+  model.materials.clear();
+  for (auto& mesh : model.meshes)
+    for (auto& primitive : mesh.primitives) primitive.material = -1;
+  tinygltf::Node parent;
+  parent.name = "moved";
+  parent.translation = {3, -2, 5};
+  parent.rotation = {0.2, -0.4, 0.1, std::sqrt(1 - 0.04 - 0.16 - 0.01)};
+  parent.scale = {2.5, 2.5, 2.5};
+  auto& scene = model.scenes.at(std::size_t(std::max(model.defaultScene, 0)));
+  parent.children = scene.nodes;
+  model.nodes.push_back(parent);
+  scene.nodes = {int(model.nodes.size()) - 1};
+  const fs::path to = deformseg::test::scratch_dir() / "gltf" / name;
+  fs::create_directories(to.parent_path());
+  REQUIRE(gltf.WriteGltfSceneToFile(&model, to.string(), false, true, false, true));
+  return to;
+}
+
+}  // namespace
+
+TEST_CASE("gltf: a rotated, moved, scaled copy of the Fox gives the same strain", "[gltf][data]") {
+  const fs::path fox = characters() / "Fox.glb";
+  const fs::path moved = moved_copy(fox, "fox_moved.glb");
+  const auto original = deformseg::io::read_gltf(fox, {.clip = "Walk"});
+  const auto copy = deformseg::io::read_gltf(moved, {.clip = "Walk"});
+  REQUIRE(original.num_frames() == 23);
+  REQUIRE(copy.num_frames() == original.num_frames());
+  REQUIRE(copy.num_faces() == original.num_faces());
+  // The copy's positions really moved.
+  CHECK(std::abs(copy.all_positions()[0] - original.all_positions()[0]) > 1e-3);
+  const auto a = deformseg::compute_strain(original);
+  const auto b = deformseg::compute_strain(copy);
+  double largest = 0;
+  for (std::size_t t = 0; t < a.num_frames(); ++t)
+    for (std::size_t f = 0; f < a.num_faces(); ++f) {
+      CHECK(b(f, t) == Approx(a(f, t)).margin(1e-6));
+      largest = std::max(largest, double(std::abs(a(f, t))));
+    }
+  CHECK(largest > 1e-3);  // the Fox does deform
+}
+
+TEST_CASE("gltf: the RobotExpressive robot reads: rigid parts on bones, skinned hands, morph targets", "[gltf][data]") {
+  const deformseg::io::Gltf_file file(characters() / "RobotExpressive.glb");
+  const Sampled_gltf s = file.sample({.clip = "Wave"});
+  CHECK(s.num_vertices == 7214);
+  CHECK(s.triangles.size() == 3237);
+  CHECK(s.report.frames == frames_by_rule(s.report.start, s.report.end, 30));
+  std::size_t repeating = 0;  // triangles that repeat a vertex, as SOURCE.md says
+  for (const auto& t : s.triangles) repeating += (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) ? 1 : 0;
+  CHECK(repeating == 3);
+  // The hands move: some vertex travels during the wave.
+  double travel = 0;
+  for (std::size_t i = 0; i < 3 * s.num_vertices; ++i)
+    travel = std::max(travel, std::abs(s.positions[(s.report.frames / 2) * 3 * s.num_vertices + i] - s.positions[i]));
+  CHECK(travel > 0.1);
+}
+
+TEST_CASE("gltf: the robot's 3 degenerate triangles are reported by the repair", "[gltf][data][repair]") {
+  deformseg::io::Gltf_read_report report;
+  const auto robot = deformseg::io::read_gltf(characters() / "RobotExpressive.glb", {.clip = "Wave"}, &report);
+  CHECK(report.repair.degenerate_triangles == 3);
+  CHECK(robot.num_faces() <= 3237 - 3);
+}
+
+TEST_CASE("gltf: the Fox, a triangle soup, is welded to 290 vertices", "[gltf][data][repair]") {
+  deformseg::io::Gltf_read_report report;
+  const auto fox = deformseg::io::read_gltf(characters() / "Fox.glb", {.clip = "Run"}, &report);
+  CHECK(report.repair.input_vertices == 1728);
+  CHECK(report.repair.welded_vertices == 1728 - 290);
+  CHECK(fox.num_vertices() >= 290);
+  CHECK(fox.num_faces() == 576);
+}

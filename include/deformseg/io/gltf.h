@@ -1,7 +1,8 @@
 /// @file gltf.h
 /// @brief Reads glTF 2.0 characters (`.gltf`, `.glb`): one clip of a skinned, morphed, rigidly
 /// parented scene sampled into an animation with fixed connectivity (`read_gltf`,
-/// `sample_gltf`), and what a file holds (`gltf_contents`).
+/// `sample_gltf`, or `Gltf_file` for many clips of one file), and what a file holds
+/// (`gltf_contents`).
 ///
 /// tinygltf parses the JSON and the buffers; everything else follows the glTF 2.0 specification
 /// here: the default scene's node hierarchy, every TRIANGLES primitive of every mesh node
@@ -252,17 +253,28 @@ inline void sample_frames(const Rig& rig, const Clip* clip, double fps, std::siz
   }
 }
 
-inline io::Sampled_gltf sample(const std::filesystem::path& path, const io::Gltf_read_options& options) {
-  check_options(options);
-  const tinygltf::Model model = load_model(path);
-  check_extensions(model);
-  Rig rig = read_rig(model);
-  if (rig.geometry.triangles.empty())
+/// A parsed file and the scene's geometry, read once for any number of clips.
+struct Loaded_file {
+  tinygltf::Model model{};
+  Rig rig{};
+};
+
+inline Loaded_file load_file(const std::filesystem::path& path) {
+  Loaded_file file{.model = load_model(path)};
+  check_extensions(file.model);
+  file.rig = read_rig(file.model);
+  if (file.rig.geometry.triangles.empty())
     throw invalid_input("the default scene has no triangle (no TRIANGLES primitive with POSITION on a mesh node)");
+  return file;
+}
+
+inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_options& options) {
+  check_options(options);
+  const Rig& rig = file.rig;
   io::Sampled_gltf sampled;
-  const std::optional<std::size_t> clip_index = select_clip(model, options.clip);
+  const std::optional<std::size_t> clip_index = select_clip(file.model, options.clip);
   std::optional<Clip> clip;
-  if (clip_index) clip = read_clip(model, *clip_index);
+  if (clip_index) clip = read_clip(file.model, *clip_index);
   auto& report = sampled.report;
   report.frames = clip ? frame_count(clip->start, clip->end, options.fps) : 1;
   if (clip) {
@@ -278,7 +290,7 @@ inline io::Sampled_gltf sample(const std::filesystem::path& path, const io::Gltf
   sampled.num_vertices = rig.geometry.vertices;
   sampled.positions.resize(report.frames * 3 * rig.geometry.vertices);
   sample_frames(rig, clip ? &*clip : nullptr, options.fps, report.frames, options.threads, sampled.positions);
-  sampled.triangles = std::move(rig.geometry.triangles);
+  sampled.triangles = rig.geometry.triangles;
   return sampled;
 }
 
@@ -332,49 +344,126 @@ inline io::Gltf_contents contents(const std::filesystem::path& path, double fps)
 
 namespace deformseg::io {
 
-/// @brief Samples one clip of a glTF 2.0 file into positions and triangles, without repair: the
-/// vertices in the file's order (see `Sampled_gltf`).
+/// @brief A glTF 2.0 file parsed once, to sample any number of its clips: parsing dominates the
+/// reading of a character of a few thousand vertices, so reading many clips of one file through
+/// a `Gltf_file` is many times faster than calling `sample_gltf` for each.
 ///
 /// The scene is the default scene (`scene`), else scene 0, else every root node. Each
 /// TRIANGLES primitive (indexed or not) of each mesh node instance adds its vertices; other
-/// modes, and primitives without POSITION, are skipped and listed in `report.skipped`. A rigid
-/// mesh moves with its node's world transform; a skinned mesh (a node with `skin`, primitives
-/// with JOINTS_0/WEIGHTS_0, and JOINTS_1/WEIGHTS_1 when present) by linear blend skinning with
-/// joint matrices world(joint) x inverseBindMatrix (identity when absent), its own node's
-/// transform ignored as the specification says. Weights are divided by their sum; a vertex whose
-/// weights are all zero stays rigid to its mesh node. Morph targets (POSITION deltas) are added
-/// before skinning, with the weights of the clip's `weights` channel, else the node's `weights`,
-/// else the mesh's, else 0.
+/// modes, and primitives without POSITION, are skipped and listed in the report's `skipped`. A
+/// rigid mesh moves with its node's world transform; a skinned mesh (a node with `skin`,
+/// primitives with JOINTS_0/WEIGHTS_0, and JOINTS_1/WEIGHTS_1 when present) by linear blend
+/// skinning with joint matrices world(joint) x inverseBindMatrix (identity when absent), its own
+/// node's transform ignored as the specification says. Weights are divided by their sum; a
+/// vertex whose weights are all zero stays rigid to its mesh node. Morph targets (POSITION
+/// deltas) are added before skinning, with the weights of the clip's `weights` channel, else the
+/// node's `weights`, else the mesh's, else 0.
 ///
 /// Frames are at t = start + k / fps while t <= end, plus the end itself when it lies more than
 /// a thousandth of a frame off that grid; start and end are the smallest and largest key time
 /// over the clip's channels (a clip of 0 s gives 1 frame). Samplers hold their first and last
 /// values outside their keys. A file without animation gives its rest pose, 1 frame.
+class Gltf_file {
+public:
+  /// @brief Parses `path` and reads the scene's geometry (not its clips).
+  /// @param path a `.gltf` (JSON, with external or data-URI buffers) or `.glb` file; told apart
+  /// by content.
+  /// @throws invalid_input naming the file (and the mesh, accessor or node) for: a file that
+  /// does not exist or that tinygltf cannot parse (its message); Draco or meshopt compression,
+  /// or another required extension deformseg does not know (KHR_mesh_quantization is read); a
+  /// scene without triangle; an accessor or buffer view outside its buffer, a count that
+  /// disagrees, an index out of range; a node hierarchy that is not a forest; more than 2^26
+  /// vertices.
+  /// @par Complexity O(file size).
+  explicit Gltf_file(const std::filesystem::path& path) : path_(path), file_(load(path)) {}
+
+  /// @brief The file's path as given.
+  const std::filesystem::path& path() const noexcept { return path_; }
+  /// @brief The names of the file's clips (glTF animations), in the file's order (maybe empty).
+  std::vector<std::string> clip_names() const {
+    std::vector<std::string> names;
+    for (const auto& animation : file_.model.animations) names.push_back(animation.name);
+    return names;
+  }
+  /// @brief The number of vertices V a sampled clip has, before any repair.
+  std::size_t num_vertices() const noexcept { return file_.rig.geometry.vertices; }
+
+  /// @brief Samples one clip, without repair: the vertices in the file's order (see `Sampled_gltf`).
+  /// @param options `clip` (default: the first), `fps` (30), `threads` (0: all); `repair` is not
+  /// used here.
+  /// @return the positions (`T x 3V`), V, the triangles and the report (`repair` left empty).
+  /// @pre `options.fps > 0`, `options.threads >= 0`.
+  /// @throws invalid_input naming the file (and the animation, channel, accessor or frame) for a
+  /// clip that does not exist (the message lists the file's clips), a malformed sampler, a
+  /// non-finite position, more than 10^6 frames or 2^29 coordinates.
+  /// @par Complexity O(T (N + J + V I)) for N nodes, J joints, V vertices and I influences per
+  /// skinned vertex (4 or 8), the frames shared among the threads.
+  Sampled_gltf sample(const Gltf_read_options& options = {}) const {
+    try {
+      return internal::gltf::sample(file_, options);
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path_.string()});
+    }
+  }
+
+  /// @brief Reads one clip as an animation: `sample`, then `make_repaired_animation` with
+  /// `options.repair` (welding on by default).
+  /// @tparam Graph the connectivity type (default `Surface_mesh`).
+  /// @tparam Coordinate the stored coordinate type (default `double`).
+  /// @param options `clip` (default: the first), `fps` (30), `repair` (weld, defects repaired),
+  /// `threads` (0: all).
+  /// @param report where to store the clip read, its times and frames, the primitives skipped
+  /// and what the repair changed, when not null.
+  /// @pre as `sample`.
+  /// @throws invalid_input naming the file, as `sample` and `make_repaired_animation`.
+  /// @par Complexity that of `sample`, plus the repair's O(T V + F log F).
+  template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
+  Deforming_mesh<Graph, Coordinate> read(const Gltf_read_options& options = {},
+                                         Gltf_read_report* report = nullptr) const {
+    Sampled_gltf sampled = sample(options);
+    try {
+      Deforming_mesh<Graph, Coordinate> animation = make_repaired_animation<Graph, Coordinate>(
+          std::span<const double>(sampled.positions), sampled.num_vertices,
+          std::span<const std::array<std::uint32_t, 3>>(sampled.triangles), options.repair, &sampled.report.repair);
+      if (report) *report = std::move(sampled.report);
+      return animation;
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path_.string()});
+    }
+  }
+
+private:
+  static internal::gltf::Loaded_file load(const std::filesystem::path& path) {
+    try {
+      return internal::gltf::load_file(path);
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path.string()});
+    }
+  }
+
+  std::filesystem::path path_;
+  internal::gltf::Loaded_file file_;
+};
+
+/// @brief Samples one clip of a glTF 2.0 file into positions and triangles, without repair:
+/// `Gltf_file(path).sample(options)` (see `Gltf_file` for what is read and how).
 ///
-/// @param path a `.gltf` (JSON, with external or data-URI buffers) or `.glb` file; told apart
-/// by content.
+/// @param path a `.gltf` or `.glb` file.
 /// @param options `clip` (default: the first), `fps` (30), `threads` (0: all); `repair` is not
 /// used here.
-/// @return the positions (`T x 3V`), V, the triangles and the report (`repair` left empty).
+/// @return the positions (`T x 3V`, vertices in the file's order: see `Sampled_gltf`), V, the
+/// triangles and the report (`repair` left empty).
 /// @pre `options.fps > 0`, `options.threads >= 0`.
-/// @throws invalid_input naming the file (and the mesh, accessor, node or frame) for: a file that
-/// does not exist or that tinygltf cannot parse (its message); Draco or meshopt compression, or
-/// another required extension deformseg does not know (KHR_mesh_quantization is read); a clip
-/// that does not exist (the message lists the file's clips); a scene without triangle; any
-/// accessor or buffer view outside its buffer, a count that disagrees, an index out of range; a
-/// non-finite position; more than 2^26 vertices, 10^6 frames or 2^29 coordinates.
-/// @par Complexity O(file size + T (N + J + V I)) for N nodes, J joints, V vertices and I
-/// influences per skinned vertex (4 or 8), the frames shared among the threads.
+/// @throws invalid_input naming the file, as `Gltf_file` and `Gltf_file::sample`.
+/// @par Complexity O(file size + T (N + J + V I)): see `Gltf_file::sample`.
+/// @sa read_gltf, Gltf_file
 inline Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {}) {
-  try {
-    return internal::gltf::sample(path, options);
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path.string()});
-  }
+  return Gltf_file(path).sample(options);
 }
 
 /// @brief Reads one clip of a glTF 2.0 file as an animation: `sample_gltf`, then
-/// `make_repaired_animation` with `options.repair` (welding on by default).
+/// `make_repaired_animation` with `options.repair` (welding on by default); that is,
+/// `Gltf_file(path).read<Graph, Coordinate>(options, report)`.
 ///
 /// @tparam Graph the connectivity type (default `Surface_mesh`).
 /// @tparam Coordinate the stored coordinate type (default `double`).
@@ -386,20 +475,11 @@ inline Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_re
 /// @pre as `sample_gltf`.
 /// @throws invalid_input naming the file, as `sample_gltf` and `make_repaired_animation`.
 /// @par Complexity that of `sample_gltf`, plus the repair's O(T V + F log F).
-/// @sa sample_gltf, gltf_contents, make_repaired_animation
+/// @sa sample_gltf, gltf_contents, Gltf_file, make_repaired_animation
 template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
 Deforming_mesh<Graph, Coordinate> read_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {},
                                             Gltf_read_report* report = nullptr) {
-  Sampled_gltf sampled = sample_gltf(path, options);
-  try {
-    Deforming_mesh<Graph, Coordinate> animation = make_repaired_animation<Graph, Coordinate>(
-        std::span<const double>(sampled.positions), sampled.num_vertices,
-        std::span<const std::array<std::uint32_t, 3>>(sampled.triangles), options.repair, &sampled.report.repair);
-    if (report) *report = std::move(sampled.report);
-    return animation;
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path.string()});
-  }
+  return Gltf_file(path).read<Graph, Coordinate>(options, report);
 }
 
 /// @brief What a glTF 2.0 file holds: its clips (with their times and frame counts at `fps`),
