@@ -204,6 +204,30 @@ TEST_CASE("gltf: two-bone skinned strip, the skinned mesh node's own scale ignor
   }
 }
 
+TEST_CASE("gltf: 8 influences with normalised byte weights; no weight at all stays with the mesh node", "[gltf]") {
+  Gltf_writer w;
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  const auto ubytes = [&w](const std::vector<std::uint8_t>& v, bool normalized) {
+    return w.values(v, Gltf_writer::ubyte_type, "VEC4", normalized);
+  };
+  const int joints_0 = ubytes({0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, false);
+  const int joints_1 = ubytes({1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0}, false);
+  // Vertex 0: 1 on joint 0 and 1 on joint 1, halved; vertex 1: none; vertex 2: 0.2 and 0.8.
+  const int weights_0 = ubytes({255, 0, 0, 0, 0, 0, 0, 0, 51, 0, 0, 0}, true);
+  const int weights_1 = ubytes({255, 0, 0, 0, 0, 0, 0, 0, 204, 0, 0, 0}, true);
+  w.push("meshes", {{"primitives", json::array({{{"attributes", {{"POSITION", position}, {"JOINTS_0", joints_0},
+                                                                 {"WEIGHTS_0", weights_0}, {"JOINTS_1", joints_1},
+                                                                 {"WEIGHTS_1", weights_1}}}}})}});
+  w.push("nodes", {{"name", "a"}});
+  w.push("nodes", {{"name", "b"}, {"translation", {10, 0, 0}}});
+  w.push("nodes", {{"mesh", 0}, {"skin", 0}, {"translation", {0, 0, 7}}});
+  w.push("skins", {{"joints", {0, 1}}});  // no inverseBindMatrices: identity
+  const Sampled_gltf s = sample_gltf(write(w, "eight.gltf"));
+  check_point(s, 0, 0, 5, 0, 0);
+  check_point(s, 0, 1, 1, 0, 7);  // rigid to the mesh node, whose transform then applies
+  check_point(s, 0, 2, 8, 1, 0);
+}
+
 TEST_CASE("gltf: animated morph target weights, node and mesh weights at rest", "[gltf]") {
   Gltf_writer w;
   const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
