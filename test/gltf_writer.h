@@ -71,6 +71,15 @@ public:
 
   void write_gltf(const std::filesystem::path& path) const { std::ofstream(path, std::ios::binary) << gltf_text(); }
 
+  /// The document as a .gltf whose buffer is the external file `bin_name` beside it.
+  void write_gltf_with_bin(const std::filesystem::path& path, const std::string& bin_name) const {
+    json d = doc;
+    d["buffers"] = json::array({{{"byteLength", bin_.size()}, {"uri", bin_name}}});
+    std::ofstream(path, std::ios::binary) << d.dump(1);
+    std::ofstream(path.parent_path() / bin_name, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bin_.data()), std::streamsize(bin_.size()));
+  }
+
   /// The document as a .glb: a JSON chunk and a BIN chunk.
   void write_glb(const std::filesystem::path& path) const {
     json d = doc;

@@ -192,6 +192,13 @@ TEST_CASE("gltf: two-bone skinned strip, the skinned mesh node's own scale ignor
     CHECK(two.positions == s30.positions);
     CHECK(one.triangles == s30.triangles);
   }
+  SECTION("the same as a .gltf with an external .bin; refused when the .bin is missing") {
+    const fs::path external = deformseg::test::scratch_dir() / "gltf" / "strip_external.gltf";
+    w.write_gltf_with_bin(external, "strip_external.bin");
+    CHECK(sample_gltf(external).positions == s30.positions);
+    fs::remove(external.parent_path() / "strip_external.bin");
+    CHECK_THROWS_WITH(sample_gltf(external), Contains(external.string()));
+  }
   SECTION("read_gltf gives a Deforming_mesh with the report") {
     deformseg::io::Gltf_read_report report;
     const auto animation = deformseg::io::read_gltf(path, {.repair = {.weld = false}}, &report);
