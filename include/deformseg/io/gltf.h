@@ -1,0 +1,501 @@
+/// @file gltf.h
+/// @brief Reads glTF 2.0 characters (`.gltf`, `.glb`): one clip of a skinned, morphed, rigidly
+/// parented scene sampled into an animation with fixed connectivity (`read_gltf`,
+/// `sample_gltf`, or `Gltf_file` for many clips of one file), and what a file holds
+/// (`gltf_contents`).
+///
+/// tinygltf parses the JSON and the buffers; everything else follows the glTF 2.0 specification
+/// here: the default scene's node hierarchy, every TRIANGLES primitive of every mesh node
+/// instance, linear blend skinning, morph targets, the LINEAR, STEP and CUBICSPLINE samplers,
+/// sparse and normalised-integer accessors (KHR_mesh_quantization).
+#pragma once
+
+#if !__has_include(<tiny_gltf.h>)
+#error "deformseg/io/gltf.h needs tinygltf (Debian: libtinygltf-dev), linked as TinyGLTF::TinyGLTF"
+#endif
+
+#include <deformseg/default_mesh.h>
+#include <deformseg/deforming_mesh.h>
+#include <deformseg/exceptions.h>
+#include <deformseg/internal/gltf_animation.h>
+#include <deformseg/internal/gltf_mesh.h>
+#include <deformseg/io/mesh_repair.h>
+
+#include <tiny_gltf.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace deformseg::io {
+
+/// @brief How `read_gltf` and `sample_gltf` read a glTF file.
+struct Gltf_read_options {
+  /// @brief The clip (glTF animation) to sample: empty (default) for the file's first clip; else
+  /// the first clip of that name; else, when all digits, the clip of that index.
+  std::string clip{};
+  /// @brief Frames per second the clip is sampled at. Default 30.
+  double fps = 30;
+  /// @brief The repair `read_gltf` applies (see `mesh_repair.h`). Default: welding on (glTF
+  /// splits vertices along UV seams and hard edges), defects repaired.
+  Repair_options repair{.weld = true};
+  /// @brief Threads that sample frames in parallel: 0 (default) uses OpenMP's default. The
+  /// result does not depend on it.
+  int threads = 0;
+};
+
+/// @brief What `read_gltf` or `sample_gltf` read.
+struct Gltf_read_report {
+  /// @brief `clip_index` when the file has no animation (its rest pose is read).
+  static constexpr std::size_t no_clip = std::numeric_limits<std::size_t>::max();
+  std::string clip{};                 ///< the clip's name as in the file (maybe empty)
+  std::size_t clip_index = no_clip;   ///< the clip's index among the file's animations
+  double start = 0;                   ///< the smallest key time of the clip, in seconds
+  double end = 0;                     ///< the largest key time of the clip, in seconds
+  std::size_t frames = 0;             ///< frames sampled
+  /// @brief The primitives left out, one line each, e.g. "mesh 'X' primitive 1: mode LINES, skipped".
+  std::vector<std::string> skipped{};
+  Repair_report repair{};             ///< what the repair changed (`read_gltf` only)
+};
+
+/// @brief A clip sampled, before any repair: the vertices of every TRIANGLES primitive of every
+/// mesh instance, primitives in the order of the default scene's depth-first node traversal (a
+/// node before its children, children in order), each primitive's vertices in its own order.
+struct Sampled_gltf {
+  std::vector<double> positions{};  ///< `T x 3V` coordinates, frames one after the other
+  std::size_t num_vertices = 0;     ///< V
+  std::vector<std::array<std::uint32_t, 3>> triangles{};  ///< vertex indices in `[0, V)`
+  Gltf_read_report report{};        ///< the clip, its times and frames, what was skipped
+};
+
+/// @brief One clip of a file.
+struct Gltf_clip_info {
+  std::string name{};     ///< as in the file (maybe empty)
+  double start = 0;       ///< smallest key time, seconds
+  double end = 0;         ///< largest key time, seconds
+  double duration = 0;    ///< end - start
+  std::size_t frames = 0; ///< frames at the fps asked (the sampling rule of `read_gltf`)
+  std::size_t channels = 0;  ///< channels that target a node's translation, rotation, scale or weights
+};
+
+/// @brief One skin of a file.
+struct Gltf_skin_info {
+  std::string name{};      ///< as in the file (maybe empty)
+  std::size_t joints = 0;  ///< its joint count
+};
+
+/// @brief One primitive of a mesh.
+struct Gltf_primitive_info {
+  std::string mode{};            ///< "TRIANGLES", "LINES", ...
+  std::size_t vertices = 0;      ///< the POSITION count (0 without POSITION)
+  std::size_t triangles = 0;     ///< for TRIANGLES, the index (or vertex) count / 3; else 0
+  std::size_t morph_targets = 0; ///< its morph target count
+};
+
+/// @brief One mesh of a file.
+struct Gltf_mesh_info {
+  std::string name{};                          ///< as in the file (maybe empty)
+  std::vector<Gltf_primitive_info> primitives{};  ///< in the file's order
+  std::size_t instances = 0;  ///< nodes of the default scene that show it
+  bool skinned = false;       ///< whether an instance has a skin (else it is rigid to its nodes)
+};
+
+/// @brief What a glTF file holds, as `gltf_contents` lists it.
+struct Gltf_contents {
+  std::vector<Gltf_clip_info> clips{};    ///< in the file's order
+  std::vector<Gltf_skin_info> skins{};    ///< in the file's order
+  std::vector<Gltf_mesh_info> meshes{};   ///< in the file's order
+  std::size_t nodes = 0;                  ///< all nodes of the file
+  std::size_t vertices = 0;   ///< over the scene's TRIANGLES primitive instances, as `sample_gltf` reads
+  std::size_t triangles = 0;  ///< likewise
+};
+
+}  // namespace deformseg::io
+
+namespace deformseg::internal::gltf {
+
+/// The most coordinates (T x 3V) a sampled clip may have: 4 GiB of doubles.
+inline constexpr std::size_t max_coordinates = std::size_t(1) << 29;
+
+// Images are never decoded: deformseg needs only the geometry.
+inline bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*,
+                         int, void*) {
+  return true;
+}
+
+inline bool starts_with_glb_magic(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[4] = {};
+  in.read(magic, 4);
+  return in.gcount() == 4 && std::string(magic, 4) == "glTF";
+}
+
+/// Parses a .gltf or .glb file (told apart by the GLB magic, not the extension).
+inline tinygltf::Model load_model(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+    throw invalid_input("cannot open the glTF file: it does not exist or is not a file");
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&ignore_image, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  bool loaded = false;
+  try {
+    loaded = starts_with_glb_magic(path) ? loader.LoadBinaryFromFile(&model, &err, &warn, path.string())
+                                         : loader.LoadASCIIFromFile(&model, &err, &warn, path.string());
+  } catch (const std::exception& e) {
+    err = e.what();
+  }
+  if (!loaded) {
+    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+    throw invalid_input("not a valid glTF file: " + (err.empty() ? std::string("tinygltf refused it") : err));
+  }
+  return model;
+}
+
+/// Refuses compressed geometry and any required extension deformseg does not know.
+inline void check_extensions(const tinygltf::Model& model) {
+  for (const std::string& name : model.extensionsRequired) {
+    if (name == "KHR_draco_mesh_compression")
+      throw invalid_input("the file requires KHR_draco_mesh_compression (Draco-compressed geometry), which deformseg "
+                          "does not decode");
+    if (name == "EXT_meshopt_compression" || name == "KHR_meshopt_compression")
+      throw invalid_input("the file requires " + name + " (meshopt-compressed buffers), which deformseg does not decode");
+    // Extensions that change only the look of a file, or that deformseg reads.
+    const bool known = name == "KHR_mesh_quantization" || name == "KHR_texture_transform" ||
+                       name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name == "KHR_lights_punctual" ||
+                       name == "KHR_materials_variants" || name.starts_with("KHR_materials_");
+    if (!known) throw invalid_input("the file requires the glTF extension " + name + ", which deformseg does not know");
+  }
+}
+
+/// The index of the clip `wanted` names (see `Gltf_read_options::clip`), or none when the file
+/// has no animation and none was asked.
+inline std::optional<std::size_t> select_clip(const tinygltf::Model& model, const std::string& wanted) {
+  const std::size_t count = model.animations.size();
+  if (wanted.empty()) {
+    if (count == 0) return std::nullopt;
+    return 0;
+  }
+  for (std::size_t i = 0; i < count; ++i)
+    if (model.animations[i].name == wanted) return i;
+  const bool digits = std::all_of(wanted.begin(), wanted.end(), [](char c) { return c >= '0' && c <= '9'; });
+  if (digits && wanted.size() < 10 && std::stoul(wanted) < count) return std::stoul(wanted);
+  if (count == 0) throw invalid_input("no clip '" + wanted + "': the file has no animation");
+  std::string list;
+  for (std::size_t i = 0; i < count; ++i)
+    list.append(i == 0 ? "" : ", ").append("'" + model.animations[i].name + "'");
+  throw invalid_input("no clip '" + wanted + "'; the file's clips are " + list + " (or an index 0 to " +
+                      std::to_string(count - 1) + ")");
+}
+
+inline void check_options(const io::Gltf_read_options& options) {
+  if (!(options.fps > 0) || !std::isfinite(options.fps))
+    throw invalid_input("fps must be positive and finite, not " + std::to_string(options.fps));
+  if (options.threads < 0)
+    throw invalid_input("threads must be 0 (all) or more, not " + std::to_string(options.threads));
+}
+
+/// Samples every frame of `clip` (or the rest pose) into `positions`, in parallel; throws the
+/// error of the lowest frame with a non-finite coordinate, whatever the number of threads.
+inline void sample_frames(const Rig& rig, const Clip* clip, double fps, std::size_t frames,
+                          [[maybe_unused]] int threads, std::vector<double>& positions) {
+  const std::size_t block = 3 * rig.geometry.vertices;
+  std::atomic<std::size_t> first_bad{frames};
+  std::exception_ptr failure;
+  const auto sample_range = [&](std::size_t begin, std::size_t step) {
+    Pose_scratch scratch;
+    for (std::size_t t = begin; t < frames; t += step) {
+      double* out = positions.data() + t * block;
+      pose_at(rig, clip, clip ? frame_time(clip->start, clip->end, fps, t, frames) : 0.0, scratch, out);
+      if (!std::all_of(out, out + block, [](double x) { return std::isfinite(x); })) {
+        std::size_t seen = first_bad.load();
+        while (t < seen && !first_bad.compare_exchange_weak(seen, t)) {
+        }
+      }
+    }
+  };
+#ifdef _OPENMP
+  const int team = threads > 0 ? threads : omp_get_max_threads();
+#pragma omp parallel num_threads(team)
+  {
+    try {
+      sample_range(std::size_t(omp_get_thread_num()), std::size_t(omp_get_num_threads()));
+    } catch (...) {
+#pragma omp critical(deformseg_gltf_failure)
+      if (!failure) failure = std::current_exception();
+    }
+  }
+#else
+  sample_range(0, 1);
+#endif
+  if (failure) std::rethrow_exception(failure);
+  if (const std::size_t t = first_bad.load(); t < frames) {
+    const double* out = positions.data() + t * block;
+    const std::size_t i = std::size_t(std::find_if(out, out + block, [](double x) { return !std::isfinite(x); }) - out);
+    throw invalid_input("vertex " + std::to_string(i / 3) + " has a non-finite position", {.frame = t});
+  }
+}
+
+/// A parsed file and the scene's geometry, read once for any number of clips.
+struct Loaded_file {
+  tinygltf::Model model{};
+  Rig rig{};
+};
+
+inline Loaded_file load_file(const std::filesystem::path& path) {
+  Loaded_file file{.model = load_model(path)};
+  check_extensions(file.model);
+  file.rig = read_rig(file.model);
+  if (file.rig.geometry.triangles.empty())
+    throw invalid_input("the default scene has no triangle (no TRIANGLES primitive with POSITION on a mesh node)");
+  return file;
+}
+
+inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_options& options) {
+  check_options(options);
+  const Rig& rig = file.rig;
+  io::Sampled_gltf sampled;
+  const std::optional<std::size_t> clip_index = select_clip(file.model, options.clip);
+  std::optional<Clip> clip;
+  if (clip_index) clip = read_clip(file.model, *clip_index);
+  auto& report = sampled.report;
+  report.frames = clip ? frame_count(clip->start, clip->end, options.fps) : 1;
+  if (clip) {
+    report.clip = clip->name;
+    report.clip_index = *clip_index;
+    report.start = clip->start;
+    report.end = clip->end;
+  }
+  report.skipped = rig.geometry.skipped;
+  if (report.frames > max_coordinates / (3 * rig.geometry.vertices))
+    throw invalid_input(std::to_string(report.frames) + " frames of " + std::to_string(rig.geometry.vertices) +
+                        " vertices exceed the " + std::to_string(max_coordinates) + " coordinates deformseg samples");
+  sampled.num_vertices = rig.geometry.vertices;
+  sampled.positions.resize(report.frames * 3 * rig.geometry.vertices);
+  sample_frames(rig, clip ? &*clip : nullptr, options.fps, report.frames, options.threads, sampled.positions);
+  sampled.triangles = rig.geometry.triangles;
+  return sampled;
+}
+
+inline io::Gltf_mesh_info mesh_info(const tinygltf::Model& model, std::size_t mesh) {
+  io::Gltf_mesh_info info{.name = model.meshes[mesh].name};
+  for (std::size_t p = 0; p < model.meshes[mesh].primitives.size(); ++p) {
+    const tinygltf::Primitive& primitive = model.meshes[mesh].primitives[p];
+    const std::string name = primitive_name(model, mesh, p);
+    io::Gltf_primitive_info pi{.mode = mode_name(primitive_mode(primitive)), .morph_targets = primitive.targets.size()};
+    if (attribute(primitive, "POSITION") >= 0) pi.vertices = accessor_count(model, attribute(primitive, "POSITION"), name);
+    if (primitive_mode(primitive) == TINYGLTF_MODE_TRIANGLES)
+      pi.triangles = (primitive.indices >= 0 ? accessor_count(model, primitive.indices, name) : pi.vertices) / 3;
+    info.primitives.push_back(pi);
+  }
+  return info;
+}
+
+inline io::Gltf_contents contents(const std::filesystem::path& path, double fps) {
+  check_options({.fps = fps});
+  const tinygltf::Model model = load_model(path);
+  check_extensions(model);
+  io::Gltf_contents result;
+  result.nodes = model.nodes.size();
+  for (std::size_t a = 0; a < model.animations.size(); ++a) {
+    const Clip clip = read_clip(model, a);
+    result.clips.push_back({.name = clip.name, .start = clip.start, .end = clip.end,
+                            .duration = clip.end - clip.start, .frames = frame_count(clip.start, clip.end, fps),
+                            .channels = clip.channels.size()});
+  }
+  for (const tinygltf::Skin& skin : model.skins) result.skins.push_back({.name = skin.name, .joints = skin.joints.size()});
+  for (std::size_t m = 0; m < model.meshes.size(); ++m) result.meshes.push_back(mesh_info(model, m));
+  const Node_forest forest = node_forest(model);
+  for (std::size_t node : forest.scene_nodes) {
+    const int mesh = model.nodes[node].mesh;
+    if (mesh < 0) continue;
+    if (std::size_t(mesh) >= model.meshes.size())
+      throw invalid_input(node_name(model, node) + " refers to mesh " + std::to_string(mesh) + ", which does not exist");
+    io::Gltf_mesh_info& info = result.meshes[std::size_t(mesh)];
+    ++info.instances;
+    info.skinned = info.skinned || model.nodes[node].skin >= 0;
+    for (std::size_t p = 0; p < info.primitives.size(); ++p)
+      if (skip_reason(model.meshes[std::size_t(mesh)].primitives[p]).empty()) {
+        result.vertices += info.primitives[p].vertices;
+        result.triangles += info.primitives[p].triangles;
+      }
+  }
+  return result;
+}
+
+}  // namespace deformseg::internal::gltf
+
+namespace deformseg::io {
+
+/// @brief A glTF 2.0 file parsed once, to sample any number of its clips: parsing dominates the
+/// reading of a character of a few thousand vertices, so reading many clips of one file through
+/// a `Gltf_file` is many times faster than calling `sample_gltf` for each.
+///
+/// The scene is the default scene (`scene`), else scene 0, else every root node. Each
+/// TRIANGLES primitive (indexed or not) of each mesh node instance adds its vertices; other
+/// modes, and primitives without POSITION, are skipped and listed in the report's `skipped`. A
+/// rigid mesh moves with its node's world transform; a skinned mesh (a node with `skin`,
+/// primitives with JOINTS_0/WEIGHTS_0, and JOINTS_1/WEIGHTS_1 when present) by linear blend
+/// skinning with joint matrices world(joint) x inverseBindMatrix (identity when absent), its own
+/// node's transform ignored as the specification says. Weights are divided by their sum; a
+/// vertex whose weights are all zero stays rigid to its mesh node. Morph targets (POSITION
+/// deltas) are added before skinning, with the weights of the clip's `weights` channel, else the
+/// node's `weights`, else the mesh's, else 0.
+///
+/// Frames are at t = start + k / fps while t <= end, plus the end itself when it lies more than
+/// a thousandth of a frame off that grid; start and end are the smallest and largest key time
+/// over the clip's channels (a clip of 0 s gives 1 frame). Samplers hold their first and last
+/// values outside their keys. A file without animation gives its rest pose, 1 frame.
+class Gltf_file {
+public:
+  /// @brief Parses `path` and reads the scene's geometry (not its clips).
+  /// @param path a `.gltf` (JSON, with external or data-URI buffers) or `.glb` file; told apart
+  /// by content.
+  /// @throws invalid_input naming the file (and the mesh, accessor or node) for: a file that
+  /// does not exist or that tinygltf cannot parse (its message); Draco or meshopt compression,
+  /// or another required extension deformseg does not know (KHR_mesh_quantization is read); a
+  /// scene without triangle; an accessor or buffer view outside its buffer, a count that
+  /// disagrees, an index out of range; a node hierarchy that is not a forest; more than 2^26
+  /// vertices.
+  /// @par Complexity O(file size).
+  explicit Gltf_file(const std::filesystem::path& path) : path_(path), file_(load(path)) {}
+
+  /// @brief The file's path as given.
+  const std::filesystem::path& path() const noexcept { return path_; }
+  /// @brief The names of the file's clips (glTF animations), in the file's order (maybe empty).
+  std::vector<std::string> clip_names() const {
+    std::vector<std::string> names;
+    for (const auto& animation : file_.model.animations) names.push_back(animation.name);
+    return names;
+  }
+  /// @brief The number of vertices V a sampled clip has, before any repair.
+  std::size_t num_vertices() const noexcept { return file_.rig.geometry.vertices; }
+
+  /// @brief Samples one clip, without repair: the vertices in the file's order (see `Sampled_gltf`).
+  /// @param options `clip` (default: the first), `fps` (30), `threads` (0: all); `repair` is not
+  /// used here.
+  /// @return the positions (`T x 3V`), V, the triangles and the report (`repair` left empty).
+  /// @pre `options.fps > 0`, `options.threads >= 0`.
+  /// @throws invalid_input naming the file (and the animation, channel, accessor or frame) for a
+  /// clip that does not exist (the message lists the file's clips), a malformed sampler, a
+  /// non-finite position, more than 10^6 frames or 2^29 coordinates.
+  /// @par Complexity O(T (N + J + V I)) for N nodes, J joints, V vertices and I influences per
+  /// skinned vertex (4 or 8), the frames shared among the threads.
+  Sampled_gltf sample(const Gltf_read_options& options = {}) const {
+    try {
+      return internal::gltf::sample(file_, options);
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path_.string()});
+    }
+  }
+
+  /// @brief Reads one clip as an animation: `sample`, then `make_repaired_animation` with
+  /// `options.repair` (welding on by default).
+  /// @tparam Graph the connectivity type (default `Surface_mesh`).
+  /// @tparam Coordinate the stored coordinate type (default `double`).
+  /// @param options `clip` (default: the first), `fps` (30), `repair` (weld, defects repaired),
+  /// `threads` (0: all).
+  /// @param report where to store the clip read, its times and frames, the primitives skipped
+  /// and what the repair changed, when not null.
+  /// @pre as `sample`.
+  /// @throws invalid_input naming the file, as `sample` and `make_repaired_animation`.
+  /// @par Complexity that of `sample`, plus the repair's O(T V + F log F).
+  template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
+  Deforming_mesh<Graph, Coordinate> read(const Gltf_read_options& options = {},
+                                         Gltf_read_report* report = nullptr) const {
+    Sampled_gltf sampled = sample(options);
+    try {
+      Deforming_mesh<Graph, Coordinate> animation = make_repaired_animation<Graph, Coordinate>(
+          std::span<const double>(sampled.positions), sampled.num_vertices,
+          std::span<const std::array<std::uint32_t, 3>>(sampled.triangles), options.repair, &sampled.report.repair);
+      if (report) *report = std::move(sampled.report);
+      return animation;
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path_.string()});
+    }
+  }
+
+private:
+  static internal::gltf::Loaded_file load(const std::filesystem::path& path) {
+    try {
+      return internal::gltf::load_file(path);
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path.string()});
+    }
+  }
+
+  std::filesystem::path path_;
+  internal::gltf::Loaded_file file_;
+};
+
+/// @brief Samples one clip of a glTF 2.0 file into positions and triangles, without repair:
+/// `Gltf_file(path).sample(options)` (see `Gltf_file` for what is read and how).
+///
+/// @param path a `.gltf` or `.glb` file.
+/// @param options `clip` (default: the first), `fps` (30), `threads` (0: all); `repair` is not
+/// used here.
+/// @return the positions (`T x 3V`, vertices in the file's order: see `Sampled_gltf`), V, the
+/// triangles and the report (`repair` left empty).
+/// @pre `options.fps > 0`, `options.threads >= 0`.
+/// @throws invalid_input naming the file, as `Gltf_file` and `Gltf_file::sample`.
+/// @par Complexity O(file size + T (N + J + V I)): see `Gltf_file::sample`.
+/// @sa read_gltf, Gltf_file
+inline Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {}) {
+  return Gltf_file(path).sample(options);
+}
+
+/// @brief Reads one clip of a glTF 2.0 file as an animation: `sample_gltf`, then
+/// `make_repaired_animation` with `options.repair` (welding on by default); that is,
+/// `Gltf_file(path).read<Graph, Coordinate>(options, report)`.
+///
+/// @tparam Graph the connectivity type (default `Surface_mesh`).
+/// @tparam Coordinate the stored coordinate type (default `double`).
+/// @param path a `.gltf` or `.glb` file.
+/// @param options `clip` (default: the first), `fps` (30), `repair` (weld, defects repaired),
+/// `threads` (0: all).
+/// @param report where to store the clip read, its times and frames, the primitives skipped and
+/// what the repair changed, when not null.
+/// @pre as `sample_gltf`.
+/// @throws invalid_input naming the file, as `sample_gltf` and `make_repaired_animation`.
+/// @par Complexity that of `sample_gltf`, plus the repair's O(T V + F log F).
+/// @sa sample_gltf, gltf_contents, Gltf_file, make_repaired_animation
+template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
+Deforming_mesh<Graph, Coordinate> read_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {},
+                                            Gltf_read_report* report = nullptr) {
+  return Gltf_file(path).read<Graph, Coordinate>(options, report);
+}
+
+/// @brief What a glTF 2.0 file holds: its clips (with their times and frame counts at `fps`),
+/// skins, meshes (primitives, instances), and the vertices and triangles `sample_gltf` reads.
+///
+/// @param path a `.gltf` or `.glb` file.
+/// @param fps the frame rate the clips' frame counts are given at. Default 30.
+/// @pre `fps > 0`.
+/// @throws invalid_input naming the file, for the same malformed files as `sample_gltf`.
+/// @par Complexity O(file size).
+inline Gltf_contents gltf_contents(const std::filesystem::path& path, double fps = 30) {
+  try {
+    return internal::gltf::contents(path, fps);
+  } catch (const invalid_input& e) {
+    throw e.located({.file = path.string()});
+  }
+}
+
+}  // namespace deformseg::io

@@ -1,0 +1,647 @@
+// glTF reader: hand-made files with positions computed by hand, and the shared characters.
+#include "gltf_writer.h"
+#include "test_support.h"
+
+#include <deformseg/io/gltf.h>
+#include <deformseg/strain.h>
+
+#include <tiny_gltf.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using deformseg::invalid_input;
+using deformseg::io::Gltf_read_options;
+using deformseg::io::Sampled_gltf;
+using deformseg::io::sample_gltf;
+using deformseg::test::Gltf_writer;
+using Catch::Matchers::Contains;
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+const double half_root2 = std::sqrt(0.5);
+
+// Checks vertex `v` of frame `t` against (x, y, z), to `eps` absolute.
+void check_point(const Sampled_gltf& s, std::size_t t, std::size_t v, double x, double y, double z,
+                 double eps = 1e-12) {
+  INFO("frame " << t << " vertex " << v);
+  REQUIRE(t < s.report.frames);
+  const double* p = s.positions.data() + (t * s.num_vertices + v) * 3;
+  CHECK(p[0] == Approx(x).margin(eps).epsilon(0));
+  CHECK(p[1] == Approx(y).margin(eps).epsilon(0));
+  CHECK(p[2] == Approx(z).margin(eps).epsilon(0));
+}
+
+fs::path write(const Gltf_writer& w, const std::string& name) {
+  const fs::path path = deformseg::test::scratch_dir() / "gltf" / name;
+  fs::create_directories(path.parent_path());
+  if (path.extension() == ".glb")
+    w.write_glb(path);
+  else
+    w.write_gltf(path);
+  return path;
+}
+
+// A triangle (0,0,0), (1,0,0), (0,1,0) as mesh `name`; gives the mesh index.
+int add_triangle_mesh(Gltf_writer& w, const std::string& name = "triangle") {
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  return w.push("meshes", {{"name", name}, {"primitives", json::array({{{"attributes", {{"POSITION", position}}}}})}});
+}
+
+// A channel of `node`'s `path` with keys at `times` and `values` (of `type`).
+void add_channel(json& animation, Gltf_writer& w, int node, const std::string& path, const std::vector<float>& times,
+                 const std::vector<float>& values, const std::string& type, const std::string& interpolation = "LINEAR") {
+  const int input = w.floats(times, "SCALAR");
+  const int output = w.floats(values, type);
+  animation["samplers"].push_back({{"input", input}, {"output", output}, {"interpolation", interpolation}});
+  animation["channels"].push_back(
+      {{"sampler", animation["samplers"].size() - 1}, {"target", {{"node", node}, {"path", path}}}});
+}
+
+json new_animation(const std::string& name) {
+  return {{"name", name}, {"samplers", json::array()}, {"channels", json::array()}};
+}
+
+// Three clips moving one node that shows a triangle: "linear", "step", "cubic".
+Gltf_writer sampler_scene() {
+  Gltf_writer w;
+  const int mesh = add_triangle_mesh(w);
+  w.push("nodes", {{"name", "mover"}, {"mesh", mesh}});
+  w.push("scenes", {{"nodes", {0}}});
+  // Translation keys 0..1 s; rotation keys 0.5..1.5 s, the second stored negated (the same
+  // rotation, 90 degrees about z): the shortest path turns by +90 degrees, not -270.
+  json linear = new_animation("linear");
+  add_channel(linear, w, 0, "translation", {0, 1}, {0, 0, 0, 2, 4, 0}, "VEC3");
+  const float s = float(half_root2);
+  add_channel(linear, w, 0, "rotation", {0.5f, 1.5f}, {0, 0, 0, 1, 0, 0, -s, -s}, "VEC4");
+  w.push("animations", linear);
+  json step = new_animation("step");
+  add_channel(step, w, 0, "translation", {0, 1, 2}, {0, 0, 0, 1, 0, 0, 5, 0, 0}, "VEC3", "STEP");
+  w.push("animations", step);
+  // CUBICSPLINE: per key in-tangent, value, out-tangent; keys at 0 and 2 s.
+  json cubic = new_animation("cubic");
+  add_channel(cubic, w, 0, "translation", {0, 2}, {9, 9, 9, 0, 0, 0, 3, 0, 0, -1, 0, 0, 1, 0, 0, 7, 7, 7}, "VEC3",
+              "CUBICSPLINE");
+  add_channel(cubic, w, 0, "rotation", {0, 2}, {0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0},
+              "VEC4", "CUBICSPLINE");
+  w.push("animations", cubic);
+  return w;
+}
+
+}  // namespace
+
+TEST_CASE("gltf: LINEAR translation and shortest-path slerp rotation, clamped outside their keys", "[gltf]") {
+  const fs::path path = write(sampler_scene(), "samplers.gltf");
+  const Sampled_gltf s = sample_gltf(path, {.clip = "linear", .fps = 2});
+  REQUIRE(s.num_vertices == 3);
+  REQUIRE(s.triangles.size() == 1);
+  CHECK(s.report.clip == "linear");
+  CHECK(s.report.clip_index == 0);
+  CHECK(s.report.start == 0);
+  CHECK(s.report.end == 1.5);
+  REQUIRE(s.report.frames == 4);  // 0, 0.5, 1, 1.5 s
+  // Vertex 1 at (1,0,0): the translation, plus (1,0,0) rotated.
+  check_point(s, 0, 1, 1, 0, 0);              // rotation clamped before its first key
+  check_point(s, 1, 1, 2, 2, 0);              // translation (1,2,0), rotation at its first key
+  check_point(s, 2, 1, 2 + half_root2, 4 + half_root2, 0, 1e-6);  // 45 degrees; float keys
+  check_point(s, 3, 1, 2, 5, 0, 1e-6);        // translation clamped after its last key; 90 degrees
+  check_point(s, 3, 2, 1, 4, 0, 1e-6);        // (0,1,0) turned to (-1,0,0)
+}
+
+TEST_CASE("gltf: STEP holds each key until the next", "[gltf]") {
+  const fs::path path = write(sampler_scene(), "samplers.gltf");
+  const Sampled_gltf s = sample_gltf(path, {.clip = "step", .fps = 2});
+  REQUIRE(s.report.frames == 5);
+  const double x[] = {0, 0, 1, 1, 5};
+  for (std::size_t t = 0; t < 5; ++t) check_point(s, t, 0, x[t], 0, 0);
+}
+
+TEST_CASE("gltf: CUBICSPLINE Hermite with tangents scaled by the key interval, quaternions normalised", "[gltf]") {
+  const fs::path path = write(sampler_scene(), "samplers.gltf");
+  const Sampled_gltf s = sample_gltf(path, {.clip = "2", .fps = 2});  // the clip by index
+  CHECK(s.report.clip == "cubic");
+  REQUIRE(s.report.frames == 5);
+  // x(u) = h10 * 2 * 3 + h01 * 1 + h11 * 2 * (-1), by hand at u = 0, 1/4, 1/2, 3/4, 1.
+  const double x[] = {0, 1.09375, 1.5, 1.40625, 1};
+  for (std::size_t t = 0; t < 5; ++t) check_point(s, t, 0, x[t], 0, 0);
+  // Rotation halfway between identity and 180 degrees about z, no tangents: (0,0,1/2,1/2)
+  // normalised is 90 degrees, so vertex 1 (1,0,0) goes to (0,1,0).
+  check_point(s, 2, 1, 1.5, 1, 0);
+  check_point(s, 4, 1, 1 - 1, 0, 0);  // 180 degrees at the last key: (1,0,0) -> (-1,0,0)
+}
+
+TEST_CASE("gltf: two-bone skinned strip, the skinned mesh node's own scale ignored", "[gltf]") {
+  Gltf_writer w;
+  // Six vertices: x = 0, 1, 2 on y = 0, then on y = 1. Joint 0 (root) at the origin, joint 1
+  // (tip) at x = 1; the middle column is half on each.
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0}, "VEC3");
+  const int joints = w.values(std::vector<std::uint8_t>{0, 1, 0, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0,
+                                                        1, 0, 0, 0},
+                              Gltf_writer::ubyte_type, "VEC4");
+  // Weights not summing to 1 (2 and 1 + 1): they are normalised.
+  const int weights = w.floats({2, 0, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0, 1, 0, 0, 0}, "VEC4");
+  const int indices = w.indices({0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4});
+  const int ibm = w.floats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,    //
+                            1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 1},  // translate(-1, 0, 0)
+                           "MAT4");
+  w.push("meshes", {{"name", "strip"},
+                    {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"JOINTS_0", joints},
+                                                                 {"WEIGHTS_0", weights}}},
+                                                 {"indices", indices}}})}});
+  w.push("nodes", {{"name", "root"}, {"children", {1}}});
+  w.push("nodes", {{"name", "tip"}, {"translation", {1, 0, 0}}});
+  w.push("nodes", {{"name", "body"}, {"mesh", 0}, {"skin", 0}, {"scale", {5, 5, 5}}, {"translation", {7, 0, 0}}});
+  w.push("skins", {{"joints", {0, 1}}, {"inverseBindMatrices", ibm}});
+  w.push("scenes", {{"nodes", {0, 2}}});
+  json bend = new_animation("bend");
+  const float s = float(half_root2);
+  add_channel(bend, w, 1, "rotation", {0, 1}, {0, 0, 0, 1, 0, 0, s, s}, "VEC4");
+  w.push("animations", bend);
+  const fs::path path = write(w, "strip.gltf");
+
+  const Sampled_gltf s30 = sample_gltf(path);
+  REQUIRE(s30.report.frames == 31);
+  REQUIRE(s30.num_vertices == 6);
+  REQUIRE(s30.triangles.size() == 4);
+  // Rest pose: the file's positions, the node's scale and translation not applied.
+  const double rest[6][3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
+  for (std::size_t v = 0; v < 6; ++v) check_point(s30, 0, v, rest[v][0], rest[v][1], rest[v][2]);
+  // At 1 s the tip turned 90 degrees about z around (1,0,0): (2,0,0) -> (1,1,0), (2,1,0) ->
+  // (0,1,0); (1,1,0) half rigid, half turned to (0,0,0): (0.5,0.5,0).
+  const double bent[6][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0}, {0, 1, 0}};
+  for (std::size_t v = 0; v < 6; ++v) check_point(s30, 30, v, bent[v][0], bent[v][1], bent[v][2], 1e-6);
+  // At 0.5 s, 45 degrees: (2,0,0) -> (1 + c, c, 0); (1,1,0) -> ((1 + 1 - c) / 2, (1 + c) / 2, 0).
+  const double c = half_root2;
+  check_point(s30, 15, 2, 1 + c, c, 0, 1e-6);
+  check_point(s30, 15, 4, (2 - c) / 2, (1 + c) / 2, 0, 1e-6);
+
+  SECTION("the same as a .glb, and on one thread or two") {
+    const fs::path glb = write(w, "strip.glb");
+    const Sampled_gltf one = sample_gltf(glb, {.threads = 1});
+    const Sampled_gltf two = sample_gltf(glb, {.threads = 2});
+    CHECK(one.positions == s30.positions);
+    CHECK(two.positions == s30.positions);
+    CHECK(one.triangles == s30.triangles);
+  }
+  SECTION("the same as a .gltf with an external .bin; refused when the .bin is missing") {
+    const fs::path external = deformseg::test::scratch_dir() / "gltf" / "strip_external.gltf";
+    w.write_gltf_with_bin(external, "strip_external.bin");
+    CHECK(sample_gltf(external).positions == s30.positions);
+    fs::remove(external.parent_path() / "strip_external.bin");
+    CHECK_THROWS_WITH(sample_gltf(external), Contains(external.string()));
+  }
+  SECTION("read_gltf gives a Deforming_mesh with the report") {
+    deformseg::io::Gltf_read_report report;
+    const auto animation = deformseg::io::read_gltf(path, {.repair = {.weld = false}}, &report);
+    CHECK(animation.num_frames() == 31);
+    CHECK(animation.num_vertices() == 6);
+    CHECK(animation.num_faces() == 4);
+    CHECK(report.clip == "bend");
+    CHECK(report.repair.input_vertices == 6);
+    CHECK(animation.frame_positions(30)[3 * 2 + 1] == Approx(1).margin(1e-6));
+  }
+}
+
+TEST_CASE("gltf: 8 influences with normalised byte weights; no weight at all stays with the mesh node", "[gltf]") {
+  Gltf_writer w;
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  const auto ubytes = [&w](const std::vector<std::uint8_t>& v, bool normalized) {
+    return w.values(v, Gltf_writer::ubyte_type, "VEC4", normalized);
+  };
+  const int joints_0 = ubytes({0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, false);
+  const int joints_1 = ubytes({1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0}, false);
+  // Vertex 0: 1 on joint 0 and 1 on joint 1, halved; vertex 1: none; vertex 2: 0.2 and 0.8.
+  const int weights_0 = ubytes({255, 0, 0, 0, 0, 0, 0, 0, 51, 0, 0, 0}, true);
+  const int weights_1 = ubytes({255, 0, 0, 0, 0, 0, 0, 0, 204, 0, 0, 0}, true);
+  w.push("meshes", {{"primitives", json::array({{{"attributes", {{"POSITION", position}, {"JOINTS_0", joints_0},
+                                                                 {"WEIGHTS_0", weights_0}, {"JOINTS_1", joints_1},
+                                                                 {"WEIGHTS_1", weights_1}}}}})}});
+  w.push("nodes", {{"name", "a"}});
+  w.push("nodes", {{"name", "b"}, {"translation", {10, 0, 0}}});
+  w.push("nodes", {{"mesh", 0}, {"skin", 0}, {"translation", {0, 0, 7}}});
+  w.push("skins", {{"joints", {0, 1}}});  // no inverseBindMatrices: identity
+  const Sampled_gltf s = sample_gltf(write(w, "eight.gltf"));
+  check_point(s, 0, 0, 5, 0, 0);
+  check_point(s, 0, 1, 1, 0, 7);  // rigid to the mesh node, whose transform then applies
+  check_point(s, 0, 2, 8, 1, 0);
+}
+
+TEST_CASE("gltf: animated morph target weights, node and mesh weights at rest", "[gltf]") {
+  Gltf_writer w;
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  const int lift = w.floats({0, 0, 0, 0, 0, 0, 0, 0, 1}, "VEC3");     // target 0: vertex 2 up
+  const int stretch = w.floats({0, 0, 0, 1, 0, 0, 0, 0, 0}, "VEC3");  // target 1: vertex 1 out
+  w.push("meshes", {{"name", "face"},
+                    {"weights", {0.25, 0.75}},
+                    {"primitives", json::array({{{"attributes", {{"POSITION", position}}},
+                                                 {"targets", json::array({{{"POSITION", lift}}, {{"POSITION", stretch}}})}}})}});
+  w.push("nodes", {{"mesh", 0}, {"translation", {1, 2, 3}}});
+  w.push("scenes", {{"nodes", {0}}});
+
+  SECTION("the mesh's weights without an animation") {
+    const Sampled_gltf s = sample_gltf(write(w, "morph_mesh.gltf"));
+    REQUIRE(s.report.frames == 1);
+    CHECK(s.report.clip_index == deformseg::io::Gltf_read_report::no_clip);
+    check_point(s, 0, 1, 1 + 1.75, 2, 3);
+    check_point(s, 0, 2, 1, 3, 3.25);
+  }
+  SECTION("the node's weights before the mesh's") {
+    w.doc["nodes"][0]["weights"] = {1, 0};
+    const Sampled_gltf s = sample_gltf(write(w, "morph_node.gltf"));
+    check_point(s, 0, 1, 2, 2, 3);
+    check_point(s, 0, 2, 1, 3, 4);
+  }
+  SECTION("the animated weights before both") {
+    w.doc["nodes"][0]["weights"] = {1, 0};
+    json talk = new_animation("talk");
+    add_channel(talk, w, 0, "weights", {0, 1}, {0, 0, 1, 0.5f}, "SCALAR");
+    w.push("animations", talk);
+    const Sampled_gltf s = sample_gltf(write(w, "morph_animated.gltf"), {.fps = 2});
+    REQUIRE(s.report.frames == 3);
+    check_point(s, 0, 1, 2, 2, 3);
+    check_point(s, 0, 2, 1, 3, 3);
+    check_point(s, 1, 1, 2.25, 2, 3);  // weights (0.5, 0.25)
+    check_point(s, 1, 2, 1, 3, 3.5);
+    check_point(s, 2, 1, 2.5, 2, 3);
+    check_point(s, 2, 2, 1, 3, 4);
+  }
+}
+
+TEST_CASE("gltf: a matrix node, and a rigid mesh child of an animated node", "[gltf]") {
+  Gltf_writer w;
+  const int mesh = add_triangle_mesh(w);
+  // Column-major: rotation by 90 degrees about z, scale 2, translation (1,2,3).
+  w.push("nodes", {{"name", "frame"}, {"matrix", {0, 2, 0, 0, -2, 0, 0, 0, 0, 0, 2, 0, 1, 2, 3, 1}}, {"children", {1}}});
+  w.push("nodes", {{"name", "arm"}, {"translation", {1, 0, 0}}, {"children", {2}}});
+  w.push("nodes", {{"name", "hand"}, {"mesh", mesh}, {"translation", {0, 0, 1}}});
+  w.push("scenes", {{"nodes", {0}}});
+
+  SECTION("static") {
+    const Sampled_gltf s = sample_gltf(write(w, "matrix.gltf"));
+    // hand (x,y,z) -> arm (x + 1, y, z + 1) -> frame (1 - 2y, 2 (x + 1) + 2, 2 (z + 1) + 3)
+    check_point(s, 0, 0, 1, 4, 5);
+    check_point(s, 0, 1, 1, 6, 5);
+    check_point(s, 0, 2, -1, 4, 5);
+  }
+  SECTION("the arm moving carries the hand") {
+    json lift = new_animation("lift");
+    add_channel(lift, w, 1, "translation", {0, 1}, {1, 0, 0, 1, 0, 2}, "VEC3");
+    w.push("animations", lift);
+    const Sampled_gltf s = sample_gltf(write(w, "matrix_animated.gltf"), {.fps = 2});
+    REQUIRE(s.report.frames == 3);
+    check_point(s, 1, 0, 1, 4, 7);  // arm at (1,0,1): z doubled by the frame's scale
+    check_point(s, 2, 1, 1, 6, 9);
+  }
+}
+
+TEST_CASE("gltf: normalised, strided and sparse accessors (KHR_mesh_quantization)", "[gltf]") {
+  Gltf_writer w;
+  w.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+  w.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+  // Normalised shorts, 8 bytes apart (6 of data, 2 of padding).
+  const std::vector<std::int16_t> interleaved = {0, 0, 0, 99, 32767, 0, 0, 99, 0, 16384, 0, 99, 5, 5, 5, 99};
+  const int view = w.view(interleaved.data(), interleaved.size() * 2, 8);
+  const int position = w.accessor(view, Gltf_writer::short_type, 4, "VEC3", true);
+  // Vertex 3 replaced by (-32767, -32768, 0): (-1, -1, 0), -32768 clamped to -1.
+  const std::vector<std::uint8_t> sparse_index = {3};
+  const std::vector<std::int16_t> sparse_value = {-32767, -32768, 0};
+  const int index_view = w.view(sparse_index.data(), 1);
+  const int value_view = w.view(sparse_value.data(), 6);
+  w.doc["accessors"][position]["sparse"] = {{"count", 1},
+                                            {"indices", {{"bufferView", index_view}, {"componentType", Gltf_writer::ubyte_type}}},
+                                            {"values", {{"bufferView", value_view}}}};
+  const int indices = w.values(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3}, Gltf_writer::ushort_type, "SCALAR");
+  w.push("meshes", {{"primitives", json::array({{{"attributes", {{"POSITION", position}}}, {"indices", indices}}})}});
+  w.push("nodes", {{"mesh", 0}});
+  w.push("scenes", {{"nodes", {0}}});
+  // A rotation stored as normalised shorts: (0,0,1,1) / sqrt 2 after normalisation.
+  json turn = new_animation("turn");
+  const int input = w.floats({0, 1}, "SCALAR");
+  const int output = w.values(std::vector<std::int16_t>{0, 0, 0, 32767, 0, 0, 32767, 32767}, Gltf_writer::short_type, "VEC4", true);
+  turn["samplers"].push_back({{"input", input}, {"output", output}});
+  turn["channels"].push_back({{"sampler", 0}, {"target", {{"node", 0}, {"path", "rotation"}}}});
+  w.push("animations", turn);
+
+  const Sampled_gltf s = sample_gltf(write(w, "quantized.gltf"), {.fps = 1});
+  REQUIRE(s.report.frames == 2);
+  REQUIRE(s.num_vertices == 4);
+  check_point(s, 0, 1, 1, 0, 0);
+  check_point(s, 0, 2, 0, 16384.0 / 32767.0, 0);
+  check_point(s, 0, 3, -1, -1, 0);
+  check_point(s, 1, 1, 0, 1, 0);  // turned 90 degrees about z
+  check_point(s, 1, 3, 1, -1, 0);
+}
+
+TEST_CASE("gltf: the frame count rule", "[gltf]") {
+  const auto frames_for = [](float end, const std::string& name) {
+    Gltf_writer w;
+    add_triangle_mesh(w);
+    w.push("nodes", {{"mesh", 0}});
+    json move = new_animation("move");
+    add_channel(move, w, 0, "translation", {0, end}, {0, 0, 0, end, 0, 0}, "VEC3");
+    w.push("animations", move);
+    return sample_gltf(write(w, name));
+  };
+  CHECK(frames_for(1, "frames_1.gltf").report.frames == 31);
+  const Sampled_gltf longer = frames_for(1.05f, "frames_1_05.gltf");
+  REQUIRE(longer.report.frames == 33);  // 0, 1/30, ..., 31/30, then 1.05 itself
+  check_point(longer, 31, 0, 31.0 / 30, 0, 0, 1e-6);
+  check_point(longer, 32, 0, 1.05, 0, 0, 1e-6);
+  CHECK(frames_for(float(10.0 / 30), "frames_float.gltf").report.frames == 11);  // no spurious 12th
+  CHECK(frames_for(0, "frames_0.gltf").report.frames == 1);
+  CHECK(deformseg::io::gltf_contents(write(Gltf_writer(sampler_scene()), "samplers.gltf"), 2).clips.at(2).frames == 5);
+}
+
+TEST_CASE("gltf: a non-TRIANGLES primitive is skipped and reported", "[gltf]") {
+  Gltf_writer w;
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  w.push("meshes", {{"name", "wire"},
+                    {"primitives", json::array({{{"attributes", {{"POSITION", position}}}},
+                                                {{"attributes", {{"POSITION", position}}}, {"mode", 1}}})}});
+  w.push("nodes", {{"mesh", 0}});
+  const Sampled_gltf s = sample_gltf(write(w, "lines.gltf"));  // no scene: every root node
+  CHECK(s.num_vertices == 3);
+  REQUIRE(s.report.skipped.size() == 1);
+  CHECK(s.report.skipped[0] == "mesh 'wire' primitive 1: mode LINES, skipped");
+  const auto contents = deformseg::io::gltf_contents(write(w, "lines.gltf"));
+  REQUIRE(contents.meshes.size() == 1);
+  CHECK(contents.meshes[0].primitives.at(1).mode == "LINES");
+  CHECK(contents.meshes[0].instances == 1);
+  CHECK(contents.vertices == 3);
+  CHECK(contents.triangles == 1);
+}
+
+TEST_CASE("gltf: refusals name the file and what is wrong", "[gltf]") {
+  SECTION("a clip that does not exist lists the clips that do") {
+    const fs::path path = write(sampler_scene(), "samplers.gltf");
+    CHECK_THROWS_WITH(sample_gltf(path, {.clip = "dance"}),
+                      Contains(path.string()) && Contains("no clip 'dance'") && Contains("'linear', 'step', 'cubic'"));
+    CHECK_THROWS_AS(sample_gltf(path, {.clip = "3"}), invalid_input);
+  }
+  SECTION("Draco compression, an unknown required extension") {
+    Gltf_writer w = sampler_scene();
+    w.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+    w.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    const fs::path path = write(w, "draco.gltf");
+    CHECK_THROWS_WITH(sample_gltf(path), Contains(path.string()) && Contains("KHR_draco_mesh_compression"));
+    w.doc["extensionsRequired"] = {"EXT_unheard_of"};
+    CHECK_THROWS_WITH(sample_gltf(write(w, "unknown.gltf")), Contains("EXT_unheard_of"));
+  }
+  SECTION("no triangle") {
+    Gltf_writer w;
+    w.push("nodes", {{"name", "empty"}});
+    CHECK_THROWS_WITH(sample_gltf(write(w, "empty.gltf")), Contains("no triangle"));
+  }
+  SECTION("a missing file, a parse error, a truncated GLB") {
+    const fs::path missing = deformseg::test::scratch_dir() / "gltf" / "missing.glb";
+    CHECK_THROWS_WITH(sample_gltf(missing), Contains(missing.string()));
+    const fs::path broken = deformseg::test::write_file("gltf/broken.gltf", "{\"asset\": {\"version\": \"2.0\"");
+    CHECK_THROWS_WITH(sample_gltf(broken), Contains(broken.string()) && Contains("not a valid glTF"));
+    const fs::path glb = write(sampler_scene(), "whole.glb");
+    std::ifstream in(glb, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (std::size_t cut : {std::size_t(10), bytes.size() / 2, bytes.size() - 4}) {
+      const fs::path truncated = deformseg::test::write_file("gltf/truncated.glb", bytes.substr(0, cut));
+      CHECK_THROWS_WITH(sample_gltf(truncated), Contains(truncated.string()));
+    }
+  }
+  SECTION("accessors and indices outside their buffers") {
+    Gltf_writer w = sampler_scene();
+    w.doc["accessors"][0]["count"] = 4;  // 48 bytes from a view of 36
+    CHECK_THROWS_WITH(sample_gltf(write(w, "bounds.gltf")), Contains("bounds.gltf") && Contains("accessor 0"));
+    w.doc["accessors"][0]["count"] = std::size_t(1) << 62;  // an overflow, not an allocation
+    CHECK_THROWS_AS(sample_gltf(write(w, "huge.gltf")), invalid_input);
+    w = sampler_scene();
+    w.doc["bufferViews"][0]["byteLength"] = 1000000;
+    CHECK_THROWS_WITH(sample_gltf(write(w, "view.gltf")), Contains("buffer view 0"));
+    w = sampler_scene();
+    const int indices = w.indices({0, 1, 3});
+    w.doc["meshes"][0]["primitives"][0]["indices"] = indices;
+    CHECK_THROWS_WITH(sample_gltf(write(w, "index.gltf")), Contains("mesh 'triangle' primitive 0") && Contains("index 2"));
+    w = sampler_scene();
+    w.doc["animations"][0]["samplers"][0]["input"] = 99;
+    CHECK_THROWS_WITH(sample_gltf(write(w, "sampler.gltf")), Contains("accessor 99"));
+  }
+  SECTION("a node hierarchy with a cycle") {
+    Gltf_writer w = sampler_scene();
+    w.doc["scenes"][0]["nodes"] = json::array();
+    w.push("nodes", {{"children", {2}}});
+    w.push("nodes", {{"children", {1}}});
+    CHECK_THROWS_WITH(sample_gltf(write(w, "cycle.gltf")), Contains("cycle"));
+  }
+}
+
+// ---- The shared characters (../shared/data/characters, SOURCE.md and motions.csv) ------------
+
+namespace {
+
+fs::path characters() { return deformseg::test::data_dir() / "characters"; }
+
+struct Source_clip {
+  double start = 0, end = 0;
+  std::size_t channels = 0;
+};
+
+struct Source_file {
+  std::size_t vertices = 0, triangles = 0;
+  std::map<std::string, Source_clip> clips;
+};
+
+// SOURCE.md: per file a "## NAME.glb: ..." section with a "- totals: V vertices, F triangles"
+// line and a table "| clip | start s | end s | duration s | channels | ...".
+std::map<std::string, Source_file> read_source_md() {
+  std::ifstream in(characters() / "SOURCE.md");
+  std::map<std::string, Source_file> files;
+  std::string line, current;
+  while (std::getline(in, line)) {
+    if (line.starts_with("## ") && line.find(".glb:") != std::string::npos) {
+      current = line.substr(3, line.find(".glb:") + 1);
+    } else if (!current.empty() && line.starts_with("- totals: ")) {
+      std::istringstream(line.substr(10)) >> files[current].vertices;
+      std::istringstream(line.substr(line.find("vertices, ") + 10)) >> files[current].triangles;
+    } else if (!current.empty() && line.starts_with("| ") && !line.starts_with("| clip") && !line.starts_with("|--")) {
+      std::vector<std::string> cells;
+      std::stringstream row(line.substr(1));
+      for (std::string cell; std::getline(row, cell, '|');) cells.push_back(cell.substr(1, cell.size() - 2));
+      if (cells.size() < 5) continue;
+      files[current].clips[cells[0]] = {std::stod(cells[1]), std::stod(cells[2]), std::stoul(cells[4])};
+    }
+  }
+  return files;
+}
+
+// motions.csv: file -> the clips it lists.
+std::map<std::string, std::vector<std::string>> read_motions_csv() {
+  std::ifstream in(characters() / "motions.csv");
+  std::map<std::string, std::vector<std::string>> clips;
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) {
+    const std::size_t comma = line.find(','), second = line.find(',', comma + 1);
+    if (second != std::string::npos) clips[line.substr(0, comma)].push_back(line.substr(comma + 1, second - comma - 1));
+  }
+  return clips;
+}
+
+// The sampling rule counted frame by frame: t = start + k / fps while t <= end (to a thousandth
+// of a frame), then the end when it is off the grid.
+std::size_t frames_by_rule(double start, double end, double fps) {
+  std::size_t k = 0;
+  while (start + double(k + 1) / fps <= end + 1e-3 / fps) ++k;
+  return k + 1 + (end - (start + double(k) / fps) > 1e-3 / fps ? 1 : 0);
+}
+
+}  // namespace
+
+TEST_CASE("gltf: every clip of motions.csv reads, with the frames of the sampling rule", "[gltf][data]") {
+  const auto source = read_source_md();
+  const auto motions = read_motions_csv();
+  REQUIRE(motions.size() == 7);
+  std::size_t clips_read = 0;
+  for (const auto& [name, clips] : motions) {
+    INFO(name);
+    const fs::path path = characters() / name;
+    const Source_file& expected = source.at(name);
+    const auto contents = deformseg::io::gltf_contents(path);
+    CHECK(contents.vertices == expected.vertices);
+    CHECK(contents.triangles == expected.triangles);
+    std::map<std::string, deformseg::io::Gltf_clip_info> info;
+    for (const auto& clip : contents.clips) info[clip.name] = clip;
+    CHECK(info.size() == expected.clips.size());
+    const deformseg::io::Gltf_file file(path);
+    for (const std::string& clip : clips) {
+      INFO(clip);
+      const Source_clip& times = expected.clips.at(clip);
+      const auto& listed = info.at(clip);
+      CHECK(std::abs(listed.start - times.start) <= 5e-4);  // SOURCE.md has 3 decimals
+      CHECK(std::abs(listed.end - times.end) <= 5e-4);
+      CHECK(listed.channels == times.channels);
+      const Sampled_gltf s = file.sample({.clip = clip});
+      CHECK(s.report.clip == clip);
+      CHECK(s.report.frames == frames_by_rule(listed.start, listed.end, 30));
+      CHECK(s.report.frames == listed.frames);
+      CHECK(s.num_vertices == expected.vertices);
+      CHECK(s.triangles.size() == expected.triangles);
+      CHECK(s.positions.size() == s.report.frames * 3 * s.num_vertices);
+      CHECK(std::all_of(s.positions.begin(), s.positions.end(), [](double x) { return std::isfinite(x); }));
+      ++clips_read;
+    }
+  }
+  CHECK(clips_read == 362);
+}
+
+TEST_CASE("gltf: the five KayKit bodies give the same frames per clip", "[gltf][data]") {
+  const auto knight = deformseg::io::gltf_contents(characters() / "Knight.glb");
+  REQUIRE(knight.clips.size() == 76);
+  std::size_t zero_second = 0;
+  for (const auto& clip : knight.clips) zero_second += clip.duration == 0 ? 1 : 0;
+  CHECK(zero_second == 7);
+  for (const char* body : {"Barbarian.glb", "Mage.glb", "Rogue.glb", "Rogue_Hooded.glb"}) {
+    INFO(body);
+    const auto other = deformseg::io::gltf_contents(characters() / body);
+    REQUIRE(other.clips.size() == knight.clips.size());
+    for (std::size_t c = 0; c < knight.clips.size(); ++c) {
+      CHECK(other.clips[c].name == knight.clips[c].name);
+      CHECK(other.clips[c].frames == knight.clips[c].frames);
+    }
+    REQUIRE(other.skins.size() == 1);
+    CHECK(other.skins[0].joints == 41);
+  }
+}
+
+namespace {
+
+bool keep_no_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+  return true;
+}
+
+// A copy of `from` whose scene roots hang below a new node that rotates, moves and scales them.
+fs::path moved_copy(const fs::path& from, const std::string& name) {
+  tinygltf::TinyGLTF gltf;
+  gltf.SetImageLoader(&keep_no_image, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  REQUIRE(gltf.LoadBinaryFromFile(&model, &err, &warn, from.string()));
+  model.images.clear();  // geometry only: no texture to write back
+  model.textures.clear();
+  model.materials.clear();
+  for (auto& mesh : model.meshes)
+    for (auto& primitive : mesh.primitives) primitive.material = -1;
+  tinygltf::Node parent;
+  parent.name = "moved";
+  parent.translation = {3, -2, 5};
+  parent.rotation = {0.2, -0.4, 0.1, std::sqrt(1 - 0.04 - 0.16 - 0.01)};
+  parent.scale = {2.5, 2.5, 2.5};
+  auto& scene = model.scenes.at(std::size_t(std::max(model.defaultScene, 0)));
+  parent.children = scene.nodes;
+  model.nodes.push_back(parent);
+  scene.nodes = {int(model.nodes.size()) - 1};
+  const fs::path to = deformseg::test::scratch_dir() / "gltf" / name;
+  fs::create_directories(to.parent_path());
+  REQUIRE(gltf.WriteGltfSceneToFile(&model, to.string(), false, true, false, true));
+  return to;
+}
+
+}  // namespace
+
+TEST_CASE("gltf: a rotated, moved, scaled copy of the Fox gives the same strain", "[gltf][data]") {
+  const fs::path fox = characters() / "Fox.glb";
+  const fs::path moved = moved_copy(fox, "fox_moved.glb");
+  const auto original = deformseg::io::read_gltf(fox, {.clip = "Walk"});
+  const auto copy = deformseg::io::read_gltf(moved, {.clip = "Walk"});
+  REQUIRE(original.num_frames() == 23);
+  REQUIRE(copy.num_frames() == original.num_frames());
+  REQUIRE(copy.num_faces() == original.num_faces());
+  // The copy's positions really moved.
+  CHECK(std::abs(copy.all_positions()[0] - original.all_positions()[0]) > 1e-3);
+  const auto a = deformseg::compute_strain(original);
+  const auto b = deformseg::compute_strain(copy);
+  double largest = 0;
+  for (std::size_t t = 0; t < a.num_frames(); ++t)
+    for (std::size_t f = 0; f < a.num_faces(); ++f) {
+      CHECK(b(f, t) == Approx(a(f, t)).margin(1e-6));
+      largest = std::max(largest, double(std::abs(a(f, t))));
+    }
+  CHECK(largest > 1e-3);  // the Fox does deform
+}
+
+TEST_CASE("gltf: the RobotExpressive robot reads: rigid parts on bones, skinned hands, morph targets", "[gltf][data]") {
+  const deformseg::io::Gltf_file file(characters() / "RobotExpressive.glb");
+  const Sampled_gltf s = file.sample({.clip = "Wave"});
+  CHECK(s.num_vertices == 7214);
+  CHECK(s.triangles.size() == 3237);
+  CHECK(s.report.frames == frames_by_rule(s.report.start, s.report.end, 30));
+  std::size_t repeating = 0;  // triangles that repeat a vertex, as SOURCE.md says
+  for (const auto& t : s.triangles) repeating += (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) ? 1 : 0;
+  CHECK(repeating == 3);
+  // The hands move: some vertex travels during the wave.
+  double travel = 0;
+  for (std::size_t i = 0; i < 3 * s.num_vertices; ++i)
+    travel = std::max(travel, std::abs(s.positions[(s.report.frames / 2) * 3 * s.num_vertices + i] - s.positions[i]));
+  CHECK(travel > 0.1);
+}
+
+TEST_CASE("gltf: the robot's 3 degenerate triangles are reported by the repair", "[gltf][data][repair]") {
+  deformseg::io::Gltf_read_report report;
+  const auto robot = deformseg::io::read_gltf(characters() / "RobotExpressive.glb", {.clip = "Wave"}, &report);
+  CHECK(report.repair.degenerate_triangles == 3);
+  CHECK(robot.num_faces() <= 3237 - 3);
+}
+
+TEST_CASE("gltf: the Fox, a triangle soup, is welded to 290 vertices", "[gltf][data][repair]") {
+  deformseg::io::Gltf_read_report report;
+  const auto fox = deformseg::io::read_gltf(characters() / "Fox.glb", {.clip = "Run"}, &report);
+  CHECK(report.repair.input_vertices == 1728);
+  CHECK(report.repair.welded_vertices == 1728 - 290);
+  CHECK(fox.num_vertices() >= 290);
+  CHECK(fox.num_faces() == 576);
+}
