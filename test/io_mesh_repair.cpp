@@ -438,6 +438,24 @@ TEST_CASE("repair_triangles: parts that cannot be oriented, a Moebius strip and 
   CHECK(cut.report.triangles == 10);
 }
 
+TEST_CASE("repair_triangles: the check that skips CGAL's pass on an oriented manifold", "[io][repair]") {
+  using deformseg::internal::is_oriented_manifold;
+  using Soup_triangles = std::vector<deformseg::internal::Soup_triangle>;
+  Soup cube = unwelded_cube();
+  const auto welded = repaired(Soup{two_frames(cube.points), cube.triangles}, {.weld = true});
+  CHECK(is_oriented_manifold(Soup_triangles(welded.triangles.begin(), welded.triangles.end()), 8));
+  CHECK(is_oriented_manifold(Soup_triangles(cube.triangles.begin(), cube.triangles.end()), 24));
+  Soup cones;
+  add_cone(cones, cones.add(0, 0, 0), 0, 1, 1, 4);
+  CHECK(is_oriented_manifold(Soup_triangles(cones.triangles.begin(), cones.triangles.end()), 5));
+  add_cone(cones, 0, 0, -1, 1, 4);
+  CHECK_FALSE(is_oriented_manifold(Soup_triangles(cones.triangles.begin(), cones.triangles.end()), 9));
+  // Two open fans that touch at vertex 0, which a halfedge mesh would take: not a manifold.
+  CHECK_FALSE(is_oriented_manifold(Soup_triangles{{0, 1, 2}, {0, 2, 3}, {0, 4, 5}, {0, 5, 6}}, 7));
+  CHECK(is_oriented_manifold(Soup_triangles{{0, 1, 2}, {0, 2, 3}}, 4));
+  CHECK_FALSE(is_oriented_manifold(Soup_triangles{{0, 1, 2}, {0, 3, 2}}, 4));
+}
+
 TEST_CASE("repair_triangles: the guard after CGAL finds triangles along an edge in the same direction", "[io][repair]") {
   const std::vector<deformseg::internal::Soup_triangle> triangles = {{0, 1, 2}, {0, 1, 3}, {1, 0, 4}, {4, 0, 1}};
   CHECK(deformseg::internal::misoriented_triangles(triangles) == std::vector<bool>{false, true, false, true});

@@ -148,10 +148,69 @@ inline void reverse_majority_reversed_parts(Oriented_soup& soup) {
     }
 }
 
+/// The halfedges of a soup sorted by their directed edge, to find the triangle along an edge.
+class Halfedge_table {
+public:
+  explicit Halfedge_table(const std::vector<Soup_triangle>& triangles) {
+    halfedges_.reserve(3 * triangles.size());
+    for (std::uint32_t j = 0; j < triangles.size(); ++j)
+      for (std::size_t k = 0; k < 3; ++k) halfedges_.emplace_back(directed_edge_key(triangles[j][k], triangles[j][(k + 1) % 3]), j);
+    std::sort(halfedges_.begin(), halfedges_.end());
+  }
+  /// Whether some directed edge belongs to two triangles.
+  bool has_repeated_halfedge() const {
+    return std::adjacent_find(halfedges_.begin(), halfedges_.end(),
+                              [](const auto& a, const auto& b) { return a.first == b.first; }) != halfedges_.end();
+  }
+  /// The triangle that runs from `a` to `b`, if any.
+  std::optional<std::uint32_t> triangle_along(std::uint32_t a, std::uint32_t b) const {
+    const std::uint64_t key = directed_edge_key(a, b);
+    const auto found = std::lower_bound(halfedges_.begin(), halfedges_.end(), std::pair<std::uint64_t, std::uint32_t>(key, 0));
+    if (found == halfedges_.end() || found->first != key) return std::nullopt;
+    return found->second;
+  }
+
+private:
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> halfedges_;
+};
+
+/// The vertex after `v` in triangle `t`, and the one before it.
+inline std::uint32_t after(const Soup_triangle& t, std::uint32_t v) { return t[0] == v ? t[1] : t[1] == v ? t[2] : t[0]; }
+inline std::uint32_t before(const Soup_triangle& t, std::uint32_t v) { return t[0] == v ? t[2] : t[1] == v ? t[0] : t[1]; }
+
+/// The number of triangles around `v` reached from triangle `start` through edges, turning both ways.
+/// @pre no directed edge belongs to two triangles.
+inline std::size_t fan_size(const std::vector<Soup_triangle>& triangles, const Halfedge_table& table, std::uint32_t v,
+                            std::uint32_t start) {
+  std::size_t count = 1;
+  std::optional<std::uint32_t> t = table.triangle_along(after(triangles[start], v), v);
+  for (; t && *t != start; t = table.triangle_along(after(triangles[*t], v), v)) ++count;
+  if (t) return count;  // back to `start`: closed around v
+  for (t = table.triangle_along(v, before(triangles[start], v)); t; t = table.triangle_along(v, before(triangles[*t], v)))
+    ++count;
+  return count;
+}
+
+/// Whether triangles without repeated vertices are already an oriented 2-manifold: no directed
+/// edge twice, every vertex one fan. Then CGAL's pass, which would change nothing, is skipped.
+/// O(F log F), a few times faster than that pass.
+inline bool is_oriented_manifold(const std::vector<Soup_triangle>& triangles, std::size_t num_vertices) {
+  const Halfedge_table table(triangles);
+  if (table.has_repeated_halfedge()) return false;
+  std::vector<std::uint32_t> degree(num_vertices, 0), first(num_vertices, 0);
+  for (std::uint32_t j = 0; j < triangles.size(); ++j)
+    for (const std::uint32_t v : triangles[j])
+      if (degree[v]++ == 0) first[v] = j;
+  for (std::uint32_t v = 0; v < num_vertices; ++v)
+    if (degree[v] != 0 && fan_size(triangles, table, v, first[v]) != degree[v]) return false;
+  return true;
+}
+
 /// Makes `soup` an oriented 2-manifold that `make_face_graph` accepts: CGAL's orientation, then
 /// the triangles a halfedge mesh still refuses dropped and CGAL run again on the rest, until none
 /// is left (each round drops at least one triangle; one round on all but contrived inputs).
 inline void make_oriented_manifold(Oriented_soup& soup) {
+  if (is_oriented_manifold(soup.triangles, soup.origin.size())) return;
   for (;;) {
     orient_with_cgal(soup);
     const std::vector<bool> refused = misoriented_triangles(soup.triangles);

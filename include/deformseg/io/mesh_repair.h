@@ -247,6 +247,7 @@ inline void refuse_defects(std::span<const Soup_triangle> input, std::span<const
   Oriented_soup soup = soup_of(welded, screened.kept, welding.representative.size());
   refuse_non_manifold_edges(soup, name);
   refuse_inconsistent_orientation(soup, name);
+  if (is_oriented_manifold(soup.triangles, soup.origin.size())) return;
   orient_with_cgal(soup);  // it finds the vertices of several fans
   if (const auto& v = soup.first_non_manifold_vertex)
     throw invalid_input(join("vertex ", std::to_string(name[v->first]), " joins ", std::to_string(v->second),
