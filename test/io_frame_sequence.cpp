@@ -170,12 +170,26 @@ TEST_CASE("read_frame_sequence: errors name the file and the frame, the lowest f
       CHECK_THROWS_MATCHES(read_frame_sequence(folder.string(), {.threads = threads}), invalid_input,
                            Message((folder / "frame_3.obj").string() + ":3: frame 2: non-finite coordinate \"nan\""));
   }
-  SECTION("a bad first frame") {
-    std::ofstream(folder / "frame_1.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3\n";
+  SECTION("a bad first frame: a defect refused, named at its file") {
+    std::ofstream(folder / "frame_1.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n";
+    CHECK_THROWS_MATCHES(read_frame_sequence(folder.string(), {.repair = {.defects = deformseg::io::Defect_policy::refuse}}),
+                         invalid_input,
+                         Message((folder / "frame_1.obj").string() + ": frame 0: triangles 0 and 1 have the same vertices"));
+    // Repaired by default, which does not hide that the other frames have another vertex count.
     CHECK_THROWS_MATCHES(read_frame_sequence(folder.string()), invalid_input,
-                         Message((folder / "frame_1.obj").string() +
-                                 ": frame 0: triangle 1 cannot be added: it repeats a vertex, or makes an edge or a "
-                                 "vertex non-manifold, or is oriented against its neighbours"));
+                         Message((folder / "frame_2.obj").string() + ": frame 1: has 4 vertices instead of 3"));
+  }
+  SECTION("a defect refused in a topology file") {
+    const fs::path topology = folder.parent_path() / "bad-topology.off";
+    std::ofstream(topology) << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n";
+    CHECK_THROWS_MATCHES(read_frame_sequence(folder.string(), {.topology = topology,
+                                                               .repair = {.defects = deformseg::io::Defect_policy::refuse}}),
+                         invalid_input,
+                         Message(topology.string() + ": triangles 0 and 1 are inconsistently oriented: both go from "
+                                                     "vertex 0 to vertex 1 on their shared edge"));
+    deformseg::io::Repair_report report;
+    CHECK(read_frame_sequence(folder.string(), {.topology = topology}, &report).num_faces() == 2);
+    CHECK(report.reoriented_triangles == 1);
   }
   SECTION("a missing topology file") {
     const fs::path missing = folder / "missing.off";

@@ -7,6 +7,7 @@
 #include <deformseg/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/text_scanner.h>
+#include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/read_mesh.h>
 #include <deformseg/io/triangle_soup.h>
 
@@ -191,6 +192,23 @@ void read_frame_positions(std::span<const std::filesystem::path> files, std::siz
 
 }  // namespace deformseg::internal
 
+namespace deformseg::internal {
+
+/// `io::repair_triangles` of a topology's triangles for `T x 3V` positions, its errors located at
+/// the topology.
+template <std::floating_point T>
+io::Repaired_triangles repaired_topology(std::span<const T> positions, std::size_t num_vertices,
+                                         std::span<const std::array<std::uint32_t, 3>> triangles,
+                                         const io::Repair_options& options, const Input_location& location) {
+  try {
+    return io::repair_triangles(positions, num_vertices, triangles, options);
+  } catch (const invalid_input& e) {
+    throw e.located(location);
+  }
+}
+
+}  // namespace deformseg::internal
+
 namespace deformseg::io {
 
 /// @brief The frame files of an animation, in natural order.
@@ -232,16 +250,23 @@ struct Frame_sequence_options {
   /// cores unless `OMP_NUM_THREADS` says otherwise. Ignored when deformseg is built without
   /// OpenMP. The result does not depend on it.
   int threads = 0;
+  /// @brief How the connectivity is repaired (see `repair_triangles`): by default vertices are
+  /// not welded (`weld` false: a frame file's vertices are its own) and degenerate, duplicate
+  /// and non-manifold triangles are repaired (`defects` = `Defect_policy::repair`).
+  Repair_options repair{};
 };
 
 /// @brief Reads an animation stored as one mesh file per frame (OBJ, OFF or PLY), all with the
 /// same vertices in the same order.
 ///
-/// The first frame's file (or `options.topology`) gives the connectivity, through
-/// `make_face_graph<Graph>`, which keeps the file's vertex order; each other frame gives only its
-/// positions (`read_mesh_points`), parsed straight into its block of one contiguous array of
-/// `T x 3V` coordinates. The frames are read in parallel with OpenMP; the result, or the error
-/// thrown, is the same for any number of threads.
+/// The first frame's file (or `options.topology`) gives the triangles; each frame gives only its
+/// positions (`read_mesh_points`; the first frame's are those already read), parsed straight into
+/// its block of one contiguous array of `T x 3V` coordinates. The frames are read in parallel
+/// with OpenMP; the result, or the error thrown, is the same for any number of threads.
+/// `repair_triangles` repairs (or refuses) the triangles: before the frames are read, or after
+/// them when it welds (`options.repair.weld`), which compares every frame. Then
+/// `make_face_graph<Graph>` builds the connectivity; when the repair keeps every vertex (no
+/// welding, no copy), the positions are not copied again.
 ///
 /// @tparam Graph the connectivity type, a `FaceGraph` (default `Surface_mesh`).
 /// @tparam Coordinate the stored coordinate type (default `double`); with `float` each number is
@@ -249,20 +274,25 @@ struct Frame_sequence_options {
 /// @param directory_or_glob the frames, as for `list_frame_files`: a folder, a pattern with `*` and
 /// `?` in the file name part, or one file.
 /// @param options `topology` (default: the first frame), `triangulate` (default false), `threads`
-/// (default 0: all).
-/// @return the animation, frame `t` from the `t`-th file in natural order.
-/// @pre every frame has as many vertices as the connectivity, all with finite coordinates; the
-/// connectivity is an oriented 2-manifold of triangles (or polygons, with `triangulate`). The
+/// (default 0: all), `repair` (default: no welding, defects repaired).
+/// @param report where to store what the repair changed, when not null (default null).
+/// @return the animation, frame `t` from the `t`-th file in natural order; vertex `i` is the
+/// file's vertex `i` unless the repair welded or copied vertices (`report`, and
+/// `repair_triangles`, say how).
+/// @pre every frame has as many vertices as the connectivity, all with finite coordinates. The
 /// faces of frames other than the first are not read: they are assumed to be the same.
 /// @throws invalid_input naming the file, the frame and, for a malformed number, the line of the
 /// first problem: no frame file, a file that cannot be read or parsed, a face that is not a
-/// triangle, a connectivity that is not a manifold, a frame with another vertex count, a
-/// non-finite coordinate. When several frames are bad, the lowest one is reported.
-/// @par Complexity O(total size of the files), divided among the threads.
-/// @sa list_frame_files, read_mesh, read_mesh_points
+/// triangle, a frame with another vertex count, a non-finite coordinate; with
+/// `Defect_policy::refuse`, the first defect of the connectivity, located at its file. When
+/// several frames are bad, the lowest one is reported.
+/// @par Complexity O(total size of the files), divided among the threads, plus the repair's
+/// O(T V + F log F) (O(F log F) without welding).
+/// @sa list_frame_files, read_mesh, read_mesh_points, repair_triangles
 template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
 Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& directory_or_glob,
-                                                      const Frame_sequence_options& options = {}) {
+                                                      const Frame_sequence_options& options = {},
+                                                      Repair_report* report = nullptr) {
   if (options.threads < 0)
     throw invalid_input(internal::join("threads must be 0 (all) or more, not ", std::to_string(options.threads)));
   const std::vector<std::filesystem::path> files = list_frame_files(directory_or_glob);
@@ -271,13 +301,19 @@ Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& directo
                                          .frame = options.topology ? std::nullopt : std::optional<std::size_t>(0)};
 
   Triangle_soup soup;
-  Graph graph;
   try {
     soup = read_mesh(topology_file, {.triangulate = options.triangulate});
-    graph = make_face_graph<Graph>(points_of(soup), soup.triangles);
   } catch (const invalid_input& e) {
     throw e.located(topology_location);
   }
+
+  // Without welding the repair needs no positions: a defect refused is then reported before the
+  // frames are read.
+  Repaired_triangles repaired;
+  if (!options.repair.weld)
+    repaired = internal::repaired_topology(std::span<const Coordinate>(), soup.num_vertices(),
+                                           std::span<const std::array<std::uint32_t, 3>>(soup.triangles), options.repair,
+                                           topology_location);
 
   // The first frame's positions are those just read, unless they come from elsewhere or are to
   // be rounded to another type, when reading them again rounds each number once.
@@ -288,10 +324,15 @@ Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& directo
     std::copy(soup.points.begin(), soup.points.end(), positions.begin());
     first_to_read = 1;
   }
-  soup = {};
+  soup.points = {};
   internal::read_frame_positions(std::span<const std::filesystem::path>(files), first_to_read,
                                  std::span<Coordinate>(positions), block, options.threads);
-  return Deforming_mesh<Graph, Coordinate>(std::move(graph), std::move(positions));
+
+  if (options.repair.weld)
+    repaired = internal::repaired_topology(std::span<const Coordinate>(positions), block / 3,
+                                           std::span<const std::array<std::uint32_t, 3>>(soup.triangles), options.repair,
+                                           topology_location);
+  return internal::repaired_animation<Graph, Coordinate>(std::move(positions), block / 3, repaired, report);
 }
 
 }  // namespace deformseg::io

@@ -1,0 +1,149 @@
+/// @file vertex_welding.h
+/// @brief Details of `io::repair_triangles`: the welding of vertices that coincide in every frame.
+#pragma once
+
+#include <deformseg/exceptions.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <span>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace deformseg::internal {
+
+/// Union-find over [0, n) whose sets are represented by their smallest element, so that the
+/// result does not depend on the order of the unions.
+class Smallest_union_find {
+public:
+  explicit Smallest_union_find(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
+
+  std::uint32_t find(std::uint32_t i) {
+    while (parent_[i] != i) {
+      parent_[i] = parent_[parent_[i]];  // path halving
+      i = parent_[i];
+    }
+    return i;
+  }
+
+  void unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a);
+    b = find(b);
+    if (a < b) parent_[b] = a;
+    if (b < a) parent_[a] = b;
+  }
+
+  /// The set of each element, numbered 0, 1, ... in the order of their smallest element.
+  std::vector<std::uint32_t> numbered_sets() {
+    std::vector<std::uint32_t> set(parent_.size());
+    std::uint32_t count = 0;
+    for (std::uint32_t i = 0; i < parent_.size(); ++i) set[i] = find(i) == i ? count++ : set[find(i)];
+    return set;
+  }
+
+private:
+  std::vector<std::uint32_t> parent_;
+};
+
+/// Throws unless every coordinate is finite, naming the frame and the vertex as `Deforming_mesh` does.
+template <std::floating_point T>
+void check_finite_positions(std::span<const T> positions, std::size_t num_vertices) {
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (!std::isfinite(positions[i]))
+      throw invalid_input("vertex " + std::to_string(i / 3 % num_vertices) + " has a non-finite coordinate",
+                          {.frame = i / (3 * num_vertices)});
+}
+
+/// The bounding box of a set of `x, y, z` coordinates.
+struct Bounding_box {
+  std::array<double, 3> low{}, high{};
+  double diagonal() const { return std::hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]); }
+};
+
+template <std::floating_point T>
+Bounding_box bounding_box(std::span<const T> xyz) {
+  Bounding_box box;
+  box.low.fill(std::numeric_limits<double>::infinity());
+  box.high.fill(-std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < xyz.size(); ++i) {
+    box.low[i % 3] = std::min(box.low[i % 3], double(xyz[i]));
+    box.high[i % 3] = std::max(box.high[i % 3], double(xyz[i]));
+  }
+  if (xyz.empty()) box = {};
+  return box;
+}
+
+/// A cell of the hash grid on frame 0.
+struct Grid_cell {
+  std::array<std::int64_t, 3> index{};
+  bool operator==(const Grid_cell&) const = default;
+};
+
+struct Grid_cell_hash {
+  std::size_t operator()(const Grid_cell& c) const noexcept {
+    const auto mix = [](std::uint64_t h, std::int64_t x) {
+      return (h ^ static_cast<std::uint64_t>(x)) * 0x100000001b3ull;  // FNV-1a step per coordinate
+    };
+    return static_cast<std::size_t>(mix(mix(mix(0xcbf29ce484222325ull, c.index[0]), c.index[1]), c.index[2]));
+  }
+};
+
+/// Vertices `i` and `j` coincide: in every frame, no coordinate differs by more than `distance`.
+template <std::floating_point T>
+bool coincide_in_every_frame(std::span<const T> positions, std::size_t num_vertices, std::size_t i,
+                             std::size_t j, double distance) {
+  for (std::size_t frame = 0; frame < positions.size(); frame += 3 * num_vertices)
+    for (std::size_t k = 0; k < 3; ++k)
+      if (!(std::abs(double(positions[frame + 3 * i + k]) - double(positions[frame + 3 * j + k])) <= distance))
+        return false;
+  return true;
+}
+
+/// Welds the vertices of an animation (`T x 3V` positions, T >= 1) that coincide in every frame
+/// within `tolerance` times the diagonal of the bounding box of all frames, and the vertices that coincide with those (the transitive closure).
+/// @return the welded vertex of each input vertex, numbered in the order of their smallest input vertex.
+/// Candidates come from a hash grid of cells no smaller than `distance` on frame 0: the
+/// vertices in the 27 cells around a vertex, each checked over all frames; O(T V) expected.
+template <std::floating_point T>
+std::vector<std::uint32_t> weld_vertices(std::span<const T> positions, std::size_t num_vertices, double tolerance) {
+  // Cells no smaller than `distance`, but not so small that a cell index overflows (a distance
+  // of 0 still welds vertices in the same place); indices from the corner of frame 0's box.
+  const Bounding_box box = bounding_box(positions.first(3 * num_vertices));
+  const double extent = bounding_box(positions).diagonal();
+  const double distance = tolerance * extent;
+  const double cell = extent == 0 ? 1.0 : std::max(distance, extent * 0x1p-40);
+  const auto cell_of = [&](std::size_t v) {
+    Grid_cell c;
+    for (std::size_t k = 0; k < 3; ++k)
+      c.index[k] = static_cast<std::int64_t>(std::floor((double(positions[3 * v + k]) - box.low[k]) / cell));
+    return c;
+  };
+  std::unordered_map<Grid_cell, std::vector<std::uint32_t>, Grid_cell_hash> grid;
+  grid.reserve(num_vertices);
+  for (std::uint32_t v = 0; v < num_vertices; ++v) grid[cell_of(v)].push_back(v);
+
+  Smallest_union_find welded(num_vertices);
+  for (std::uint32_t v = 0; v < num_vertices; ++v) {
+    const Grid_cell home = cell_of(v);
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          const auto found = grid.find({{home.index[0] + dx, home.index[1] + dy, home.index[2] + dz}});
+          if (found == grid.end()) continue;
+          for (const std::uint32_t w : found->second)
+            if (w < v && welded.find(w) != welded.find(v) &&
+                coincide_in_every_frame(positions, num_vertices, v, w, distance))
+              welded.unite(v, w);
+        }
+  }
+  return welded.numbered_sets();
+}
+
+}  // namespace deformseg::internal
