@@ -154,17 +154,19 @@ public:
   /// Reads a decimal integer, which may be followed by more of its token (as in OBJ's "7/3/1").
   /// Throws invalid_input with the line, saying it expected `what`, when there is none or it has
   /// more than 18 digits. A loop of its own rather than from_chars, which handles any base and is
-  /// slower on the short indices of face lines.
+  /// slower on the short indices of face lines; it stops at 18 digits, which int64 holds, so that
+  /// a longer number is refused before it could overflow.
   std::int64_t integer(const char* what) {
     skip_blanks();
     const char* start = p_;
     const bool negative = *p_ == '-';
     p_ += negative;
-    const char* digits = p_;
+    constexpr std::size_t longest = 18;
+    std::size_t length = 0;
     std::int64_t value = 0;
-    for (; is_digit(*p_); ++p_) value = 10 * value + (*p_ - '0');
-    const auto length = p_ - digits;
-    if (length == 0 || length > 18) [[unlikely]] {
+    for (; length < longest && is_digit(p_[length]); ++length) value = 10 * value + (p_[length] - '0');
+    p_ += length;
+    if (length == 0 || is_digit(*p_)) [[unlikely]] {
       p_ = start;
       fail_integer(start, what, length != 0);
     }
