@@ -151,6 +151,26 @@ TEST_CASE("read_off: each error names the file and the line", "[io][off][errors]
     CHECK_THROWS_MATCHES(read_off(faces), invalid_input,
                          Message(faces.string() + ": the file ends after 1 of 2 faces that its header announces"));
   }
+  SECTION("counts more than the file holds: nothing allocated for them, the file ends first") {
+    // Fuzzing found these ending in a bare std::bad_alloc (test/fuzz/regressions/off).
+    const fs::path huge = file("huge-count.off", "OFF\n4244444444444444 0 0\n");
+    CHECK_THROWS_MATCHES(read_off(huge), invalid_input,
+                         Message(huge.string() + ": the file ends after 0 of 4244444444444444 vertices that its header announces"));
+    const fs::path vertices = file("3e9-vertices.off", "OFF\n3000000000 1 0\n0 0 0\n");
+    CHECK_THROWS_MATCHES(read_off(vertices), invalid_input,
+                         Message(vertices.string() + ": the file ends after 1 of 3000000000 vertices that its header announces"));
+    std::vector<double> xyz(9);
+    CHECK_THROWS_MATCHES(read_mesh_points(vertices, xyz), invalid_input,
+                         Message(vertices.string() + ": has 3000000000 vertices instead of 3"));
+    const fs::path faces = file("3e9-faces.off", "OFF\n3 3000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    CHECK_THROWS_MATCHES(read_off(faces), invalid_input,
+                         Message(faces.string() + ": the file ends after 1 of 3000000000 faces that its header announces"));
+  }
+  SECTION("the shortest lines still fit the counts") {
+    const Triangle_soup soup = read_off(file("shortest.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2"));
+    CHECK(soup.points.size() == 9);
+    CHECK(soup.triangles == Triangles{{0, 1, 2}});
+  }
   SECTION("an empty mesh") {
     const fs::path empty = file("empty.off", "OFF\n0 0 0\n");
     CHECK_THROWS_MATCHES(read_off(empty), invalid_input, Message(empty.string() + ": no vertex: the mesh is empty"));
