@@ -277,6 +277,11 @@ TEST_CASE("read_ply: each error names the file, and the face or vertex", "[io][p
                                "end_header\n0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n2000000000 0 1 2\n");
     CHECK_THROWS_MATCHES(read_ply(list), invalid_input,
                          Message(list.string() + ": the file ends inside face 0 of the 1 the header announces"));
+    const fs::path header_only = file("header-only.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                      "property float y\nproperty float z\nend_header");
+    CHECK_THROWS_MATCHES(read_ply(header_only), invalid_input,
+                         Message(header_only.string() + ": the header announces 1 vertex items of 6 bytes or more, "
+                                                        "more than the 0 bytes of the body hold"));
     const fs::path empty_element = file("no-property.ply", ascii_ply_header + "element nothing 1000000\nend_header\n");
     CHECK_THROWS_MATCHES(read_ply(empty_element), invalid_input,
                          Message(empty_element.string() + ": element nothing has no property but 1000000 items"));

@@ -222,7 +222,7 @@ inline Ply_header read_ply_header(const Text_file& file) {
   Text_scanner scanner(file);
   Ply_header header;
   read_ply_lines(scanner, header);
-  header.body = scanner.position();
+  header.body = std::min(scanner.position(), file.end());  // past the sentinel when end_header ends the file
   locate_ply_mesh(file, header);
   check_ply_counts(file, header);
   return header;
