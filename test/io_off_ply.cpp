@@ -247,6 +247,13 @@ TEST_CASE("read_ply: each error names the file, and the face or vertex", "[io][p
     const std::string found = "ply\nformat ascii 1.0\nele\xdament vertex 3\nproperty float x\n";
     const fs::path mangled = file("mangled.ply", found);
     CHECK_THROWS_MATCHES(read_ply(mangled), invalid_input, Message(at(mangled, 3, "unknown PLY header line \"ele\xdament\"")));
+    // And this one, the first version of deformseg's reader reading past the end of the buffer
+    // (seen under AddressSanitizer; test/fuzz/regressions/ply/heap-overflow-no-newline.ply): a
+    // file without a newline, whose header lines ran into the bytes after its end.
+    const fs::path no_newline = file("no-newline.ply", std::string("ply\rformat ascii 0.8r`hedrot asci'rtyfl\0me", 42));
+    CHECK_THROWS_MATCHES(read_ply(no_newline), invalid_input,
+                         Message(at(no_newline, 1, "expected the line \"format ascii 1.0\" (or binary_little_endian, "
+                                                   "binary_big_endian) after \"ply\"")));
     const fs::path before = file("property-first.ply", "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n");
     CHECK_THROWS_MATCHES(read_ply(before), invalid_input, Message(at(before, 3, "a property before any element")));
     const fs::path type = file("type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty floot x\n");

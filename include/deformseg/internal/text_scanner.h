@@ -117,10 +117,11 @@ public:
   /// At the end of the line or at a comment, where nothing more is read on this line.
   bool at_line_end() const noexcept { return *p_ == '\n' || *p_ == '#'; }
   /// Moves to the start of the next line, with memchr rather than a loop: skipped lines are most
-  /// of what a positions-only read sees.
+  /// of what a positions-only read sees. Never past the sentinel: from the last line it moves to
+  /// the sentinel, where every read stops (past it, a token would run into the padding's zeros).
   void next_line() noexcept {
     const auto left = static_cast<std::size_t>(file_.end() + 1 - p_);
-    p_ = static_cast<const char*>(std::memchr(p_, '\n', left)) + 1;
+    p_ = std::min(static_cast<const char*>(std::memchr(p_, '\n', left)) + 1, file_.end());
   }
   /// Skips lines that are blank or only a comment.
   void skip_empty_lines() noexcept {
