@@ -188,6 +188,19 @@ TEST_CASE("read_obj: each error names the file and the line", "[io][obj][errors]
     CHECK_THROWS_MATCHES(read_obj(slashes), invalid_input,
                          Message(at(slashes, 4, "malformed face corner \"3/1/1/1\"")));
   }
+  SECTION("an index of 19 or more digits, refused before it overflows int64") {
+    // Fuzzing found the overflow (undefined behaviour, seen under -fsanitize=undefined and in
+    // test/fuzz/regressions/obj/ub-index-19-digits.obj): the digits were summed before counted.
+    const fs::path nineteen = obj_file("19-digits.obj", three + "f 1 2 9999999999999999999\n");
+    CHECK_THROWS_MATCHES(read_obj(nineteen), invalid_input,
+                         Message(at(nineteen, 4, "a vertex index \"9999999999999999999\" is out of range")));
+    const fs::path relative = obj_file("19-digits-relative.obj", three + "f 1 -99999999999999999999999999/1 3\n");
+    CHECK_THROWS_MATCHES(read_obj(relative), invalid_input,
+                         Message(at(relative, 4, "a vertex index \"-99999999999999999999999999/1\" is out of range")));
+    const fs::path eighteen = obj_file("18-digits.obj", three + "f 1 2 999999999999999999\n");
+    CHECK_THROWS_MATCHES(read_obj(eighteen), invalid_input,
+                         Message(at(eighteen, 4, "vertex index 999999999999999999 out of range: the file has fewer vertices")));
+  }
   SECTION("an unknown statement") {
     const fs::path unknown = obj_file("unknown.obj", three + "vx 1 2 3\n");
     CHECK_THROWS_MATCHES(read_obj(unknown), invalid_input, Message(at(unknown, 4, "unknown OBJ statement \"vx\"")));

@@ -151,6 +151,26 @@ TEST_CASE("read_off: each error names the file and the line", "[io][off][errors]
     CHECK_THROWS_MATCHES(read_off(faces), invalid_input,
                          Message(faces.string() + ": the file ends after 1 of 2 faces that its header announces"));
   }
+  SECTION("counts more than the file holds: nothing allocated for them, the file ends first") {
+    // Fuzzing found these ending in a bare std::bad_alloc (test/fuzz/regressions/off).
+    const fs::path huge = file("huge-count.off", "OFF\n4244444444444444 0 0\n");
+    CHECK_THROWS_MATCHES(read_off(huge), invalid_input,
+                         Message(huge.string() + ": the file ends after 0 of 4244444444444444 vertices that its header announces"));
+    const fs::path vertices = file("3e9-vertices.off", "OFF\n3000000000 1 0\n0 0 0\n");
+    CHECK_THROWS_MATCHES(read_off(vertices), invalid_input,
+                         Message(vertices.string() + ": the file ends after 1 of 3000000000 vertices that its header announces"));
+    std::vector<double> xyz(9);
+    CHECK_THROWS_MATCHES(read_mesh_points(vertices, xyz), invalid_input,
+                         Message(vertices.string() + ": has 3000000000 vertices instead of 3"));
+    const fs::path faces = file("3e9-faces.off", "OFF\n3 3000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    CHECK_THROWS_MATCHES(read_off(faces), invalid_input,
+                         Message(faces.string() + ": the file ends after 1 of 3000000000 faces that its header announces"));
+  }
+  SECTION("the shortest lines still fit the counts") {
+    const Triangle_soup soup = read_off(file("shortest.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2"));
+    CHECK(soup.points.size() == 9);
+    CHECK(soup.triangles == Triangles{{0, 1, 2}});
+  }
   SECTION("an empty mesh") {
     const fs::path empty = file("empty.off", "OFF\n0 0 0\n");
     CHECK_THROWS_MATCHES(read_off(empty), invalid_input, Message(empty.string() + ": no vertex: the mesh is empty"));
@@ -173,6 +193,20 @@ TEST_CASE("read_ply: text and binary, float and double coordinates", "[io][ply]"
     CHECK(soup.points == points);
     CHECK(soup.triangles == tetrahedron_triangles);
   }
+}
+
+TEST_CASE("read_ply: integer coordinates, other elements and list properties passed over", "[io][ply]") {
+  // CGAL's reader dereferenced null on an x of an integer type; deformseg reads any scalar type.
+  const std::string text =
+      "ply\r\nformat ascii 1.0\r\nobj_info made by hand\r\nelement vertex 4\r\nproperty short x\r\n"
+      "property int y\r\nproperty uchar z\r\nproperty float nx\r\nelement face 4\r\n"
+      "property list uint8 uint vertex_index\r\nproperty list uchar float texcoord\r\n"
+      "element edge 1\r\nproperty int vertex1\r\nproperty int vertex2\r\nend_header\r\n"
+      "0 0 0 nan\r\n1 0 0 0\r\n0 1 0 0\r\n0 0 1 0\r\n"
+      "3 0 2 1 2 0.5 0.5\r\n3 0 1 3 0\r\n3 1 2 3 0\r\n3 0 3 2 0\r\n0 1\r\n";
+  const Triangle_soup soup = read_ply(file("integers.ply", text));
+  CHECK(soup.points == tetrahedron_points);
+  CHECK(soup.triangles == tetrahedron_triangles);
 }
 
 TEST_CASE("read_ply: polygons are rejected, or fan-triangulated on request", "[io][ply]") {
@@ -200,9 +234,73 @@ TEST_CASE("read_ply: each error names the file, and the face or vertex", "[io][p
     const std::string whole = binary_ply();
     const fs::path truncated = file("truncated.ply", whole.substr(0, whole.size() - 10));
     CHECK_THROWS_MATCHES(read_ply(truncated), invalid_input,
-                         Message(truncated.string() + ": cannot read as a PLY polygon mesh: a malformed header, a "
-                                                      "truncated body, or no vertex_indices list in its faces "
-                                                      "(CGAL::IO::read_PLY failed)"));
+                         Message(truncated.string() + ": the file ends inside face 3 of the 4 the header announces"));
+    const fs::path text = file("truncated-ascii.ply", ascii_ply_header + "element face 1\n"
+                               "property list uchar int vertex_indices\nend_header\n"
+                               "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n3 0 1\n");
+    CHECK_THROWS_MATCHES(read_ply(text), invalid_input,
+                         Message(text.string() + ": the file ends inside face 0 of the 1 the header announces"));
+  }
+  SECTION("a malformed header, refused before the body is read") {
+    // Fuzzing found CGAL's reader dereferencing null on the first of these
+    // (test/fuzz/regressions/ply/segv-property-before-element.ply): deformseg checks the header.
+    const std::string found = "ply\nformat ascii 1.0\nele\xdament vertex 3\nproperty float x\n";
+    const fs::path mangled = file("mangled.ply", found);
+    CHECK_THROWS_MATCHES(read_ply(mangled), invalid_input, Message(at(mangled, 3, "unknown PLY header line \"ele\xdament\"")));
+    // And this one, the first version of deformseg's reader reading past the end of the buffer
+    // (seen under AddressSanitizer; test/fuzz/regressions/ply/heap-overflow-no-newline.ply): a
+    // file without a newline, whose header lines ran into the bytes after its end.
+    const fs::path no_newline = file("no-newline.ply", std::string("ply\rformat ascii 0.8r`hedrot asci'rtyfl\0me", 42));
+    CHECK_THROWS_MATCHES(read_ply(no_newline), invalid_input,
+                         Message(at(no_newline, 1, "expected the line \"format ascii 1.0\" (or binary_little_endian, "
+                                                   "binary_big_endian) after \"ply\"")));
+    const fs::path before = file("property-first.ply", "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n");
+    CHECK_THROWS_MATCHES(read_ply(before), invalid_input, Message(at(before, 3, "a property before any element")));
+    const fs::path type = file("type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty floot x\n");
+    CHECK_THROWS_MATCHES(read_ply(type), invalid_input, Message(at(type, 4, "unknown PLY type \"floot\"")));
+    const fs::path list = file("list.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\n");
+    CHECK_THROWS_MATCHES(read_ply(list), invalid_input,
+                         Message(at(list, 4, "a list's count must be of an integer type, not \"float\"")));
+    const fs::path format = file("format.ply", "ply\nformat binary 1.0\n");
+    CHECK_THROWS_MATCHES(read_ply(format), invalid_input, Message(at(format, 2, "unknown PLY format \"binary\"")));
+    const fs::path no_end = file("no-end.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n");
+    CHECK_THROWS_MATCHES(read_ply(no_end), invalid_input, Message(no_end.string() + ": the PLY header has no end_header line"));
+    const fs::path no_z = file("no-z.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                               "property float y\nend_header\n0 0\n");
+    CHECK_THROWS_MATCHES(read_ply(no_z), invalid_input, Message(no_z.string() + ": the vertex element has no scalar property z"));
+    const fs::path no_list = file("no-list.ply", ascii_ply_header + "element face 1\nproperty int vertex_indices\nend_header\n");
+    CHECK_THROWS_MATCHES(read_ply(no_list), invalid_input,
+                         Message(no_list.string() + ": the face element has no vertex_indices list of an integer type"));
+  }
+  SECTION("counts more than the file holds, refused before anything is allocated for them") {
+    const fs::path vertices = file("huge-count.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n"
+                                   "property float x\nproperty float y\nproperty float z\nend_header\n0123456789ab");
+    CHECK_THROWS_MATCHES(read_ply(vertices), invalid_input,
+                         Message(vertices.string() + ": the header announces 4000000000 vertex items of 12 bytes or "
+                                                     "more, more than the 12 bytes of the body hold"));
+    // A list's count is read from the body: the items it announces are read one by one, so a
+    // count of two billion ends at the end of the file rather than in an allocation.
+    const fs::path list = file("huge-list.ply", ascii_ply_header + "element face 1\nproperty list int int vertex_indices\n"
+                               "end_header\n0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n2000000000 0 1 2\n");
+    CHECK_THROWS_MATCHES(read_ply(list), invalid_input,
+                         Message(list.string() + ": the file ends inside face 0 of the 1 the header announces"));
+    const fs::path header_only = file("header-only.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                      "property float y\nproperty float z\nend_header");
+    CHECK_THROWS_MATCHES(read_ply(header_only), invalid_input,
+                         Message(header_only.string() + ": the header announces 1 vertex items of 6 bytes or more, "
+                                                        "more than the 0 bytes of the body hold"));
+    const fs::path empty_element = file("no-property.ply", ascii_ply_header + "element nothing 1000000\nend_header\n");
+    CHECK_THROWS_MATCHES(read_ply(empty_element), invalid_input,
+                         Message(empty_element.string() + ": element nothing has no property but 1000000 items"));
+  }
+  SECTION("a malformed or out-of-range value, with its line") {
+    const std::string header = ascii_ply_header + "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const fs::path colour = file("colour.ply", header + "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 256\n0 0 1 1 1 1\n3 0 1 2\n");
+    CHECK_THROWS_MATCHES(read_ply(colour), invalid_input, Message(at(colour, 15, "vertex 2: \"256\" is out of the range of uchar")));
+    const fs::path number = file("number.ply", header + "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 x 1 1 1\n0 0 1 1 1 1\n3 0 1 2\n");
+    CHECK_THROWS_MATCHES(read_ply(number), invalid_input, Message(at(number, 15, "malformed number \"x\"")));
+    const fs::path count = file("count.ply", header + "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n-3 0 1 2\n");
+    CHECK_THROWS_MATCHES(read_ply(count), invalid_input, Message(at(count, 17, "face 0: \"-3\" is out of the range of uchar")));
   }
   SECTION("an index out of range") {
     const fs::path beyond = file("beyond.ply", ascii_ply_header +

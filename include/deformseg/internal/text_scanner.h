@@ -117,10 +117,11 @@ public:
   /// At the end of the line or at a comment, where nothing more is read on this line.
   bool at_line_end() const noexcept { return *p_ == '\n' || *p_ == '#'; }
   /// Moves to the start of the next line, with memchr rather than a loop: skipped lines are most
-  /// of what a positions-only read sees.
+  /// of what a positions-only read sees. Never past the sentinel: from the last line it moves to
+  /// the sentinel, where every read stops (past it, a token would run into the padding's zeros).
   void next_line() noexcept {
     const auto left = static_cast<std::size_t>(file_.end() + 1 - p_);
-    p_ = static_cast<const char*>(std::memchr(p_, '\n', left)) + 1;
+    p_ = std::min(static_cast<const char*>(std::memchr(p_, '\n', left)) + 1, file_.end());
   }
   /// Skips lines that are blank or only a comment.
   void skip_empty_lines() noexcept {
@@ -154,17 +155,19 @@ public:
   /// Reads a decimal integer, which may be followed by more of its token (as in OBJ's "7/3/1").
   /// Throws invalid_input with the line, saying it expected `what`, when there is none or it has
   /// more than 18 digits. A loop of its own rather than from_chars, which handles any base and is
-  /// slower on the short indices of face lines.
+  /// slower on the short indices of face lines; it stops at 18 digits, which int64 holds, so that
+  /// a longer number is refused before it could overflow.
   std::int64_t integer(const char* what) {
     skip_blanks();
     const char* start = p_;
     const bool negative = *p_ == '-';
     p_ += negative;
-    const char* digits = p_;
+    constexpr std::size_t longest = 18;
+    std::size_t length = 0;
     std::int64_t value = 0;
-    for (; is_digit(*p_); ++p_) value = 10 * value + (*p_ - '0');
-    const auto length = p_ - digits;
-    if (length == 0 || length > 18) [[unlikely]] {
+    for (; length < longest && is_digit(p_[length]); ++length) value = 10 * value + (p_[length] - '0');
+    p_ += length;
+    if (length == 0 || is_digit(*p_)) [[unlikely]] {
       p_ = start;
       fail_integer(start, what, length != 0);
     }

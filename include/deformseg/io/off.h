@@ -6,6 +6,7 @@
 #include <deformseg/internal/text_scanner.h>
 #include <deformseg/io/triangle_soup.h>
 
+#include <algorithm>
 #include <array>
 #include <concepts>
 #include <cstddef>
@@ -61,14 +62,18 @@ inline void expect_line(Text_scanner& scanner, const char* what, std::size_t ind
                                " ", what, " that its header announces"));
 }
 
+/// Reads vertex line `i` of `count` into the 3 values at `xyz`.
+template <std::floating_point T>
+void read_off_vertex(Text_scanner& scanner, std::size_t i, std::size_t count, T* xyz) {
+  expect_line(scanner, "vertices", i, count);
+  read_xyz(scanner, "vertex", xyz);
+  scanner.next_line();
+}
+
 /// Reads the vertex lines of an OFF text into `xyz`, which has room for `count` vertices.
 template <std::floating_point T>
 void read_off_vertices(Text_scanner& scanner, std::size_t count, T* xyz) {
-  for (std::size_t i = 0; i < count; ++i) {
-    expect_line(scanner, "vertices", i, count);
-    read_xyz(scanner, "vertex", xyz + 3 * i);
-    scanner.next_line();
-  }
+  for (std::size_t i = 0; i < count; ++i) read_off_vertex(scanner, i, count, xyz + 3 * i);
 }
 
 /// Reads one face line "n i0 ... in-1 [colour]" of indices from 0, checked against `vertices`.
@@ -92,15 +97,31 @@ inline void read_off_face(Text_scanner& scanner, std::size_t vertices, const io:
   append_fan(corners, soup.triangles);
 }
 
+/// The fewest bytes of a vertex line ("0 0 0\n") and of a triangle's line ("3 0 1 2\n").
+inline constexpr std::size_t min_off_vertex_bytes = 6;
+inline constexpr std::size_t min_off_face_bytes = 8;
+
+/// `count` lines of at least `line_bytes` bytes, or as many as the rest of the file can hold: a
+/// header's count is trusted for an allocation only as far as the file's size allows, the file
+/// then ending before the count does where the count was wrong.
+inline std::size_t off_lines_that_fit(const Text_scanner& scanner, std::size_t count, std::size_t line_bytes) {
+  const auto left = static_cast<std::size_t>(scanner.file().end() - scanner.position());
+  return std::min(count, (left + 1) / line_bytes);  // the last line may lack its newline
+}
+
 /// Reads the vertices and faces of an OFF text.
 inline io::Triangle_soup read_off_soup(const Text_file& file, const io::Mesh_read_options& options) {
   Text_scanner scanner(file);
   const Off_header header = read_off_header(scanner);
   if (header.vertices == 0) file.fail("no vertex: the mesh is empty");
   io::Triangle_soup soup;
-  soup.points.resize(3 * header.vertices);
-  read_off_vertices(scanner, header.vertices, soup.points.data());
-  soup.triangles.reserve(header.faces);
+  soup.points.reserve(3 * off_lines_that_fit(scanner, header.vertices, min_off_vertex_bytes));
+  for (std::size_t i = 0; i < header.vertices; ++i) {
+    std::array<double, 3> xyz;
+    read_off_vertex(scanner, i, header.vertices, xyz.data());
+    soup.points.insert(soup.points.end(), xyz.begin(), xyz.end());
+  }
+  soup.triangles.reserve(off_lines_that_fit(scanner, header.faces, min_off_face_bytes));
   std::vector<std::uint32_t> corners;
   for (std::size_t j = 0; j < header.faces; ++j) {
     expect_line(scanner, "faces", j, header.faces);

@@ -1,0 +1,15 @@
+// libFuzzer harness of read_off, and of read_mesh_points on what read_off accepted.
+#include "fuzz_support.h"
+
+#include <deformseg/io/off.h>
+#include <deformseg/io/read_mesh.h>
+
+#include <vector>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return deformseg::fuzz::run_reader(data, size, ".off", [](const std::filesystem::path& path) {
+    const deformseg::io::Triangle_soup soup = deformseg::io::read_off(path, {.triangulate = true});
+    std::vector<float> xyz(soup.points.size());
+    deformseg::io::read_mesh_points(path, xyz);
+  });
+}
