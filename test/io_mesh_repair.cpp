@@ -536,7 +536,7 @@ TEST_CASE("read_frame_sequence and read_animation repair, weld on request, and r
   CHECK(animation.num_frames() == 3);
   CHECK(animation.frame_positions(2)[3 * 23 + 2] == cube.points[3 * 23 + 2] + 2);
 
-  const auto welded = read_animation(folder.string(), {.repair = {.weld = true}}, &report);
+  const auto welded = read_animation(folder.string(), {.repair = Repair_options{.weld = true}}, &report);
   CHECK(report.welded_vertices == 16);
   CHECK(report.degenerate_triangles == 1);
   CHECK(welded.num_vertices() == 8);
@@ -548,18 +548,18 @@ TEST_CASE("read_frame_sequence and read_animation repair, weld on request, and r
   const fs::path first = folder / "frame_0.obj";
   CHECK_THROWS_MATCHES(read_frame_sequence(folder.string(), {.repair = {.defects = Defect_policy::refuse}}), invalid_input,
                        Message(first.string() + ": frame 0: triangle 12 repeats vertex 4"));
-  CHECK_THROWS_MATCHES(read_animation(folder.string(), {.repair = {.defects = Defect_policy::refuse}}), invalid_input,
+  CHECK_THROWS_MATCHES(read_animation(folder.string(), {.repair = Repair_options{.defects = Defect_policy::refuse}}), invalid_input,
                        Message(first.string() + ": frame 0: triangle 12 repeats vertex 4"));
 
   SECTION("a point cache with a topology") {
     const fs::path cache = folder.parent_path() / "cube.pc2";
     deformseg::io::write_pc2(animation, cache);
-    const auto read = read_animation(cache.string(), {.topology = first, .repair = {.weld = true}}, &report);
+    const auto read = read_animation(cache.string(), {.topology = first, .repair = Repair_options{.weld = true}}, &report);
     CHECK(report.welded_vertices == 16);
     CHECK(report.degenerate_triangles == 1);
     CHECK(read.num_vertices() == 8);
     CHECK(read.num_frames() == 3);
-    CHECK_THROWS_MATCHES(read_animation(cache.string(), {.topology = first, .repair = {.defects = Defect_policy::refuse}}),
+    CHECK_THROWS_MATCHES(read_animation(cache.string(), {.topology = first, .repair = Repair_options{.defects = Defect_policy::refuse}}),
                          invalid_input, Message(first.string() + ": triangle 12 repeats vertex 4"));
   }
 }

@@ -1,6 +1,6 @@
 /// @file read_animation.h
-/// @brief Reads an animation from any input the library knows: a folder or glob of frame files,
-/// or a point cache with its topology mesh.
+/// @brief Reads an animation from any input the library knows: a glTF clip, a folder or glob of
+/// frame files, or a point cache with its topology mesh.
 #pragma once
 
 #include <deformseg/default_mesh.h>
@@ -10,6 +10,12 @@
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/read_mesh.h>
+
+// glTF is read when deformseg was configured with tinygltf (its CMake target then defines
+// DEFORMSEG_HAS_GLTF and links TinyGLTF::TinyGLTF).
+#if DEFORMSEG_HAS_GLTF
+#include <deformseg/io/gltf.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -33,54 +39,99 @@ struct Animation_read_options {
   bool triangulate = false;
   /// @brief Threads that read frames in parallel; 0 (default) uses all.
   int threads = 0;
-  /// @brief How the connectivity is repaired (see `repair_triangles`), for frame sequences and
-  /// point caches alike: by default vertices are not welded (`weld` false) and degenerate,
-  /// duplicate and non-manifold triangles are repaired (`defects` = `Defect_policy::repair`).
-  Repair_options repair{};
+  /// @brief How the connectivity is repaired (see `repair_triangles`). Default: the format's,
+  /// that is degenerate, duplicate and non-manifold triangles repaired, and vertices welded for
+  /// glTF (which splits them along seams) but not for frame sequences and point caches.
+  std::optional<Repair_options> repair{};
+  /// @brief glTF: the clip to read, by name or index; empty (default) for the first.
+  std::string clip{};
+  /// @brief glTF: frames per second the clip is sampled at. Default 30.
+  double fps = 30;
 };
 
-/// @brief The format of an input, by its extension: "pc2" or "mdd" for a point cache, else that
-/// of its frame files ("obj", "off" or "ply").
+/// @brief Whether `input` names a glTF file, by its extension (`.gltf` or `.glb`, in any case).
+/// @par Complexity O(length of the name).
+inline bool is_gltf(const std::filesystem::path& input) {
+  const std::string extension = internal::lower_extension(input);
+  return extension == ".gltf" || extension == ".glb";
+}
+
+/// @brief The format of an input, by its extension: "gltf" or "glb", "pc2" or "mdd" for a point
+/// cache, else that of its frame files ("obj", "off" or "ply").
 /// @throws invalid_input when the input is a frame sequence with no frame file.
 /// @par Complexity that of listing the folder, for a frame sequence.
 inline std::string animation_format(const std::string& input) {
-  const auto lower_extension = [](const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext.empty() ? ext : ext.substr(1);
-  };
-  const std::string ext = lower_extension(input);
-  if (ext == "pc2" || ext == "mdd") return ext;
-  return lower_extension(list_frame_files(input).front());
+  const auto extension = [](const std::filesystem::path& path) { return internal::lower_extension(path).substr(1); };
+  const std::string ext = internal::lower_extension(input);
+  if (ext == ".pc2" || ext == ".mdd" || ext == ".gltf" || ext == ".glb") return ext.substr(1);
+  return extension(list_frame_files(input).front());
 }
 
-/// @brief Reads an animation: a point cache (`.pc2`, `.mdd`, with `options.topology`), or a
-/// sequence of frame files given as a folder or a glob pattern (see `read_frame_sequence`).
+}  // namespace deformseg::io
+
+namespace deformseg::internal {
+
+/// `read_animation` of a glTF file: `read_gltf` with the options that apply to it.
+template <class Graph, class Coordinate>
+Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input, const io::Animation_read_options& options,
+                                                  io::Repair_report* report) {
+  if (options.topology)
+    throw invalid_input("a glTF file has its own connectivity: no topology mesh applies", {.file = input});
+#if DEFORMSEG_HAS_GLTF
+  io::Gltf_read_report read;
+  auto animation = io::read_gltf<Graph, Coordinate>(
+      input,
+      {.clip = options.clip, .fps = options.fps,
+       .repair = options.repair.value_or(io::Gltf_read_options{}.repair), .threads = options.threads},
+      &read);
+  if (report) *report = read.repair;
+  return animation;
+#else
+  static_cast<void>(report);
+  throw invalid_input("this deformseg was built without tinygltf, which reads glTF files (Debian: "
+                      "libtinygltf-dev; link TinyGLTF::TinyGLTF and define DEFORMSEG_HAS_GLTF=1)",
+                      {.file = input});
+#endif
+}
+
+}  // namespace deformseg::internal
+
+namespace deformseg::io {
+
+/// @brief Reads an animation: a glTF clip (`.gltf`, `.glb`, see `read_gltf`), a point cache
+/// (`.pc2`, `.mdd`, with `options.topology`), or a sequence of frame files given as a folder or a
+/// glob pattern (see `read_frame_sequence`).
 ///
-/// Either way the triangles of the topology (or the first frame) are read, then the positions of
-/// every frame, and `repair_triangles` repairs or refuses the triangles (before the positions are
-/// read, unless it welds with `options.repair.weld`, which compares every frame). Vertex `i` of a point cache is vertex `i` of the topology file.
+/// For frames and point caches the triangles of the topology (or the first frame) are read, then
+/// the positions of every frame, and `repair_triangles` repairs or refuses the triangles (before
+/// the positions are read, unless it welds, which compares every frame). Vertex `i` of a point
+/// cache is vertex `i` of the topology file. A glTF clip is sampled at `options.fps`, then welded
+/// and repaired.
 ///
 /// @tparam Graph the connectivity type, a `FaceGraph` (default `Surface_mesh`).
 /// @tparam Coordinate the stored coordinate type (default `double`).
-/// @param input a folder or glob of frame files, or a `.pc2` or `.mdd` file.
+/// @param input a glTF file, a folder or glob of frame files, or a `.pc2` or `.mdd` file.
 /// @param options `topology` (default none), `triangulate` (default false), `threads` (default 0:
-/// all), `repair` (default: no welding, defects repaired).
+/// all), `repair` (default: the format's; defects repaired, glTF welded), `clip` (default: the
+/// first) and `fps` (default 30) for glTF.
 /// @param report where to store what the repair changed, when not null (default null).
-/// @pre a point cache comes with `options.topology`; every frame is valid (see the readers).
+/// @pre a point cache comes with `options.topology`; a glTF file comes with no `topology`, and
+/// deformseg was built with tinygltf (`DEFORMSEG_HAS_GLTF`); every frame is valid (see the readers).
 /// @throws invalid_input naming the file, line or frame of the first problem found; with
 /// `Defect_policy::refuse`, the first defect of the connectivity, located at its file.
 /// @par Complexity linear in the size of the input, plus the repair's (see `repair_triangles`).
 template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
 Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input, const Animation_read_options& options = {},
                                                  Repair_report* report = nullptr) {
+  if (is_gltf(input)) return internal::read_gltf_input<Graph, Coordinate>(input, options, report);
+  const Repair_options repair = options.repair.value_or(Repair_options{});
   const std::string format = animation_format(input);
   if (format != "pc2" && format != "mdd")
     return read_frame_sequence<Graph, Coordinate>(input,
                                                   {.topology = options.topology,
                                                    .triangulate = options.triangulate,
                                                    .threads = options.threads,
-                                                   .repair = options.repair},
+                                                   .repair = repair},
                                                   report);
 
   if (!options.topology)
@@ -97,14 +148,14 @@ Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input, const
   const std::span<const std::array<std::uint32_t, 3>> triangles(soup.triangles);
   // Without welding the repair needs no positions: a defect refused is reported before the cache is read.
   Repaired_triangles repaired;
-  if (!options.repair.weld)
-    repaired = internal::repaired_topology(std::span<const Coordinate>(), vertices, triangles, options.repair,
+  if (!repair.weld)
+    repaired = internal::repaired_topology(std::span<const Coordinate>(), vertices, triangles, repair,
                                            topology_location);
   std::vector<Coordinate> positions =
       format == "pc2" ? internal::read_point_cache_positions<Point_cache_format::pc2, Coordinate>(input, vertices)
                       : internal::read_point_cache_positions<Point_cache_format::mdd, Coordinate>(input, vertices);
-  if (options.repair.weld)
-    repaired = internal::repaired_topology(std::span<const Coordinate>(positions), vertices, triangles, options.repair,
+  if (repair.weld)
+    repaired = internal::repaired_topology(std::span<const Coordinate>(positions), vertices, triangles, repair,
                                            topology_location);
   return internal::repaired_animation<Graph, Coordinate>(std::move(positions), vertices, repaired, report);
 }
