@@ -9,8 +9,8 @@ namespace deformseg::tool {
 
 void add_input_options(CLI::App& command, Input_options& options) {
   command.add_option("input", options.input,
-                     "A folder of frames (.obj, .off, .ply; natural order), a quoted glob "
-                     "pattern, or a point cache (.pc2, .mdd) with --topology")
+                     "A glTF file (.glb, .gltf) with --clip (or as FILE.glb#CLIP), a folder of frames (.obj, "
+                     ".off, .ply; natural order), a quoted glob pattern, or a point cache (.pc2, .mdd) with --topology")
       ->required();
   command.add_option("--topology", options.topology,
                      "Mesh file giving the connectivity (required for a point cache)");
@@ -18,13 +18,107 @@ void add_input_options(CLI::App& command, Input_options& options) {
                    "Fan-triangulate polygons instead of rejecting them");
   command.add_option("--threads", options.threads, "Threads to use (0: all)")
       ->check(CLI::NonNegativeNumber);
+  command.add_option("--clip", options.clip, "glTF: the clip to read, by name or index (default: the first)");
+  command.add_option("--fps", options.fps, "glTF: frames per second the clip is sampled at")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  CLI::Option* weld = command.add_flag(
+      "--weld", options.weld, "Weld the vertices that coincide in every frame (always done for glTF)");
+  command.add_flag("--no-weld", options.no_weld, "glTF: keep the file's vertices, in its order, unwelded")
+      ->excludes(weld);
+  command.add_flag("--refuse-defects", options.refuse_defects,
+                   "Fail on degenerate, duplicate or non-manifold triangles instead of repairing them");
 }
 
-Surface_mesh_animation read_input(const Input_options& options) {
+namespace {
+
+// --clip and --no-weld apply to glTF only, --weld and --topology to the other formats.
+void check_input_options(const Input_options& options) {
+  const auto refuse = [&](const char* message) { throw invalid_input(message, {.file = options.input}); };
+  const bool gltf = io::is_gltf(options.input);
+  if (!gltf && !options.clip.empty()) refuse("--clip applies to glTF files only");
+  if (!gltf && options.no_weld) refuse("--no-weld applies to glTF files only (others are welded only with --weld)");
+  if (gltf && options.weld) refuse("--weld: glTF files are welded already (--no-weld keeps their vertices)");
+  if (gltf && !options.topology.empty()) refuse("--topology does not apply to a glTF file: it has its own");
+}
+
+io::Repair_options repair_options(const Input_options& options) {
+  return {.weld = io::is_gltf(options.input) ? !options.no_weld : options.weld,
+          .defects = options.refuse_defects ? io::Defect_policy::refuse : io::Defect_policy::repair};
+}
+
+// "Fox.glb#Walk" names the clip Walk of Fox.glb, for commands that take many inputs.
+Input_options with_clip_of_name(Input_options options) {
+  const std::size_t hash = options.input.rfind('#');
+  if (hash == std::string::npos || !io::is_gltf(options.input.substr(0, hash))) return options;
+  if (!options.clip.empty())
+    throw invalid_input("the clip is given twice: by --clip and after '#'", {.file = options.input});
+  options.clip = options.input.substr(hash + 1);
+  options.input.resize(hash);
+  return options;
+}
+
+}  // namespace
+
+Surface_mesh_animation read_input(const Input_options& given, Input_report* report) {
+  const Input_options options = with_clip_of_name(given);
+  check_input_options(options);
   progress("reading " + options.input);
-  io::Animation_read_options read{.triangulate = options.triangulate, .threads = options.threads};
-  if (!options.topology.empty()) read.topology = options.topology;
-  return io::read_animation(options.input, read);
+  Input_report found;
+  Surface_mesh_animation animation = [&] {
+    if (io::is_gltf(options.input)) {
+      found.gltf.emplace();
+      Surface_mesh_animation read = io::read_gltf(options.input,
+                                                  {.clip = options.clip, .fps = options.fps,
+                                                   .repair = repair_options(options), .threads = options.threads},
+                                                  &*found.gltf);
+      found.repair = found.gltf->repair;
+      return read;
+    }
+    io::Animation_read_options read{.triangulate = options.triangulate, .threads = options.threads,
+                                    .repair = repair_options(options)};
+    if (!options.topology.empty()) read.topology = options.topology;
+    return io::read_animation(options.input, read, &found.repair);
+  }();
+  if (found.gltf)
+    progress("clip \"" + found.gltf->clip + "\", " + std::to_string(found.gltf->frames) + " frames at " +
+             nlohmann::json(options.fps).dump() + " fps");
+  if (found.repair.changed()) progress("repaired: " + describe(found.repair));
+  if (report) *report = std::move(found);
+  return animation;
+}
+
+nlohmann::json to_json(const io::Repair_report& r) {
+  return {{"input_vertices", r.input_vertices},
+          {"input_triangles", r.input_triangles},
+          {"welded_vertices", r.welded_vertices},
+          {"degenerate_triangles", r.degenerate_triangles},
+          {"duplicate_triangles", r.duplicate_triangles},
+          {"non_manifold_edges", r.non_manifold_edges},
+          {"non_manifold_vertices", r.non_manifold_vertices},
+          {"duplicated_vertices", r.duplicated_vertices},
+          {"reoriented_triangles", r.reoriented_triangles},
+          {"unrepairable_triangles", r.unrepairable_triangles},
+          {"vertices", r.vertices},
+          {"triangles", r.triangles}};
+}
+
+std::string describe(const io::Repair_report& r) {
+  std::string words;
+  const auto add = [&](std::size_t count, const char* what) {
+    if (count == 0) return;
+    if (!words.empty()) words += ", ";
+    words += std::to_string(count) + " " + what;
+  };
+  add(r.welded_vertices, "vertices welded");
+  add(r.degenerate_triangles, "degenerate triangles dropped");
+  add(r.duplicate_triangles, "duplicate triangles dropped");
+  add(r.non_manifold_edges, "non-manifold edges");
+  add(r.non_manifold_vertices, "non-manifold vertices");
+  add(r.duplicated_vertices, "vertices duplicated to make them manifold");
+  add(r.reoriented_triangles, "triangles reoriented");
+  add(r.unrepairable_triangles, "unrepairable triangles dropped");
+  return words.empty() ? "nothing" : words;
 }
 
 void write_json(const nlohmann::json& document, const std::string& path) {

@@ -1,6 +1,8 @@
-// deformseg info INPUT: what an animation is made of.
+// deformseg info INPUT: what an animation is made of; for a glTF file also its clips, skins and
+// meshes; and what repairing its mesh changed.
 #include "command.h"
 
+#include <iomanip>
 #include <iostream>
 #include <memory>
 
@@ -12,24 +14,76 @@ struct Info_options {
   std::string json;
 };
 
-nlohmann::json describe(const Info_options& options) {
-  const Surface_mesh_animation animation = read_input(options.input);
+nlohmann::json bounding_box(const Surface_mesh_animation& animation) {
   Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d high = -low;
   for (std::size_t t = 0; t < animation.num_frames(); ++t) {
     low = low.cwiseMin(animation.frame_matrix(t).rowwise().minCoeff());
     high = high.cwiseMax(animation.frame_matrix(t).rowwise().maxCoeff());
   }
-  return {{"input", options.input.input},
-          {"format", io::animation_format(options.input.input)},
-          {"frames", animation.num_frames()},
-          {"vertices", animation.num_vertices()},
-          {"triangles", animation.num_faces()},
-          {"bounding_box", {{"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}}},
-          {"memory_bytes", animation.memory_bytes()}};
+  return {{"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}};
 }
 
-void print(const nlohmann::json& info) {
+// The clips, skins and meshes of a glTF file, and the clip read.
+nlohmann::json gltf_json(const Input_options& input, const io::Gltf_read_report& read) {
+  const io::Gltf_contents contents = io::gltf_contents(input.input, input.fps);
+  nlohmann::json clips = nlohmann::json::array();
+  for (const auto& clip : contents.clips)
+    clips.push_back({{"name", clip.name}, {"start", clip.start}, {"end", clip.end},
+                     {"duration", clip.duration}, {"frames", clip.frames}, {"channels", clip.channels}});
+  nlohmann::json skins = nlohmann::json::array();
+  for (const auto& skin : contents.skins) skins.push_back({{"name", skin.name}, {"joints", skin.joints}});
+  nlohmann::json meshes = nlohmann::json::array();
+  for (const auto& mesh : contents.meshes) {
+    nlohmann::json primitives = nlohmann::json::array();
+    for (const auto& p : mesh.primitives)
+      primitives.push_back({{"mode", p.mode}, {"vertices", p.vertices}, {"triangles", p.triangles},
+                            {"morph_targets", p.morph_targets}});
+    meshes.push_back({{"name", mesh.name}, {"skinned", mesh.skinned}, {"instances", mesh.instances},
+                      {"primitives", primitives}});
+  }
+  return {{"clip", {{"name", read.clip}, {"start", read.start}, {"end", read.end}, {"fps", input.fps}}},
+          {"clips", clips}, {"skins", skins}, {"meshes", meshes}, {"skipped", read.skipped}};
+}
+
+nlohmann::json describe(const Info_options& options, Input_report& report) {
+  const Surface_mesh_animation animation = read_input(options.input, &report);
+  nlohmann::json info = {{"input", options.input.input},
+                         {"format", io::animation_format(options.input.input)},
+                         {"frames", animation.num_frames()},
+                         {"vertices", animation.num_vertices()},
+                         {"triangles", animation.num_faces()},
+                         {"bounding_box", bounding_box(animation)},
+                         {"memory_bytes", animation.memory_bytes()},
+                         {"repair", to_json(report.repair)}};
+  if (report.gltf) info["gltf"] = gltf_json(options.input, *report.gltf);
+  return info;
+}
+
+void print_gltf(const nlohmann::json& gltf) {
+  const auto& clip = gltf["clip"];
+  std::cout << std::fixed << std::setprecision(3) << "clip          \"" << clip["name"].get<std::string>()
+            << "\", " << clip["start"].get<double>() << " to " << clip["end"].get<double>() << " s at "
+            << clip["fps"].get<double>() << " fps\n"
+            << "clips         " << gltf["clips"].size() << '\n';
+  for (const auto& c : gltf["clips"])
+    std::cout << "  " << std::left << std::setw(34) << c["name"].get<std::string>() << std::right << std::setw(8)
+              << c["duration"].get<double>() << " s " << std::setw(5)
+              << c["frames"] << " frames\n";
+  std::cout << "skins         " << gltf["skins"].size();
+  for (const auto& s : gltf["skins"]) std::cout << " (" << s["joints"] << " joints)";
+  std::cout << "\nmeshes        " << gltf["meshes"].size() << '\n';
+  for (const auto& m : gltf["meshes"]) {
+    std::size_t vertices = 0, triangles = 0;
+    for (const auto& p : m["primitives"]) vertices += p["vertices"].get<std::size_t>(), triangles += p["triangles"].get<std::size_t>();
+    std::cout << "  " << std::left << std::setw(34) << m["name"].get<std::string>() << std::right
+              << (m["skinned"].get<bool>() ? " skinned " : " rigid   ") << std::setw(6) << vertices << " vertices "
+              << std::setw(6) << triangles << " triangles\n";
+  }
+  for (const auto& line : gltf["skipped"]) std::cout << "skipped       " << line.get<std::string>() << '\n';
+}
+
+void print(const nlohmann::json& info, const io::Repair_report& repair) {
   const auto& box = info["bounding_box"];
   std::cout << "input         " << info["input"].get<std::string>() << '\n'
             << "format        " << info["format"].get<std::string>() << '\n'
@@ -37,7 +91,10 @@ void print(const nlohmann::json& info) {
             << "vertices      " << info["vertices"] << '\n'
             << "triangles     " << info["triangles"] << '\n'
             << "bounding box  " << box["min"].dump() << " to " << box["max"].dump() << '\n'
-            << "memory        " << info["memory_bytes"].get<std::size_t>() / 1024 << " KiB\n";
+            << "memory        " << info["memory_bytes"].get<std::size_t>() / 1024 << " KiB\n"
+            << "repair        " << tool::describe(repair) << " (read " << repair.input_vertices
+            << " vertices, " << repair.input_triangles << " triangles)\n";
+  if (info.contains("gltf")) print_gltf(info["gltf"]);
 }
 
 }  // namespace
@@ -45,13 +102,15 @@ void print(const nlohmann::json& info) {
 void add_info_command(CLI::App& app) {
   auto options = std::make_shared<Info_options>();
   CLI::App* command = app.add_subcommand(
-      "info", "Frames, vertices, triangles, bounding box over all frames, format and memory used");
+      "info", "Frames, vertices, triangles, bounding box over all frames, format, memory used and what "
+              "the repair of the mesh changed; for glTF also the clips, skins and meshes");
   add_input_options(*command, options->input);
   command->add_option("--json", options->json, "Write the answer as JSON to FILE ('-': standard output)");
   command->callback([options] {
-    const nlohmann::json info = describe(*options);
+    Input_report report;
+    const nlohmann::json info = describe(*options, report);
     if (options->json.empty())
-      print(info);
+      print(info, report.repair);
     else
       write_json(info, options->json);
   });

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"deformseg: segmentation and motion similarity of deforming meshes"};
   app.require_subcommand(1);
   deformseg::tool::add_info_command(app);
+  deformseg::tool::add_convert_command(app);
   deformseg::tool::add_synth_command(app);
   deformseg::tool::add_strain_command(app);
   deformseg::tool::add_temporal_command(app);

@@ -77,7 +77,9 @@ void write_alignment_figure(const Similarity& s, std::size_t frames_a, std::size
 }
 
 void run_similarity(const Similarity_command_options& o) {
-  const Surface_mesh_animation a = read_input(o.a), b = read_input(o.b);
+  Input_options options_b = o.b;
+  options_b.threads = o.a.threads, options_b.fps = o.a.fps;  // given once for both
+  const Surface_mesh_animation a = read_input(o.a), b = read_input(options_b);
   progress("comparing " + std::to_string(a.num_frames()) + " and " + std::to_string(b.num_frames()) + " frames");
   const Similarity s = with_policy(o.policy, [&](const auto& policy) { return motion_similarity(a, b, policy); });
   if (!o.png.empty()) write_alignment_figure(s, a.num_frames(), b.num_frames(), o.png);
@@ -98,6 +100,7 @@ struct Matrix_command_options {
   std::vector<std::string> inputs;
   std::string topology;
   int threads = 0;
+  double fps = 30;
   Policy_options policy;
   std::string csv;
   std::string json;
@@ -158,7 +161,11 @@ void write_csv(const Eigen::MatrixXd& m, const std::vector<std::string>& names, 
 void run_matrix(const Matrix_command_options& o) {
   std::vector<Surface_mesh_animation> animations;
   for (const auto& input : o.inputs)
-    animations.push_back(read_input({.input = input, .topology = o.topology, .triangulate = false, .threads = o.threads}));
+  {
+    Input_options read;
+    read.input = input, read.topology = o.topology, read.threads = o.threads, read.fps = o.fps;
+    animations.push_back(read_input(read));
+  }
   progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
   const Eigen::MatrixXd m = with_policy(o.policy, [&](const auto& policy) { return similarity_matrix(animations, policy); });
   if (!o.csv.empty()) write_csv(m, o.inputs, o.csv);
@@ -184,10 +191,15 @@ void add_similarity_command(CLI::App& app) {
   auto o = std::make_shared<Similarity_command_options>();
   CLI::App* command = app.add_subcommand("similarity", "How alike two animations move: a value in [0, 1], the "
                                                        "score and the frame-to-frame alignment");
-  command->add_option("a", o->a.input, "The first animation (a folder, a quoted glob or a point cache)")->required();
+  command->add_option("a", o->a.input, "The first animation (a glTF file, FILE.glb#CLIP, a folder, a quoted glob or a point cache)")->required();
   command->add_option("b", o->b.input, "The second animation")->required();
   command->add_option("--topology-a", o->a.topology, "Connectivity of A, for a point cache");
   command->add_option("--topology-b", o->b.topology, "Connectivity of B, for a point cache");
+  command->add_option("--clip-a", o->a.clip, "glTF: the clip of A, by name or index (default: the first)");
+  command->add_option("--clip-b", o->b.clip, "glTF: the clip of B, by name or index (default: the first)");
+  command->add_option("--fps", o->a.fps, "glTF: frames per second both clips are sampled at")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   command->add_option("--threads", o->a.threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
   add_policy_options(*command, o->policy);
   command->add_option("--json", o->json, "Write the result as JSON to FILE ('-': standard output)");
@@ -201,10 +213,13 @@ void add_similarity_command(CLI::App& app) {
 void add_matrix_command(CLI::App& app) {
   auto o = std::make_shared<Matrix_command_options>();
   CLI::App* command = app.add_subcommand("matrix", "The similarity of every pair of a set of animations");
-  command->add_option("inputs", o->inputs, "Two or more animations (folders, quoted globs, point caches)")
+  command->add_option("inputs", o->inputs, "Two or more animations (glTF clips as FILE.glb#CLIP, folders, quoted globs, point caches)")
       ->required()
       ->expected(2, -1);
   command->add_option("--topology", o->topology, "Connectivity for point caches (all inputs share it)");
+  command->add_option("--fps", o->fps, "glTF: frames per second the clips (FILE.glb#CLIP) are sampled at")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   command->add_option("--threads", o->threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
   add_policy_options(*command, o->policy);
   command->add_option("--csv", o->csv, "Write the matrix as CSV, with the inputs as row and column names, to FILE");

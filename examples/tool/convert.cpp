@@ -1,0 +1,81 @@
+// deformseg convert INPUT OUT: an animation (a glTF clip, a point cache, frames) written as a
+// frame sequence, or as a point cache with its topology mesh.
+#include "command.h"
+
+#include <deformseg/io/point_cache.h>
+#include <deformseg/io/write_obj.h>
+#include <deformseg/io/write_sequence.h>
+
+#include <filesystem>
+#include <memory>
+
+namespace deformseg::tool {
+namespace {
+
+struct Convert_options {
+  Input_options input;
+  std::string out;
+  std::string format = "ply";
+  std::string json;
+};
+
+// The name of what the input holds, for the point cache and its topology: "Fox" for "Fox.glb",
+// the folder's name for a folder of frames.
+std::string input_stem(const std::string& input) {
+  std::filesystem::path path(input);
+  if (!path.has_filename()) path = path.parent_path();  // "frames/"
+  const std::string stem = path.stem().string();
+  return stem.empty() || stem.find_first_of("*?") != std::string::npos ? "animation" : stem;
+}
+
+std::vector<std::filesystem::path> write(const Surface_mesh_animation& animation, const Convert_options& o) {
+  const std::filesystem::path out(o.out);
+  if (o.format != "pc2" && o.format != "mdd") {
+    const io::Mesh_format format =
+        o.format == "obj" ? io::Mesh_format::obj : o.format == "off" ? io::Mesh_format::off : io::Mesh_format::ply;
+    return io::write_sequence(animation, out, {.format = format});
+  }
+  internal::create_folder(out);
+  const std::string stem = input_stem(o.input.input);
+  const auto topology = out / (stem + ".obj");
+  const auto cache = out / (stem + "." + o.format);
+  io::write_obj(animation, 0, topology);
+  if (o.format == "pc2")
+    io::write_pc2(animation, cache);
+  else
+    io::write_mdd(animation, cache);
+  return {topology, cache};
+}
+
+}  // namespace
+
+void add_convert_command(CLI::App& app) {
+  auto o = std::make_shared<Convert_options>();
+  CLI::App* command = app.add_subcommand(
+      "convert", "Write an animation (a glTF clip, a point cache, frames) as a frame sequence, or as "
+                 "a point cache with its topology mesh");
+  add_input_options(*command, o->input);
+  command->add_option("out", o->out, "Folder to write into (created when missing)")->required();
+  command->add_option("--format", o->format,
+                      "obj, off or ply: a file per frame (frame_0000.ply, ...); pc2 or mdd: a point "
+                      "cache NAME.pc2 with NAME.obj as its topology, NAME from the input")
+      ->check(CLI::IsMember({"obj", "off", "ply", "pc2", "mdd"}))
+      ->capture_default_str();
+  command->add_option("--json", o->json, "Also write what was written as JSON to FILE ('-': standard output)");
+  command->callback([o] {
+    Input_report report;
+    const Surface_mesh_animation animation = read_input(o->input, &report);
+    progress("writing " + std::to_string(animation.num_frames()) + " frames to " + o->out);
+    const auto files = write(animation, *o);
+    nlohmann::json written = nlohmann::json::array();
+    for (const auto& file : files) written.push_back(file.string());
+    const nlohmann::json summary = {{"frames", animation.num_frames()},
+                                    {"vertices", animation.num_vertices()},
+                                    {"triangles", animation.num_faces()},
+                                    {"repair", to_json(report.repair)},
+                                    {"files", written}};
+    if (!o->json.empty()) write_json(summary, o->json);
+  });
+}
+
+}  // namespace deformseg::tool
