@@ -141,6 +141,7 @@ int main(int argc, char** argv) {
     else
       write_bending_strip(path);
 
+    // [read]
     // What the file holds, at 30 frames per second.
     const deformseg::io::Gltf_contents contents = deformseg::io::gltf_contents(path);
     std::cout << path << ": " << contents.vertices << " vertices, " << contents.triangles << " triangles, "
@@ -160,6 +161,7 @@ int main(int argc, char** argv) {
     const auto first_frame = animation.frame_positions(0), last_frame = animation.frame_positions(animation.num_frames() - 1);
     std::cout << "  vertex " << last << " moves from (" << first_frame[3 * last] << ", " << first_frame[3 * last + 1]
               << ") to (" << last_frame[3 * last] << ", " << last_frame[3 * last + 1] << ")\n";
+    // [read]
 
     // Every clip of the file, parsed once.
     const deformseg::io::Gltf_file file(path);

@@ -44,12 +44,14 @@ int main() {
       {1, 2, 2},             // repeats vertex 2
       {6, 7, 8}, {6, 7, 9}, {7, 6, 2}};  // three triangles on the edge (6, 7)
 
+  // [repair]
   io::Repair_report report;
   const auto animation = io::make_repaired_animation(std::span<const double>(positions), corners.size(),
                                                      std::span(triangles), {.weld = true}, &report);
   print(report);
   std::cout << "the animation: " << animation.num_vertices() << " vertices, " << animation.num_faces()
             << " triangles, " << animation.num_frames() << " frames\n";
+  // [repair]
 
   try {
     io::repair_triangles(std::span<const double>(positions), corners.size(), std::span(triangles),
