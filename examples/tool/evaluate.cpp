@@ -144,8 +144,8 @@ std::vector<std::size_t> order_by_label(const std::vector<io::Labelled_clip>& cl
   return order;
 }
 
-// The matrix with rows and columns in `order`, viridis from the smallest value to the largest,
-// a white line between two motions.
+// The matrix with rows and columns in `order`, each value coloured (viridis) by its rank among
+// all entries, from the smallest (dark) to the largest (yellow); a white line between two motions.
 void write_grouped_heat_map(const Eigen::MatrixXd& m, const std::vector<io::Labelled_clip>& clips,
                             const std::vector<std::size_t>& order, const std::string& path) {
   progress("writing the matrix, grouped by motion, to " + path);
@@ -154,12 +154,17 @@ void write_grouped_heat_map(const Eigen::MatrixXd& m, const std::vector<io::Labe
   for (std::size_t k = 1; k < order.size(); ++k)
     at[k] = at[k - 1] + cell + (clips[order[k]].item.motion != clips[order[k - 1]].item.motion ? 1 : 0);
   const int size = n == 0 ? 1 : at.back() + cell;
-  const double low = m.size() ? m.minCoeff() : 0, high = m.size() ? m.maxCoeff() : 1;
-  const double span = std::max(high - low, 1e-12);
+  // By rank, not by value: the values of real clips crowd near 1 and one outlier would flatten
+  // a linear scale.
+  std::vector<double> sorted(m.data(), m.data() + m.size());
+  std::ranges::sort(sorted);
+  const auto rank = [&](double v) {
+    return sorted.size() < 2 ? 1.0 : double(std::ranges::lower_bound(sorted, v) - sorted.begin()) / double(sorted.size() - 1);
+  };
   Image image(size, size);
   for (std::size_t r = 0; r < order.size(); ++r)
     for (std::size_t c = 0; c < order.size(); ++c) {
-      const Rgb color = strain_color((m(Eigen::Index(order[r]), Eigen::Index(order[c])) - low) / span);
+      const Rgb color = strain_color(rank(m(Eigen::Index(order[r]), Eigen::Index(order[c]))));
       for (int y = 0; y < cell; ++y)
         for (int x = 0; x < cell; ++x) image.set(at[c] + x, at[r] + y, color);
     }
@@ -276,8 +281,8 @@ void add_evaluate_command(CLI::App& app) {
                     "Leave out, with a line on standard error, the clips that cannot be read, instead of stopping");
   command->add_option("--json", o->json, "Write the labels, scores, matrix and times as JSON to FILE ('-': standard output)");
   command->add_option("--png", o->png,
-                      "Draw the matrix with rows and columns grouped by motion (distractors last), white lines "
-                      "between groups, into FILE.png");
+                      "Draw the matrix with rows and columns grouped by motion (distractors last, white lines "
+                      "between groups), each cell coloured by the rank of its value, into FILE.png");
   command->callback([o] { run_evaluate(*o); });
 }
 
