@@ -52,6 +52,7 @@ using Similarity_progress = std::function<bool(std::size_t done, std::size_t tot
 /// @brief Thrown by `similarity_matrix` when its `Similarity_progress` returned false.
 class similarity_stopped : public std::runtime_error {
 public:
+  /// @brief The exception, with a fixed message.
   similarity_stopped() : std::runtime_error("the similarity matrix was stopped by its progress callback") {}
 };
 
