@@ -60,11 +60,12 @@ namespace internal {
 
 // Runs body(0) ... body(count - 1) in parallel batches, reporting `first_step + end of batch` to
 // `progress` after each batch (on this thread, so a callback needs no locking); batches are about
-// 1 % of the work, at least 16 steps, so that reports are frequent but the threads stay busy.
+// 5 % of this loop, at least 16 steps, so that even slow descriptions are reported but the
+// threads stay busy.
 template <class Body>
 void run_in_batches(std::size_t count, std::size_t first_step, std::size_t total_steps,
                     const Similarity_progress& progress, const Body& body) {
-  const std::size_t batch = std::max<std::size_t>(16, total_steps / 100);
+  const std::size_t batch = std::max<std::size_t>(16, count / 20);
   for (std::size_t begin = 0; begin < count; begin += batch) {
     const std::size_t size = std::min(batch, count - begin);
     parallel_for_each_index(size, [&](std::size_t k) { body(begin + k); });
