@@ -82,5 +82,6 @@ void add_ged_command(CLI::App& app);
 void add_ged_matrix_command(CLI::App& app);
 void add_similarity_command(CLI::App& app);
 void add_matrix_command(CLI::App& app);
+void add_evaluate_command(CLI::App& app);
 
 }  // namespace deformseg::tool

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   deformseg::tool::add_ged_matrix_command(app);
   deformseg::tool::add_similarity_command(app);
   deformseg::tool::add_matrix_command(app);
+  deformseg::tool::add_evaluate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

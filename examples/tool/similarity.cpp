@@ -1,9 +1,8 @@
 // deformseg similarity A B and deformseg matrix INPUT...: how alike two animations move, with
 // their frame-to-frame alignment, and the similarity matrix of a set of animations.
 #include "command.h"
+#include "policy_options.h"
 
-#include <deformseg/alignment/dtw.h>
-#include <deformseg/alignment/subsequence_dtw.h>
 #include <deformseg/internal/file_io.h>
 #include <deformseg/motion_similarity.h>
 #include <deformseg/strain_colors.h>
@@ -15,40 +14,6 @@
 
 namespace deformseg::tool {
 namespace {
-
-struct Policy_options {
-  std::string policy = "histogram";
-  std::string alignment = "smith-waterman";
-  double threshold = Spatiotemporal_options{}.threshold;
-};
-
-void add_policy_options(CLI::App& command, Policy_options& o) {
-  command.add_option("--policy", o.policy,
-                     "histogram: per-frame histograms of the strain, no correspondence needed (default); "
-                     "graph: the thesis' evolving graphs, GED, clustering and label alignment")
-      ->check(CLI::IsMember({"histogram", "graph"}));
-  command.add_option("--alignment", o.alignment,
-                     "smith-waterman (local, default), dtw (global) or subsequence-dtw (open begin and end)")
-      ->check(CLI::IsMember({"smith-waterman", "dtw", "subsequence-dtw"}));
-  command.add_option("--threshold", o.threshold, "graph: the deformed threshold of the segmentation. Default: 0.5");
-}
-
-// Calls `run` with the similarity policy the options name.
-template <class Run>
-auto with_policy(const Policy_options& o, const Run& run) {
-  const auto with_alignment = [&](auto aligner) {
-    using Aligner = decltype(aligner);
-    if (o.policy == "graph") {
-      Evolving_graph_similarity<ged::Bipartite_ged, Segment_costs, clustering::K_medoids, Aligner> policy;
-      policy.segmentation.threshold = o.threshold;
-      return run(policy);
-    }
-    return run(Strain_distribution_similarity<Aligner>{});
-  };
-  if (o.alignment == "dtw") return with_alignment(alignment::Dtw{});
-  if (o.alignment == "subsequence-dtw") return with_alignment(alignment::Subsequence_dtw{});
-  return with_alignment(alignment::Smith_waterman{});
-}
 
 // ---- deformseg similarity A B ----------------------------------------------------------------
 

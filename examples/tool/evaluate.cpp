@@ -1,0 +1,289 @@
+// deformseg evaluate LABELS.csv: reads every labelled clip, computes the similarity matrix and
+// says how well it retrieves the same motion on other bodies (evaluate_retrieval).
+#include "command.h"
+#include "policy_options.h"
+
+#include <deformseg/io/gltf.h>
+#include <deformseg/io/motion_labels.h>
+#include <deformseg/motion_similarity.h>
+#include <deformseg/retrieval_evaluation.h>
+#include <deformseg/strain_colors.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <numeric>
+#include <tuple>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace deformseg::tool {
+namespace {
+
+struct Evaluate_options {
+  std::string labels;
+  Policy_options policy;
+  double fps = 30;
+  int threads = 0;
+  bool skip_unreadable = false;
+  std::string json;
+  std::string png;
+};
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string fixed(double value, int decimals = 3) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*f", decimals, value);
+  return text;
+}
+
+// The animations read, and the labelled clips they are (without those skipped).
+struct Read_clips {
+  std::vector<Surface_mesh_animation> animations;
+  std::vector<io::Labelled_clip> clips;
+  std::vector<std::string> skipped;  // "FILE clip NAME: MESSAGE"
+};
+
+bool is_gltf(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  std::ranges::transform(extension, extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return extension == ".glb" || extension == ".gltf";
+}
+
+// Reads the clips of `rows` that come from `file` (rows[i] for i in `of_file`), parsing it once.
+void read_file_clips(const std::filesystem::path& file, const std::vector<std::size_t>& of_file,
+                     const std::vector<io::Labelled_clip>& rows, const Evaluate_options& o, Read_clips& out) {
+  const auto skip_or_throw = [&](const std::vector<std::size_t>& lost, const invalid_input& e) {
+    if (!o.skip_unreadable) throw;
+    for (const std::size_t i : lost) out.skipped.push_back(file.string() + " clip '" + rows[i].item.clip + "': " + e.what());
+  };
+  if (!is_gltf(file)) {
+    try {
+      out.animations.push_back(io::read_animation(file.string(), {.threads = o.threads}));
+      out.clips.push_back(rows[of_file.front()]);
+    } catch (const invalid_input& e) {
+      skip_or_throw(of_file, e);
+    }
+    return;
+  }
+  std::optional<io::Gltf_file> gltf;
+  try {
+    gltf.emplace(file);
+  } catch (const invalid_input& e) {
+    return skip_or_throw(of_file, e);
+  }
+  for (const std::size_t i : of_file) {
+    try {
+      out.animations.push_back(gltf->read({.clip = rows[i].item.clip, .fps = o.fps, .threads = o.threads}));
+      out.clips.push_back(rows[i]);
+    } catch (const invalid_input& e) {
+      skip_or_throw({i}, e);
+    }
+  }
+}
+
+Read_clips read_clips(const std::vector<io::Labelled_clip>& rows, const Evaluate_options& o) {
+  std::vector<std::filesystem::path> files;  // in the order of first appearance
+  for (const auto& row : rows)
+    if (std::ranges::find(files, row.file) == files.end()) files.push_back(row.file);
+  Read_clips out;
+  for (const auto& file : files) {
+    std::vector<std::size_t> of_file;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (rows[i].file == file) of_file.push_back(i);
+    if (!is_gltf(file) && of_file.size() > 1)
+      throw invalid_input("lists " + std::to_string(of_file.size()) + " clips of " + file.string() +
+                          ", which is not a glTF file and holds one animation", {.file = o.labels});
+    progress("reading " + std::to_string(of_file.size()) + " clip(s) of " + file.string());
+    read_file_clips(file, of_file, rows, o, out);
+  }
+  for (const auto& line : out.skipped) progress("skipped " + line);
+  return out;
+}
+
+// Reports the matrix's progress on standard error about every 5 %, and when the descriptions are
+// all made (their time apart from the comparisons').
+struct Matrix_progress {
+  std::size_t descriptions = 0;
+  Clock::time_point start = Clock::now();
+  double describe_seconds = 0;
+  std::size_t next_report = 0;
+
+  bool operator()(std::size_t done, std::size_t total) {
+    if (done == descriptions && describe_seconds == 0) {
+      describe_seconds = seconds_since(start);
+      progress("described " + std::to_string(descriptions) + " animations in " + fixed(describe_seconds, 1) + " s");
+    }
+    if (done >= next_report || done == total) {
+      progress("matrix: " + std::to_string(done) + " of " + std::to_string(total) + " steps, " +
+               fixed(seconds_since(start), 1) + " s");
+      next_report = done + std::max<std::size_t>(1, total / 20);
+    }
+    return true;
+  }
+};
+
+// The items' order in the figure: by motion (distractors last), then body, then clip.
+std::vector<std::size_t> order_by_label(const std::vector<io::Labelled_clip>& clips) {
+  std::vector<std::size_t> order(clips.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  const auto key = [&](std::size_t i) {
+    const Labelled_item& item = clips[i].item;
+    return std::tuple(item.motion == distractor_label, item.motion, item.body, item.clip);
+  };
+  std::ranges::stable_sort(order, [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  return order;
+}
+
+// The matrix with rows and columns in `order`, each value coloured (viridis) by its rank among
+// all entries, from the smallest (dark) to the largest (yellow); a white line between two motions.
+void write_grouped_heat_map(const Eigen::MatrixXd& m, const std::vector<io::Labelled_clip>& clips,
+                            const std::vector<std::size_t>& order, const std::string& path) {
+  progress("writing the matrix, grouped by motion, to " + path);
+  const int n = int(order.size()), cell = std::max(2, 720 / std::max(1, n));
+  std::vector<int> at(order.size(), 0);  // the pixel where position k starts: a line before a new motion
+  for (std::size_t k = 1; k < order.size(); ++k)
+    at[k] = at[k - 1] + cell + (clips[order[k]].item.motion != clips[order[k - 1]].item.motion ? 1 : 0);
+  const int size = n == 0 ? 1 : at.back() + cell;
+  // By rank, not by value: the values of real clips crowd near 1 and one outlier would flatten
+  // a linear scale.
+  std::vector<double> sorted(m.data(), m.data() + m.size());
+  std::ranges::sort(sorted);
+  const auto rank = [&](double v) {
+    return sorted.size() < 2 ? 1.0 : double(std::ranges::lower_bound(sorted, v) - sorted.begin()) / double(sorted.size() - 1);
+  };
+  Image image(size, size);
+  for (std::size_t r = 0; r < order.size(); ++r)
+    for (std::size_t c = 0; c < order.size(); ++c) {
+      const Rgb color = strain_color(rank(m(Eigen::Index(order[r]), Eigen::Index(order[c]))));
+      for (int y = 0; y < cell; ++y)
+        for (int x = 0; x < cell; ++x) image.set(at[c] + x, at[r] + y, color);
+    }
+  write_png(image, path);
+}
+
+nlohmann::json optional_json(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
+std::string optional_text(const std::optional<double>& value) { return value ? fixed(*value) : "none"; }
+
+nlohmann::json scores_json(const Retrieval_scores& s) {
+  nlohmann::json per_motion = nlohmann::json::array();
+  for (const auto& m : s.per_motion)
+    per_motion.push_back({{"motion", m.motion}, {"queries", m.queries}, {"correct", m.correct},
+                          {"nn_accuracy", m.nn_accuracy}});
+  return {{"queries", s.queries}, {"queries_without_relevant", s.queries_without_relevant},
+          {"queries_without_candidate", s.queries_without_candidate}, {"nn_accuracy", optional_json(s.nn_accuracy)},
+          {"mean_average_precision", optional_json(s.mean_average_precision)},
+          {"roc_auc", optional_json(s.roc_auc)}, {"median_same", optional_json(s.median_same)},
+          {"median_different", optional_json(s.median_different)}, {"same_pairs", s.same_pairs},
+          {"different_pairs", s.different_pairs}, {"labels", s.labels}, {"confusion", s.confusion},
+          {"per_motion", per_motion}};
+}
+
+void print_confusion(const Retrieval_scores& s) {
+  std::size_t width = 6;
+  for (const auto& label : s.labels) width = std::max(width, label.size() + 1);
+  std::cout << "confusion (rows: query motion, columns: nearest neighbour's motion)\n" << std::string(width, ' ');
+  for (const auto& label : s.labels)  // right-aligned over the counts, cut to 5 letters
+    std::cout << ' ' << std::string(5 - std::min<std::size_t>(5, label.size()), ' ') << label.substr(0, 5);
+  std::cout << '\n';
+  for (std::size_t r = 0; r < s.labels.size(); ++r) {
+    if (s.labels[r] == distractor_label) continue;  // never queried
+    std::cout << s.labels[r] << std::string(width - s.labels[r].size(), ' ');
+    for (const std::size_t count : s.confusion[r]) {
+      const std::string text = count ? std::to_string(count) : ".";
+      std::cout << ' ' << std::string(5 - std::min<std::size_t>(5, text.size()), ' ') << text;
+    }
+    std::cout << '\n';
+  }
+}
+
+void print_scores(const Retrieval_scores& s, std::size_t items) {
+  std::cout << "items                " << items << "\nqueries              " << s.queries
+            << "\nwithout relevant     " << s.queries_without_relevant << "\nNN accuracy          "
+            << optional_text(s.nn_accuracy) << "\nmAP                  " << optional_text(s.mean_average_precision)
+            << "\nROC-AUC              " << optional_text(s.roc_auc) << "\nmedian same          "
+            << optional_text(s.median_same) << " (" << s.same_pairs << " pairs)\nmedian different     "
+            << optional_text(s.median_different) << " (" << s.different_pairs << " pairs)\nper motion\n";
+  for (const auto& m : s.per_motion)
+    std::cout << "  " << m.motion << std::string(14 - std::min<std::size_t>(13, m.motion.size()), ' ') << m.correct
+              << " / " << m.queries << "  " << fixed(m.nn_accuracy) << '\n';
+  print_confusion(s);
+}
+
+void run_evaluate(const Evaluate_options& o) {
+  if (!(o.fps > 0)) throw invalid_input("--fps must be positive");
+#ifdef _OPENMP
+  if (o.threads > 0) omp_set_num_threads(o.threads);  // the matrix's threads; the readers take theirs
+#endif
+  const auto start = Clock::now();
+  const Read_clips read = read_clips(io::read_motion_labels(o.labels), o);
+  const double read_seconds = seconds_since(start);
+  progress("read " + std::to_string(read.animations.size()) + " clips in " + fixed(read_seconds, 1) + " s");
+  Matrix_progress report{.descriptions = read.animations.size()};
+  const Eigen::MatrixXd m = with_policy(o.policy, [&](const auto& policy) {
+    return similarity_matrix(read.animations, policy, std::ref(report));
+  });
+  const double matrix_seconds = seconds_since(report.start);
+  std::vector<Labelled_item> items;
+  for (const auto& clip : read.clips) items.push_back(clip.item);
+  const Retrieval_scores scores = evaluate_retrieval(m, items);
+  const std::vector<std::size_t> order = order_by_label(read.clips);
+  if (!o.png.empty()) write_grouped_heat_map(m, read.clips, order, o.png);
+  progress("times: reading " + fixed(read_seconds, 1) + " s, describing " + fixed(report.describe_seconds, 1) +
+           " s, comparing " + fixed(matrix_seconds - report.describe_seconds, 1) + " s");
+  if (!o.json.empty()) {
+    nlohmann::json inputs = nlohmann::json::array(), rows = nlohmann::json::array();
+    for (const auto& clip : read.clips)
+      inputs.push_back({{"file", clip.file.string()}, {"clip", clip.item.clip}, {"motion", clip.item.motion},
+                        {"body", clip.item.body}, {"rig", clip.item.rig}});
+    for (Eigen::Index i = 0; i < m.rows(); ++i) {
+      rows.push_back(nlohmann::json::array());
+      for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
+    }
+    write_json({{"labels", o.labels}, {"policy", o.policy.policy}, {"alignment_policy", o.policy.alignment},
+                {"fps", o.fps}, {"inputs", inputs}, {"skipped", read.skipped}, {"scores", scores_json(scores)},
+                {"figure_order", order}, {"similarity", rows},
+                {"seconds", {{"reading", read_seconds}, {"describing", report.describe_seconds},
+                             {"comparing", matrix_seconds - report.describe_seconds}}}},
+               o.json);
+    if (o.json == "-") return;
+  }
+  print_scores(scores, items.size());
+}
+
+}  // namespace
+
+void add_evaluate_command(CLI::App& app) {
+  auto o = std::make_shared<Evaluate_options>();
+  CLI::App* command = app.add_subcommand(
+      "evaluate", "How well motion similarity retrieves the same motion on other bodies: NN accuracy, mAP, "
+                  "ROC-AUC, medians and the confusion table of a labelled set of clips");
+  command->add_option("labels", o->labels,
+                      "CSV file with the header file,clip,motion[,rig][,body] (files relative to its folder; "
+                      "motion '-': a distractor)")
+      ->required();
+  add_policy_options(*command, o->policy);
+  command->add_option("--fps", o->fps, "Frames per second glTF clips are sampled at. Default: 30");
+  command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_flag("--skip-unreadable", o->skip_unreadable,
+                    "Leave out, with a line on standard error, the clips that cannot be read, instead of stopping");
+  command->add_option("--json", o->json, "Write the labels, scores, matrix and times as JSON to FILE ('-': standard output)");
+  command->add_option("--png", o->png,
+                      "Draw the matrix with rows and columns grouped by motion (distractors last, white lines "
+                      "between groups), each cell coloured by the rank of its value, into FILE.png");
+  command->callback([o] { run_evaluate(*o); });
+}
+
+}  // namespace deformseg::tool

@@ -1,0 +1,132 @@
+/// @file io/motion_labels.h
+/// @brief Reads the labels of a retrieval evaluation from a CSV file (`read_motion_labels`).
+#pragma once
+
+#include <deformseg/exceptions.h>
+#include <deformseg/retrieval_evaluation.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace deformseg::io {
+
+/// @brief One row of a labels file: the animation's file and its labels.
+struct Labelled_clip {
+  /// @brief The animation: the `file` column, relative to the labels file's folder (an absolute
+  /// path is kept): a `.glb`/`.gltf` file, a folder of frames, a point cache...
+  std::filesystem::path file{};
+  /// @brief Its labels; `item.clip` names the clip in `file` (empty: the file's first or only one).
+  Labelled_item item{};
+};
+
+namespace internal::labels {
+
+inline std::vector<std::string> split_fields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  for (const char c : line) {
+    if (c == ',') fields.emplace_back();
+    else fields.back() += c;
+  }
+  for (auto& field : fields) {
+    const auto first = field.find_first_not_of(" \t");
+    field = first == std::string::npos ? std::string() : field.substr(first, field.find_last_not_of(" \t") - first + 1);
+  }
+  return fields;
+}
+
+// The column of each of file, clip, motion, rig, body in the header (rig and body optional).
+struct Columns {
+  std::array<std::optional<std::size_t>, 5> at{};
+  std::size_t count = 0;
+};
+
+inline constexpr std::array<const char*, 5> column_names{"file", "clip", "motion", "rig", "body"};
+
+inline Columns read_header(const std::string& line, const Input_location& where) {
+  Columns columns;
+  const auto names = split_fields(line);
+  columns.count = names.size();
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const auto known = std::ranges::find(column_names, names[i]);
+    if (known == column_names.end())
+      throw invalid_input("unknown column '" + names[i] + "': the header is file,clip,motion[,rig][,body]", where);
+    auto& slot = columns.at[std::size_t(known - column_names.begin())];
+    if (slot) throw invalid_input("column '" + names[i] + "' appears twice", where);
+    slot = i;
+  }
+  for (std::size_t k = 0; k < 3; ++k)
+    if (!columns.at[k])
+      throw invalid_input(std::string("the header has no '") + column_names[k] +
+                              "' column: it is file,clip,motion[,rig][,body]",
+                          where);
+  return columns;
+}
+
+inline Labelled_clip read_row(const std::string& line, const Columns& columns, const std::filesystem::path& folder,
+                              const Input_location& where) {
+  const auto fields = split_fields(line);
+  if (fields.size() != columns.count)
+    throw invalid_input(std::to_string(fields.size()) + " fields where the header has " +
+                            std::to_string(columns.count),
+                        where);
+  const auto field = [&](std::size_t k) { return columns.at[k] ? fields[*columns.at[k]] : std::string(); };
+  Labelled_clip row{.file = folder / field(0),
+                    .item = {.motion = field(2), .body = field(4), .rig = field(3), .clip = field(1)}};
+  if (field(0).empty()) throw invalid_input("the file field is empty", where);
+  if (row.item.motion.empty())
+    throw invalid_input(std::string("the motion field is empty (a distractor is '") + distractor_label + "')", where);
+  if (row.item.body.empty()) row.item.body = field(0);
+  return row;
+}
+
+}  // namespace internal::labels
+
+/// @brief Reads a labels file: a header line naming the columns, then one line per animation.
+///
+/// The columns are `file`, `clip`, `motion` (required) and `rig`, `body` (optional), in any
+/// order, separated by commas (no quoting; spaces around a field are dropped). `motion` is
+/// `distractor_label` ("-") for a distractor; `body` defaults to the `file` field as written, and
+/// `rig` to empty. Empty lines and lines starting with `#` are skipped.
+/// @param path the CSV file.
+/// @return the rows in the file's order, `file` relative to the CSV's folder.
+/// @throws invalid_input naming the file (and the 1-based line) when it cannot be read, when the
+/// header names an unknown or repeated column or lacks a required one, when a row has another
+/// number of fields than the header, an empty file or motion field, or repeats a (file, clip)
+/// pair; or when it has no row.
+/// @par Complexity O(size of the file + R log R) for R rows.
+inline std::vector<Labelled_clip> read_motion_labels(const std::filesystem::path& path) {
+  namespace l = internal::labels;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw invalid_input("cannot open the labels file", {.file = path.string()});
+  const std::filesystem::path folder = path.parent_path();
+  std::optional<l::Columns> columns;
+  std::vector<Labelled_clip> rows;
+  std::set<std::pair<std::string, std::string>> seen;
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos || line.front() == '#') continue;
+    const Input_location where{.file = path.string(), .line = number};
+    if (!columns) {
+      columns = l::read_header(line, where);
+      continue;
+    }
+    Labelled_clip row = l::read_row(line, *columns, folder, where);
+    if (!seen.emplace(row.file.string(), row.item.clip).second)
+      throw invalid_input("clip '" + row.item.clip + "' of " + row.file.filename().string() + " is listed twice", where);
+    rows.push_back(std::move(row));
+  }
+  if (rows.empty()) throw invalid_input("the labels file lists no animation", {.file = path.string()});
+  return rows;
+}
+
+}  // namespace deformseg::io

@@ -1,0 +1,289 @@
+// Tests of retrieval_evaluation.h, io/motion_labels.h and the query x database similarity_matrix
+// (with its progress callback): figures computed by hand, the exclusion rules, ties, queries
+// without a relevant candidate, and a brute-force check of ROC-AUC.
+#include "test_support.h"
+
+#include <deformseg/io/motion_labels.h>
+#include <deformseg/motion_similarity.h>
+#include <deformseg/retrieval_evaluation.h>
+#include <deformseg/synthetic.h>
+
+#include <numbers>
+#include <random>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+using namespace deformseg;
+
+namespace {
+
+Labelled_item item(std::string motion, std::string body, std::string rig = "", std::string clip = "") {
+  return {.motion = std::move(motion), .body = std::move(body), .rig = std::move(rig), .clip = std::move(clip)};
+}
+
+Eigen::MatrixXd matrix(std::initializer_list<std::initializer_list<double>> rows) {
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(Eigen::Index(rows.size()), Eigen::Index(rows.begin()->size()));
+  Eigen::Index i = 0;
+  for (const auto& row : rows) {
+    Eigen::Index j = 0;
+    for (const double v : row) m(i, j++) = v;
+    ++i;
+  }
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("evaluate_retrieval: a 5-item case computed by hand", "[evaluation]") {
+  // 0 a/X, 1 a/Y, 2 b/Y, 3 b/Z, 4 distractor/Z; no rig.
+  const std::vector<Labelled_item> items{item("a", "X"), item("a", "Y"), item("b", "Y"), item("b", "Z"),
+                                         item("-", "Z")};
+  // Row 0: candidates 1-4 ranked 2 (.8 b), 1 (.6 a), 4 (.5 -), 3 (.4 b): NN b, wrong; AP 1/2.
+  // Row 1: candidates 0, 3, 4 (2 is body Y, its .9 unseen): 0 and 3 tie at .7, the lower index 0
+  //        first: NN a, right; AP 1.
+  // Row 2: candidates 0, 3, 4 (1's .95 unseen): 4 (.6 -), then 0 and 3 tied at .3, 0 first: NN the
+  //        distractor, wrong; AP 1/3 (3 at rank 3).
+  // Row 3: candidates 0, 1, 2 (4 is body Z, its .99 unseen): 2 (.9 b): NN right; AP 1.
+  // Row 4: a distractor, never a query (its values would change every figure).
+  const Eigen::MatrixXd s = matrix({{1, .6, .8, .4, .5},
+                                    {.7, 1, .9, .7, .2},
+                                    {.3, .95, 1, .3, .6},
+                                    {.5, .4, .9, 1, .99},
+                                    {.9, .9, .9, .9, 1}});
+  const Retrieval_scores r = evaluate_retrieval(s, items);
+  CHECK(r.queries == 4);
+  CHECK(r.queries_without_relevant == 0);
+  CHECK(r.queries_without_candidate == 0);
+  CHECK(*r.nn_accuracy == 0.5);
+  CHECK(*r.mean_average_precision == Approx((0.5 + 1 + 1.0 / 3 + 1) / 4));  // 17/24
+  // Same: .6 .7 .3 .9; different (9): .2 .3 .4 .4 .5 .5 .6 .7 .8. Beaten (ties 1/2): .3 -> 1.5,
+  // .6 -> 6.5, .7 -> 7.5, .9 -> 9: 24.5 of 36.
+  CHECK(r.same_pairs == 4);
+  CHECK(r.different_pairs == 9);
+  CHECK(*r.roc_auc == Approx(24.5 / 36));
+  CHECK(*r.median_same == Approx(0.65));  // (.6 + .7) / 2
+  CHECK(*r.median_different == 0.5);      // the 5th of 9
+  CHECK(r.labels == std::vector<std::string>{"-", "a", "b"});
+  // Rows: queries of a: NN b (0), a (1); of b: NN - (2), b (3).
+  CHECK(r.confusion == std::vector<std::vector<std::size_t>>{{0, 0, 0}, {0, 1, 1}, {1, 0, 1}});
+  REQUIRE(r.per_motion.size() == 2);
+  CHECK(r.per_motion[0].motion == "a");
+  CHECK(r.per_motion[0].queries == 2);
+  CHECK(r.per_motion[0].correct == 1);
+  CHECK(r.per_motion[0].nn_accuracy == 0.5);
+  CHECK(r.per_motion[1].motion == "b");
+  CHECK(r.per_motion[1].correct == 1);
+}
+
+TEST_CASE("evaluate_retrieval: the same clip on the same rig is no candidate; queries without relevant one",
+          "[evaluation]") {
+  const std::vector<Labelled_item> items{item("walk", "A", "k", "Walk"), item("walk", "B", "k", "Walk"),
+                                         item("walk", "B", "k", "Walk2"), item("run", "C", "", "Walk")};
+  // Query 0: candidates 2 (.1, walk) and 3 (.5, run; rig empty, so its clip name does not matter);
+  //          1 is clip Walk on rig k, left out although .99: NN run, AP 1/2.
+  // Query 1: 0 is the same clip on rig k, 2 the same body: candidate 3 only, not relevant.
+  // Query 2: candidates 0 (.2, another clip) and 3 (.3): NN run, AP 1/2.
+  // Query 3: candidates 0, 1, 2 (an empty rig excludes no clip), all walk: NN 2, not relevant.
+  const Eigen::MatrixXd s = matrix({{1, .99, .1, .5}, {.9, 1, .9, .4}, {.2, 0, 1, .3}, {.1, .2, .3, 1}});
+  const Retrieval_scores r = evaluate_retrieval(s, items);
+  CHECK(r.queries == 4);
+  CHECK(*r.nn_accuracy == 0);
+  CHECK(r.queries_without_relevant == 2);
+  CHECK(*r.mean_average_precision == 0.5);
+  CHECK(r.same_pairs == 2);       // (0, 2), (2, 0)
+  CHECK(r.different_pairs == 6);  // (0, 3), (1, 3), (2, 3), (3, 0), (3, 1), (3, 2)
+  // Same .1 .2 against different .5 .4 .3 .1 .2 .3: .1 -> 1/2, .2 -> 1 + 1/2: 2 of 12.
+  CHECK(*r.roc_auc == Approx(2.0 / 12));
+  CHECK(r.confusion == std::vector<std::vector<std::size_t>>{{0, 1}, {3, 0}});  // labels run, walk
+}
+
+TEST_CASE("evaluate_retrieval: distractors are never queried; no candidate, no figure", "[evaluation]") {
+  const std::vector<Labelled_item> only_distractors{item("-", "A"), item("-", "B")};
+  const Retrieval_scores none = evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), only_distractors);
+  CHECK(none.queries == 0);
+  CHECK_FALSE(none.nn_accuracy);
+  CHECK_FALSE(none.mean_average_precision);
+  CHECK_FALSE(none.roc_auc);
+  CHECK_FALSE(none.median_same);
+  CHECK(none.per_motion.empty());
+
+  // One body: no query has a candidate.
+  const std::vector<Labelled_item> one_body{item("walk", "A"), item("walk", "A"), item("-", "A")};
+  const Retrieval_scores alone = evaluate_retrieval(Eigen::MatrixXd::Ones(3, 3), one_body);
+  CHECK(alone.queries == 0);
+  CHECK(alone.queries_without_candidate == 2);
+  CHECK_FALSE(alone.nn_accuracy);
+
+  // A walk against a distractor only: a query, no relevant candidate, no same-motion pair.
+  const std::vector<Labelled_item> against_distractor{item("walk", "A"), item("-", "B")};
+  const Retrieval_scores d = evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), against_distractor);
+  CHECK(d.queries == 1);
+  CHECK(d.queries_without_relevant == 1);
+  CHECK(*d.nn_accuracy == 0);
+  CHECK_FALSE(d.mean_average_precision);
+  CHECK_FALSE(d.roc_auc);
+  CHECK(*d.median_different == 1);
+}
+
+TEST_CASE("evaluate_retrieval: ties go to the lower index, and count 1/2 in ROC-AUC", "[evaluation]") {
+  const std::vector<Labelled_item> items{item("a", "Q"), item("b", "X"), item("a", "Y")};
+  // Query 0: 1 (b) and 2 (a) tie: 1 first, NN wrong, AP 1/2; AUC over same .5, different .5: 1/2.
+  Eigen::MatrixXd s = matrix({{1, .5, .5}, {0, 1, 0}, {0, 0, 1}});
+  const Retrieval_scores r = evaluate_retrieval(s, items);
+  // Query 1 (b): candidates 0 and 2, both a; query 2 (a): 0 (0, a) before 1 (0, b): right.
+  CHECK(r.confusion == std::vector<std::vector<std::size_t>>{{1, 1}, {1, 0}});  // labels a, b
+  CHECK(r.per_motion[0].correct == 1);
+  CHECK(r.per_motion[0].queries == 2);
+  CHECK(*r.nn_accuracy == Approx(1.0 / 3));
+  // Same pairs (0,2) .5, (2,0) 0; different (0,1) .5, (1,0) 0, (1,2) 0, (2,1) 0.
+  // .5 beats three 0s and ties one .5: 3.5; 0 ties three 0s: 1.5; 5 of 8.
+  CHECK(*r.roc_auc == 5.0 / 8);
+}
+
+TEST_CASE("evaluate_retrieval: ROC-AUC equals the count over all (same, different) pairs", "[evaluation]") {
+  std::mt19937 random(7);
+  const std::vector<std::string> motions{"a", "b", "c", "-"}, bodies{"P", "Q", "R"}, clips{"x", "y"},
+      rigs{"", "k"};
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::size_t n = 6 + std::size_t(trial);
+    std::vector<Labelled_item> items;
+    for (std::size_t i = 0; i < n; ++i)
+      items.push_back(item(motions[random() % 4], bodies[random() % 3], rigs[random() % 2], clips[random() % 2]));
+    Eigen::MatrixXd s = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
+    for (Eigen::Index i = 0; i < s.rows(); ++i)
+      for (Eigen::Index j = 0; j < s.cols(); ++j) s(i, j) = double(random() % 5) / 4;  // many ties
+    std::vector<double> same, different;
+    for (std::size_t q = 0; q < n; ++q)
+      for (std::size_t c = 0; c < n; ++c) {
+        const auto &a = items[q], &b = items[c];
+        const bool same_clip_same_rig = !a.rig.empty() && a.rig == b.rig && a.clip == b.clip;
+        if (a.motion == "-" || c == q || a.body == b.body || same_clip_same_rig) continue;
+        (a.motion == b.motion ? same : different).push_back(s(Eigen::Index(q), Eigen::Index(c)));
+      }
+    double wins = 0;
+    for (const double x : same)
+      for (const double y : different) wins += x > y ? 1 : x == y ? 0.5 : 0;
+    const Retrieval_scores r = evaluate_retrieval(s, items);
+    CHECK(r.same_pairs == same.size());
+    CHECK(r.different_pairs == different.size());
+    if (same.empty() || different.empty()) CHECK_FALSE(r.roc_auc);
+    else CHECK(*r.roc_auc == Approx(wins / (double(same.size()) * double(different.size()))));
+  }
+}
+
+TEST_CASE("evaluate_retrieval: a matrix of the wrong shape or with NaN is refused", "[evaluation]") {
+  const std::vector<Labelled_item> items{item("a", "X"), item("a", "Y")};
+  CHECK_THROWS_WITH(evaluate_retrieval(Eigen::MatrixXd::Ones(2, 3), items),
+                    "evaluate_retrieval: the similarity matrix is 2 x 3 for 2 items");
+  CHECK_THROWS_AS(evaluate_retrieval(Eigen::MatrixXd::Ones(3, 3), items), invalid_input);
+  Eigen::MatrixXd s = Eigen::MatrixXd::Ones(2, 2);
+  s(1, 0) = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_WITH(evaluate_retrieval(s, items),
+                    "evaluate_retrieval: entry (1, 0) of the similarity matrix is not finite");
+}
+
+TEST_CASE("read_motion_labels: columns by name, defaults, files relative to the CSV", "[evaluation]") {
+  const auto path = test::write_file("labels/set/labels.csv",
+                                     "# a comment\nfile, clip,motion,rig\r\nKnight.glb,Walking_A,walk,kaykit\r\n\n"
+                                     "frames/horse,,gallop,\n");
+  const auto rows = io::read_motion_labels(path);
+  REQUIRE(rows.size() == 2);
+  CHECK(rows[0].file == path.parent_path() / "Knight.glb");
+  CHECK(rows[0].item.clip == "Walking_A");
+  CHECK(rows[0].item.motion == "walk");
+  CHECK(rows[0].item.rig == "kaykit");
+  CHECK(rows[0].item.body == "Knight.glb");
+  CHECK(rows[1].file == path.parent_path() / "frames/horse");
+  CHECK(rows[1].item.clip.empty());
+  CHECK(rows[1].item.rig.empty());
+
+  const auto with_body = test::write_file("labels/body.csv", "body,motion,file,clip\nfox,-,/abs/Fox.glb,Survey\n");
+  const auto b = io::read_motion_labels(with_body);
+  CHECK(b[0].item.body == "fox");
+  CHECK(b[0].item.motion == "-");
+  CHECK(b[0].file == "/abs/Fox.glb");
+}
+
+TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]") {
+  const auto fails = [](const std::string& name, const std::string& text, const std::string& message) {
+    const auto path = test::write_file("labels/" + name, text);
+    CHECK_THROWS_WITH(io::read_motion_labels(path), path.string() + message);
+  };
+  fails("unknown.csv", "file,clip,motion,colour\n", ":1: unknown column 'colour': the header is file,clip,motion[,rig][,body]");
+  fails("no_motion.csv", "\nfile,clip\n", ":2: the header has no 'motion' column: it is file,clip,motion[,rig][,body]");
+  fails("twice.csv", "file,clip,motion,clip\n", ":1: column 'clip' appears twice");
+  fails("fields.csv", "file,clip,motion\na.glb,x,walk\nb.glb,y\n", ":3: 2 fields where the header has 3");
+  fails("empty_motion.csv", "file,clip,motion\na.glb,x,\n", ":2: the motion field is empty (a distractor is '-')");
+  fails("empty_file.csv", "file,clip,motion\n,x,walk\n", ":2: the file field is empty");
+  fails("repeated.csv", "file,clip,motion\na.glb,x,walk\na.glb,x,run\n", ":3: clip 'x' of a.glb is listed twice");
+  fails("no_rows.csv", "file,clip,motion\n", ": the labels file lists no animation");
+  CHECK_THROWS_WITH(io::read_motion_labels(test::scratch_dir() / "labels/missing.csv"),
+                    Catch::Contains("missing.csv: cannot open the labels file"));
+}
+
+namespace {
+
+Surface_mesh_animation tube(const std::vector<Tube_phase>& schedule, double radius = 0.1) {
+  Bending_tube spec;
+  spec.shape.radius = radius;
+  spec.schedule = schedule;
+  return make_bending_tube(spec).animation;
+}
+
+std::vector<Surface_mesh_animation> some_tubes() {
+  constexpr double right = std::numbers::pi / 2;
+  return {tube({{5, {0.0}}, {10, {right}}, {8, {}}}), tube({{5, {0.0}}, {10, {right}}, {8, {}}}, 0.15),
+          tube({{5, {0.0}}, {3, {right}}, {12, {}}, {3, {0.0}}}), tube({{4, {0.0}}, {6, {-right}}})};
+}
+
+}  // namespace
+
+TEST_CASE("similarity_matrix: queries x database equals the pairwise calls, whatever the threads",
+          "[evaluation][similarity]") {
+  const auto tubes = some_tubes();
+  const std::vector<Surface_mesh_animation> queries{tubes[0], tubes[3]}, database{tubes[1], tubes[2], tubes[0]};
+  const Strain_distribution_similarity<> policy;
+  const Eigen::MatrixXd m = similarity_matrix(queries, database, policy);
+  REQUIRE(m.rows() == 2);
+  REQUIRE(m.cols() == 3);
+  for (Eigen::Index q = 0; q < 2; ++q)
+    for (Eigen::Index d = 0; d < 3; ++d)
+      CHECK(m(q, d) == motion_similarity(queries[std::size_t(q)], database[std::size_t(d)], policy).value);
+  CHECK(m(0, 2) == Approx(1.0));  // tube 0 against itself
+#ifdef _OPENMP
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const Eigen::MatrixXd one_thread = similarity_matrix(queries, database, policy);
+  const Eigen::MatrixXd all_one_thread = similarity_matrix(tubes, policy);
+  omp_set_num_threads(std::max(2, threads));
+  CHECK(one_thread == similarity_matrix(queries, database, policy));
+  CHECK(all_one_thread == similarity_matrix(tubes, policy));
+  omp_set_num_threads(threads);
+#endif
+  CHECK(similarity_matrix(std::vector<Surface_mesh_animation>{}, database, policy).size() == 0);
+}
+
+TEST_CASE("similarity_matrix: progress reports every step and can stop", "[evaluation][similarity]") {
+  const auto tubes = some_tubes();
+  std::vector<std::pair<std::size_t, std::size_t>> calls;
+  const auto record = [&](std::size_t done, std::size_t total) {
+    calls.emplace_back(done, total);
+    return true;
+  };
+  // 4 descriptions and 10 pairs (i <= j): one batch each (batches hold at least 16 steps).
+  const Eigen::MatrixXd all = similarity_matrix(tubes, Strain_distribution_similarity<>{}, record);
+  CHECK(calls == std::vector<std::pair<std::size_t, std::size_t>>{{4, 14}, {14, 14}});
+  CHECK(all == similarity_matrix(tubes));
+  calls.clear();
+  // 2 + 4 descriptions and 8 pairs: the queries', the database's, the pairs' batches.
+  similarity_matrix(std::span(tubes).first(2), tubes, Strain_distribution_similarity<>{}, record);
+  CHECK(calls == std::vector<std::pair<std::size_t, std::size_t>>{{2, 14}, {6, 14}, {14, 14}});
+  std::size_t calls_before_stop = 0;
+  CHECK_THROWS_AS(similarity_matrix(tubes, Strain_distribution_similarity<>{},
+                                    [&](std::size_t, std::size_t) { return ++calls_before_stop < 1; }),
+                  similarity_stopped);
+  CHECK(calls_before_stop == 1);  // stopped after the descriptions, no pair compared
+}
