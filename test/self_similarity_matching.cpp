@@ -12,8 +12,10 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -160,6 +162,22 @@ TEST_CASE("self_similarity_matching: the same motion on another tube ranks above
   CHECK(same > timing + 0.1);
   CHECK(same > two_bends + 0.1);
   CHECK(same > small_bend + 0.2);
+}
+
+TEST_CASE("self_similarity_significance: ordered frames stand out from shuffled ones", "[self_similarity]") {
+  const Self_similarity_matching<> policy;
+  const auto a = policy.describe(tube(bend_hold_unbend));
+  const auto same = policy.describe(tube(bend_hold_unbend, other_tube));
+  const auto still = policy.describe(tube({{38, {0.0}}}, other_tube));
+  std::mt19937 random(7);
+  const double z_same = self_similarity_significance(policy, a, same, 20, random);
+  const double z_still = self_similarity_significance(policy, a, still, 20, random);
+  WARN("z-scores: same motion on another tube " << z_same << ", standing still " << z_still);
+  CHECK(z_same > 3);
+  CHECK(std::abs(z_still) < 2);  // a still tube's shuffled copies are itself, up to rounding
+  std::mt19937 again(7);
+  CHECK(self_similarity_significance(policy, a, same, 20, again) == z_same);
+  CHECK_THROWS_AS(self_similarity_significance(policy, a, same, 1, again), invalid_input);
 }
 
 TEST_CASE("self_similarity_matching: descriptions of other quantile counts are refused", "[self_similarity]") {

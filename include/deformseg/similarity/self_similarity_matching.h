@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <numeric>
+#include <random>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -211,5 +213,38 @@ struct Self_similarity_matching {
     return result;
   }
 };
+
+/// @brief The significance of `policy.compare(a, b).value`: its z-score against `copies` copies
+/// of `b` with frames shuffled by `random`, `(value - mean) / standard deviation` of theirs.
+///
+/// A shuffled copy keeps every frame's profile and loses their order, so the z-score says how much
+/// of the value comes from the frames coming in the same order, beyond alike frames alone; a high
+/// value with a low z-score means alike poses or rhythms in another order. Deterministic for a
+/// given generator state (the caller passes it, so runs repeat exactly).
+/// @tparam Policy a `Self_similarity_matching`.
+/// @tparam Random a uniform random bit generator (`std::mt19937`).
+/// @return the z-score; 0 when the copies all score the same as each other (no spread).
+/// @throws invalid_input when `copies < 2`, or as `compare`.
+/// @par Complexity `copies + 1` compares.
+template <class Policy, class Random>
+double self_similarity_significance(const Policy& policy, const Self_similarity_description& a,
+                                    const Self_similarity_description& b, std::size_t copies, Random& random) {
+  if (copies < 2) throw invalid_input("self_similarity_significance: fewer than 2 shuffled copies");
+  const double value = policy.compare(a, b).value;
+  std::vector<Eigen::Index> order(std::size_t(b.profiles.rows()));
+  std::iota(order.begin(), order.end(), Eigen::Index(0));
+  std::vector<double> shuffled;
+  Self_similarity_description copy = b;
+  for (std::size_t c = 0; c < copies; ++c) {
+    std::shuffle(order.begin(), order.end(), random);
+    for (std::size_t t = 0; t < order.size(); ++t) copy.profiles.row(Eigen::Index(t)) = b.profiles.row(order[t]);
+    shuffled.push_back(policy.compare(a, copy).value);
+  }
+  const double mean = std::accumulate(shuffled.begin(), shuffled.end(), 0.0) / double(copies);
+  double square = 0;
+  for (double v : shuffled) square += (v - mean) * (v - mean);
+  const double deviation = std::sqrt(square / double(copies - 1));
+  return deviation > 0 ? (value - mean) / deviation : 0.0;
+}
 
 }  // namespace deformseg
