@@ -1,13 +1,15 @@
 // Self_similarity_matching: motion similarity through each animation's own frame x frame
 // Procrustes distances, so no correspondence between the two meshes is needed. With no argument,
 // a tube bending and unbending is compared with the same motion on another, moved and scaled
-// tube, and with other motions; each value is printed with the frames aligned.
+// tube, and with other motions; each value is printed with its z-score against frame-shuffled
+// copies and the frames aligned.
 #include <deformseg/motion_similarity.h>
 #include <deformseg/similarity/self_similarity_matching.h>
 #include <deformseg/synthetic.h>
 
 #include <cstdio>
 #include <numbers>
+#include <random>
 #include <vector>
 
 using namespace deformseg;
@@ -43,8 +45,11 @@ int main() {
       {"a third of the bend", tube({{5, {0.0}}, {10, {right / 3}}, {8, {}}, {10, {0.0}}, {5, {}}}, thick)},
       {"standing still", tube({{38, {0.0}}}, thick)},
   };
+  std::mt19937 random(1);  // for the z-scores against 20 frame-shuffled copies
   for (const Candidate& c : candidates) {
-    const Similarity s = policy.compare(query, policy.describe(c.animation));
-    std::printf("%-50s value %.3f, %zu frames aligned\n", c.name, s.value, s.alignment.size());
+    const auto described = policy.describe(c.animation);
+    const Similarity s = policy.compare(query, described);
+    const double z = self_similarity_significance(policy, query, described, 20, random);
+    std::printf("%-50s value %.3f, z %5.1f, %zu frames aligned\n", c.name, s.value, z, s.alignment.size());
   }
 }
