@@ -24,8 +24,9 @@
 /// |---|---|---|---|
 /// | deformseg::Strain_distribution_similarity (the default, deformseg::Default_similarity) | `similarity/strain_distribution_similarity.h` | per-frame histograms of the strain | no |
 /// | deformseg::Evolving_graph_similarity (the thesis') | `similarity/evolving_graph_similarity.h` | its evolving graph and the GEDs of its key frames | no |
+/// | deformseg::Self_similarity_matching | `similarity/self_similarity_matching.h` | its frame x frame Procrustes self-dissimilarity matrix, each frame by the profile of its row | no |
 ///
-/// Both take an alignment policy (@ref AlignmentPolicyConcept) and a normalisation of its score,
+/// All take an alignment policy (@ref AlignmentPolicyConcept) and a normalisation of its score,
 /// deformseg::Best_score_normalization by default; the thesis' also takes a GED policy and cost
 /// model (@ref GedConcepts; deformseg::Segment_costs by default) and a clustering policy
 /// (@ref ClusteringPolicyConcept).
