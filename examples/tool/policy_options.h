@@ -4,6 +4,7 @@
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/subsequence_dtw.h>
 #include <deformseg/motion_similarity.h>
+#include <deformseg/similarity/self_similarity_matching.h>
 
 #include <CLI/CLI.hpp>
 
@@ -20,8 +21,9 @@ struct Policy_options {
 inline void add_policy_options(CLI::App& command, Policy_options& o) {
   command.add_option("--policy", o.policy,
                      "histogram: per-frame histograms of the strain, no correspondence needed (default); "
-                     "graph: the thesis' evolving graphs, GED, clustering and label alignment")
-      ->check(CLI::IsMember({"histogram", "graph"}));
+                     "graph: the thesis' evolving graphs, GED, clustering and label alignment; "
+                     "self-similarity: each animation's own frame x frame distances after rigid alignment")
+      ->check(CLI::IsMember({"histogram", "graph", "self-similarity"}));
   command.add_option("--alignment", o.alignment,
                      "smith-waterman (local, default), dtw (global) or subsequence-dtw (open begin and end)")
       ->check(CLI::IsMember({"smith-waterman", "dtw", "subsequence-dtw"}));
@@ -38,6 +40,7 @@ auto with_policy(const Policy_options& o, const Run& run) {
       policy.segmentation.threshold = o.threshold;
       return run(policy);
     }
+    if (o.policy == "self-similarity") return run(Self_similarity_matching<Aligner>{});
     return run(Strain_distribution_similarity<Aligner>{});
   };
   if (o.alignment == "dtw") return with_alignment(alignment::Dtw{});
