@@ -7,6 +7,7 @@
 #include <deformseg/exceptions.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Eigen/SVD>
 
 #include <algorithm>
