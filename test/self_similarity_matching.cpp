@@ -2,6 +2,7 @@
 // scaled copy, a remeshed tube), a time-shifted cyclic motion, a motion inside a longer one,
 // tubes of other meshes ranking the same motion first, the Procrustes self-dissimilarity on a
 // rigid motion, and [data] rankings and retrieval figures on the shared characters.
+#include "similarity_tubes.h"
 #include "test_support.h"
 
 #include <deformseg/io/gltf.h>
@@ -21,41 +22,7 @@
 
 using namespace deformseg;
 
-namespace {
-
-constexpr double right = std::numbers::pi / 2;
-
-Surface_mesh_animation frames_of(const Surface_mesh_animation& a, const std::vector<std::size_t>& frames) {
-  std::vector<double> positions;
-  for (std::size_t t : frames) {
-    const auto xyz = a.frame_positions(t);
-    positions.insert(positions.end(), xyz.begin(), xyz.end());
-  }
-  return Surface_mesh_animation(a.face_graph(), std::move(positions));
-}
-
-Surface_mesh_animation tube(const std::vector<Tube_phase>& schedule, const Tube_shape& shape = {},
-                            const Placement& placement = {}) {
-  Bending_tube spec;
-  spec.shape = shape;
-  spec.schedule = schedule;
-  spec.placement = placement;
-  return make_bending_tube(spec).animation;
-}
-
-const std::vector<Tube_phase> bend_hold_unbend{{5, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {5, {}}};
-const std::vector<Tube_phase> other_timing{{5, {0.0}}, {3, {right}}, {22, {}}, {3, {0.0}}, {5, {}}};
-const Tube_shape other_tube{.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false};
-
-// One cycle (bend, unbend) of `period` frames, repeated: frame t is the cycle's frame t mod period.
-Surface_mesh_animation cycles(std::size_t period, std::size_t frames, std::size_t shift) {
-  const auto cycle = tube({{period / 2, {right}}, {period - period / 2, {0.0}}});
-  std::vector<std::size_t> order;
-  for (std::size_t t = 0; t < frames; ++t) order.push_back((t + shift) % period);
-  return frames_of(cycle, order);
-}
-
-}  // namespace
+using namespace deformseg::test;
 
 TEST_CASE("self_similarity_matching: an animation against itself and a moved, rotated, scaled copy is 1",
           "[self_similarity]") {

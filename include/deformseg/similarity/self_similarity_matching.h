@@ -10,6 +10,7 @@
 #include <deformseg/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/procrustes_distances.h>
+#include <deformseg/similarity/significance.h>
 #include <deformseg/similarity/similarity.h>
 
 #include <Eigen/Core>
@@ -17,8 +18,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <numeric>
-#include <random>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -202,25 +201,25 @@ struct Self_similarity_matching {
   /// frame sequences under `frame_dissimilarities`.
   /// @throws invalid_input when the descriptions have different quantile counts.
   Similarity compare(const Description& a, const Description& b) const {
-    const Eigen::MatrixXd d = frame_dissimilarities(a, b);
-    const std::size_t n = std::size_t(d.rows()), m = std::size_t(d.cols());
-    alignment::Alignment aligned = alignment.align(n, m, alignment::matrix_dissimilarity(d));
-    Similarity result;
-    result.value = normalization(alignment, aligned, n, m);
-    result.score = aligned.score;
-    result.alignment = std::move(aligned.pairs);
-    result.compared = "profiles of each frame's Procrustes distances to its neighbouring frames, aligned in time";
-    return result;
+    return internal::aligned_similarity(
+        alignment, normalization, frame_dissimilarities(a, b),
+        "profiles of each frame's Procrustes distances to its neighbouring frames, aligned in time");
   }
 };
 
-/// @brief The significance of `policy.compare(a, b).value`: its z-score against `copies` copies
-/// of `b` with frames shuffled by `random`, `(value - mean) / standard deviation` of theirs.
-///
-/// A shuffled copy keeps every frame's profile and loses their order, so the z-score says how much
-/// of the value comes from the frames coming in the same order, beyond alike frames alone; a high
-/// value with a low z-score means alike poses or rhythms in another order. Deterministic for a
-/// given generator state (the caller passes it, so runs repeat exactly).
+/// @brief The description with its frames in the order `order` gives (row t of the profiles is
+/// row `order[t]`; the self-dissimilarity matrix is kept, as `compare` reads only the profiles):
+/// what `similarity_significance` shuffles.
+inline Self_similarity_description reordered_frames(const Self_similarity_description& d,
+                                                    std::span<const std::size_t> order) {
+  return {d.distances, reordered_frames(d.profiles, order)};
+}
+
+/// @brief The number of frames of a description: its profiles' rows.
+inline std::size_t frame_count(const Self_similarity_description& d) { return std::size_t(d.profiles.rows()); }
+
+/// @brief `similarity_significance` for `Self_similarity_matching`: the z-score of
+/// `policy.compare(a, b).value` against `copies` copies of `b` with frames shuffled by `random`.
 /// @tparam Policy a `Self_similarity_matching`.
 /// @tparam Random a uniform random bit generator (`std::mt19937`).
 /// @return the z-score; 0 when the copies all score the same as each other (no spread).
@@ -229,22 +228,7 @@ struct Self_similarity_matching {
 template <class Policy, class Random>
 double self_similarity_significance(const Policy& policy, const Self_similarity_description& a,
                                     const Self_similarity_description& b, std::size_t copies, Random& random) {
-  if (copies < 2) throw invalid_input("self_similarity_significance: fewer than 2 shuffled copies");
-  const double value = policy.compare(a, b).value;
-  std::vector<Eigen::Index> order(std::size_t(b.profiles.rows()));
-  std::iota(order.begin(), order.end(), Eigen::Index(0));
-  std::vector<double> shuffled;
-  Self_similarity_description copy = b;
-  for (std::size_t c = 0; c < copies; ++c) {
-    std::shuffle(order.begin(), order.end(), random);
-    for (std::size_t t = 0; t < order.size(); ++t) copy.profiles.row(Eigen::Index(t)) = b.profiles.row(order[t]);
-    shuffled.push_back(policy.compare(a, copy).value);
-  }
-  const double mean = std::accumulate(shuffled.begin(), shuffled.end(), 0.0) / double(copies);
-  double square = 0;
-  for (double v : shuffled) square += (v - mean) * (v - mean);
-  const double deviation = std::sqrt(square / double(copies - 1));
-  return deviation > 0 ? (value - mean) / deviation : 0.0;
+  return similarity_significance(policy, a, b, copies, random);
 }
 
 }  // namespace deformseg

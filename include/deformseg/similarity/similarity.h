@@ -89,4 +89,24 @@ struct Best_score_normalization {
   }
 };
 
+namespace internal {
+
+/// The similarity of two frame sequences under the `n x m` frame dissimilarities `d`: aligned by
+/// `alignment`, the score made a value by `normalization`; what the per-frame policies' `compare`
+/// shares.
+template <alignment::AlignmentPolicy Alignment, class Normalization>
+Similarity aligned_similarity(const Alignment& alignment, const Normalization& normalization, const Eigen::MatrixXd& d,
+                              std::string compared) {
+  const std::size_t n = std::size_t(d.rows()), m = std::size_t(d.cols());
+  alignment::Alignment aligned = alignment.align(n, m, alignment::matrix_dissimilarity(d));
+  Similarity result;
+  result.value = normalization(alignment, aligned, n, m);
+  result.score = aligned.score;
+  result.alignment = std::move(aligned.pairs);
+  result.compared = std::move(compared);
+  return result;
+}
+
+}  // namespace internal
+
 }  // namespace deformseg

@@ -57,17 +57,11 @@ struct Strain_distribution_similarity {
   /// sequences under the histogram distance.
   /// @throws invalid_input when the histograms have different bin counts.
   Similarity compare(const Description& a, const Description& b) const {
-    const Eigen::MatrixXd distances = histogram_distances(a, b, metric, histograms.histogram.threads);
-    const std::size_t n = std::size_t(a.rows()), m = std::size_t(b.rows());
-    alignment::Alignment aligned = alignment.align(n, m, alignment::matrix_dissimilarity(distances));
-    Similarity result;
-    result.value = normalization(alignment, aligned, n, m);
-    result.score = aligned.score;
-    result.alignment = std::move(aligned.pairs);
-    result.compared = std::string("area-weighted histograms of each frame's strain, compared by ") +
-                      (metric == Histogram_metric::earth_movers ? "earth mover's distance" : "total variation") +
-                      ", frames aligned in time";
-    return result;
+    return internal::aligned_similarity(
+        alignment, normalization, histogram_distances(a, b, metric, histograms.histogram.threads),
+        std::string("area-weighted histograms of each frame's strain, compared by ") +
+            (metric == Histogram_metric::earth_movers ? "earth mover's distance" : "total variation") +
+            ", frames aligned in time");
   }
 };
 

@@ -1,0 +1,172 @@
+/// @file motion_signatures.h
+/// @brief `motion_signatures`: each frame of an animation as how fast its surface moves, at several
+/// time scales: the area-weighted distribution of its vertices' displacement rates, which needs no
+/// correspondence between two meshes to compare (beyond the thesis).
+///
+/// Strain sees only deformation: a robot whose limbs are rigid parts on bones has almost none,
+/// whatever it does. Displacements see every motion, articulated or deforming, and their
+/// distribution over the surface says how much of the body moves how fast (the legs of a walk, one
+/// arm and its weapon in a strike) without saying which vertex is where, so that two animations of
+/// different meshes can be compared frame by frame.
+#pragma once
+
+#include <deformseg/deforming_mesh.h>
+#include <deformseg/exceptions.h>
+#include <deformseg/internal/parallel_for.h>
+#include <deformseg/internal/procrustes_distances.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace deformseg {
+
+/// @brief The options of `motion_signatures`, an aggregate for designated initializers.
+struct Motion_signature_options {
+  /// @brief The time scales, in frames: at lag k, a vertex's rate at frame t is its displacement
+  /// from frame t - k to frame t + k over 2k. Near either end the span is cut at the end frame,
+  /// still over 2k, as if the body stood still before the first frame and after the last (game and
+  /// captured clips mostly start and end at rest; a span shifted inwards instead measured worse on
+  /// the shared characters, ROC-AUC 0.67 against 0.80). Short lags see speed, long ones the
+  /// amplitude of a motion. Default {1, 4, 16}; each at least 1.
+  std::vector<std::size_t> lags = {1, 4, 16};
+  /// @brief Quantiles of the rates per lag, at (q + 1/2) / quantiles of the surface's area. Default 8.
+  std::size_t quantiles = 8;
+  /// @brief The smallest rate told apart from standing still, in RMS radii per frame: smaller rates
+  /// count as this one, so that the logarithm stays finite. Default 1e-4.
+  double floor = 1e-4;
+};
+
+namespace internal {
+
+/// The `k` area-weighted quantiles of `rates` (value, weight pairs, weights summing to 1), which it
+/// sorts: quantile q is the smallest rate whose cumulative weight reaches (q + 1/2) / k.
+inline void weighted_quantiles(std::vector<std::pair<double, double>>& rates, std::size_t k, double* out) {
+  std::sort(rates.begin(), rates.end());
+  std::size_t at = 0;
+  double cumulative = rates.empty() ? 0 : rates.front().second;
+  for (std::size_t q = 0; q < k; ++q) {
+    const double level = (double(q) + 0.5) / double(k);
+    while (cumulative < level && at + 1 < rates.size()) cumulative += rates[++at].second;
+    out[q] = rates[at].first;
+  }
+}
+
+/// The frames whose displacement gives frame t's rate at lag k: t - k and t + k, each cut at the
+/// animation's first or last frame.
+inline std::pair<std::size_t, std::size_t> rate_span(std::size_t t, std::size_t lag, std::size_t frames) {
+  return {t > lag ? t - lag : 0, std::min(t + lag, frames - 1)};
+}
+
+/// The animation's weighted RMS distance of the vertices from their frame's centroid, averaged
+/// over the frames: the unit of the rates.
+template <class Coordinate>
+double rms_radius(std::span<const Coordinate> positions, std::span<const double> weights, std::size_t frames) {
+  const std::size_t vertices = weights.size();
+  double sum = 0;
+  for (std::size_t t = 0; t < frames; ++t) {
+    const Coordinate* frame = positions.data() + 3 * vertices * t;
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (std::size_t v = 0; v < vertices; ++v)
+      centroid += weights[v] * Eigen::Vector3d(double(frame[3 * v]), double(frame[3 * v + 1]), double(frame[3 * v + 2]));
+    for (std::size_t v = 0; v < vertices; ++v)
+      sum += weights[v] *
+             (Eigen::Vector3d(double(frame[3 * v]), double(frame[3 * v + 1]), double(frame[3 * v + 2])) - centroid)
+                 .squaredNorm();
+  }
+  return std::sqrt(sum / double(frames));
+}
+
+}  // namespace internal
+
+/// @brief The motion signature of every frame of an animation given as raw positions, for data
+/// with no mesh built (a triangle soup, a sampled glTF clip).
+///
+/// Row t holds, for each lag k of `options.lags` in turn, the `options.quantiles` area-weighted
+/// quantiles of the vertices' rates at lag k (`Motion_signature_options::lags`), in units of the
+/// animation's RMS radius (`rms_radius`) per frame, as natural logarithms of at least
+/// `log(options.floor)`.
+///
+/// Invariant to translating, rotating and scaling the whole animation, and (up to the weights'
+/// sampling of the surface) to remeshing it. The rates are per frame: animations to compare should
+/// be sampled at one frame rate.
+/// @param positions `T x 3V` coordinates, frame after frame, x y z per vertex.
+/// @param weights V non-negative vertex weights summing to 1 (e.g. each vertex's share of the
+/// area, `internal::vertex_area_weights`).
+/// @param options the lags, quantiles and floor (default `Motion_signature_options{}`).
+/// @return the `T x (lags x quantiles)` signatures.
+/// @throws invalid_input when the sizes disagree, when there are fewer than two frames (a single
+/// pose has no motion), when a lag is 0, when `quantiles` is 0, when `floor` is not positive, or
+/// when the animation does not move its vertices apart from each other (zero radius).
+/// @par Complexity O(T V L log V) for T frames, V vertices and L lags (a sort per frame and lag),
+/// in parallel over frames; O(T L k) memory for the result. Deterministic whatever the thread count.
+template <class Coordinate>
+Eigen::MatrixXd motion_signatures(std::span<const Coordinate> positions, std::span<const double> weights,
+                                  const Motion_signature_options& options = {}) {
+  const std::size_t vertices = weights.size();
+  if (vertices == 0 || positions.size() % (3 * vertices) != 0)
+    throw invalid_input("motion_signatures: positions are not T x 3V for the weights' V = " + std::to_string(vertices));
+  const std::size_t frames = positions.size() / (3 * vertices);
+  if (frames < 2) throw invalid_input("motion_signatures: an animation of " + std::to_string(frames) +
+                                      " frame(s); a motion needs at least 2");
+  if (options.quantiles == 0) throw invalid_input("motion_signatures: 0 quantiles");
+  if (options.lags.empty()) throw invalid_input("motion_signatures: no lag");
+  if (std::find(options.lags.begin(), options.lags.end(), std::size_t(0)) != options.lags.end())
+    throw invalid_input("motion_signatures: a lag of 0 frames");
+  if (!(options.floor > 0)) throw invalid_input("motion_signatures: the floor must be positive");
+  const double radius = internal::rms_radius(positions, weights, frames);
+  if (!(radius > 0) || !std::isfinite(radius))
+    throw invalid_input("motion_signatures: the animation has no extent (RMS radius " + std::to_string(radius) + ")");
+
+  const std::size_t k = options.quantiles, columns = options.lags.size() * k;
+  using Row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  Row_major out = Row_major(static_cast<Eigen::Index>(frames), static_cast<Eigen::Index>(columns));
+  internal::parallel_for_each_index(frames, [&](std::size_t t) {
+    std::vector<std::pair<double, double>> rates(vertices);
+    for (std::size_t l = 0; l < options.lags.size(); ++l) {
+      const auto [first, last] = internal::rate_span(t, options.lags[l], frames);
+      const Coordinate* before = positions.data() + 3 * vertices * first;
+      const Coordinate* after = positions.data() + 3 * vertices * last;
+      const double unit = 1.0 / (2.0 * double(options.lags[l]) * radius);
+      for (std::size_t v = 0; v < vertices; ++v) {
+        const double dx = double(after[3 * v]) - double(before[3 * v]), dy = double(after[3 * v + 1]) - double(before[3 * v + 1]),
+                     dz = double(after[3 * v + 2]) - double(before[3 * v + 2]);
+        rates[v] = {std::sqrt(dx * dx + dy * dy + dz * dz) * unit, weights[v]};
+      }
+      double* row = out.data() + t * columns + l * k;
+      internal::weighted_quantiles(rates, k, row);
+      for (std::size_t q = 0; q < k; ++q) row[q] = std::log(std::max(row[q], options.floor));
+    }
+  });
+  return out;
+}
+
+/// @brief The motion signature of every frame of `animation`, each vertex weighted by its share of
+/// the first frame's area (see the overload on raw positions for what a signature is).
+/// @tparam Mesh a `DeformingMesh`.
+/// @return the `T x (lags x quantiles)` signatures.
+/// @throws invalid_input as the overload on raw positions.
+/// @par Complexity O(T V L log V), plus a copy of the positions for a mesh that is not a
+/// `Deforming_mesh`.
+template <DeformingMesh Mesh>
+Eigen::MatrixXd motion_signatures(const Mesh& animation, const Motion_signature_options& options = {}) {
+  if constexpr (requires { animation.all_positions(); animation.triangles(); }) {
+    if (animation.num_frames() == 0) throw invalid_input("motion_signatures: an animation without frames");
+    const auto positions = animation.all_positions();
+    using Coordinate = std::remove_cvref_t<decltype(positions[0])>;
+    std::vector<double> first(positions.begin(), positions.begin() + std::ptrdiff_t(3 * animation.num_vertices()));
+    const auto weights = internal::vertex_area_weights(std::span<const double>(first), animation.triangles(),
+                                                       animation.num_vertices());
+    return motion_signatures(std::span<const Coordinate>(positions), std::span<const double>(weights), options);
+  } else {
+    return motion_signatures(make_deforming_mesh<double>(animation), options);
+  }
+}
+
+}  // namespace deformseg

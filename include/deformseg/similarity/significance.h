@@ -1,0 +1,72 @@
+/// @file similarity/significance.h
+/// @brief `similarity_significance`: how far a similarity value stands above those of copies of
+/// the second animation with its frames shuffled, as a z-score; and `reordered_frames`, the
+/// customisation point that shuffles a policy's description.
+#pragma once
+
+#include <deformseg/exceptions.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <span>
+#include <vector>
+
+namespace deformseg {
+
+/// @brief The frames (rows) of a per-frame description in the order `order` gives: row t of the
+/// result is row `order[t]` of `frames`. The overload for the descriptions that are matrices with
+/// a row per frame (`Motion_signature_similarity`, `Strain_distribution_similarity`); a policy
+/// with another description provides its own overload in its namespace (found by
+/// argument-dependent lookup), as `Self_similarity_matching` does.
+/// @pre every entry of `order` is below `frames.rows()` (not checked).
+template <class Scalar, int Options>
+Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Options> reordered_frames(
+    const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Options>& frames, std::span<const std::size_t> order) {
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Options> out(Eigen::Index(order.size()), frames.cols());
+  for (std::size_t t = 0; t < order.size(); ++t) out.row(Eigen::Index(t)) = frames.row(Eigen::Index(order[t]));
+  return out;
+}
+
+/// @brief The number of frames of a per-frame description: its rows.
+template <class Scalar, int Options>
+std::size_t frame_count(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Options>& frames) {
+  return std::size_t(frames.rows());
+}
+
+/// @brief The significance of `policy.compare(a, b).value`: its z-score against `copies` copies of
+/// `b` whose frames are shuffled by `random`, `(value - mean) / standard deviation` of theirs.
+///
+/// A shuffled copy keeps every frame and loses their order, so the z-score says how much of the
+/// value comes from the frames coming in the same order, beyond alike frames alone: a high value
+/// with a low z-score means alike poses or rhythms in another order. Deterministic for a given
+/// generator state (the caller passes it, so runs repeat exactly).
+/// @tparam Policy a `SimilarityPolicy` whose `Description` has `reordered_frames` and `frame_count`
+/// (the library's per-frame policies: motion signatures, strain histograms, self-similarity).
+/// @tparam Random a uniform random bit generator (`std::mt19937`).
+/// @return the z-score; 0 when the copies all score the same (no spread).
+/// @throws invalid_input when `copies < 2`, or as `compare`.
+/// @par Complexity `copies + 1` compares.
+template <class Policy, class Description, class Random>
+double similarity_significance(const Policy& policy, const Description& a, const Description& b, std::size_t copies,
+                               Random& random) {
+  if (copies < 2) throw invalid_input("similarity_significance: fewer than 2 shuffled copies");
+  const double value = policy.compare(a, b).value;
+  std::vector<std::size_t> order(frame_count(b));
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::vector<double> shuffled;
+  for (std::size_t c = 0; c < copies; ++c) {
+    std::shuffle(order.begin(), order.end(), random);
+    shuffled.push_back(policy.compare(a, reordered_frames(b, std::span<const std::size_t>(order))).value);
+  }
+  const double mean = std::accumulate(shuffled.begin(), shuffled.end(), 0.0) / double(copies);
+  double square = 0;
+  for (double v : shuffled) square += (v - mean) * (v - mean);
+  const double deviation = std::sqrt(square / double(copies - 1));
+  return deviation > 0 ? (value - mean) / deviation : 0.0;
+}
+
+}  // namespace deformseg

@@ -1,0 +1,265 @@
+// Tests of motion_signatures.h and similarity/motion_signature_similarity.h: the weighted quantiles
+// against brute force, exact signatures of a uniform motion, invariances (a moved, rotated, scaled
+// copy), rigid parts on a joint, thread independence, a time-shifted cyclic motion, a motion inside
+// a longer one, tube rankings, errors, and [data] figures on the shared characters.
+#include "similarity_tubes.h"
+#include "test_support.h"
+
+#include <deformseg/alignment/subsequence_dtw.h>
+#include <deformseg/find_motion.h>
+#include <deformseg/io/gltf.h>
+#include <deformseg/motion_similarity.h>
+#include <deformseg/motion_signatures.h>
+#include <deformseg/similarity/motion_signature_similarity.h>
+#include <deformseg/similarity/significance.h>
+#include <deformseg/synthetic.h>
+
+#include <Eigen/Geometry>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace deformseg;
+
+using namespace deformseg::test;
+
+TEST_CASE("weighted_quantiles: the smallest value whose cumulative weight reaches each level", "[motion_signature]") {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  for (int trial = 0; trial < 50; ++trial) {
+    const std::size_t n = 1 + std::size_t(trial % 9), k = 1 + std::size_t(trial % 5);
+    std::vector<std::pair<double, double>> items(n);
+    double total = 0;
+    for (auto& [value, weight] : items) total += (weight = uniform(random)), value = std::floor(10 * uniform(random));
+    for (auto& item : items) item.second /= total;
+    const auto brute = items;
+    std::vector<double> out(k);
+    internal::weighted_quantiles(items, k, out.data());
+    for (std::size_t q = 0; q < k; ++q) {
+      const double level = (double(q) + 0.5) / double(k);
+      // Brute force: the smallest value v with (weight of the values <= v) >= level, up to rounding.
+      double expected = 0;
+      bool found = false;
+      std::vector<double> values;
+      for (auto& item : brute) values.push_back(item.first);
+      std::sort(values.begin(), values.end());
+      for (double v : values) {
+        double below = 0;
+        for (auto& item : brute) below += item.first <= v ? item.second : 0;
+        if (!found && below >= level - 1e-12) expected = v, found = true;
+      }
+      CHECK(out[q] == expected);
+    }
+  }
+}
+
+TEST_CASE("motion_signatures: a uniform translation has the exact rate everywhere", "[motion_signature]") {
+  // Four points at unit distance from their centroid (RMS radius 1), moving 0.02 per frame: inside
+  // the animation every vertex's rate at every lag is 0.02; near the ends the spans are cut.
+  const std::vector<Eigen::Vector3d> points{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+  const std::size_t frames = 40;
+  std::vector<double> positions;
+  for (std::size_t t = 0; t < frames; ++t)
+    for (const auto& p : points) {
+      const Eigen::Vector3d q = p + 0.02 * double(t) * Eigen::Vector3d(0.6, 0, 0.8);
+      positions.insert(positions.end(), {q.x(), q.y(), q.z()});
+    }
+  const std::vector<double> weights(4, 0.25);
+  const Eigen::MatrixXd s = motion_signatures(std::span<const double>(positions), weights);
+  REQUIRE(s.rows() == 40);
+  REQUIRE(s.cols() == 24);
+  for (Eigen::Index t : {16, 20, 23})
+    for (Eigen::Index c = 0; c < 24; ++c) CHECK(s(t, c) == Approx(std::log(0.02)).epsilon(1e-12));
+  // Frame 0 at lag 16: from frame 0 to frame 16, over 32 frames: half the rate; frame 39 at lag 4:
+  // from frame 35 to 39, over 8: half too; lag 1 is whole at frame 1.
+  CHECK(s(0, 16) == Approx(std::log(0.01)).epsilon(1e-12));
+  CHECK(s(39, 8) == Approx(std::log(0.01)).epsilon(1e-12));
+  CHECK(s(1, 0) == Approx(std::log(0.02)).epsilon(1e-12));
+  CHECK(internal::rate_span(20, 4, 40) == std::pair<std::size_t, std::size_t>(16, 24));
+  CHECK(internal::rate_span(1, 4, 40) == std::pair<std::size_t, std::size_t>(0, 5));
+  CHECK(internal::rate_span(38, 4, 40) == std::pair<std::size_t, std::size_t>(34, 39));
+  // Standing still gives the floor.
+  std::vector<double> still(positions.begin(), positions.begin() + 12);
+  still.insert(still.end(), positions.begin(), positions.begin() + 12);
+  CHECK(motion_signatures(std::span<const double>(still), weights).maxCoeff() == Approx(std::log(1e-4)));
+}
+
+TEST_CASE("motion_signatures: rigid parts moving on a joint are seen; a rigid motion of the whole is not special",
+          "[motion_signature]") {
+  // Two rigid halves of a point set, the upper one turning about the joint (a robot's limb): no
+  // strain anywhere, yet the upper half moves and the lower does not.
+  std::vector<double> positions;
+  const std::size_t frames = 9, points = 20;
+  for (std::size_t t = 0; t < frames; ++t) {
+    const Eigen::AngleAxisd bend(right * double(t) / double(frames - 1), Eigen::Vector3d::UnitX());
+    for (std::size_t v = 0; v < points; ++v) {
+      Eigen::Vector3d p(0.1 * double(v % 2), 0.1 * double(v % 3), double(v) / points);
+      if (p.z() > 0.5) p = bend * (p - Eigen::Vector3d(0, 0, 0.5)) + Eigen::Vector3d(0, 0, 0.5);
+      positions.insert(positions.end(), {p.x(), p.y(), p.z()});
+    }
+  }
+  const std::vector<double> weights(points, 1.0 / points);
+  const Eigen::MatrixXd s = motion_signatures(std::span<const double>(positions), weights, {.lags = {1}, .quantiles = 4});
+  // The lower half (the first quantiles) stands still, the upper half moves.
+  CHECK(s(4, 0) == Approx(std::log(1e-4)));
+  CHECK(s(4, 3) > std::log(0.01));
+}
+
+TEST_CASE("motion_signature_similarity: an animation against itself and a moved, rotated, scaled copy is 1",
+          "[motion_signature]") {
+  const Motion_signature_similarity<> policy;
+  const auto a = tube(bend_hold_unbend);
+  const Placement moved{.scale = 2.5,
+                        .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())),
+                        .translation = Eigen::Vector3d(3, -1, 4)};
+  const auto b = tube(bend_hold_unbend, {}, moved);
+  CHECK(motion_similarity(a, a, policy).value == 1.0);
+  const Similarity copy = motion_similarity(a, b, policy);
+  CHECK(copy.value == Approx(1.0).margin(1e-9));
+  REQUIRE(copy.alignment.size() == a.num_frames());
+  for (std::size_t t = 0; t < a.num_frames(); ++t) CHECK(copy.alignment[t] == std::pair(t, t));
+  CHECK((policy.describe(a) - policy.describe(b)).cwiseAbs().maxCoeff() < 1e-9);
+}
+
+TEST_CASE("motion_signatures: the same whatever the number of threads", "[motion_signature]") {
+  const auto a = tube(bend_hold_unbend);
+#ifdef _OPENMP
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const Eigen::MatrixXd one = motion_signatures(a);
+  omp_set_num_threads(3);
+  const Eigen::MatrixXd three = motion_signatures(a);
+  omp_set_num_threads(threads);
+  CHECK(one == three);
+#else
+  CHECK(motion_signatures(a) == motion_signatures(a));
+#endif
+}
+
+TEST_CASE("motion_signature_similarity: a time-shifted cyclic motion scores near 1", "[motion_signature]") {
+  const Motion_signature_similarity<alignment::Subsequence_dtw> policy;
+  const auto a = cycles(16, 48, 0), shifted = cycles(16, 64, 5);
+  const double value = motion_similarity(a, shifted, policy).value;
+  const double other = motion_similarity(a, tube(other_timing), policy).value;
+  WARN("cycles against themselves shifted by 5 of 16 frames " << value << ", against another motion " << other);
+  // Measured 0.921 and 0.530: not 1, as each animation's first and last 16 frames see its ends
+  // (the spans are cut there, as if the tube stood still before and after).
+  CHECK(value > 0.9);
+  CHECK(value > other + 0.3);
+}
+
+TEST_CASE("motion_signature_similarity: a motion inside a longer one is found at its frames", "[motion_signature]") {
+  const Motion_signature_similarity<alignment::Subsequence_dtw> policy;
+  const auto longer = tube({{6, {right / 2}}, {6, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {6, {right / 2}}, {7, {0.0}}});
+  // Its frames 12 to 40 (the bend, the hold and the unbend), cut out.
+  std::vector<std::size_t> cut;
+  for (std::size_t t = 12; t <= 40; ++t) cut.push_back(t);
+  const auto motion = frames_of(longer, cut);
+  const Similarity found = motion_similarity(motion, longer, policy);
+  WARN("a motion inside a longer one: " << found.value);
+  // Inside, away from the cut's ends (where the lags see past them), the signatures are those of
+  // the longer animation's frames: measured 0.822.
+  CHECK(found.value > 0.8);
+  REQUIRE(!found.alignment.empty());
+  std::size_t on_place = 0;
+  for (auto [i, j] : found.alignment) on_place += (j + 2 >= i + 12 && j <= i + 12 + 2);
+  CHECK(on_place >= found.alignment.size() * 3 / 4);
+}
+
+TEST_CASE("motion_signature_similarity: the same motion on another tube ranks above other motions",
+          "[motion_signature]") {
+  const Motion_signature_similarity<> policy;
+  const auto a = tube(bend_hold_unbend);
+  const double same = motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
+  const double timing = motion_similarity(a, tube(other_timing, other_tube), policy).value;
+  const double small_bend = motion_similarity(
+      a, tube({{5, {0.0}}, {10, {right / 3}}, {8, {}}, {10, {0.0}}, {5, {}}}, other_tube), policy).value;
+  WARN("same motion on another tube " << same << ", other timing " << timing << ", a third of the bend "
+                                      << small_bend);
+  CHECK(same > 0.9);
+  CHECK(same > timing + 0.1);
+  CHECK(same > small_bend + 0.1);
+}
+
+TEST_CASE("motion_signature_similarity: bad input is refused with a reason", "[motion_signature]") {
+  const auto a = tube(bend_hold_unbend);
+  CHECK_THROWS_WITH(motion_signatures(frames_of(a, {3})), Catch::Contains("at least 2"));
+  CHECK_THROWS_WITH(motion_signatures(a, {.lags = {1, 0}}), Catch::Contains("lag of 0"));
+  CHECK_THROWS_WITH(motion_signatures(a, {.quantiles = 0}), Catch::Contains("0 quantiles"));
+  CHECK_THROWS_WITH(motion_signatures(a, {.floor = 0}), Catch::Contains("floor"));
+  const std::vector<double> points(24, 1.0), weights(4, 0.25);
+  CHECK_THROWS_WITH(motion_signatures(std::span<const double>(points), weights), Catch::Contains("no extent"));
+  Motion_signature_similarity<> coarse;
+  coarse.signatures.quantiles = 4;
+  const Motion_signature_similarity<> policy;
+  CHECK_THROWS_AS(policy.compare(policy.describe(a), coarse.describe(a)), invalid_input);
+}
+
+TEST_CASE("find_motion: a motion embedded twice in a longer one is found at its frames", "[motion_signature]") {
+  // Half bends, the motion (frames 12-50), a long hold, half bends, the motion again (frames
+  // 80-118), a hold: the two windows are found, best first, each within 4 frames of where it is
+  // (measured: 15-49 and 83-117; the motion starts standing still for 5 frames, and which of the
+  // still frames after the half bends match them best depends on how far the lags see).
+  std::vector<Tube_phase> schedule{{6, {right / 2}}, {6, {0.0}}};
+  schedule.insert(schedule.end(), bend_hold_unbend.begin(), bend_hold_unbend.end());
+  schedule.insert(schedule.end(), {{18, {}}, {6, {right / 2}}, {6, {0.0}}});
+  schedule.insert(schedule.end(), bend_hold_unbend.begin(), bend_hold_unbend.end());
+  schedule.push_back({10, {}});
+  const auto longer = tube(schedule);
+  const auto motion = tube(bend_hold_unbend, other_tube);
+  REQUIRE(motion.num_frames() == 39);
+  const auto found = find_motion(motion, longer, {.count = 3});
+  REQUIRE(found.size() >= 2);
+  std::vector<std::size_t> firsts{found[0].first, found[1].first};
+  std::sort(firsts.begin(), firsts.end());
+  WARN("found at " << found[0].first << "-" << found[0].last << " (" << found[0].value << "), " << found[1].first
+                   << "-" << found[1].last << " (" << found[1].value << ")");
+  CHECK(firsts[0] + 4 >= 12);
+  CHECK(firsts[0] <= 12 + 4);
+  CHECK(firsts[1] + 4 >= 80);
+  CHECK(firsts[1] <= 80 + 4);
+  CHECK(found[0].value >= found[1].value);
+  CHECK(found[1].value > 0.9);
+  for (const auto& m : found) {
+    CHECK(m.alignment.front().first == 0);
+    CHECK(m.alignment.back().first == motion.num_frames() - 1);
+    CHECK(m.alignment.front().second == m.first);
+    CHECK(m.alignment.back().second == m.last);
+  }
+  // Windows never overlap.
+  for (std::size_t x = 0; x < found.size(); ++x)
+    for (std::size_t y = x + 1; y < found.size(); ++y)
+      CHECK((found[x].last < found[y].first || found[y].last < found[x].first));
+  // The best window is the subsequence DTW's own.
+  const Motion_signature_similarity<alignment::Subsequence_dtw> subsequence;
+  CHECK(found[0].value == Approx(motion_similarity(motion, longer, subsequence).value).margin(1e-12));
+  CHECK_THROWS_AS(find_motion(motion, longer, {.shortest = 0}), invalid_input);
+}
+
+TEST_CASE("similarity_significance: ordered frames stand out from shuffled ones", "[motion_signature]") {
+  const Motion_signature_similarity<> policy;
+  const auto a = policy.describe(tube(bend_hold_unbend));
+  const auto same = policy.describe(tube(bend_hold_unbend, other_tube));
+  std::mt19937 random(7);
+  const double z_same = similarity_significance(policy, a, same, 20, random);
+  WARN("z-score of the same motion on another tube against shuffled copies: " << z_same);
+  CHECK(z_same > 3);
+  std::mt19937 again(7);
+  CHECK(similarity_significance(policy, a, same, 20, again) == z_same);
+  CHECK_THROWS_AS(similarity_significance(policy, a, same, 1, again), invalid_input);
+  // A description in another order: row t is row order[t].
+  const std::vector<std::size_t> order{2, 0, 1};
+  const Eigen::MatrixXd three = a.topRows(3), reordered = reordered_frames(three, std::span<const std::size_t>(order));
+  CHECK(reordered.row(0) == three.row(2));
+  CHECK(reordered.row(1) == three.row(0));
+  CHECK(frame_count(reordered) == 3);
+}

@@ -1,0 +1,55 @@
+// Tubes shared by the similarity tests: a bend, hold and unbend on a thin tube, other timings and
+// another tube, cyclic bends, and animations cut or reordered from another's frames.
+#pragma once
+
+#include <deformseg/default_mesh.h>
+#include <deformseg/synthetic.h>
+
+#include <cstddef>
+#include <numbers>
+#include <utility>
+#include <vector>
+
+namespace deformseg::test {
+
+inline constexpr double right = std::numbers::pi / 2;
+
+/// Bend 90 degrees, hold, unbend (39 frames).
+inline const std::vector<Tube_phase> bend_hold_unbend{{5, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {5, {}}};
+/// The same bend, quick, then a long hold.
+inline const std::vector<Tube_phase> other_timing{{5, {0.0}}, {3, {right}}, {22, {}}, {3, {0.0}}, {5, {}}};
+/// A thicker, longer, coarser tube without caps.
+inline const Tube_shape other_tube{.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false};
+
+/// A tube of `shape`, placed, bending its `joints` on `schedule`.
+inline Surface_mesh_animation tube(const std::vector<Tube_phase>& schedule, const Tube_shape& shape = {},
+                                   const Placement& placement = {},
+                                   std::vector<Tube_joint> joints = {Tube_joint{}}) {
+  Bending_tube spec;
+  spec.shape = shape;
+  spec.joints = std::move(joints);
+  spec.schedule = schedule;
+  spec.placement = placement;
+  return make_bending_tube(spec).animation;
+}
+
+/// The frames of `a` in the order `frames` gives (a frame may repeat).
+inline Surface_mesh_animation frames_of(const Surface_mesh_animation& a, const std::vector<std::size_t>& frames) {
+  std::vector<double> positions;
+  for (std::size_t t : frames) {
+    const auto xyz = a.frame_positions(t);
+    positions.insert(positions.end(), xyz.begin(), xyz.end());
+  }
+  return Surface_mesh_animation(a.face_graph(), std::move(positions));
+}
+
+/// One cycle (bend, unbend) of `period` frames, repeated: frame t is the cycle's frame
+/// (t + shift) mod period.
+inline Surface_mesh_animation cycles(std::size_t period, std::size_t frames, std::size_t shift) {
+  const auto cycle = tube({{period / 2, {right}}, {period - period / 2, {0.0}}});
+  std::vector<std::size_t> order;
+  for (std::size_t t = 0; t < frames; ++t) order.push_back((t + shift) % period);
+  return frames_of(cycle, order);
+}
+
+}  // namespace deformseg::test
