@@ -8,6 +8,7 @@
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/clustering/clustering.h>
 #include <deformseg/clustering/k_medoids.h>
+#include <deformseg/compact_segment_graph.h>
 #include <deformseg/evolving_graph.h>
 #include <deformseg/ged/bipartite_ged.h>
 #include <deformseg/ged/ged_matrix.h>
@@ -58,6 +59,11 @@ struct Evolving_graph_similarity {
   /// @brief The spatio-temporal segmentation. Default: `Spatiotemporal_options` (previous pose,
   /// threshold 0.5).
   Spatiotemporal_options segmentation{};
+  /// @brief Whether each key-frame graph's detached rigid nodes (rigid pieces touching no other
+  /// segment: a character's separate meshes) are merged into one before the edit distances
+  /// (`compact_segment_graph`). Default true: real characters' graphs shrink from 40-140 nodes to
+  /// a few, and the edit distances with them; a single connected mesh is unchanged.
+  bool compact_graphs = true;
   /// @brief The graph edit distance. Default: `ged::Bipartite_ged`.
   Ged ged{};
   /// @brief Its costs. Default: `Segment_costs` (kinds and area shares).
@@ -76,7 +82,7 @@ struct Evolving_graph_similarity {
   /// edit distances among themselves.
   struct Description {
     Evolving_graph graph;               ///< the evolving graph
-    std::vector<Segment_graph> graphs;  ///< its key frames' graphs, in order
+    std::vector<Segment_graph> graphs;  ///< its key frames' graphs, in order (compacted with `compact_graphs`)
     Eigen::MatrixXd distances;          ///< their pairwise edit distances (`ged::ged_matrix`)
   };
 
@@ -86,7 +92,7 @@ struct Evolving_graph_similarity {
   template <DeformingMesh Mesh>
   Description describe(const Mesh& animation) const {
     Description d{evolving_graph(animation, segmentation), {}, {}};
-    for (const Key_frame& k : d.graph) d.graphs.push_back(k.graph);
+    for (const Key_frame& k : d.graph) d.graphs.push_back(compact_graphs ? compact_segment_graph(k.graph) : k.graph);
     d.distances = ged::ged_matrix(d.graphs, ged, costs);
     return d;
   }
