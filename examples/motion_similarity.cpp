@@ -1,6 +1,6 @@
 // How alike two tubes move: the same schedule on a thin and on a thick tube, against another
-// schedule on the thin one, by the default policy (strain histograms) and by the thesis' policy
-// (evolving graphs).
+// schedule on the thin one, by the default policy (motion signatures), by strain histograms and by
+// the thesis' policy (evolving graphs).
 #include <deformseg/motion_similarity.h>
 #include <deformseg/synthetic.h>
 
@@ -19,11 +19,15 @@ int main() {
   const auto b = make_bending_tube(thick).animation;
   const auto c = make_bending_tube(other).animation;
 
-  const Similarity same = motion_similarity(a, b);  // Default_similarity: strain histograms
+  const Similarity same = motion_similarity(a, b);  // Default_similarity: motion signatures, DTW
   std::cout << "same schedule, thin and thick tube: " << same.value << " (" << same.alignment.size()
             << " frame pairs aligned)\n";
   std::cout << "other schedule, same tube:          " << motion_similarity(a, c).value << '\n';
   std::cout << "compared: " << same.compared << "\n\n";
+
+  const Strain_distribution_similarity<> strain;
+  std::cout << "strain histograms, thin and thick:   " << motion_similarity(a, b, strain).value
+            << "\nstrain histograms, other schedule:   " << motion_similarity(a, c, strain).value << "\n\n";
 
   const Evolving_graph_similarity<> thesis;
   const Similarity graphs = motion_similarity(a, b, thesis);
@@ -31,13 +35,14 @@ int main() {
   for (std::size_t label : graphs.labels_a) std::cout << ' ' << label;
   std::cout << "\nthesis' policy, other schedule:      " << motion_similarity(a, c, thesis).value << "\n\n";
 
-  // The thin tube's first phase alone (standing still): measured against the shorter sequence
-  // (the default) it is found whole in the thin tube; against the longer, the rest counts too.
+  // The thin tube's first phase alone (standing still): Smith-Waterman's local alignment measured
+  // against the shorter sequence (the default normalisation) finds it whole in the thin tube;
+  // against the longer, the rest counts too.
   Bending_tube still = thin;
   still.schedule = {thin.schedule.front()};
   const auto d = make_bending_tube(still).animation;
   Strain_distribution_similarity<> by_longer;
   by_longer.normalization.length = Normalize_by::longer;
-  std::cout << "standing still against the thin tube, by the shorter: " << motion_similarity(d, a).value
+  std::cout << "standing still against the thin tube, by the shorter: " << motion_similarity(d, a, strain).value
             << ", by the longer: " << motion_similarity(d, a, by_longer).value << '\n';
 }

@@ -276,7 +276,7 @@ TEST_CASE("similarity_matrix: progress reports every step and can stop", "[evalu
   // 4 descriptions and 10 pairs (i <= j): one batch each (batches hold at least 16 steps).
   const Eigen::MatrixXd all = similarity_matrix(tubes, Strain_distribution_similarity<>{}, record);
   CHECK(calls == std::vector<std::pair<std::size_t, std::size_t>>{{4, 14}, {14, 14}});
-  CHECK(all == similarity_matrix(tubes));
+  CHECK(all == similarity_matrix(tubes, Strain_distribution_similarity<>{}));
   calls.clear();
   // 2 + 4 descriptions and 8 pairs: the queries', the database's, the pairs' batches.
   similarity_matrix(std::span(tubes).first(2), tubes, Strain_distribution_similarity<>{}, record);

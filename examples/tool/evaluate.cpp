@@ -252,7 +252,7 @@ void run_evaluate(const Evaluate_options& o) {
       rows.push_back(nlohmann::json::array());
       for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
     }
-    write_json({{"labels", o.labels}, {"policy", o.policy.policy}, {"alignment_policy", o.policy.alignment},
+    write_json({{"labels", o.labels}, {"policy", o.policy.policy}, {"alignment_policy", alignment_name(o.policy)},
                 {"fps", o.fps}, {"inputs", inputs}, {"skipped", read.skipped}, {"scores", scores_json(scores)},
                 {"figure_order", order}, {"similarity", rows},
                 {"seconds", {{"reading", read_seconds}, {"describing", report.describe_seconds},

@@ -4,6 +4,7 @@
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/subsequence_dtw.h>
 #include <deformseg/motion_similarity.h>
+#include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/similarity/self_similarity_matching.h>
 
 #include <CLI/CLI.hpp>
@@ -13,21 +14,30 @@
 namespace deformseg::tool {
 
 struct Policy_options {
-  std::string policy = "histogram";
-  std::string alignment = "smith-waterman";
+  std::string policy = "motion-signature";
+  std::string alignment{};  // empty: the policy's own (DTW for motion-signature, else Smith-Waterman)
   double threshold = Spatiotemporal_options{}.threshold;
 };
 
 inline void add_policy_options(CLI::App& command, Policy_options& o) {
   command.add_option("--policy", o.policy,
-                     "histogram: per-frame histograms of the strain, no correspondence needed (default); "
+                     "motion-signature: per-frame distributions of how fast the surface moves at several time "
+                     "scales, no correspondence needed (default); "
+                     "histogram: per-frame histograms of the strain, no correspondence needed; "
                      "graph: the thesis' evolving graphs, GED, clustering and label alignment; "
                      "self-similarity: each animation's own frame x frame distances after rigid alignment")
-      ->check(CLI::IsMember({"histogram", "graph", "self-similarity"}));
+      ->check(CLI::IsMember({"motion-signature", "histogram", "graph", "self-similarity"}));
   command.add_option("--alignment", o.alignment,
-                     "smith-waterman (local, default), dtw (global) or subsequence-dtw (open begin and end)")
+                     "smith-waterman (local), dtw (global) or subsequence-dtw (open begin and end). Default: dtw for "
+                     "motion-signature, smith-waterman for the others")
       ->check(CLI::IsMember({"smith-waterman", "dtw", "subsequence-dtw"}));
   command.add_option("--threshold", o.threshold, "graph: the deformed threshold of the segmentation. Default: 0.5");
+}
+
+// The alignment the options name, or the policy's own when they name none.
+inline std::string alignment_name(const Policy_options& o) {
+  if (!o.alignment.empty()) return o.alignment;
+  return o.policy == "motion-signature" ? "dtw" : "smith-waterman";
 }
 
 // Calls `run` with the similarity policy the options name.
@@ -41,10 +51,12 @@ auto with_policy(const Policy_options& o, const Run& run) {
       return run(policy);
     }
     if (o.policy == "self-similarity") return run(Self_similarity_matching<Aligner>{});
-    return run(Strain_distribution_similarity<Aligner>{});
+    if (o.policy == "histogram") return run(Strain_distribution_similarity<Aligner>{});
+    return run(Motion_signature_similarity<Aligner>{});
   };
-  if (o.alignment == "dtw") return with_alignment(alignment::Dtw{});
-  if (o.alignment == "subsequence-dtw") return with_alignment(alignment::Subsequence_dtw{});
+  const std::string alignment = alignment_name(o);
+  if (alignment == "dtw") return with_alignment(alignment::Dtw{});
+  if (alignment == "subsequence-dtw") return with_alignment(alignment::Subsequence_dtw{});
   return with_alignment(alignment::Smith_waterman{});
 }
 

@@ -5,12 +5,15 @@
 
 #include <deformseg/internal/file_io.h>
 #include <deformseg/motion_similarity.h>
+#include <deformseg/similarity/significance.h>
 #include <deformseg/strain_colors.h>
 
 #include <algorithm>
 #include <array>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <random>
 
 namespace deformseg::tool {
 namespace {
@@ -20,9 +23,34 @@ namespace {
 struct Similarity_command_options {
   Input_options a, b;
   Policy_options policy;
+  std::optional<std::size_t> copies;  // none given: 20, or none for the graph policy
+  unsigned seed = 1;
   std::string json;
   std::string png;
 };
+
+// The similarity of A and B and, for a policy whose frames can be shuffled, the z-score of its
+// value against `copies` frame-shuffled copies of B.
+struct Similarity_with_significance {
+  Similarity similarity;
+  std::optional<double> z_score;
+};
+
+template <class Policy>
+Similarity_with_significance compare_with_significance(const Policy& policy, const Surface_mesh_animation& a,
+                                                       const Surface_mesh_animation& b, std::size_t copies,
+                                                       unsigned seed) {
+  const auto da = policy.describe(a), db = policy.describe(b);
+  Similarity_with_significance out{policy.compare(da, db), std::nullopt};
+  if constexpr (requires { frame_count(db); reordered_frames(db, std::span<const std::size_t>()); }) {
+    if (copies >= 2) {
+      progress("z-score against " + std::to_string(copies) + " frame-shuffled copies of B");
+      std::mt19937 random(seed);
+      out.z_score = similarity_significance(policy, da, db, copies, random);
+    }
+  }
+  return out;
+}
 
 // The frame grid of A (rows) and B (columns), scaled up to at least 400 pixels, grey lines every
 // 10 frames, the aligned pairs in red.
@@ -42,21 +70,31 @@ void write_alignment_figure(const Similarity& s, std::size_t frames_a, std::size
 }
 
 void run_similarity(const Similarity_command_options& o) {
+  if (o.copies == 1) throw invalid_input("--significance needs 0 (none) or at least 2 shuffled copies");
+  if (o.copies.value_or(0) >= 2 && o.policy.policy == "graph")
+    throw invalid_input("--significance does not apply to the graph policy, whose frames are key-frame labels");
+  const std::size_t copies = o.copies.value_or(o.policy.policy == "graph" ? 0 : 20);
   Input_options options_b = o.b;
   options_b.threads = o.a.threads, options_b.fps = o.a.fps;  // given once for both
   const Surface_mesh_animation a = read_input(o.a), b = read_input(options_b);
   progress("comparing " + std::to_string(a.num_frames()) + " and " + std::to_string(b.num_frames()) + " frames");
-  const Similarity s = with_policy(o.policy, [&](const auto& policy) { return motion_similarity(a, b, policy); });
+  const Similarity_with_significance compared = with_policy(
+      o.policy, [&](const auto& policy) { return compare_with_significance(policy, a, b, copies, o.seed); });
+  const Similarity& s = compared.similarity;
   if (!o.png.empty()) write_alignment_figure(s, a.num_frames(), b.num_frames(), o.png);
   nlohmann::json pairs = nlohmann::json::array();
   for (const auto& [i, j] : s.alignment) pairs.push_back({i, j});
   const nlohmann::json document = {{"a", o.a.input}, {"b", o.b.input}, {"policy", o.policy.policy},
-                                   {"alignment_policy", o.policy.alignment}, {"similarity", s.value},
+                                   {"alignment_policy", alignment_name(o.policy)}, {"similarity", s.value},
                                    {"score", s.score}, {"labels_a", s.labels_a}, {"labels_b", s.labels_b},
-                                   {"alignment", pairs}, {"compared", s.compared}};
+                                   {"alignment", pairs}, {"compared", s.compared},
+                                   {"z_score", compared.z_score ? nlohmann::json(*compared.z_score) : nlohmann::json()},
+                                   {"shuffled_copies", compared.z_score ? copies : 0}};
   if (!o.json.empty()) return write_json(document, o.json);
   std::cout << "similarity  " << s.value << "\nscore       " << s.score << "\naligned     " << s.alignment.size()
             << " frame pairs\ncompared    " << s.compared << '\n';
+  if (compared.z_score)
+    std::cout << "z-score     " << *compared.z_score << " (against " << copies << " frame-shuffled copies of B)\n";
 }
 
 // ---- deformseg matrix INPUT... ---------------------------------------------------------------
@@ -141,7 +179,7 @@ void run_matrix(const Matrix_command_options& o) {
     for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
   }
   const nlohmann::json document = {{"inputs", o.inputs}, {"policy", o.policy.policy},
-                                   {"alignment_policy", o.policy.alignment}, {"similarity", rows}};
+                                   {"alignment_policy", alignment_name(o.policy)}, {"similarity", rows}};
   if (!o.json.empty()) return write_json(document, o.json);
   for (std::size_t i = 0; i < o.inputs.size(); ++i) {
     std::cout << i << "  " << o.inputs[i] << "\n  ";
@@ -167,6 +205,10 @@ void add_similarity_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--threads", o->a.threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
   add_policy_options(*command, o->policy);
+  command->add_option("--significance", o->copies,
+                      "The z-score of the value against this many copies of B with frames shuffled (0: none). "
+                      "Default: 20, none for the graph policy");
+  command->add_option("--seed", o->seed, "The seed of the shuffles")->capture_default_str();
   command->add_option("--json", o->json, "Write the result as JSON to FILE ('-': standard output)");
   command->add_option("--png", o->png, "Draw the alignment path over the frame grid (A down, B across) into FILE.png");
   command->callback([o] {

@@ -1,12 +1,12 @@
-// How long the similarity of two animations takes end to end (strain to score), and where the
-// time goes, for both policies; and a 10 x 10 similarity matrix:
+// How long the similarity of two animations takes end to end (description to score), and where
+// the time goes, for the policies; and a 10 x 10 similarity matrix:
 //
 //   build/test/bench/similarity [--benchmark_filter=...]
 //
 // The animations: tubes of 20,200 triangles (100 sectors x 100 rings) and 500 frames, bending at
 // two joints on schedules of their own, made here (each with a seed of its own for the angles).
-// `describe` is one animation's description (strain and histograms, or strain, segments,
-// evolving graph and the GEDs of its key frames), `compare` the comparison of two descriptions,
+// `describe` is one animation's description (motion signatures; strain and histograms; or strain,
+// segments, evolving graph and the GEDs of its key frames), `compare` the comparison of two descriptions,
 // `end_to_end` motion_similarity (two describes and a compare), `matrix` similarity_matrix of 10.
 #include <deformseg/motion_similarity.h>
 #include <deformseg/synthetic.h>
@@ -72,11 +72,16 @@ void matrix(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(similarity_matrix(tubes(), Policy{}));
 }
 
+using Signatures = Motion_signature_similarity<>;
 using Histograms = Strain_distribution_similarity<>;
 using Graphs = Evolving_graph_similarity<>;
 
 }  // namespace
 
+BENCHMARK(describe<Signatures>)->Name("signatures/describe")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(compare<Signatures>)->Name("signatures/compare")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(end_to_end<Signatures>)->Name("signatures/end_to_end")->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(matrix<Signatures>)->Name("signatures/matrix_10")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(describe<Histograms>)->Name("histograms/describe")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(compare<Histograms>)->Name("histograms/compare")->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(end_to_end<Histograms>)->Name("histograms/end_to_end")->Unit(benchmark::kMillisecond)->UseRealTime();
