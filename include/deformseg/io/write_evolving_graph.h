@@ -21,15 +21,16 @@
 namespace deformseg::internal {
 
 // A node's DOT attributes: its label (R, or D and the segment id), what it is, and its colour.
+// Every value is quoted: the shortest text of an area may have an exponent (5.79e-05), which DOT's
+// numerals do not allow.
 inline std::string dot_node_attributes(const Segment_node& n) {
   const bool rigid = n.kind == Segment_kind::rigid;
   const Rgb c = segment_color(n.segment);
   char color[8];
   std::snprintf(color, sizeof color, "#%02x%02x%02x", unsigned(c.r), unsigned(c.g), unsigned(c.b));
-  return "[label=\"" + node_label(n) + "\", kind=\"" +
-         (rigid ? "rigid" : "deformed") + "\", segment=" + std::to_string(n.segment) +
-         ", triangles=" + std::to_string(n.triangles) + ", area=" + shortest_text(n.area) +
-         ", style=filled, fillcolor=\"" + color + "\"]";
+  return "[label=\"" + node_label(n) + "\", kind=\"" + (rigid ? "rigid" : "deformed") + "\", segment=\"" +
+         std::to_string(n.segment) + "\", triangles=\"" + std::to_string(n.triangles) + "\", area=\"" +
+         shortest_text(n.area) + "\", style=filled, fillcolor=\"" + color + "\"]";
 }
 
 }  // namespace deformseg::internal
