@@ -58,6 +58,10 @@ void write_json(const nlohmann::json& document, const std::string& path);
 /// A line on standard error, for progress.
 void progress(const std::string& line);
 
+/// The check of a FILE option (`--json`, `--png`, `--csv`, ...), run as the command line is parsed,
+/// before any input is read: the file's folder exists. "-" (standard output) passes.
+CLI::Validator output_file();
+
 /// An RGB image, row after row from the top, 3 bytes a pixel.
 struct Image {
   int width = 0, height = 0;
@@ -83,5 +87,6 @@ void add_ged_matrix_command(CLI::App& app);
 void add_similarity_command(CLI::App& app);
 void add_matrix_command(CLI::App& app);
 void add_evaluate_command(CLI::App& app);
+void add_find_command(CLI::App& app);
 
 }  // namespace deformseg::tool

@@ -21,8 +21,14 @@ int main(int argc, char** argv) {
   deformseg::tool::add_similarity_command(app);
   deformseg::tool::add_matrix_command(app);
   deformseg::tool::add_evaluate_command(app);
+  deformseg::tool::add_find_command(app);
   try {
     app.parse(argc, argv);
+  } catch (const CLI::ExtrasError& e) {
+    // The usual cause: a glob the shell expanded into one argument per file.
+    const int status = app.exit(e);
+    std::cerr << "deformseg: a glob must be quoted to name one animation, e.g. 'frames/*.obj'\n";
+    return status;
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const std::exception& e) {

@@ -1,0 +1,70 @@
+// deformseg find QUERY LONG: where a short motion occurs in a long animation, by find_motion with
+// the default policy (motion signatures).
+#include "command.h"
+
+#include <deformseg/find_motion.h>
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+namespace deformseg::tool {
+namespace {
+
+struct Find_command_options {
+  Input_options query, long_animation;
+  std::size_t count = 3;
+  double shortest = Find_motion_options{}.shortest;
+  std::string json;
+};
+
+void run_find(const Find_command_options& o) {
+  if (o.count == 0) throw invalid_input("--count must be at least 1");
+  if (!(o.shortest > 0 && o.shortest <= 1)) throw invalid_input("--shortest must be in (0, 1]");
+  Input_options long_options = o.long_animation;
+  long_options.threads = o.query.threads, long_options.fps = o.query.fps;  // given once for both
+  const Surface_mesh_animation query = read_input(o.query), long_animation = read_input(long_options);
+  progress("looking for " + std::to_string(query.num_frames()) + " frames in " +
+           std::to_string(long_animation.num_frames()));
+  const auto matches = find_motion(query, long_animation, {.count = o.count, .shortest = o.shortest});
+  nlohmann::json found = nlohmann::json::array();
+  for (const Motion_match& m : matches) {
+    nlohmann::json pairs = nlohmann::json::array();
+    for (const auto& [i, j] : m.alignment) pairs.push_back({i, j});
+    found.push_back({{"first", m.first}, {"last", m.last}, {"similarity", m.value}, {"alignment", pairs}});
+  }
+  if (!o.json.empty())
+    return write_json({{"query", o.query.input}, {"long", o.long_animation.input}, {"policy", "motion-signature"},
+                       {"matches", found}},
+                      o.json);
+  for (const Motion_match& m : matches)
+    std::cout << "frames " << m.first << " to " << m.last << "  similarity " << std::fixed << std::setprecision(3)
+              << m.value << '\n';
+}
+
+}  // namespace
+
+void add_find_command(CLI::App& app) {
+  auto o = std::make_shared<Find_command_options>();
+  CLI::App* command = app.add_subcommand("find", "Where a short motion occurs in a long animation: the best "
+                                                 "non-overlapping windows, by motion signatures and subsequence DTW");
+  command->add_option("query", o->query.input, "The short motion (a glTF file, FILE.glb#CLIP, a folder, a quoted glob or a point cache)")->required();
+  command->add_option("long", o->long_animation.input, "The long animation to search")->required();
+  command->add_option("--topology-query", o->query.topology, "Connectivity of the query, for a point cache");
+  command->add_option("--topology-long", o->long_animation.topology, "Connectivity of the long animation, for a point cache");
+  command->add_option("--clip-query", o->query.clip, "glTF: the query's clip, by name or index (default: the first)");
+  command->add_option("--clip-long", o->long_animation.clip, "glTF: the long animation's clip (default: the first)");
+  command->add_option("--fps", o->query.fps, "glTF: frames per second both clips are sampled at")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  command->add_option("--threads", o->query.threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_option("--count", o->count, "How many windows at most")->capture_default_str();
+  command->add_option("--shortest", o->shortest,
+                      "The shortest window, as a fraction of the query's length (0.5: up to twice as fast)")
+      ->capture_default_str();
+  command->add_option("--json", o->json, "Write the windows, their values and warping paths as JSON to FILE ('-': standard output)")
+      ->check(output_file());
+  command->callback([o] { run_find(*o); });
+}
+
+}  // namespace deformseg::tool
