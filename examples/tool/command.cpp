@@ -1,5 +1,7 @@
 #include "command.h"
 
+#include <deformseg/internal/file_io.h>
+
 #include <stb/stb_image_write.h>
 
 #include <fstream>
@@ -126,16 +128,27 @@ void write_json(const nlohmann::json& document, const std::string& path) {
     std::cout << document.dump(2) << '\n';
     return;
   }
-  std::ofstream out(path);
-  if (!(out << document.dump(2) << '\n'))
-    throw std::runtime_error("cannot write " + path);
+  internal::write_file_bytes(path, document.dump(2) + '\n');  // names the file and the system's reason
+}
+
+CLI::Validator output_file() {
+  return CLI::Validator(
+      [](std::string& path) -> std::string {
+        if (path == "-") return {};
+        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        std::error_code error;
+        if (!folder.empty() && !std::filesystem::is_directory(folder, error))
+          return "cannot write " + path + ": the folder " + folder.string() + " does not exist";
+        return {};
+      },
+      "FILE");
 }
 
 void progress(const std::string& line) { std::cerr << "deformseg: " << line << '\n'; }
 
 void write_png(const Image& image, const std::string& path) {
   if (!stbi_write_png(path.c_str(), image.width, image.height, 3, image.pixels.data(), image.width * 3))
-    throw std::runtime_error("cannot write " + path);
+    throw invalid_input("cannot write: " + internal::last_system_error(), {.file = path});
 }
 
 }  // namespace deformseg::tool

@@ -61,7 +61,8 @@ void add_convert_command(CLI::App& app) {
                       "cache NAME.pc2 with NAME.obj as its topology, NAME from the input")
       ->check(CLI::IsMember({"obj", "off", "ply", "pc2", "mdd"}))
       ->capture_default_str();
-  command->add_option("--json", o->json, "Also write what was written as JSON to FILE ('-': standard output)");
+  command->add_option("--json", o->json, "Also write what was written as JSON to FILE ('-': standard output)")
+      ->check(output_file());
   command->callback([o] {
     Input_report report;
     const Surface_mesh_animation animation = read_input(o->input, &report);

@@ -223,6 +223,7 @@ void print_scores(const Retrieval_scores& s, std::size_t items) {
 }
 
 void run_evaluate(const Evaluate_options& o) {
+  check_policy_options(o.policy);
   if (!(o.fps > 0)) throw invalid_input("--fps must be positive");
 #ifdef _OPENMP
   if (o.threads > 0) omp_set_num_threads(o.threads);  // the matrix's threads; the readers take theirs
@@ -279,10 +280,12 @@ void add_evaluate_command(CLI::App& app) {
   command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
   command->add_flag("--skip-unreadable", o->skip_unreadable,
                     "Leave out, with a line on standard error, the clips that cannot be read, instead of stopping");
-  command->add_option("--json", o->json, "Write the labels, scores, matrix and times as JSON to FILE ('-': standard output)");
+  command->add_option("--json", o->json, "Write the labels, scores, matrix and times as JSON to FILE ('-': standard output)")
+      ->check(output_file());
   command->add_option("--png", o->png,
                       "Draw the matrix with rows and columns grouped by motion (distractors last, white lines "
-                      "between groups), each cell coloured by the rank of its value, into FILE.png");
+                      "between groups), each cell coloured by the rank of its value, into FILE.png")
+      ->check(output_file());
   command->callback([o] { run_evaluate(*o); });
 }
 

@@ -134,7 +134,8 @@ void add_ged_command(CLI::App& app) {
   command->add_option("a", options->a, "The first graph (.dot, .gv, .graphml)")->required();
   command->add_option("b", options->b, "The second graph")->required();
   add_method_options(*command, options->method);
-  command->add_option("--json", options->json, "Write the JSON to FILE ('-': standard output, the default)");
+  command->add_option("--json", options->json, "Write the JSON to FILE ('-': standard output, the default)")
+      ->check(output_file());
   command->callback([options] { run_ged(*options); });
 }
 
@@ -146,10 +147,12 @@ void add_ged_matrix_command(CLI::App& app) {
   command->add_option("files", options->files, "The graphs (.dot, .gv, .graphml)")->required();
   add_method_options(*command, options->method);
   command->add_option("--threads", options->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
-  command->add_option("--csv", options->csv, "Write the distance matrix as CSV to FILE ('-': standard output)");
+  command->add_option("--csv", options->csv, "Write the distance matrix as CSV to FILE ('-': standard output)")
+      ->check(output_file());
   command->add_option("--json", options->json,
                       "Write distances and bounds as JSON to FILE ('-': standard output, the default "
-                      "without --csv)");
+                      "without --csv)")
+      ->check(output_file());
   command->callback([options] { run_ged_matrix(*options); });
 }
 

@@ -105,7 +105,8 @@ void add_info_command(CLI::App& app) {
       "info", "Frames, vertices, triangles, bounding box over all frames, format, memory used and what "
               "the repair of the mesh changed; for glTF also the clips, skins and meshes");
   add_input_options(*command, options->input);
-  command->add_option("--json", options->json, "Write the answer as JSON to FILE ('-': standard output)");
+  command->add_option("--json", options->json, "Write the answer as JSON to FILE ('-': standard output)")
+      ->check(output_file());
   command->callback([options] {
     Input_report report;
     const nlohmann::json info = describe(*options, report);

@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 namespace deformseg::tool {
@@ -16,7 +17,7 @@ namespace deformseg::tool {
 struct Policy_options {
   std::string policy = "motion-signature";
   std::string alignment{};  // empty: the policy's own (DTW for motion-signature, else Smith-Waterman)
-  double threshold = Spatiotemporal_options{}.threshold;
+  std::optional<double> threshold{};  // the graph policy's only; none given: its default
 };
 
 inline void add_policy_options(CLI::App& command, Policy_options& o) {
@@ -31,7 +32,14 @@ inline void add_policy_options(CLI::App& command, Policy_options& o) {
                      "smith-waterman (local), dtw (global) or subsequence-dtw (open begin and end). Default: dtw for "
                      "motion-signature, smith-waterman for the others")
       ->check(CLI::IsMember({"smith-waterman", "dtw", "subsequence-dtw"}));
-  command.add_option("--threshold", o.threshold, "graph: the deformed threshold of the segmentation. Default: 0.5");
+  command.add_option("--threshold", o.threshold, "graph: the deformed threshold of the segmentation, in [0, 1]. Default: 0.5")
+      ->check(CLI::Range(0.0, 1.0));
+}
+
+// Refuses, before anything is read, options that the chosen policy does not take.
+inline void check_policy_options(const Policy_options& o) {
+  if (o.threshold && o.policy != "graph")
+    throw invalid_input("--threshold applies to the graph policy only, not to --policy " + o.policy);
 }
 
 // The alignment the options name, or the policy's own when they name none.
@@ -47,7 +55,7 @@ auto with_policy(const Policy_options& o, const Run& run) {
     using Aligner = decltype(aligner);
     if (o.policy == "graph") {
       Evolving_graph_similarity<ged::Bipartite_ged, Segment_costs, clustering::K_medoids, Aligner> policy;
-      policy.segmentation.threshold = o.threshold;
+      policy.segmentation.threshold = o.threshold.value_or(policy.segmentation.threshold);
       return run(policy);
     }
     if (o.policy == "self-similarity") return run(Self_similarity_matching<Aligner>{});

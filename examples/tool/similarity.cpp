@@ -52,6 +52,14 @@ Similarity_with_significance compare_with_significance(const Policy& policy, con
   return out;
 }
 
+// A similarity compares motions: an input of one frame is refused, with the usual cause.
+void require_motion(const Surface_mesh_animation& animation, const std::string& input) {
+  if (animation.num_frames() < 2)
+    throw invalid_input("an animation of " + std::to_string(animation.num_frames()) +
+                            " frame: a motion needs at least 2 (an unquoted glob gives one input per file: quote it)",
+                        {.file = input});
+}
+
 // The frame grid of A (rows) and B (columns), scaled up to at least 400 pixels, grey lines every
 // 10 frames, the aligned pairs in red.
 void write_alignment_figure(const Similarity& s, std::size_t frames_a, std::size_t frames_b, const std::string& path) {
@@ -70,6 +78,7 @@ void write_alignment_figure(const Similarity& s, std::size_t frames_a, std::size
 }
 
 void run_similarity(const Similarity_command_options& o) {
+  check_policy_options(o.policy);
   if (o.copies == 1) throw invalid_input("--significance needs 0 (none) or at least 2 shuffled copies");
   if (o.copies.value_or(0) >= 2 && o.policy.policy == "graph")
     throw invalid_input("--significance does not apply to the graph policy, whose frames are key-frame labels");
@@ -77,6 +86,8 @@ void run_similarity(const Similarity_command_options& o) {
   Input_options options_b = o.b;
   options_b.threads = o.a.threads, options_b.fps = o.a.fps;  // given once for both
   const Surface_mesh_animation a = read_input(o.a), b = read_input(options_b);
+  require_motion(a, o.a.input);
+  require_motion(b, o.b.input);
   progress("comparing " + std::to_string(a.num_frames()) + " and " + std::to_string(b.num_frames()) + " frames");
   const Similarity_with_significance compared = with_policy(
       o.policy, [&](const auto& policy) { return compare_with_significance(policy, a, b, copies, o.seed); });
@@ -162,12 +173,14 @@ void write_csv(const Eigen::MatrixXd& m, const std::vector<std::string>& names, 
 }
 
 void run_matrix(const Matrix_command_options& o) {
+  check_policy_options(o.policy);
   std::vector<Surface_mesh_animation> animations;
   for (const auto& input : o.inputs)
   {
     Input_options read;
     read.input = input, read.topology = o.topology, read.threads = o.threads, read.fps = o.fps;
     animations.push_back(read_input(read));
+    require_motion(animations.back(), read.input);
   }
   progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
   const Eigen::MatrixXd m = with_policy(o.policy, [&](const auto& policy) { return similarity_matrix(animations, policy); });
@@ -209,8 +222,10 @@ void add_similarity_command(CLI::App& app) {
                       "The z-score of the value against this many copies of B with frames shuffled (0: none). "
                       "Default: 20, none for the graph policy");
   command->add_option("--seed", o->seed, "The seed of the shuffles")->capture_default_str();
-  command->add_option("--json", o->json, "Write the result as JSON to FILE ('-': standard output)");
-  command->add_option("--png", o->png, "Draw the alignment path over the frame grid (A down, B across) into FILE.png");
+  command->add_option("--json", o->json, "Write the result as JSON to FILE ('-': standard output)")
+      ->check(output_file());
+  command->add_option("--png", o->png, "Draw the alignment path over the frame grid (A down, B across) into FILE.png")
+      ->check(output_file());
   command->callback([o] {
     o->b.threads = o->a.threads;
     run_similarity(*o);
@@ -229,10 +244,13 @@ void add_matrix_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--threads", o->threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
   add_policy_options(*command, o->policy);
-  command->add_option("--csv", o->csv, "Write the matrix as CSV, with the inputs as row and column names, to FILE");
-  command->add_option("--json", o->json, "Write the matrix as JSON to FILE ('-': standard output)");
+  command->add_option("--csv", o->csv, "Write the matrix as CSV, with the inputs as row and column names, to FILE")
+      ->check(output_file());
+  command->add_option("--json", o->json, "Write the matrix as JSON to FILE ('-': standard output)")
+      ->check(output_file());
   command->add_option("--png", o->png,
-                      "Draw a heat map (viridis, from the smallest value to 1), inputs numbered as listed, into FILE.png");
+                      "Draw a heat map (viridis, from the smallest value to 1), inputs numbered as listed, into FILE.png")
+      ->check(output_file());
   command->callback([o] { run_matrix(*o); });
 }
 

@@ -92,7 +92,8 @@ void add_spatiotemporal_command(CLI::App& app) {
                       "previous: deformed while it moves (default); rest: deformed while away from frame 0")
       ->check(CLI::IsMember({"previous", "rest"}));
   command->add_option("--threshold", options->segments.threshold,
-                      "A cell is deformed above this normalised strain. Default: 0.5");
+                      "A cell is deformed above this normalised strain, in [0, 1]. Default: 0.5")
+      ->check(CLI::Range(0.0, 1.0));
   command->add_option("--min-triangles", options->segments.min_triangles,
                       "Segments whose largest slice has fewer triangles become rigid. Default: 10");
   command->add_option("--min-frames", options->segments.min_frames,
@@ -100,7 +101,8 @@ void add_spatiotemporal_command(CLI::App& app) {
   command->add_option("--max-island", options->segments.max_island,
                       "Rigid islands of at most this many triangles inside one segment join it (0: none). "
                       "Default: 30");
-  command->add_option("--json", options->json, "Write the evolving graph as JSON to FILE ('-': standard output)");
+  command->add_option("--json", options->json, "Write the evolving graph as JSON to FILE ('-': standard output)")
+      ->check(output_file());
   command->add_option("--dot", options->dot, "Write each key frame's graph as a Graphviz DOT file into DIR");
   command->add_option("--mesh-dir", options->mesh_dir,
                       "Write every frame as a PLY mesh coloured by segment (rigid: grey) into DIR");

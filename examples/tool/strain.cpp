@@ -152,7 +152,8 @@ void add_strain_command(CLI::App& app) {
   command->add_option("--mesh-dir", options->mesh_dir,
                       "Write every frame as a PLY mesh coloured by normalised strain (viridis: dark purple "
                       "0, yellow 1) into DIR");
-  command->add_option("--json", options->json, "Write the summary as JSON to FILE ('-': standard output)");
+  command->add_option("--json", options->json, "Write the summary as JSON to FILE ('-': standard output)")
+      ->check(output_file());
   command->callback([options] { run(*options); });
 }
 

@@ -137,7 +137,8 @@ void add_synth_command(CLI::App& app) {
       ->delimiter(',')->expected(4);
   command->add_option("--translate", o->translate, "Translation of every frame: X,Y,Z")
       ->delimiter(',')->expected(3);
-  command->add_option("--json", o->json, "Also write the ground truth to FILE ('-': standard output)");
+  command->add_option("--json", o->json, "Also write the ground truth to FILE ('-': standard output)")
+      ->check(output_file());
   command->callback([o] {
     const auto tube = make_bending_tube(specification(*o));
     progress("writing " + std::to_string(tube.animation.num_frames()) + " frames to " + o->out);

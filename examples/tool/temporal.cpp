@@ -35,7 +35,6 @@ Segmentation_threshold threshold_of(const Temporal_command_options& o, Segmentat
 // The segmentation with the policy the options name; also what threshold it used.
 Temporal_segmentation segment(const Temporal_command_options& o, const Segment_cost& cost,
                               Segmentation_threshold& used) {
-  if (o.segments && o.method != "optimal") throw invalid_input("--segments asks for --method optimal");
   if (o.method == "binary-split") {
     const Binary_split policy{.threshold = threshold_of(o, Binary_split{}.threshold), .min_length = o.min_length};
     used = policy.threshold;
@@ -108,6 +107,7 @@ nlohmann::json document(const Temporal_command_options& o, const Temporal_segmen
 }
 
 void run(const Temporal_command_options& o) {
+  if (o.segments && o.method != "optimal") throw invalid_input("--segments asks for --method optimal");
   const Surface_mesh_animation animation = read_input(o.input);
   progress("computing the strain and the frame distances of " + std::to_string(animation.num_frames()) + " frames");
   const auto field = compute_strain(animation, {.rest_frame = o.rest_frame, .threads = o.input.threads});
@@ -152,9 +152,12 @@ void add_temporal_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   command->add_option("--min-length", options->min_length, "Fewest frames of a segment (optimal, binary-split)")
       ->check(CLI::PositiveNumber);
-  command->add_option("--json", options->json, "Write the segments as JSON to FILE ('-': standard output)");
-  command->add_option("--png", options->png, "Draw the frame distance matrix and the segments into FILE.png");
-  command->add_option("--matrix", options->matrix, "Write the frame distance matrix as CSV to FILE");
+  command->add_option("--json", options->json, "Write the segments as JSON to FILE ('-': standard output)")
+      ->check(output_file());
+  command->add_option("--png", options->png, "Draw the frame distance matrix and the segments into FILE.png")
+      ->check(output_file());
+  command->add_option("--matrix", options->matrix, "Write the frame distance matrix as CSV to FILE")
+      ->check(output_file());
   command->callback([options] { run(*options); });
 }
 
