@@ -117,16 +117,7 @@ TEST_CASE("motion_signatures: rigid parts moving on a joint are seen; a rigid mo
 TEST_CASE("motion_signature_similarity: an animation against itself and a moved, rotated, scaled copy is 1",
           "[motion_signature]") {
   const Motion_signature_similarity<> policy;
-  const auto a = tube(bend_hold_unbend);
-  const Placement moved{.scale = 2.5,
-                        .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())),
-                        .translation = Eigen::Vector3d(3, -1, 4)};
-  const auto b = tube(bend_hold_unbend, {}, moved);
-  CHECK(motion_similarity(a, a, policy).value == 1.0);
-  const Similarity copy = motion_similarity(a, b, policy);
-  CHECK(copy.value == Approx(1.0).margin(1e-9));
-  REQUIRE(copy.alignment.size() == a.num_frames());
-  for (std::size_t t = 0; t < a.num_frames(); ++t) CHECK(copy.alignment[t] == std::pair(t, t));
+  const auto [a, b] = check_moved_copy_is_one(policy);
   CHECK((policy.describe(a) - policy.describe(b)).cwiseAbs().maxCoeff() < 1e-9);
 }
 

@@ -27,16 +27,7 @@ using namespace deformseg::test;
 TEST_CASE("self_similarity_matching: an animation against itself and a moved, rotated, scaled copy is 1",
           "[self_similarity]") {
   const Self_similarity_matching<> policy;
-  const auto a = tube(bend_hold_unbend);
-  const Placement moved{.scale = 2.5,
-                        .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())),
-                        .translation = Eigen::Vector3d(3, -1, 4)};
-  const auto b = tube(bend_hold_unbend, {}, moved);
-  CHECK(motion_similarity(a, a, policy).value == 1.0);
-  const Similarity copy = motion_similarity(a, b, policy);
-  CHECK(copy.value == Approx(1.0).margin(1e-9));
-  REQUIRE(copy.alignment.size() == a.num_frames());
-  for (std::size_t t = 0; t < a.num_frames(); ++t) CHECK(copy.alignment[t] == std::pair(t, t));
+  const auto [a, b] = check_moved_copy_is_one(policy);
   // The description itself is invariant: the Procrustes distances agree to rounding (the square
   // root of the Gram formula's rounding, 1e-8 between frames of one held pose).
   CHECK((policy.describe(a).distances - policy.describe(b).distances).cwiseAbs().maxCoeff() < 1e-6);

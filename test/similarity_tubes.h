@@ -2,8 +2,13 @@
 // another tube, cyclic bends, and animations cut or reordered from another's frames.
 #pragma once
 
+#include "test_support.h"
+
 #include <deformseg/default_mesh.h>
+#include <deformseg/motion_similarity.h>
 #include <deformseg/synthetic.h>
+
+#include <Eigen/Geometry>
 
 #include <cstddef>
 #include <numbers>
@@ -50,6 +55,23 @@ inline Surface_mesh_animation cycles(std::size_t period, std::size_t frames, std
   std::vector<std::size_t> order;
   for (std::size_t t = 0; t < frames; ++t) order.push_back((t + shift) % period);
   return frames_of(cycle, order);
+}
+
+/// Checks that `policy` gives exactly 1 for a tube against itself, and 1 to rounding against a
+/// moved, rotated and scaled copy, aligned frame to frame; returns the tube and its copy.
+template <class Policy>
+std::pair<Surface_mesh_animation, Surface_mesh_animation> check_moved_copy_is_one(const Policy& policy) {
+  auto a = tube(bend_hold_unbend);
+  const Placement moved{.scale = 2.5,
+                        .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())),
+                        .translation = Eigen::Vector3d(3, -1, 4)};
+  auto b = tube(bend_hold_unbend, {}, moved);
+  CHECK(motion_similarity(a, a, policy).value == 1.0);
+  const Similarity copy = motion_similarity(a, b, policy);
+  CHECK(copy.value == Approx(1.0).margin(1e-9));
+  REQUIRE(copy.alignment.size() == a.num_frames());
+  for (std::size_t t = 0; t < a.num_frames(); ++t) CHECK(copy.alignment[t] == std::pair(t, t));
+  return {std::move(a), std::move(b)};
 }
 
 }  // namespace deformseg::test
