@@ -93,20 +93,10 @@ TEST_CASE("motion_signatures: a uniform translation has the exact rate everywher
   CHECK(motion_signatures(std::span<const double>(still), weights).maxCoeff() == Approx(std::log(1e-4)));
 }
 
-TEST_CASE("motion_signatures: rigid parts moving on a joint are seen; a rigid motion of the whole is not special",
-          "[motion_signature]") {
-  // Two rigid halves of a point set, the upper one turning about the joint (a robot's limb): no
-  // strain anywhere, yet the upper half moves and the lower does not.
-  std::vector<double> positions;
-  const std::size_t frames = 9, points = 20;
-  for (std::size_t t = 0; t < frames; ++t) {
-    const Eigen::AngleAxisd bend(right * double(t) / double(frames - 1), Eigen::Vector3d::UnitX());
-    for (std::size_t v = 0; v < points; ++v) {
-      Eigen::Vector3d p(0.1 * double(v % 2), 0.1 * double(v % 3), double(v) / points);
-      if (p.z() > 0.5) p = bend * (p - Eigen::Vector3d(0, 0, 0.5)) + Eigen::Vector3d(0, 0, 0.5);
-      positions.insert(positions.end(), {p.x(), p.y(), p.z()});
-    }
-  }
+TEST_CASE("motion_signatures: rigid parts moving on a joint are seen", "[motion_signature]") {
+  // No strain anywhere, yet the upper half (9 of 20 points) moves and the lower does not.
+  const std::size_t points = 20;
+  const std::vector<double> positions = jointed_points(9, points);
   const std::vector<double> weights(points, 1.0 / points);
   const Eigen::MatrixXd s = motion_signatures(std::span<const double>(positions), weights, {.lags = {1}, .quantiles = 4});
   // The lower half (the first quantiles) stands still, the upper half moves.

@@ -52,18 +52,9 @@ TEST_CASE("self_similarity_matching: a rigid motion has a zero self-dissimilarit
 }
 
 TEST_CASE("self_similarity_matching: rigid parts moving on a joint are seen", "[self_similarity]") {
-  // Two rigid halves of a point set, the upper one turning about the joint: no strain anywhere,
-  // yet frame 0 and the last frame are far apart (a robot's limbs).
-  std::vector<double> positions;
+  // No strain anywhere, yet frame 0 and the last frame are far apart (a robot's limbs).
   const std::size_t frames = 5, points = 20;
-  for (std::size_t t = 0; t < frames; ++t) {
-    const Eigen::AngleAxisd bend(right * double(t) / double(frames - 1), Eigen::Vector3d::UnitX());
-    for (std::size_t v = 0; v < points; ++v) {
-      Eigen::Vector3d p(0.1 * double(v % 2), 0.1 * double(v % 3), double(v) / points);
-      if (p.z() > 0.5) p = bend * (p - Eigen::Vector3d(0, 0, 0.5)) + Eigen::Vector3d(0, 0, 0.5);
-      positions.insert(positions.end(), {p.x(), p.y(), p.z()});
-    }
-  }
+  const std::vector<double> positions = jointed_points(frames, points);
   const std::vector<double> weights(points, 1.0 / points);
   const auto d = Self_similarity_matching<>{}.describe_positions(positions, weights);
   CHECK(d.distances(0, frames - 1) > 0.3);

@@ -57,6 +57,22 @@ inline Surface_mesh_animation cycles(std::size_t period, std::size_t frames, std
   return frames_of(cycle, order);
 }
 
+/// Two rigid halves of a point set (`points` points, `frames` frames, `T x 3V` coordinates), the
+/// upper one turning about the joint at mid-height by a right angle in all: a robot's limb, with
+/// no strain anywhere.
+inline std::vector<double> jointed_points(std::size_t frames, std::size_t points) {
+  std::vector<double> positions;
+  for (std::size_t t = 0; t < frames; ++t) {
+    const Eigen::AngleAxisd bend(right * double(t) / double(frames - 1), Eigen::Vector3d::UnitX());
+    for (std::size_t v = 0; v < points; ++v) {
+      Eigen::Vector3d p(0.1 * double(v % 2), 0.1 * double(v % 3), double(v) / double(points));
+      if (p.z() > 0.5) p = bend * (p - Eigen::Vector3d(0, 0, 0.5)) + Eigen::Vector3d(0, 0, 0.5);
+      positions.insert(positions.end(), {p.x(), p.y(), p.z()});
+    }
+  }
+  return positions;
+}
+
 /// Checks that `policy` gives exactly 1 for a tube against itself, and 1 to rounding against a
 /// moved, rotated and scaled copy, aligned frame to frame; returns the tube and its copy.
 template <class Policy>
