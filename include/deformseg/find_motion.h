@@ -71,12 +71,13 @@ std::vector<Motion_match> find_motion_in(const Policy& policy, const typename Po
   // The best match inside the stretch of frames [first, last].
   const auto best_in = [&](std::size_t first, std::size_t last) {
     const auto inside = [&](std::size_t i, std::size_t j) { return d(Eigen::Index(i), Eigen::Index(first + j)); };
-    alignment::Alignment a = alignment::Subsequence_dtw{}.align(n, last - first + 1, inside);
+    const alignment::Subsequence_dtw subsequence;
+    alignment::Alignment a = subsequence.align(n, last - first + 1, inside);
     Motion_match match;
+    match.value = Best_score_normalization{}(subsequence, a, n, last - first + 1);  // as motion_similarity's
     for (auto& [i, j] : a.pairs) j += first;
     match.first = a.pairs.front().second;
     match.last = a.pairs.back().second;
-    match.value = std::clamp(1.0 - a.score / double(a.pairs.size()), 0.0, 1.0);
     match.alignment = std::move(a.pairs);
     return match;
   };
