@@ -270,3 +270,19 @@ TEST_CASE("evolving graph: Graphviz draws every key frame of the horse", "[evolv
   }
   CHECK(with_exponent > 0);  // the case that failed is among them
 }
+
+TEST_CASE("evolving graph: a rigid node has no segment attribute in DOT, as it has null in JSON",
+          "[evolving_graph]") {
+  Segment_graph graph;
+  boost::add_vertex(Segment_node{.kind = Segment_kind::rigid, .triangles = 30, .area = 0.75}, graph);
+  boost::add_vertex(Segment_node{.kind = Segment_kind::deformed, .segment = 4, .triangles = 10, .area = 0.25}, graph);
+  boost::add_edge(0, 1, graph);
+  std::ostringstream text;
+  io::write_segment_graph_dot(text, graph);
+  const std::string dot = text.str();
+  INFO(dot);
+  CHECK(dot.find("0[label=\"R\", kind=\"rigid\", triangles=\"30\", area=\"0.75\"") != std::string::npos);
+  CHECK(dot.find("1[label=\"D4\", kind=\"deformed\", segment=\"4\", triangles=\"10\", area=\"0.25\"") !=
+        std::string::npos);
+  CHECK(dot.find("segment=\"-1\"") == std::string::npos);
+}

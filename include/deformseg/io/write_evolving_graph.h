@@ -20,16 +20,18 @@
 
 namespace deformseg::internal {
 
-// A node's DOT attributes: its label (R, or D and the segment id), what it is, and its colour.
-// Every value is quoted: the shortest text of an area may have an exponent (5.79e-05), which DOT's
-// numerals do not allow.
+// A node's DOT attributes: its label (R, or D and the segment id), what it is, and its colour. A
+// rigid node has no segment attribute, as it has `null` in the tool's JSON. Every value is
+// quoted: the shortest text of an area may have an exponent (5.79e-05), which DOT's numerals do
+// not allow.
 inline std::string dot_node_attributes(const Segment_node& n) {
   const bool rigid = n.kind == Segment_kind::rigid;
   const Rgb c = segment_color(n.segment);
   char color[8];
   std::snprintf(color, sizeof color, "#%02x%02x%02x", unsigned(c.r), unsigned(c.g), unsigned(c.b));
-  return "[label=\"" + node_label(n) + "\", kind=\"" + (rigid ? "rigid" : "deformed") + "\", segment=\"" +
-         std::to_string(n.segment) + "\", triangles=\"" + std::to_string(n.triangles) + "\", area=\"" +
+  const std::string segment = rigid ? "" : "segment=\"" + std::to_string(n.segment) + "\", ";
+  return "[label=\"" + node_label(n) + "\", kind=\"" + (rigid ? "rigid" : "deformed") + "\", " + segment +
+         "triangles=\"" + std::to_string(n.triangles) + "\", area=\"" +
          shortest_text(n.area) + "\", style=filled, fillcolor=\"" + color + "\"]";
 }
 
@@ -39,8 +41,9 @@ namespace deformseg::io {
 
 /// @brief Writes a segment graph in Graphviz DOT: an undirected `graph`, node ids 0..n-1 in the
 /// graph's order, each with `label` ("R", or "D" and the segment id, the node kind as the
-/// `deformseg ged` command reads it), `kind` ("rigid" or "deformed"), `segment`, `triangles`,
-/// `area`, and a fill colour (`segment_color`).
+/// `deformseg ged` command reads it), `kind` ("rigid" or "deformed"), `segment` (the
+/// spatio-temporal segment's id; none on a rigid node), `triangles`, `area` (the node's share of
+/// the surface area), and a fill colour (`segment_color`).
 /// @param out the stream.
 /// @param graph the graph.
 /// @par Complexity O(n + e).
