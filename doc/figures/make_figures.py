@@ -264,27 +264,6 @@ def tool_png(command: Callable[[Workspace, Path], list]):
     return make
 
 
-def temporal(animation: Callable[[Workspace], Path], title: str):
-    """The tool's drawing of the frame distance matrix, its segments outlined, with frame axes."""
-    def make(ws: Workspace, out: Path):
-        source = animation(ws)
-        drawn = ws.work / f"temporal_{source.name}.png"
-        ws.run("temporal", source, "--png", drawn)
-        image = plt.imread(drawn)
-        frames = len(read_frames(source))
-        fig = plt.figure(figsize=(6.0, 5.0))
-        ax = fig.add_axes([0.1, 0.1, 0.68, 0.8])
-        ax.imshow(image, extent=(-0.5, frames - 0.5, frames - 0.5, -0.5), interpolation="nearest")
-        ax.set_xlabel("frame")
-        ax.set_ylabel("frame")
-        ax.set_title(title, fontsize=11)
-        bar = fig.colorbar(plt.cm.ScalarMappable(norm=mcolors.Normalize(0, 1), cmap="gray"),
-                           cax=fig.add_axes([0.82, 0.1, 0.03, 0.8]))
-        bar.set_label("distance between the frames' strains (1: the largest)")
-        save(fig, out)
-    return make
-
-
 def read_frames(folder: Path):
     return sorted(p for p in folder.iterdir() if p.suffix in (".obj", ".off", ".ply"))
 
@@ -353,10 +332,9 @@ class Figure:
 FIGURES = [
     Figure("strain_horse", strain_horse),
     Figure("strain_tube", strain_tube),
-    Figure("temporal_tube", temporal(lambda ws: ws.tube("three_poses"),
-                                     "a tube holding three poses: frame distances, segments in red")),
-    Figure("temporal_horse", temporal(Workspace.horse_gallop, "horse gallop (two cycles): frame distances, "
-                                                              "segments in red")),
+    Figure("temporal_tube", tool_png(lambda ws, png: ["temporal", ws.tube("three_poses"), "--png", png])),
+    Figure("temporal_horse", tool_png(lambda ws, png: ["temporal", ws.horse_gallop(), "--png", png])),
+    Figure("strain_strip_horse", tool_png(lambda ws, png: ["strain", ws.horse_gallop(), "--png", png])),
     Figure("evolving_graph_tube", evolving_graph_tube),
     Figure("alignment_path", tool_png(lambda ws, png: ["similarity", ws.tube("bend_once"), ws.tube("bend_once_late"), "--alignment", "dtw", "--png", png])),
     Figure("similarity_matrix", tool_png(lambda ws, png: ["matrix", *map(ws.tube, TUBES), "--png", png])),

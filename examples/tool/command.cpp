@@ -1,8 +1,7 @@
 #include "command.h"
 
 #include <deformseg/internal/file_io.h>
-
-#include <stb/stb_image_write.h>
+#include <deformseg/io/read_mesh.h>
 
 #include <fstream>
 #include <iostream>
@@ -90,6 +89,18 @@ Surface_mesh_animation read_input(const Input_options& given, Input_report* repo
   return animation;
 }
 
+void add_reference_mesh_option(CLI::App& command, std::string& path) {
+  command.add_option("--reference-mesh", path,
+                     "Measure strain against this mesh (.obj, .off, .ply: the animation's connectivity, in "
+                     "another pose) in place of a frame: a rest pose kept apart from the frames");
+}
+
+Surface_mesh read_reference_mesh(const std::string& path) {
+  progress("reading the reference mesh " + path);
+  const io::Triangle_soup soup = io::read_mesh(path);
+  return make_face_graph<Surface_mesh>(io::points_of(soup), soup.triangles);
+}
+
 nlohmann::json to_json(const io::Repair_report& r) {
   return {{"input_vertices", r.input_vertices},
           {"input_triangles", r.input_triangles},
@@ -131,6 +142,27 @@ void write_json(const nlohmann::json& document, const std::string& path) {
   internal::write_file_bytes(path, document.dump(2) + '\n');  // names the file and the system's reason
 }
 
+void write_outputs(const nlohmann::json& document, const std::string& json_path,
+                   const std::function<void()>& print_summary, bool standard_output_taken) {
+  if (!json_path.empty()) write_json(document, json_path);
+  if (json_path != "-" && !standard_output_taken) print_summary();
+}
+
+void add_json_option(CLI::App& command, std::string& path, const std::string& what) {
+  command.add_option("--json", path, "Write " + what + " as JSON to FILE ('-': standard output, in place of the "
+                                     "summary)")
+      ->check(output_file());
+}
+
+void print_written(const nlohmann::json& summary) {
+  const auto& files = summary["files"];
+  std::cout << "frames     " << summary["frames"] << "\nvertices   " << summary["vertices"] << "\ntriangles  "
+            << summary["triangles"] << "\nfiles      " << files.size();
+  if (!files.empty()) std::cout << ": " << files.front().get<std::string>();
+  if (files.size() > 1) std::cout << " ... " << files.back().get<std::string>();
+  std::cout << '\n';
+}
+
 CLI::Validator output_file() {
   return CLI::Validator(
       [](std::string& path) -> std::string {
@@ -145,10 +177,5 @@ CLI::Validator output_file() {
 }
 
 void progress(const std::string& line) { std::cerr << "deformseg: " << line << '\n'; }
-
-void write_png(const Image& image, const std::string& path) {
-  if (!stbi_write_png(path.c_str(), image.width, image.height, 3, image.pixels.data(), image.width * 3))
-    throw invalid_input("cannot write: " + internal::last_system_error(), {.file = path});
-}
 
 }  // namespace deformseg::tool

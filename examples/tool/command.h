@@ -2,16 +2,19 @@
 // reporting progress.
 #pragma once
 
+#include "figure.h"
+
 #include <deformseg/color.h>
 #include <deformseg/default_mesh.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/read_animation.h>
+#include <deformseg/strain.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -45,6 +48,25 @@ void add_input_options(CLI::App& command, Input_options& options);
 /// repair changed the mesh, what it changed; what it found goes to `report` when not null.
 Surface_mesh_animation read_input(const Input_options& options, Input_report* report = nullptr);
 
+/// Adds `--reference-mesh FILE` to a command that measures strain against a rest pose.
+void add_reference_mesh_option(CLI::App& command, std::string& path);
+
+/// The mesh of `--reference-mesh`: a rest pose kept apart from the frames (the cat folder's
+/// `cat-reference.obj`), with the connectivity of the animation as read.
+Surface_mesh read_reference_mesh(const std::string& path);
+
+/// The result of `compute_strain()`, a strain against the reference mesh read from `path`, its
+/// errors naming that file: a mismatch of connectivity is the user's file's.
+template <class ComputeStrain>
+auto naming_reference_mesh(const std::string& path, const ComputeStrain& compute_strain) {
+  try {
+    return compute_strain();
+  } catch (const invalid_input& error) {
+    throw invalid_input(std::string(error.what()) + " (the reference mesh must have the connectivity of the "
+                        "animation as read: `deformseg info` gives its counts)", {.file = path});
+  }
+}
+
 /// The repair report as JSON: every count, by name.
 nlohmann::json to_json(const io::Repair_report& report);
 
@@ -55,6 +77,20 @@ std::string describe(const io::Repair_report& report);
 /// Writes `document` to `path` ("-": standard output), indented.
 void write_json(const nlohmann::json& document, const std::string& path);
 
+/// The tool's one rule for what a command prints: its summary in words on standard output, and,
+/// with `--json FILE`, the JSON document written to FILE as well; `--json -` puts the JSON on
+/// standard output in the summary's place, as does any other output written to '-'
+/// (`standard_output_taken`). Files written by --csv, --png, --out, --dot or --mesh-dir do not
+/// change it.
+/// Adds `--json FILE` to a command: "Write `what` as JSON to FILE", by the rule of write_outputs.
+void add_json_option(CLI::App& command, std::string& path, const std::string& what);
+
+/// Prints what convert and synth wrote: frames, vertices, triangles and the files, first and last.
+void print_written(const nlohmann::json& summary);
+
+void write_outputs(const nlohmann::json& document, const std::string& json_path,
+                   const std::function<void()>& print_summary, bool standard_output_taken = false);
+
 /// A line on standard error, for progress.
 void progress(const std::string& line);
 
@@ -62,19 +98,10 @@ void progress(const std::string& line);
 /// before any input is read: the file's folder exists. "-" (standard output) passes.
 CLI::Validator output_file();
 
-/// An RGB image, row after row from the top, 3 bytes a pixel.
-struct Image {
-  int width = 0, height = 0;
-  std::vector<std::uint8_t> pixels;
-  Image(int w, int h) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h) * 3, 255) {}
-  void set(int x, int y, Rgb color) {
-    const std::size_t at = (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3;
-    pixels[at] = color.r, pixels[at + 1] = color.g, pixels[at + 2] = color.b;
-  }
-};
-
-/// Writes `image` as a PNG file.
-void write_png(const Image& image, const std::string& path);
+/// What a failed command line most likely meant, given its arguments (without the program's
+/// name): "unknown command 'inof': did you mean 'info'?", the same for a sub-command's long
+/// options; empty when nothing is near.
+std::string typo_hint(const CLI::App& app, const std::vector<std::string>& arguments);
 
 void add_info_command(CLI::App& app);
 void add_convert_command(CLI::App& app);

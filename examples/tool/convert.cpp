@@ -61,8 +61,7 @@ void add_convert_command(CLI::App& app) {
                       "cache NAME.pc2 with NAME.obj as its topology, NAME from the input")
       ->check(CLI::IsMember({"obj", "off", "ply", "pc2", "mdd"}))
       ->capture_default_str();
-  command->add_option("--json", o->json, "Also write what was written as JSON to FILE ('-': standard output)")
-      ->check(output_file());
+  add_json_option(*command, o->json, "what was written");
   command->callback([o] {
     Input_report report;
     const Surface_mesh_animation animation = read_input(o->input, &report);
@@ -75,7 +74,7 @@ void add_convert_command(CLI::App& app) {
                                     {"triangles", animation.num_faces()},
                                     {"repair", to_json(report.repair)},
                                     {"files", written}};
-    if (!o->json.empty()) write_json(summary, o->json);
+    write_outputs(summary, o->json, [&] { print_written(summary); });
   });
 }
 

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -145,15 +146,17 @@ std::vector<std::size_t> order_by_label(const std::vector<io::Labelled_clip>& cl
 }
 
 // The matrix with rows and columns in `order`, each value coloured (viridis) by its rank among
-// all entries, from the smallest (dark) to the largest (yellow); a white line between two motions.
+// all entries, from the smallest (dark) to the largest (yellow); the motions named along both
+// sides, a white line between two of them.
 void write_grouped_heat_map(const Eigen::MatrixXd& m, const std::vector<io::Labelled_clip>& clips,
-                            const std::vector<std::size_t>& order, const std::string& path) {
+                            const std::vector<std::size_t>& order, const Evaluate_options& o,
+                            const std::string& path) {
   progress("writing the matrix, grouped by motion, to " + path);
-  const int n = int(order.size()), cell = std::max(2, 720 / std::max(1, n));
-  std::vector<int> at(order.size(), 0);  // the pixel where position k starts: a line before a new motion
-  for (std::size_t k = 1; k < order.size(); ++k)
-    at[k] = at[k - 1] + cell + (clips[order[k]].item.motion != clips[order[k - 1]].item.motion ? 1 : 0);
-  const int size = n == 0 ? 1 : at.back() + cell;
+  const std::size_t n = order.size();
+  const int cell = cell_size(n, n, 720, 1, 40);
+  std::vector<std::string> motion_of_cell;
+  for (std::size_t k : order) motion_of_cell.push_back(clips[k].item.motion);
+  const Axis motions = grouped_axis("", motion_of_cell);
   // By rank, not by value: the values of real clips crowd near 1 and one outlier would flatten
   // a linear scale.
   std::vector<double> sorted(m.data(), m.data() + m.size());
@@ -161,14 +164,18 @@ void write_grouped_heat_map(const Eigen::MatrixXd& m, const std::vector<io::Labe
   const auto rank = [&](double v) {
     return sorted.size() < 2 ? 1.0 : double(std::ranges::lower_bound(sorted, v) - sorted.begin()) / double(sorted.size() - 1);
   };
-  Image image(size, size);
-  for (std::size_t r = 0; r < order.size(); ++r)
-    for (std::size_t c = 0; c < order.size(); ++c) {
-      const Rgb color = strain_color(rank(m(Eigen::Index(order[r]), Eigen::Index(order[c]))));
-      for (int y = 0; y < cell; ++y)
-        for (int x = 0; x < cell; ++x) image.set(at[c] + x, at[r] + y, color);
-    }
-  write_png(image, path);
+  const auto value_at_rank = [&](double fraction) {
+    return sorted.empty() ? 0.0 : sorted[std::size_t(std::lround(fraction * double(sorted.size() - 1)))];
+  };
+  Matrix_figure figure(n, n, cell, "similarity of " + std::to_string(n) + " clips by motion (" + o.policy.policy + ")",
+                       motions, motions,
+                       Color_bar{"similarity (coloured by rank)", 0, 1, [](double f) { return strain_color(f); },
+                                 value_at_rank});
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < n; ++c)
+      figure.fill_cell(r, c, strain_color(rank(m(Eigen::Index(order[r]), Eigen::Index(order[c])))));
+  figure.draw_separators(motions, motions);
+  figure.write(path);
 }
 
 nlohmann::json optional_json(const std::optional<double>& value) {
@@ -241,10 +248,11 @@ void run_evaluate(const Evaluate_options& o) {
   for (const auto& clip : read.clips) items.push_back(clip.item);
   const Retrieval_scores scores = evaluate_retrieval(m, items);
   const std::vector<std::size_t> order = order_by_label(read.clips);
-  if (!o.png.empty()) write_grouped_heat_map(m, read.clips, order, o.png);
+  if (!o.png.empty()) write_grouped_heat_map(m, read.clips, order, o, o.png);
   progress("times: reading " + fixed(read_seconds, 1) + " s, describing " + fixed(report.describe_seconds, 1) +
            " s, comparing " + fixed(matrix_seconds - report.describe_seconds, 1) + " s");
-  if (!o.json.empty()) {
+  nlohmann::json document;
+  if (!o.json.empty()) {  // the whole matrix, only when asked for
     nlohmann::json inputs = nlohmann::json::array(), rows = nlohmann::json::array();
     for (const auto& clip : read.clips)
       inputs.push_back({{"file", clip.file.string()}, {"clip", clip.item.clip}, {"motion", clip.item.motion},
@@ -253,15 +261,13 @@ void run_evaluate(const Evaluate_options& o) {
       rows.push_back(nlohmann::json::array());
       for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
     }
-    write_json({{"labels", o.labels}, {"policy", o.policy.policy}, {"alignment_policy", alignment_name(o.policy)},
+    document = {{"labels", o.labels}, {"policy", o.policy.policy}, {"alignment_policy", alignment_name(o.policy)},
                 {"fps", o.fps}, {"inputs", inputs}, {"skipped", read.skipped}, {"scores", scores_json(scores)},
                 {"figure_order", order}, {"similarity", rows},
                 {"seconds", {{"reading", read_seconds}, {"describing", report.describe_seconds},
-                             {"comparing", matrix_seconds - report.describe_seconds}}}},
-               o.json);
-    if (o.json == "-") return;
+                             {"comparing", matrix_seconds - report.describe_seconds}}}};
   }
-  print_scores(scores, items.size());
+  write_outputs(document, o.json, [&] { print_scores(scores, items.size()); });
 }
 
 }  // namespace
@@ -280,8 +286,7 @@ void add_evaluate_command(CLI::App& app) {
   command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
   command->add_flag("--skip-unreadable", o->skip_unreadable,
                     "Leave out, with a line on standard error, the clips that cannot be read, instead of stopping");
-  command->add_option("--json", o->json, "Write the labels, scores, matrix and times as JSON to FILE ('-': standard output)")
-      ->check(output_file());
+  add_json_option(*command, o->json, "the labels, scores, matrix and times");
   command->add_option("--png", o->png,
                       "Draw the matrix with rows and columns grouped by motion (distractors last, white lines "
                       "between groups), each cell coloured by the rank of its value, into FILE.png")

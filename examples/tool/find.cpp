@@ -33,13 +33,13 @@ void run_find(const Find_command_options& o) {
     for (const auto& [i, j] : m.alignment) pairs.push_back({i, j});
     found.push_back({{"first", m.first}, {"last", m.last}, {"similarity", m.value}, {"alignment", pairs}});
   }
-  if (!o.json.empty())
-    return write_json({{"query", o.query.input}, {"long", o.long_animation.input}, {"policy", "motion-signature"},
-                       {"matches", found}},
-                      o.json);
-  for (const Motion_match& m : matches)
-    std::cout << "frames " << m.first << " to " << m.last << "  similarity " << std::fixed << std::setprecision(3)
-              << m.value << '\n';
+  const nlohmann::json document = {
+      {"query", o.query.input}, {"long", o.long_animation.input}, {"policy", "motion-signature"}, {"matches", found}};
+  write_outputs(document, o.json, [&] {
+    for (const Motion_match& m : matches)
+      std::cout << "frames " << m.first << " to " << m.last << "  similarity " << std::fixed << std::setprecision(3)
+                << m.value << '\n';
+  });
 }
 
 }  // namespace
@@ -62,8 +62,7 @@ void add_find_command(CLI::App& app) {
   command->add_option("--shortest", o->shortest,
                       "The shortest window, as a fraction of the query's length (0.5: up to twice as fast)")
       ->capture_default_str();
-  command->add_option("--json", o->json, "Write the windows, their values and warping paths as JSON to FILE ('-': standard output)")
-      ->check(output_file());
+  add_json_option(*command, o->json, "the windows, their values and warping paths");
   command->callback([o] { run_find(*o); });
 }
 

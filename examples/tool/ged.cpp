@@ -24,7 +24,7 @@ struct Ged_method_options {
 struct Ged_command_options {
   std::string a, b;
   Ged_method_options method;
-  std::string json = "-";
+  std::string json;
 };
 
 struct Ged_matrix_command_options {
@@ -71,7 +71,13 @@ void run_ged(const Ged_command_options& o) {
   const nlohmann::json document = {{"a", o.a}, {"b", o.b}, {"nodes", {boost::num_vertices(a), boost::num_vertices(b)}},
                                    {"method", o.method.method}, {"distance", r.distance}, {"exact", r.exact},
                                    {"lower", r.lower}, {"upper", number_or_null(r.upper)}, {"mapping", mapping}};
-  write_json(document, o.json);
+  write_outputs(document, o.json, [&] {
+    std::cout << "distance  " << r.distance << (r.exact ? " (exact)" : "") << "\nbounds    " << r.lower << " to "
+              << r.upper << "\nmapping  ";
+    for (std::size_t i = 0; i < r.mapping.size(); ++i)
+      std::cout << ' ' << i << "->" << (r.mapping[i] < 0 ? "deleted" : std::to_string(r.mapping[i]));
+    std::cout << '\n';
+  });
 }
 
 nlohmann::json rows_of(const Eigen::MatrixXd& m) {
@@ -116,11 +122,17 @@ void run_ged_matrix(const Ged_matrix_command_options& o) {
   const ged::Ged_matrix_result r = with_policy(
       o.method, [&](const auto& policy) { return ged::ged_matrix_results(graphs, policy, ged::Unit_costs{}, options); });
   if (!o.csv.empty()) write_csv(r.distance, o.csv);
-  if (!o.csv.empty() && o.json.empty()) return;
   const nlohmann::json document = {{"files", o.files}, {"method", o.method.method}, {"exact", r.exact},
                                    {"distance", rows_of(r.distance)}, {"lower", rows_of(r.lower)},
                                    {"upper", rows_of(r.upper)}};
-  write_json(document, o.json.empty() ? "-" : o.json);
+  write_outputs(document, o.json, [&] {
+    std::cout << "graph edit distances (" << o.method.method << (r.exact ? ", exact" : "") << "):\n";
+    for (std::size_t i = 0; i < o.files.size(); ++i) {
+      std::cout << i << "  " << o.files[i] << "\n  ";
+      for (Eigen::Index j = 0; j < r.distance.cols(); ++j) std::cout << ' ' << r.distance(Eigen::Index(i), j);
+      std::cout << '\n';
+    }
+  }, o.csv == "-");
 }
 
 }  // namespace
@@ -129,13 +141,12 @@ void add_ged_command(CLI::App& app) {
   auto options = std::make_shared<Ged_command_options>();
   CLI::App* command = app.add_subcommand(
       "ged", "Graph edit distance between two labelled graphs (Graphviz DOT or GraphML, each node with a "
-             "'label' attribute; unit costs), as JSON: distance, exact, lower, upper, mapping [[i, j], ...] "
-             "(j = -1: node i deleted)");
+             "'label' attribute; unit costs): the distance, its bounds and the node mapping");
   command->add_option("a", options->a, "The first graph (.dot, .gv, .graphml)")->required();
   command->add_option("b", options->b, "The second graph")->required();
   add_method_options(*command, options->method);
-  command->add_option("--json", options->json, "Write the JSON to FILE ('-': standard output, the default)")
-      ->check(output_file());
+  add_json_option(*command, options->json,
+                  "distance, exact, lower, upper (null: none) and mapping [[i, j], ...] (j = -1: node i deleted)");
   command->callback([options] { run_ged(*options); });
 }
 
@@ -149,10 +160,7 @@ void add_ged_matrix_command(CLI::App& app) {
   command->add_option("--threads", options->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
   command->add_option("--csv", options->csv, "Write the distance matrix as CSV to FILE ('-': standard output)")
       ->check(output_file());
-  command->add_option("--json", options->json,
-                      "Write distances and bounds as JSON to FILE ('-': standard output, the default "
-                      "without --csv)")
-      ->check(output_file());
+  add_json_option(*command, options->json, "distances and bounds");
   command->callback([options] { run_ged_matrix(*options); });
 }
 

@@ -2,6 +2,8 @@
 // meshes; and what repairing its mesh changed.
 #include "command.h"
 
+#include <deformseg/io/frame_sequence.h>
+
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -11,8 +13,18 @@ namespace {
 
 struct Info_options {
   Input_options input;
+  bool files = false;
   std::string json;
 };
+
+// --files lists a frame sequence's files; a glTF file or a point cache has none.
+void check_files_option(const Info_options& o) {
+  if (!o.files) return;
+  const std::string format = io::animation_format(o.input.input);
+  if ((io::is_gltf(o.input.input) || format == "pc2" || format == "mdd"))
+    throw invalid_input("--files lists the frame files of a folder or glob; this input is one " + format + " file",
+                        {.file = o.input.input});
+}
 
 nlohmann::json bounding_box(const Surface_mesh_animation& animation) {
   Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
@@ -57,6 +69,11 @@ nlohmann::json describe(const Info_options& options, Input_report& report) {
                          {"memory_bytes", animation.memory_bytes()},
                          {"repair", to_json(report.repair)}};
   if (report.gltf) info["gltf"] = gltf_json(options.input, *report.gltf);
+  if (options.files) {
+    nlohmann::json files = nlohmann::json::array();
+    for (const auto& file : io::list_frame_files(options.input.input)) files.push_back(file.string());
+    info["files"] = files;
+  }
   return info;
 }
 
@@ -95,6 +112,11 @@ void print(const nlohmann::json& info, const io::Repair_report& repair) {
             << "repair        " << tool::describe(repair) << " (read " << repair.input_vertices
             << " vertices, " << repair.input_triangles << " triangles)\n";
   if (info.contains("gltf")) print_gltf(info["gltf"]);
+  if (info.contains("files")) {
+    std::cout << "files         frame: file, in the order read\n";
+    for (std::size_t t = 0; t < info["files"].size(); ++t)
+      std::cout << "  " << std::setw(5) << t << ": " << info["files"][t].get<std::string>() << '\n';
+  }
 }
 
 }  // namespace
@@ -105,15 +127,14 @@ void add_info_command(CLI::App& app) {
       "info", "Frames, vertices, triangles, bounding box over all frames, format, memory used and what "
               "the repair of the mesh changed; for glTF also the clips, skins and meshes");
   add_input_options(*command, options->input);
-  command->add_option("--json", options->json, "Write the answer as JSON to FILE ('-': standard output)")
-      ->check(output_file());
+  command->add_flag("--files", options->files,
+                    "List the frame files of a folder or glob in the order they are read, frame by frame");
+  add_json_option(*command, options->json, "the answer");
   command->callback([options] {
+    check_files_option(*options);
     Input_report report;
     const nlohmann::json info = describe(*options, report);
-    if (options->json.empty())
-      print(info, report.repair);
-    else
-      write_json(info, options->json);
+    write_outputs(info, options->json, [&] { print(info, report.repair); });
   });
 }
 

@@ -22,15 +22,17 @@ int main(int argc, char** argv) {
   deformseg::tool::add_matrix_command(app);
   deformseg::tool::add_evaluate_command(app);
   deformseg::tool::add_find_command(app);
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
   try {
     app.parse(argc, argv);
-  } catch (const CLI::ExtrasError& e) {
-    // The usual cause: a glob the shell expanded into one argument per file.
-    const int status = app.exit(e);
-    std::cerr << "deformseg: a glob must be quoted to name one animation, e.g. 'frames/*.obj'\n";
-    return status;
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    const int status = app.exit(e);
+    const std::string hint = deformseg::tool::typo_hint(app, arguments);
+    if (!hint.empty())
+      std::cerr << "deformseg: " << hint << '\n';
+    else if (dynamic_cast<const CLI::ExtrasError*>(&e))  // often a glob the shell expanded, a file an argument
+      std::cerr << "deformseg: a glob must be quoted to name one animation, e.g. 'frames/*.obj'\n";
+    return status;
   } catch (const std::exception& e) {
     std::cerr << "deformseg: error: " << e.what() << '\n';
     return 1;

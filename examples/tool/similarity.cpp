@@ -9,7 +9,7 @@
 #include <deformseg/strain_colors.h>
 
 #include <algorithm>
-#include <array>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -60,21 +60,26 @@ void require_motion(const Surface_mesh_animation& animation, const std::string& 
                         {.file = input});
 }
 
-// The frame grid of A (rows) and B (columns), scaled up to at least 400 pixels, grey lines every
-// 10 frames, the aligned pairs in red.
-void write_alignment_figure(const Similarity& s, std::size_t frames_a, std::size_t frames_b, const std::string& path) {
+// The frame grid of A (rows) and B (columns), about 400 pixels on its longer side, grey lines at
+// the frame ticks, the aligned pairs in red, the value in the title.
+void write_alignment_figure(const Similarity& s, const Similarity_command_options& o, std::size_t frames_a,
+                            std::size_t frames_b, const std::string& path) {
   progress("writing the alignment path to " + path);
-  const std::size_t longer = std::max<std::size_t>(1, std::max(frames_a, frames_b));
-  const int scale = std::max(1, int((400 + longer - 1) / longer));
-  Image image(int(frames_b) * scale, int(frames_a) * scale);
-  const auto on_grid_line = [scale](int pixel) { return pixel % (10 * scale) == 0; };
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x)
-      if (on_grid_line(x) || on_grid_line(y)) image.set(x, y, {210, 210, 210});
-  for (const auto& [i, j] : s.alignment)
-    for (int y = 0; y < scale; ++y)
-      for (int x = 0; x < scale; ++x) image.set(int(j) * scale + x, int(i) * scale + y, {220, 30, 30});
-  write_png(image, path);
+  const int cell = cell_size(frames_a, frames_b, 400, 1, 40);
+  Axis rows = frame_axis("frame of A: " + o.a.input, frames_a, cell);
+  Axis columns = frame_axis("frame of B: " + o.b.input, frames_b, cell);
+  for (Axis* axis : {&rows, &columns})
+    for (std::size_t k = 1; k < axis->labels.size(); ++k) axis->separators.push_back(std::size_t(axis->labels[k].first));
+  char value[32];
+  std::snprintf(value, sizeof value, "%.3f", s.value);
+  Matrix_figure figure(frames_a, frames_b, cell,
+                       "similarity " + std::string(value) + " (" + o.policy.policy + ", " + alignment_name(o.policy) + ")",
+                       rows, columns, std::nullopt);
+  for (std::size_t i = 0; i < frames_a; ++i)
+    for (std::size_t j = 0; j < frames_b; ++j) figure.fill_cell(i, j, {245, 245, 245});
+  figure.draw_separators(rows, columns, {205, 205, 205});
+  for (const auto& [i, j] : s.alignment) figure.fill_cell(i, j, {220, 30, 30});
+  figure.write(path);
 }
 
 void run_similarity(const Similarity_command_options& o) {
@@ -92,7 +97,7 @@ void run_similarity(const Similarity_command_options& o) {
   const Similarity_with_significance compared = with_policy(
       o.policy, [&](const auto& policy) { return compare_with_significance(policy, a, b, copies, o.seed); });
   const Similarity& s = compared.similarity;
-  if (!o.png.empty()) write_alignment_figure(s, a.num_frames(), b.num_frames(), o.png);
+  if (!o.png.empty()) write_alignment_figure(s, o, a.num_frames(), b.num_frames(), o.png);
   nlohmann::json pairs = nlohmann::json::array();
   for (const auto& [i, j] : s.alignment) pairs.push_back({i, j});
   const nlohmann::json document = {{"a", o.a.input}, {"b", o.b.input}, {"policy", o.policy.policy},
@@ -101,11 +106,12 @@ void run_similarity(const Similarity_command_options& o) {
                                    {"alignment", pairs}, {"compared", s.compared},
                                    {"z_score", compared.z_score ? nlohmann::json(*compared.z_score) : nlohmann::json()},
                                    {"shuffled_copies", compared.z_score ? copies : 0}};
-  if (!o.json.empty()) return write_json(document, o.json);
-  std::cout << "similarity  " << s.value << "\nscore       " << s.score << "\naligned     " << s.alignment.size()
-            << " frame pairs\ncompared    " << s.compared << '\n';
-  if (compared.z_score)
-    std::cout << "z-score     " << *compared.z_score << " (against " << copies << " frame-shuffled copies of B)\n";
+  write_outputs(document, o.json, [&] {
+    std::cout << "similarity  " << s.value << "\nscore       " << s.score << "\naligned     " << s.alignment.size()
+              << " frame pairs\ncompared    " << s.compared << '\n';
+    if (compared.z_score)
+      std::cout << "z-score     " << *compared.z_score << " (against " << copies << " frame-shuffled copies of B)\n";
+  });
 }
 
 // ---- deformseg matrix INPUT... ---------------------------------------------------------------
@@ -121,39 +127,20 @@ struct Matrix_command_options {
   std::string png;
 };
 
-// Digits 0-9 as 3 x 5 bitmaps, a row of 3 bits each, for the heat map's labels.
-constexpr std::array<std::array<std::uint8_t, 5>, 10> digit_rows{{{7, 5, 5, 5, 7}, {2, 6, 2, 2, 7}, {7, 1, 7, 4, 7},
-                                                                   {7, 1, 7, 1, 7}, {5, 5, 7, 1, 1}, {7, 4, 7, 1, 7},
-                                                                   {7, 4, 7, 5, 7}, {7, 1, 1, 1, 1}, {7, 5, 7, 5, 7},
-                                                                   {7, 5, 7, 1, 7}}};
-
-void draw_number(Image& image, std::size_t number, int x, int y, int pixel) {
-  const std::string text = std::to_string(number);
-  for (std::size_t c = 0; c < text.size(); ++c)
-    for (int row = 0; row < 5; ++row)
-      for (int col = 0; col < 3; ++col)
-        if (digit_rows[std::size_t(text[c] - '0')][std::size_t(row)] & (4 >> col))
-          for (int dy = 0; dy < pixel; ++dy)
-            for (int dx = 0; dx < pixel; ++dx)
-              image.set(x + (int(c) * 4 + col) * pixel + dx, y + row * pixel + dy, {0, 0, 0});
-}
-
-// Cells coloured by viridis from the smallest value (dark) to 1 (yellow), the animations'
-// indices along the top and the left.
-void write_heat_map(const Eigen::MatrixXd& m, const std::string& path) {
+// Cells coloured by viridis from the smallest value (dark) to 1 (yellow), the animations' names
+// along the top and the left.
+void write_heat_map(const Eigen::MatrixXd& m, const Matrix_command_options& o, const std::string& path) {
   progress("writing the heat map to " + path);
-  const int n = int(m.rows()), cell = std::max(12, 480 / std::max(1, n)), margin = 40;
-  const double low = m.minCoeff(), span = std::max(1.0 - low, 1e-12);
-  Image image(margin + n * cell, margin + n * cell);
-  for (int i = 0; i < n; ++i) {
-    draw_number(image, std::size_t(i), margin + i * cell + 2, 10, 3);
-    draw_number(image, std::size_t(i), 4, margin + i * cell + 2, 3);
-    for (int j = 0; j < n; ++j)
-      for (int y = 1; y < cell; ++y)
-        for (int x = 1; x < cell; ++x)
-          image.set(margin + j * cell + x, margin + i * cell + y, strain_color((m(i, j) - low) / span));
-  }
-  write_png(image, path);
+  const auto n = std::size_t(m.rows());
+  const int cell = cell_size(n, n, 480, 4, 40);
+  const double low = std::min(m.minCoeff(), 1.0 - 1e-12);
+  Matrix_figure figure(n, n, cell, "similarity (" + o.policy.policy + ", " + alignment_name(o.policy) + ")",
+                       named_axis("", o.inputs), named_axis("", o.inputs),
+                       Color_bar{"similarity", low, 1.0, [](double f) { return strain_color(f); }});
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      figure.fill_cell(i, j, strain_color((m(Eigen::Index(i), Eigen::Index(j)) - low) / (1.0 - low)));
+  figure.write(path);
 }
 
 void write_csv(const Eigen::MatrixXd& m, const std::vector<std::string>& names, const std::string& path) {
@@ -185,7 +172,7 @@ void run_matrix(const Matrix_command_options& o) {
   progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
   const Eigen::MatrixXd m = with_policy(o.policy, [&](const auto& policy) { return similarity_matrix(animations, policy); });
   if (!o.csv.empty()) write_csv(m, o.inputs, o.csv);
-  if (!o.png.empty()) write_heat_map(m, o.png);
+  if (!o.png.empty()) write_heat_map(m, o, o.png);
   nlohmann::json rows = nlohmann::json::array();
   for (Eigen::Index i = 0; i < m.rows(); ++i) {
     rows.push_back(nlohmann::json::array());
@@ -193,12 +180,13 @@ void run_matrix(const Matrix_command_options& o) {
   }
   const nlohmann::json document = {{"inputs", o.inputs}, {"policy", o.policy.policy},
                                    {"alignment_policy", alignment_name(o.policy)}, {"similarity", rows}};
-  if (!o.json.empty()) return write_json(document, o.json);
-  for (std::size_t i = 0; i < o.inputs.size(); ++i) {
-    std::cout << i << "  " << o.inputs[i] << "\n  ";
-    for (Eigen::Index j = 0; j < m.cols(); ++j) std::cout << ' ' << m(Eigen::Index(i), j);
-    std::cout << '\n';
-  }
+  write_outputs(document, o.json, [&] {
+    for (std::size_t i = 0; i < o.inputs.size(); ++i) {
+      std::cout << i << "  " << o.inputs[i] << "\n  ";
+      for (Eigen::Index j = 0; j < m.cols(); ++j) std::cout << ' ' << m(Eigen::Index(i), j);
+      std::cout << '\n';
+    }
+  });
 }
 
 }  // namespace
@@ -222,8 +210,7 @@ void add_similarity_command(CLI::App& app) {
                       "The z-score of the value against this many copies of B with frames shuffled (0: none). "
                       "Default: 20, none for the graph policy");
   command->add_option("--seed", o->seed, "The seed of the shuffles")->capture_default_str();
-  command->add_option("--json", o->json, "Write the result as JSON to FILE ('-': standard output)")
-      ->check(output_file());
+  add_json_option(*command, o->json, "the result");
   command->add_option("--png", o->png, "Draw the alignment path over the frame grid (A down, B across) into FILE.png")
       ->check(output_file());
   command->callback([o] {
@@ -246,8 +233,7 @@ void add_matrix_command(CLI::App& app) {
   add_policy_options(*command, o->policy);
   command->add_option("--csv", o->csv, "Write the matrix as CSV, with the inputs as row and column names, to FILE")
       ->check(output_file());
-  command->add_option("--json", o->json, "Write the matrix as JSON to FILE ('-': standard output)")
-      ->check(output_file());
+  add_json_option(*command, o->json, "the matrix");
   command->add_option("--png", o->png,
                       "Draw a heat map (viridis, from the smallest value to 1), inputs numbered as listed, into FILE.png")
       ->check(output_file());

@@ -10,13 +10,15 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace deformseg::tool {
 namespace {
 
 struct Spatiotemporal_command_options {
   Input_options input;
-  std::string reference = "previous";
+  std::optional<std::string> reference;  // none given: previous, or rest with a reference mesh
+  std::string reference_mesh;
   Spatiotemporal_options segments;
   std::string json;
   std::string dot;
@@ -57,12 +59,22 @@ void print(const Evolving_graph& graph) {
 }
 
 void run(const Spatiotemporal_command_options& o) {
+  if (!o.reference_mesh.empty() && o.reference == "previous")
+    throw invalid_input("--reference-mesh is a rest pose: it excludes --reference previous");
   const Surface_mesh_animation animation = read_input(o.input);
   Spatiotemporal_options options = o.segments;
-  options.reference = o.reference == "rest" ? Strain_reference::rest_pose : Strain_reference::previous_pose;
+  options.reference = o.reference.value_or(o.reference_mesh.empty() ? "previous" : "rest") == "rest"
+                          ? Strain_reference::rest_pose
+                          : Strain_reference::previous_pose;
+  const std::optional<Surface_mesh> reference_mesh =
+      o.reference_mesh.empty() ? std::nullopt : std::optional(read_reference_mesh(o.reference_mesh));
   progress("segmenting " + std::to_string(animation.num_faces()) + " triangles x " +
            std::to_string(animation.num_frames()) + " frames");
-  const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(animation, options);
+  const Spatiotemporal_segmentation segmentation =
+      reference_mesh ? spatiotemporal_segmentation(naming_reference_mesh(o.reference_mesh, [&] {
+                         return compute_strain(animation, *reference_mesh, {.threads = o.input.threads});
+                       }), animation.triangles(), options)
+                     : spatiotemporal_segmentation(animation, options);
   const std::vector<double> areas = face_areas(animation, 0);
   const Frame_segments frames(segmentation, animation.triangles(), areas);
   const Evolving_graph graph = evolving_graph(frames);
@@ -75,10 +87,7 @@ void run(const Spatiotemporal_command_options& o) {
     io::write_sequence(animation, o.mesh_dir,
                        {.face_colors = [&](std::size_t t) { return segment_face_colors(frames, t); }});
   }
-  if (o.json.empty())
-    print(graph);
-  else
-    write_json(document_of(graph), o.json);
+  write_outputs(document_of(graph), o.json, [&] { print(graph); });
 }
 
 }  // namespace
@@ -89,8 +98,10 @@ void add_spatiotemporal_command(CLI::App& app) {
       "spatiotemporal", "Spatio-temporal segments and the evolving graph of their key frames: JSON, DOT, coloured meshes");
   add_input_options(*command, options->input);
   command->add_option("--reference", options->reference,
-                      "previous: deformed while it moves (default); rest: deformed while away from frame 0")
+                      "previous: deformed while it moves (default); rest: deformed while away from frame 0, or "
+                      "from --reference-mesh (the default with it)")
       ->check(CLI::IsMember({"previous", "rest"}));
+  add_reference_mesh_option(*command, options->reference_mesh);
   command->add_option("--threshold", options->segments.threshold,
                       "A cell is deformed above this normalised strain, in [0, 1]. Default: 0.5")
       ->check(CLI::Range(0.0, 1.0));
@@ -101,8 +112,7 @@ void add_spatiotemporal_command(CLI::App& app) {
   command->add_option("--max-island", options->segments.max_island,
                       "Rigid islands of at most this many triangles inside one segment join it (0: none). "
                       "Default: 30");
-  command->add_option("--json", options->json, "Write the evolving graph as JSON to FILE ('-': standard output)")
-      ->check(output_file());
+  add_json_option(*command, options->json, "the evolving graph");
   command->add_option("--dot", options->dot, "Write each key frame's graph as a Graphviz DOT file into DIR");
   command->add_option("--mesh-dir", options->mesh_dir,
                       "Write every frame as a PLY mesh coloured by segment (rigid: grey) into DIR");

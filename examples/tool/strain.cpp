@@ -1,6 +1,7 @@
 // deformseg strain INPUT: the per-triangle strain of every frame, as a field file, coloured
 // meshes and a JSON summary.
 #include "command.h"
+#include "render.h"
 
 #include <deformseg/io/write_sequence.h>
 #include <deformseg/io/write_strain_field.h>
@@ -8,6 +9,7 @@
 #include <deformseg/strain_colors.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -24,32 +26,43 @@ struct Strain_command_options {
   std::string measure = "max-principal";
   std::string normalize = "gaussian";
   std::optional<double> sigma;
+  std::string reference_mesh;
   std::string out;
   std::string mesh_dir;
+  std::string png;
+  std::vector<std::size_t> png_frames;  // none given: up to 6, evenly spaced
   std::string json;
 };
 
+// The strain against a frame, or against the reference mesh when there is one.
+template <StrainMeasure Measure, StrainNormalization Normalization>
+Strain_field<float> field_with(const Surface_mesh_animation& animation, const Surface_mesh* reference_mesh,
+                               const Strain_command_options& o, const Strain_options<Measure, Normalization>& options) {
+  if (!reference_mesh) return compute_strain(animation, options);
+  return naming_reference_mesh(o.reference_mesh, [&] { return compute_strain(animation, *reference_mesh, options); });
+}
+
 // The strain field the options ask for, with a measure and a normalisation chosen at run time.
 template <StrainMeasure Measure>
-Strain_field<float> field_with(const Surface_mesh_animation& animation, const Strain_command_options& o,
-                               Measure measure) {
+Strain_field<float> field_with(const Surface_mesh_animation& animation, const Surface_mesh* reference_mesh,
+                               const Strain_command_options& o, Measure measure) {
   const auto reference = o.reference == "rest" ? Strain_reference::rest_pose : Strain_reference::previous_pose;
   const int threads = o.input.threads;
   if (o.normalize == "none")
-    return compute_strain(animation, Strain_options{.reference = reference, .rest_frame = o.rest_frame,
-                                                    .measure = measure, .normalization = No_normalization{},
-                                                    .threads = threads});
-  return compute_strain(animation, Strain_options{.reference = reference, .rest_frame = o.rest_frame,
-                                                  .measure = measure,
-                                                  .normalization = Gaussian_normalization{.sigma = o.sigma},
-                                                  .threads = threads});
+    return field_with(animation, reference_mesh, o,
+                      Strain_options{.reference = reference, .rest_frame = o.rest_frame, .measure = measure,
+                                     .normalization = No_normalization{}, .threads = threads});
+  return field_with(animation, reference_mesh, o,
+                    Strain_options{.reference = reference, .rest_frame = o.rest_frame, .measure = measure,
+                                   .normalization = Gaussian_normalization{.sigma = o.sigma}, .threads = threads});
 }
 
-Strain_field<float> field_of(const Surface_mesh_animation& animation, const Strain_command_options& o) {
-  if (o.measure == "green-lagrange") return field_with(animation, o, Green_lagrange_strain{});
-  if (o.measure == "frobenius") return field_with(animation, o, Frobenius_strain{});
-  if (o.measure == "area-ratio") return field_with(animation, o, Area_ratio_strain{});
-  return field_with(animation, o, Max_principal_strain{});
+Strain_field<float> field_of(const Surface_mesh_animation& animation, const Surface_mesh* reference_mesh,
+                             const Strain_command_options& o) {
+  if (o.measure == "green-lagrange") return field_with(animation, reference_mesh, o, Green_lagrange_strain{});
+  if (o.measure == "frobenius") return field_with(animation, reference_mesh, o, Frobenius_strain{});
+  if (o.measure == "area-ratio") return field_with(animation, reference_mesh, o, Area_ratio_strain{});
+  return field_with(animation, reference_mesh, o, Max_principal_strain{});
 }
 
 // The colours of frame t: of the normalised strain, or, for a raw field, of the strain normalised
@@ -69,6 +82,50 @@ void write_meshes(const Surface_mesh_animation& animation, const Strain_field<fl
                      {.face_colors = [&](std::size_t t) {
                        return strain_colors(std::span<const float>(values).subspan(t * faces, faces));
                      }});
+}
+
+// The frames --png draws: those given, each checked, or up to 6 from the first to the last.
+std::vector<std::size_t> frames_to_draw(const Strain_command_options& o, std::size_t frames) {
+  for (std::size_t t : o.png_frames)
+    if (t >= frames)
+      throw invalid_input("--png-frames: frame " + std::to_string(t) + " is past the last, " +
+                          std::to_string(frames - 1), {.file = o.input.input});
+  if (!o.png_frames.empty()) return o.png_frames;
+  const std::size_t count = std::min<std::size_t>(6, frames);
+  std::vector<std::size_t> chosen;
+  for (std::size_t k = 0; k < count; ++k)
+    chosen.push_back(count == 1 ? 0 : std::size_t(std::lround(double(k) * double(frames - 1) / double(count - 1))));
+  return chosen;
+}
+
+// A strip of frames, each seen from the same side and coloured by normalised strain (viridis),
+// named by its frame, with the colour bar on the right.
+void write_picture(const Surface_mesh_animation& animation, const Strain_field<float>& field,
+                   const std::vector<std::size_t>& frames, const Strain_command_options& o) {
+  progress("drawing " + std::to_string(frames.size()) + " frames coloured by strain into " + o.png);
+  const std::vector<float> values = colour_values(field);
+  const View view = view_of(animation);
+  constexpr int panel = 240, gap = 12, padding = 8;
+  std::vector<Image> pictures;
+  for (std::size_t t : frames) {
+    const auto strains = std::span<const float>(values).subspan(t * field.num_faces(), field.num_faces());
+    pictures.push_back(render_frame(animation, t, view, strain_colors(strains), panel));
+  }
+  const Color_bar bar{field.sigma() ? "normalised strain" : "strain, normalised for the picture", 0, 1,
+                      [](double f) { return strain_color(f); }};
+  const int title_height = text_height(2) + gap, label_height = text_height() + 4;
+  const int height = pictures.front().height;
+  Image image(padding + int(frames.size()) * (pictures.front().width + gap) + padding + color_bar_width(bar) + padding,
+              padding + title_height + label_height + height + padding);
+  draw_text(image, o.measure + " strain of " + o.input.input, padding, padding, 2);
+  int x = padding;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    draw_text(image, "frame " + std::to_string(frames[k]), x, padding + title_height);
+    image.paste(pictures[k], x, padding + title_height + label_height);
+    x += pictures[k].width + gap;
+  }
+  draw_color_bar(image, x + padding, padding + title_height + label_height, height, bar);
+  write_png(image, o.png);
 }
 
 void write_field(const Strain_field<float>& field, const std::string& path) {
@@ -97,7 +154,8 @@ nlohmann::json summary(const Strain_command_options& o, const Strain_field<float
                              {"sigma", nullptr},
                              {"degenerate_count", field.degenerate_count()},
                              {"per_frame", frames}};
-  if (o.reference == "rest") document["rest_frame"] = o.rest_frame;
+  if (o.reference == "rest" && o.reference_mesh.empty()) document["rest_frame"] = o.rest_frame;
+  if (!o.reference_mesh.empty()) document["reference_mesh"] = o.reference_mesh;
   if (field.sigma()) document["sigma"] = *field.sigma();
   return document;
 }
@@ -113,17 +171,22 @@ void print(const nlohmann::json& s) {
 void run(const Strain_command_options& o) {
   if (o.sigma && o.normalize == "none") throw invalid_input("--sigma asks for --normalize gaussian");
   if (o.reference == "previous" && o.rest_frame != 0) throw invalid_input("--rest-frame asks for --reference rest");
+  if (!o.png_frames.empty() && o.png.empty()) throw invalid_input("--png-frames asks for --png");
+  if (!o.reference_mesh.empty() && (o.reference == "previous" || o.rest_frame != 0))
+    throw invalid_input("--reference-mesh takes the place of the rest frame: it excludes --reference previous and "
+                        "--rest-frame");
   const Surface_mesh_animation animation = read_input(o.input);
+  const std::vector<std::size_t> drawn = o.png.empty() ? std::vector<std::size_t>{} : frames_to_draw(o, animation.num_frames());
+  std::optional<Surface_mesh> reference_mesh;
+  if (!o.reference_mesh.empty()) reference_mesh = read_reference_mesh(o.reference_mesh);
   progress("computing the strain of " + std::to_string(animation.num_faces()) + " triangles x " +
            std::to_string(animation.num_frames()) + " frames");
-  const Strain_field<float> field = field_of(animation, o);
+  const Strain_field<float> field = field_of(animation, reference_mesh ? &*reference_mesh : nullptr, o);
   if (!o.out.empty()) write_field(field, o.out);
   if (!o.mesh_dir.empty()) write_meshes(animation, field, o.mesh_dir);
+  if (!o.png.empty()) write_picture(animation, field, drawn, o);
   const nlohmann::json document = summary(o, field);
-  if (o.json.empty())
-    print(document);
-  else
-    write_json(document, o.json);
+  write_outputs(document, o.json, [&] { print(document); });
 }
 
 }  // namespace
@@ -137,6 +200,7 @@ void add_strain_command(CLI::App& app) {
                                                          "against the frame before (the motion). Default: rest")
       ->check(CLI::IsMember({"rest", "previous"}));
   command->add_option("--rest-frame", options->rest_frame, "The rest frame, with --reference rest. Default: 0");
+  add_reference_mesh_option(*command, options->reference_mesh);
   command->add_option("--measure", options->measure,
                       "max-principal: max |l - 1| over the principal stretches l (default); green-lagrange: "
                       "max |l^2 - 1| / 2; frobenius: |U - I|; area-ratio: |l1 l2 - 1|")
@@ -152,8 +216,13 @@ void add_strain_command(CLI::App& app) {
   command->add_option("--mesh-dir", options->mesh_dir,
                       "Write every frame as a PLY mesh coloured by normalised strain (viridis: dark purple "
                       "0, yellow 1) into DIR");
-  command->add_option("--json", options->json, "Write the summary as JSON to FILE ('-': standard output)")
+  command->add_option("--png", options->png,
+                      "Draw frames coloured by normalised strain (viridis), side by side, seen along the axis in "
+                      "which the motion is thinnest, into FILE.png")
       ->check(output_file());
+  command->add_option("--png-frames", options->png_frames, "The frames --png draws. Default: 6, evenly spaced")
+      ->delimiter(',');
+  add_json_option(*command, options->json, "the summary");
   command->callback([options] { run(*options); });
 }
 

@@ -137,14 +137,13 @@ void add_synth_command(CLI::App& app) {
       ->delimiter(',')->expected(4);
   command->add_option("--translate", o->translate, "Translation of every frame: X,Y,Z")
       ->delimiter(',')->expected(3);
-  command->add_option("--json", o->json, "Also write the ground truth to FILE ('-': standard output)")
-      ->check(output_file());
+  add_json_option(*command, o->json, "the ground truth");
   command->callback([o] {
     const auto tube = make_bending_tube(specification(*o));
     progress("writing " + std::to_string(tube.animation.num_frames()) + " frames to " + o->out);
     const nlohmann::json truth = ground_truth(tube, write(tube, *o));
     write_json(truth, (std::filesystem::path(o->out) / "ground_truth.json").string());
-    if (!o->json.empty()) write_json(truth, o->json);
+    write_outputs(truth, o->json, [&] { print_written(truth); });
   });
 }
 

@@ -5,7 +5,9 @@
 #include <deformseg/temporal_segmentation.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -15,6 +17,7 @@ namespace {
 struct Temporal_command_options {
   Input_options input;
   std::size_t rest_frame = 0;
+  std::string reference_mesh;
   std::string method = "optimal";
   std::string metric = "euclidean";
   std::optional<double> threshold;
@@ -68,30 +71,26 @@ void write_matrix(const Eigen::MatrixXf& d, const std::string& path) {
   file.close();
 }
 
-// The matrix in grey (black: distance 0, white: the largest), scaled up to at least 400 pixels,
-// with each segment's diagonal block outlined in red, as the thesis draws them.
-void write_figure(const Eigen::MatrixXf& d, const Temporal_segmentation& s, const std::string& path) {
+// The matrix in grey (black: distance 0, white: the largest), about 400 pixels wide, with each
+// segment's diagonal block outlined in red, as the thesis draws them; frames along both axes.
+void write_figure(const Eigen::MatrixXf& d, const Temporal_segmentation& s, const std::string& input,
+                  const std::string& path) {
   progress("writing the figure to " + path);
-  const int frames = int(d.rows());
-  const int scale = std::max(1, (400 + frames - 1) / frames);
-  Image image(frames * scale, frames * scale);
-  const float largest = std::max(d.maxCoeff(), std::numeric_limits<float>::min());
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      const auto grey = std::uint8_t(std::lround(255.0f * d(y / scale, x / scale) / largest));
-      image.set(x, y, {grey, grey, grey});
-    }
-  const Rgb red{230, 30, 30};
-  const int thickness = std::max(1, scale / 3);
-  for (const auto& segment : s.segments) {
-    const int low = int(segment.first) * scale, high = int(segment.last + 1) * scale - 1;
-    for (int k = low; k <= high; ++k)
-      for (int w = 0; w < std::min(thickness, high - low + 1); ++w) {
-        image.set(k, low + w, red), image.set(k, high - w, red);
-        image.set(low + w, k, red), image.set(high - w, k, red);
-      }
-  }
-  write_png(image, path);
+  const auto frames = std::size_t(d.rows());
+  const int cell = cell_size(frames, frames, 400, 1, 40);
+  const double largest = std::max(double(d.maxCoeff()), double(std::numeric_limits<float>::min()));
+  const auto grey = [](double fraction) {
+    const auto level = std::uint8_t(std::lround(255 * std::clamp(fraction, 0.0, 1.0)));
+    return Rgb{level, level, level};
+  };
+  Matrix_figure figure(frames, frames, cell,
+                       std::to_string(s.segments.size()) + " segments of " + input, frame_axis("frame", frames, cell),
+                       frame_axis("frame", frames, cell), Color_bar{"frame distance", 0, largest, grey});
+  for (std::size_t i = 0; i < frames; ++i)
+    for (std::size_t j = 0; j < frames; ++j) figure.fill_cell(i, j, grey(d(Eigen::Index(i), Eigen::Index(j)) / largest));
+  for (const auto& segment : s.segments)
+    figure.outline_diagonal_block(segment.first, segment.last, {230, 30, 30}, std::max(1, cell / 3));
+  figure.write(path);
 }
 
 nlohmann::json document(const Temporal_command_options& o, const Temporal_segmentation& s,
@@ -108,9 +107,15 @@ nlohmann::json document(const Temporal_command_options& o, const Temporal_segmen
 
 void run(const Temporal_command_options& o) {
   if (o.segments && o.method != "optimal") throw invalid_input("--segments asks for --method optimal");
+  if (!o.reference_mesh.empty() && o.rest_frame != 0)
+    throw invalid_input("--reference-mesh takes the place of the rest frame: it excludes --rest-frame");
   const Surface_mesh_animation animation = read_input(o.input);
+  const std::optional<Surface_mesh> reference_mesh =
+      o.reference_mesh.empty() ? std::nullopt : std::optional(read_reference_mesh(o.reference_mesh));
   progress("computing the strain and the frame distances of " + std::to_string(animation.num_frames()) + " frames");
-  const auto field = compute_strain(animation, {.rest_frame = o.rest_frame, .threads = o.input.threads});
+  const auto field = reference_mesh ? naming_reference_mesh(o.reference_mesh, [&] {
+    return compute_strain(animation, *reference_mesh, {.threads = o.input.threads});
+  }) : compute_strain(animation, {.rest_frame = o.rest_frame, .threads = o.input.threads});
   const Frame_metric metric = o.metric == "l1" ? Frame_metric::l1
                               : o.metric == "cosine" ? Frame_metric::cosine
                                                      : Frame_metric::euclidean;
@@ -118,12 +123,13 @@ void run(const Temporal_command_options& o) {
   Segmentation_threshold used;
   const Temporal_segmentation result = segment(o, Segment_cost(distances), used);
   if (!o.matrix.empty()) write_matrix(distances, o.matrix);
-  if (!o.png.empty()) write_figure(distances, result, o.png);
+  if (!o.png.empty()) write_figure(distances, result, o.input.input, o.png);
   const nlohmann::json json = document(o, result, used);
-  if (!o.json.empty()) return write_json(json, o.json);
-  std::cout << result.frames << " frames, " << result.segments.size() << " segments (first last cost):\n";
-  for (const auto& segment : result.segments)
-    std::cout << segment.first << ' ' << segment.last << ' ' << segment.cost << '\n';
+  write_outputs(json, o.json, [&] {
+    std::cout << result.frames << " frames, " << result.segments.size() << " segments (first last cost):\n";
+    for (const auto& segment : result.segments)
+      std::cout << segment.first << ' ' << segment.last << ' ' << segment.cost << '\n';
+  });
 }
 
 }  // namespace
@@ -135,6 +141,7 @@ void add_temporal_command(CLI::App& app) {
                                      "normalised rest-pose strain");
   add_input_options(*command, options->input);
   command->add_option("--rest-frame", options->rest_frame, "The rest pose of the strain. Default: 0");
+  add_reference_mesh_option(*command, options->reference_mesh);
   command->add_option("--method", options->method,
                       "optimal: least length-weighted cost, with a penalty per segment or --segments "
                       "(default); binary-split; greedy: the thesis' Algorithm 4-1; barbic: PCA change "
@@ -152,8 +159,7 @@ void add_temporal_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   command->add_option("--min-length", options->min_length, "Fewest frames of a segment (optimal, binary-split)")
       ->check(CLI::PositiveNumber);
-  command->add_option("--json", options->json, "Write the segments as JSON to FILE ('-': standard output)")
-      ->check(output_file());
+  add_json_option(*command, options->json, "the segments");
   command->add_option("--png", options->png, "Draw the frame distance matrix and the segments into FILE.png")
       ->check(output_file());
   command->add_option("--matrix", options->matrix, "Write the frame distance matrix as CSV to FILE")
