@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace deformseg::tool {
 
@@ -36,6 +37,14 @@ std::string printable(const std::string& text) {
 }
 
 }  // namespace
+
+std::string short_name(const std::string& input) {
+  std::filesystem::path path(input);
+  if (!path.has_filename()) path = path.parent_path();  // "folder/"
+  const std::string name = path.filename().string();
+  if (name.find_first_of("*?") == std::string::npos || !path.has_parent_path()) return name;
+  return (path.parent_path().filename() / name).string();
+}
 
 int text_width(const std::string& text, int scale) {
   std::string glyphs = printable(text);

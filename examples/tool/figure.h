@@ -43,6 +43,10 @@ constexpr Rgb black{0, 0, 0};
 /// How text runs: left to right, or turned a quarter to read from the bottom up.
 enum class Text_direction { across, up };
 
+/// How a figure names an input: its last path component (`horse-gallop` for
+/// `/data/horse-gallop/`), with its folder when that is a pattern (`walk/frame_*.obj`).
+std::string short_name(const std::string& input);
+
 /// The width in pixels of `text` drawn at `scale` (its length along the direction of writing).
 int text_width(const std::string& text, int scale = 1);
 /// The height in pixels of one line of text drawn at `scale`.

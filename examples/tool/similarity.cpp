@@ -66,8 +66,8 @@ void write_alignment_figure(const Similarity& s, const Similarity_command_option
                             std::size_t frames_b, const std::string& path) {
   progress("writing the alignment path to " + path);
   const int cell = cell_size(frames_a, frames_b, 400, 1, 40);
-  Axis rows = frame_axis("frame of A: " + o.a.input, frames_a, cell);
-  Axis columns = frame_axis("frame of B: " + o.b.input, frames_b, cell);
+  Axis rows = frame_axis("frame of A: " + short_name(o.a.input), frames_a, cell);
+  Axis columns = frame_axis("frame of B: " + short_name(o.b.input), frames_b, cell);
   for (Axis* axis : {&rows, &columns})
     for (std::size_t k = 1; k < axis->labels.size(); ++k) axis->separators.push_back(std::size_t(axis->labels[k].first));
   char value[32];
@@ -134,8 +134,10 @@ void write_heat_map(const Eigen::MatrixXd& m, const Matrix_command_options& o, c
   const auto n = std::size_t(m.rows());
   const int cell = cell_size(n, n, 480, 4, 40);
   const double low = std::min(m.minCoeff(), 1.0 - 1e-12);
+  std::vector<std::string> names;
+  for (const std::string& input : o.inputs) names.push_back(short_name(input));
   Matrix_figure figure(n, n, cell, "similarity (" + o.policy.policy + ", " + alignment_name(o.policy) + ")",
-                       named_axis("", o.inputs), named_axis("", o.inputs),
+                       named_axis("", names), named_axis("", names),
                        Color_bar{"similarity", low, 1.0, [](double f) { return strain_color(f); }});
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j)
@@ -235,7 +237,7 @@ void add_matrix_command(CLI::App& app) {
       ->check(output_file());
   add_json_option(*command, o->json, "the matrix");
   command->add_option("--png", o->png,
-                      "Draw a heat map (viridis, from the smallest value to 1), inputs numbered as listed, into FILE.png")
+                      "Draw a heat map (viridis, from the smallest value to 1), the inputs named, into FILE.png")
       ->check(output_file());
   command->callback([o] { run_matrix(*o); });
 }

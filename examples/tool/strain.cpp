@@ -117,7 +117,7 @@ void write_picture(const Surface_mesh_animation& animation, const Strain_field<f
   const int height = pictures.front().height;
   Image image(padding + int(frames.size()) * (pictures.front().width + gap) + padding + color_bar_width(bar) + padding,
               padding + title_height + label_height + height + padding);
-  draw_text(image, o.measure + " strain of " + o.input.input, padding, padding, 2);
+  draw_text(image, o.measure + " strain of " + short_name(o.input.input), padding, padding, 2);
   int x = padding;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     draw_text(image, "frame " + std::to_string(frames[k]), x, padding + title_height);

@@ -84,7 +84,7 @@ void write_figure(const Eigen::MatrixXf& d, const Temporal_segmentation& s, cons
     return Rgb{level, level, level};
   };
   Matrix_figure figure(frames, frames, cell,
-                       std::to_string(s.segments.size()) + " segments of " + input, frame_axis("frame", frames, cell),
+                       std::to_string(s.segments.size()) + " segments of " + short_name(input), frame_axis("frame", frames, cell),
                        frame_axis("frame", frames, cell), Color_bar{"frame distance", 0, largest, grey});
   for (std::size_t i = 0; i < frames; ++i)
     for (std::size_t j = 0; j < frames; ++j) figure.fill_cell(i, j, grey(d(Eigen::Index(i), Eigen::Index(j)) / largest));
