@@ -1,6 +1,6 @@
 /// \page ClusteringPolicyConcept The ClusteringPolicy concept
 ///
-/// How items given by their distance matrix are partitioned into clusters (METHOD.md section 4:
+/// How items given by their distance matrix are partitioned into clusters (@ref method_similarity;
 /// the key-frame graphs by their graph edit distances). The C++20 concepts
 /// deformseg::clustering::ClusteringPolicy and deformseg::clustering::WeightedClusteringPolicy
 /// check it at compile time.

@@ -1,6 +1,6 @@
 /// @file correlation.h
 /// @brief Pearson and Spearman correlation between two lists of values, to compare computed
-/// similarities with given scores such as human ratings (METHOD.md, section 4, validation).
+/// similarities with given scores such as human ratings (@ref method_similarity, validation).
 #pragma once
 
 #include <deformseg/exceptions.h>

@@ -1,5 +1,5 @@
 /// @file evolving_graph.h
-/// @brief The evolving graph of a deforming mesh (METHOD.md, section 3): consecutive frames
+/// @brief The evolving graph of a deforming mesh (@ref method_spatiotemporal): consecutive frames
 /// with the same segment graph form a key frame: `evolving_graph`, `Evolving_graph`, `Key_frame`.
 #pragma once
 

@@ -27,7 +27,7 @@ namespace deformseg {
 
 /// @brief How two frame descriptors (the strain vectors x, y of two frames) are compared.
 enum class Frame_metric {
-  /// @brief `|x - y|`, the default (METHOD.md, section 2).
+  /// @brief `|x - y|`, the default (@ref method_temporal).
   euclidean,
   /// @brief `sum_j |x_j - y_j|`: less dominated by the few most strained triangles.
   l1,
@@ -141,7 +141,7 @@ void l1_distances(const Strain_field<Value>& field, int threads,
 }  // namespace internal
 
 /// @brief The `T x T` matrix of distances between the frames of a strain field, each frame the
-/// vector of its F strains (METHOD.md, section 2: the frame descriptor is the normalised
+/// vector of its F strains (@ref method_temporal; the frame descriptor is the normalised
 /// rest-pose strain).
 ///
 /// Euclidean and cosine distances come from the Gram matrix `X^T X` of the `F x T` field, an

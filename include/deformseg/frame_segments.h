@@ -1,6 +1,6 @@
 /// @file frame_segments.h
 /// @brief The spatial segments of each frame of a spatio-temporal segmentation, as a
-/// Boost.Graph adjacency list (METHOD.md, section 3): `Frame_segments`, `Segment_graph`,
+/// Boost.Graph adjacency list (@ref method_spatiotemporal): `Frame_segments`, `Segment_graph`,
 /// `Segment_node`.
 #pragma once
 

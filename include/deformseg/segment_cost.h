@@ -17,7 +17,7 @@ namespace deformseg {
 /// @brief Answers, for any frame interval [m, n], the within-segment dissimilarity
 /// `Ds(m, n) = sum_{i, j in [m, n]} D(i, j) / (n - m + 1)^2` of a frame distance matrix D: the
 /// average distance over all ordered pairs of frames of the interval, each frame with itself
-/// included (METHOD.md, section 2), so that one frame has `Ds = 0`.
+/// included (@ref method_temporal), so that one frame has `Ds = 0`.
 ///
 /// It owns a 2-D prefix sum (summed-area table) of D in double, `(T + 1)^2` values, from which
 /// any block sum is four lookups.

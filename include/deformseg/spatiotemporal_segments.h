@@ -1,5 +1,5 @@
 /// @file spatiotemporal_segments.h
-/// @brief Spatio-temporal segments of a deforming mesh (METHOD.md, section 3): every
+/// @brief Spatio-temporal segments of a deforming mesh (@ref method_spatiotemporal): every
 /// (triangle, frame) cell labelled rigid or deformed, deformed cells joined across shared edges
 /// and consecutive frames: `spatiotemporal_segmentation`, `Spatiotemporal_segmentation`.
 #pragma once

@@ -290,7 +290,7 @@ std::vector<double> reference_positions(const Deforming_mesh<Graph, Coordinate>&
 
 }  // namespace internal
 
-/// @brief The strain of every triangle of an animation at every frame (METHOD.md, section 1).
+/// @brief The strain of every triangle of an animation at every frame (@ref method_strain).
 ///
 /// For each triangle and frame, the affine map from the reference triangle to the deformed one has
 /// the in-plane deformation gradient `F = Ds Dm^-1` (Dm, Ds: 2x2 edge matrices of the reference

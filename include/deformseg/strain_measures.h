@@ -66,7 +66,7 @@ concept StrainMeasure = std::default_initializable<M> && std::copy_constructible
     };
 
 /// @brief The maximal absolute principal strain `s = max(|l1 - 1|, |l2 - 1|)`, the default
-/// measure (METHOD.md, section 1).
+/// measure (@ref method_strain).
 ///
 /// It is the largest relative change of length of any segment in the triangle: `s = 0.1` means
 /// some direction in the triangle is stretched or compressed by 10 %. Since `l1 >= l2`, it equals

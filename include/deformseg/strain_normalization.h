@@ -84,9 +84,10 @@ enum class Sigma_statistic {
   /// @brief A percentile of the strain magnitudes, `Gaussian_normalization::percentile` (default
   /// 95): robust to any share of outliers below 100 - percentile %. The default.
   percentile,
-  /// @brief The standard deviation of the strain magnitudes, METHOD.md's first reading. Not
-  /// robust: on the horse gallop, the 16 worst-shaped of its 16843 triangles (0.1 %) take it from
-  /// 0.48 to 2.07 (strains up to 385), flattening every other normalised strain.
+  /// @brief The standard deviation of the strain magnitudes, the method's first reading
+  /// (@ref method_strain). Not robust: on the horse gallop, the 16 worst-shaped of its 16843
+  /// triangles (0.1 %) take it from 0.48 to 2.07 (strains up to 385), flattening every other
+  /// normalised strain.
   standard_deviation,
   /// @brief The median absolute deviation of the strain magnitudes from their median, times
   /// 1.4826 (the standard deviation of a normal distribution with that MAD). Robust, but a
@@ -94,7 +95,7 @@ enum class Sigma_statistic {
   scaled_mad,
 };
 
-/// @brief The Gaussian kernel of METHOD.md, the default normalisation:
+/// @brief The Gaussian kernel of the method (@ref method_strain), the default normalisation:
 /// `s' = 1 - exp(-s^2 / (2 sigma^2))`, which maps strains in [0, inf) to [0, 1).
 ///
 /// sigma is `sigma` when given, else a statistic of the raw strains (`sigma_of`): by default

@@ -1,6 +1,6 @@
 /// @file temporal_segmentation.h
-/// @brief Temporal segmentation of a deforming mesh into intervals of similar poses (METHOD.md,
-/// section 2): `segment_frames` over a frame distance matrix, `temporal_segmentation` from an
+/// @brief Temporal segmentation of a deforming mesh into intervals of similar poses
+/// (@ref method_temporal): `segment_frames` over a frame distance matrix, `temporal_segmentation` from an
 /// animation or a strain field, and the result `Temporal_segmentation`.
 #pragma once
 
@@ -83,7 +83,7 @@ Temporal_segmentation segment_frames(const Segment_cost& cost, const Policy& pol
 
 /// @brief Segments the frames of a strain field: its frame distances (`frame_distances`), their
 /// `Segment_cost`, then `policy`.
-/// @param field the strain field; METHOD.md's frame descriptor is the normalised rest-pose strain
+/// @param field the strain field; the method's frame descriptor is the normalised rest-pose strain
 /// (`compute_strain`'s default).
 /// @param policy the policy; default `Optimal_partition`.
 /// @param distances the metric and threads of the frame distances.

@@ -159,7 +159,7 @@ inline std::vector<std::pair<std::size_t, std::size_t>> sw_traceback(const Sw_en
 /// for d = 0, `mismatch` for d = 1, in between (or beyond) for a continuous dissimilarity such as
 /// the distance between two frames or between two cluster medoids. A gap of length L (L
 /// consecutive elements of one sequence against none of the other) costs
-/// `gap_open + (L - 1) * gap_extend`: linear gaps when the two are equal (the defaults, METHOD.md's
+/// `gap_open + (L - 1) * gap_extend`: linear gaps when the two are equal (the defaults, the method's
 /// +1 / -1 / -1), affine otherwise. The score is the largest total over all pairs of contiguous
 /// parts of A and B, so never below 0; the empty alignment scores 0.
 ///

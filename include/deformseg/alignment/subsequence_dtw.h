@@ -26,7 +26,7 @@ enum class Subsequence_query {
 /// end), with steps (1, 0), (0, 1) and (1, 1). The score is the path's total dissimilarity, lower
 /// is better (`higher_is_better == false`).
 ///
-/// It stands in for the "mDTW" the thesis compares with (METHOD.md, section 4), whose definition
+/// It stands in for the "mDTW" the thesis compares with (@ref method_similarity), whose definition
 /// we lack: of the usual DTW variants, the one whose open ends suit a motion found inside a
 /// longer one.
 ///

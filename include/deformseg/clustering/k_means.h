@@ -173,7 +173,7 @@ private:
 }  // namespace internal
 
 /// @brief k-means on the graph embedding: each item becomes the vector of its distances to the
-/// prototype items (METHOD.md section 4: each graph as its vector of GEDs to the prototypes), and
+/// prototype items (@ref method_similarity; each graph as its vector of GEDs to the prototypes), and
 /// these vectors are clustered by Lloyd's algorithm under the Euclidean distance.
 ///
 /// Each of `restarts` runs is seeded by k-means++ from one `std::mt19937_64(seed)` stream (with

@@ -44,7 +44,7 @@ concept GedCostModel = requires(const C& c, const Label& a, const Label& b) {
   { c.edge_substitution() } -> std::convertible_to<double>;
 };
 
-/// @brief The default costs (METHOD.md section 4): inserting or deleting a node or an edge costs
+/// @brief The default costs (@ref method_similarity): inserting or deleting a node or an edge costs
 /// 1; substituting a node costs 0 for equal labels and 1 otherwise; keeping an edge costs 0.
 struct Unit_costs {
   /// @brief 0 when the labels are equal, else 1.

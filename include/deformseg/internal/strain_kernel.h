@@ -5,7 +5,7 @@
 // height vector. The affine map onto the deformed triangle y0 y1 y2 (edges d1, d2) sends e1 and e2
 // to
 //     u = alpha d1,   v = beta d2 + gamma d1,   alpha = 1/|E1|, beta = 1/|H|, gamma = -mu/|H|,
-// the columns of the 3x2 deformation gradient F = Ds Dm^-1 (METHOD.md) in that basis, so
+// the columns of the 3x2 deformation gradient F = Ds Dm^-1 (the manual's chapter 11) in that basis, so
 // C = F^T F = [u.u u.v; u.v v.v]: the brief's C = A^T G A (A = Dm^-1, G the Gram matrix of the
 // deformed edges) with A applied to the edges before the dot products. For a sliver (height h,
 // length L) the entries of A are ~L/h: A^T G A cancels terms ~(L/h)^2, beta d2 + gamma d1 terms

@@ -1,5 +1,5 @@
 /// @file similarity/evolving_graph_similarity.h
-/// @brief `Evolving_graph_similarity`: the thesis' motion similarity (METHOD.md section 4): the
+/// @brief `Evolving_graph_similarity`: the thesis' motion similarity (@ref method_similarity): the
 /// key-frame graphs of two evolving graphs compared by graph edit distance, clustered into labels,
 /// and the two label sequences aligned.
 #pragma once
@@ -26,7 +26,7 @@ namespace deformseg {
 
 /// @brief How `Evolving_graph_similarity` scores a pair of frames from their cluster labels.
 enum class Label_dissimilarity {
-  mismatch,  ///< 0 for the same cluster, 1 for different ones (METHOD.md's match / mismatch)
+  mismatch,  ///< 0 for the same cluster, 1 for different ones (the method's match / mismatch)
   medoids    ///< the edit distance between the two clusters' medoids over the largest such distance
 };
 

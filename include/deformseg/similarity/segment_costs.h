@@ -14,7 +14,7 @@ namespace deformseg {
 /// node costs 1 when the kinds differ, plus `area_weight` times the difference of the area
 /// shares; inserting or deleting an edge costs 1, keeping one 0.
 ///
-/// With `area_weight = 0` these are the unit costs of METHOD.md section 4 on the node kinds
+/// With `area_weight = 0` these are the unit costs of @ref method_similarity on the node kinds
 /// alone, which see only the shape of the graphs: a thick leg closes a deformed band into a ring
 /// and a thin one does not, so the shape depends on the mesh. The area shares tell a large
 /// deformed region from a small one and are the same for the same motion on another shape.

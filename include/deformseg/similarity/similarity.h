@@ -47,7 +47,7 @@ concept SimilarityPolicy = std::copy_constructible<P> && requires(const P& p, co
 
 /// @brief Which length `Best_score_normalization` measures a maximising alignment against.
 enum class Normalize_by {
-  shorter,  ///< the shorter sequence's self-score (METHOD.md section 4): a motion found whole inside a longer one scores 1
+  shorter,  ///< the shorter sequence's self-score (@ref method_similarity): a motion found whole inside a longer one scores 1
   longer    ///< the longer one's: a motion scores 1 only against one of its own length
 };
 
@@ -55,8 +55,8 @@ enum class Normalize_by {
 ///
 /// For a policy that maximises a score (`higher_is_better`, such as `alignment::Smith_waterman`):
 /// the score over the best score two sequences of `length`'s length can reach (every pair at
-/// dissimilarity 0: that sequence's self-score); by default the shorter one, as METHOD.md section
-/// 4 says, so that a local alignment which finds the whole shorter motion inside the longer one
+/// dissimilarity 0: that sequence's self-score); by default the shorter one, as the method says
+/// (@ref method_similarity), so that a local alignment which finds the whole shorter motion inside the longer one
 /// gives 1 (a tube standing still for 6 frames against one that stands still for 6 frames and then
 /// bends); `Normalize_by::longer` counts what the longer motion does besides. For a policy that
 /// minimises a cost (`alignment::Dtw`, `alignment::Subsequence_dtw`): 1 minus the mean

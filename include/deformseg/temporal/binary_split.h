@@ -14,9 +14,9 @@ namespace deformseg {
 /// @brief Temporal segmentation top-down: while a segment's `Ds` is above the threshold, split it
 /// in two where the length-weighted cost `(k - h + 1) Ds(h, k) + (t - k) Ds(k + 1, t)` is least.
 ///
-/// METHOD.md states the split on the plain sum `Ds(h, k) + Ds(k + 1, t)`; weighting by length
-/// keeps it from favouring a cut that splits off a single frame (whose `Ds` is 0), the degeneracy
-/// METHOD.md describes for the optimum. The split points do not depend on the threshold, which only
+/// The method (@ref method_temporal) states the split on the plain sum `Ds(h, k) + Ds(k + 1, t)`;
+/// weighting by length keeps it from favouring a cut that splits off a single frame (whose `Ds` is
+/// 0), the degeneracy the method describes for the optimum. The split points do not depend on the threshold, which only
 /// says where to stop, so lowering it never gives fewer segments.
 /// @par Complexity O(T) queries per split, O(T^2) in all at worst.
 struct Binary_split {

@@ -20,7 +20,7 @@ namespace deformseg {
 /// exactly `segments` segments; found exactly by dynamic programming.
 ///
 /// Why the weight: `Ds` is an average, and a one-frame segment has `Ds = 0`, so the plain sum of
-/// `Ds` is least when single frames are cut off (METHOD.md, section 2: on the horse gallop its
+/// `Ds` is least when single frames are cut off (@ref method_temporal; on the horse gallop its
 /// optimum with 6 segments is five single frames). Weighted by length, the cost is the sum over
 /// segments of their frames' mean distance to the other frames of their segment: the kernel
 /// change-point cost.

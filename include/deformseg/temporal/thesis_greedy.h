@@ -12,8 +12,8 @@
 
 namespace deformseg {
 
-/// @brief Temporal segmentation by the thesis' Algorithm 4-1, as METHOD.md reconstructs it: in
-/// the frames [h, t], take the longest window [m, n] whose `Ds(m, n)` is at most the threshold
+/// @brief Temporal segmentation by the thesis' Algorithm 4-1, as deformseg reconstructs it
+/// (@ref method_temporal): in the frames [h, t], take the longest window [m, n] whose `Ds(m, n)` is at most the threshold
 /// (of equally long ones, the smallest `Ds`, then the earliest), make it a segment, and segment
 /// [h, m - 1] and [n + 1, t] the same way.
 ///
