@@ -322,6 +322,25 @@ def evolving_graph_tube(ws: Workspace, out: Path):
     save(fig, out)
 
 
+def view_page(*inputs, frame: int):
+    """A screenshot, in headless Chromium, of the page `deformseg view` writes for `inputs(ws)`,
+    opened from disk at ?frame=FRAME."""
+    def make(ws: Workspace, out: Path):
+        chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+        if chromium is None:
+            raise DataMissing("Chromium is not installed (Debian: chromium)")
+        page = ws.work / ("view_" + out.stem)
+        ws.run("view", *(make_input(ws) for make_input in inputs), "--out", page)
+        url = f"{(page / 'index.html').resolve().as_uri()}?frame={frame}"
+        done = subprocess.run([chromium, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
+                               "--enable-unsafe-swiftshader", "--hide-scrollbars", "--window-size=1400,820",
+                               "--virtual-time-budget=8000", f"--screenshot={out}", url],
+                              capture_output=True, text=True, check=False)
+        if not out.is_file():
+            raise FigureError(f"Chromium did not take the screenshot of {url}:\n{done.stderr.strip()[-2000:]}")
+    return make
+
+
 @dataclass(frozen=True)
 class Figure:
     name: str
@@ -338,6 +357,7 @@ FIGURES = [
     Figure("evolving_graph_tube", evolving_graph_tube),
     Figure("alignment_path", tool_png(lambda ws, png: ["similarity", ws.tube("bend_once"), ws.tube("bend_once_late"), "--alignment", "dtw", "--png", png])),
     Figure("similarity_matrix", tool_png(lambda ws, png: ["matrix", *map(ws.tube, TUBES), "--png", png])),
+    Figure("view_tubes", view_page(lambda ws: ws.tube("bend_once"), lambda ws: ws.tube("bend_once_late"), frame=17)),
 ]
 
 

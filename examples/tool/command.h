@@ -115,5 +115,6 @@ void add_similarity_command(CLI::App& app);
 void add_matrix_command(CLI::App& app);
 void add_evaluate_command(CLI::App& app);
 void add_find_command(CLI::App& app);
+void add_view_command(CLI::App& app);
 
 }  // namespace deformseg::tool

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   deformseg::tool::add_matrix_command(app);
   deformseg::tool::add_evaluate_command(app);
   deformseg::tool::add_find_command(app);
+  deformseg::tool::add_view_command(app);
   const std::vector<std::string> arguments(argv + 1, argv + argc);
   try {
     app.parse(argc, argv);
