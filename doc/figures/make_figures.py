@@ -322,15 +322,23 @@ def evolving_graph_tube(ws: Workspace, out: Path):
     save(fig, out)
 
 
-def view_page(*inputs, frame: int):
-    """A screenshot, in headless Chromium, of the page `deformseg view` writes for `inputs(ws)`,
-    opened from disk at ?frame=FRAME."""
+def fox_walk(ws: Workspace) -> str:
+    """The Fox's Walk clip of the shared characters, as FILE.glb#CLIP."""
+    fox = ws.data / "characters" / "Fox.glb" if ws.data else None
+    if fox is None or not fox.is_file():
+        raise DataMissing("the shared characters/Fox.glb is not there")
+    return f"{fox}#Walk"
+
+
+def view_page(*inputs, frame: int, options=()):
+    """A screenshot, in headless Chromium, of the page `deformseg view` writes for `inputs(ws)`
+    with `options`, opened from disk at ?frame=FRAME."""
     def make(ws: Workspace, out: Path):
         chromium = shutil.which("chromium") or shutil.which("chromium-browser")
         if chromium is None:
             raise DataMissing("Chromium is not installed (Debian: chromium)")
         page = ws.work / ("view_" + out.stem)
-        ws.run("view", *(make_input(ws) for make_input in inputs), "--out", page)
+        ws.run("view", *(make_input(ws) for make_input in inputs), *options, "--out", page)
         url = f"{(page / 'index.html').resolve().as_uri()}?frame={frame}"
         done = subprocess.run([chromium, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
                                "--enable-unsafe-swiftshader", "--hide-scrollbars", "--window-size=1400,820",
@@ -358,6 +366,7 @@ FIGURES = [
     Figure("alignment_path", tool_png(lambda ws, png: ["similarity", ws.tube("bend_once"), ws.tube("bend_once_late"), "--alignment", "dtw", "--png", png])),
     Figure("similarity_matrix", tool_png(lambda ws, png: ["matrix", *map(ws.tube, TUBES), "--png", png])),
     Figure("view_tubes", view_page(lambda ws: ws.tube("bend_once"), lambda ws: ws.tube("bend_once_late"), frame=17)),
+    Figure("view_fox", view_page(fox_walk, frame=10, options=("--color", "previous-strain"))),
 ]
 
 

@@ -74,8 +74,8 @@
     this.controls = new THREE.OrbitControls(this.camera, this.canvas);
     this.controls.target.copy(centre);
     this.controls.update();
-    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x888888, 0.9));
-    var light = new THREE.DirectionalLight(0xffffff, 0.5);
+    this.scene.add(new THREE.HemisphereLight(0xffffff, 0x666666, 0.65));
+    var light = new THREE.DirectionalLight(0xffffff, 0.45);
     light.position.copy(this.camera.position);
     this.scene.add(light);
     var corners = this.spec.triangles * 3;
