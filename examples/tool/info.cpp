@@ -1,6 +1,7 @@
 // deformseg info INPUT: what an animation is made of; for a glTF file also its clips, skins and
 // meshes; and what repairing its mesh changed.
 #include "command.h"
+#include "motion_box.h"
 
 #include <deformseg/io/frame_sequence.h>
 
@@ -27,12 +28,7 @@ void check_files_option(const Info_options& o) {
 }
 
 nlohmann::json bounding_box(const Surface_mesh_animation& animation) {
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d high = -low;
-  for (std::size_t t = 0; t < animation.num_frames(); ++t) {
-    low = low.cwiseMin(animation.frame_matrix(t).rowwise().minCoeff());
-    high = high.cwiseMax(animation.frame_matrix(t).rowwise().maxCoeff());
-  }
+  const auto [low, high] = motion_box(animation);
   return {{"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}};
 }
 

@@ -1,4 +1,5 @@
 #include "render.h"
+#include "motion_box.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,13 +9,9 @@
 namespace deformseg::tool {
 
 View view_of(const Surface_mesh_animation& animation) {
+  const Motion_box box = motion_box(animation);
   View view;
-  view.low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  view.high = -view.low;
-  for (std::size_t t = 0; t < animation.num_frames(); ++t) {
-    view.low = view.low.cwiseMin(animation.frame_matrix(t).rowwise().minCoeff());
-    view.high = view.high.cwiseMax(animation.frame_matrix(t).rowwise().maxCoeff());
-  }
+  view.low = box.low, view.high = box.high;
   Eigen::Index thinnest = 0;
   (view.high - view.low).minCoeff(&thinnest);
   view.toward_viewer = Eigen::Vector3d::Unit(thinnest);

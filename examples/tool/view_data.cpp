@@ -1,4 +1,5 @@
 #include "view_data.h"
+#include "motion_box.h"
 
 #include <deformseg/evolving_graph.h>
 #include <deformseg/exceptions.h>
@@ -133,11 +134,7 @@ nlohmann::json colors_json(const Face_colors& colors, View_coloring coloring) {
 
 // Positions quantised to 16 bits in the box of the whole motion.
 nlohmann::json positions_json(const Surface_mesh_animation& animation) {
-  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
-  for (std::size_t t = 0; t < animation.num_frames(); ++t) {
-    low = low.cwiseMin(animation.frame_matrix(t).rowwise().minCoeff());
-    high = high.cwiseMax(animation.frame_matrix(t).rowwise().maxCoeff());
-  }
+  const auto [low, high] = motion_box(animation);
   const Eigen::Vector3d extent = (high - low).cwiseMax(std::numeric_limits<double>::min());
   std::vector<std::uint16_t> words;
   words.reserve(animation.num_frames() * animation.num_vertices() * 3);
