@@ -3,6 +3,8 @@
 #include <deformseg/internal/file_io.h>
 #include <deformseg/io/read_mesh.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 
@@ -161,6 +163,14 @@ void print_written(const nlohmann::json& summary) {
   if (!files.empty()) std::cout << ": " << files.front().get<std::string>();
   if (files.size() > 1) std::cout << " ... " << files.back().get<std::string>();
   std::cout << '\n';
+}
+
+std::vector<std::size_t> evenly_spaced_frames(std::size_t frames, std::size_t count) {
+  count = std::min(count, frames);
+  std::vector<std::size_t> chosen;
+  for (std::size_t k = 0; k < count; ++k)
+    chosen.push_back(count == 1 ? 0 : std::size_t(std::llround(double(k) * double(frames - 1) / double(count - 1))));
+  return chosen;
 }
 
 CLI::Validator output_file() {

@@ -82,14 +82,18 @@ void write_json(const nlohmann::json& document, const std::string& path);
 /// standard output in the summary's place, as does any other output written to '-'
 /// (`standard_output_taken`). Files written by --csv, --png, --out, --dot or --mesh-dir do not
 /// change it.
+void write_outputs(const nlohmann::json& document, const std::string& json_path,
+                   const std::function<void()>& print_summary, bool standard_output_taken = false);
+
 /// Adds `--json FILE` to a command: "Write `what` as JSON to FILE", by the rule of write_outputs.
 void add_json_option(CLI::App& command, std::string& path, const std::string& what);
 
 /// Prints what convert and synth wrote: frames, vertices, triangles and the files, first and last.
 void print_written(const nlohmann::json& summary);
 
-void write_outputs(const nlohmann::json& document, const std::string& json_path,
-                   const std::function<void()>& print_summary, bool standard_output_taken = false);
+/// `count` frames of `frames` (all of them when there are no more), evenly spaced from the first
+/// to the last, rounded to the nearest frame: what strain --png draws and view shows.
+std::vector<std::size_t> evenly_spaced_frames(std::size_t frames, std::size_t count);
 
 /// A line on standard error, for progress.
 void progress(const std::string& line);

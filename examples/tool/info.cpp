@@ -21,9 +21,10 @@ struct Info_options {
 // --files lists a frame sequence's files; a glTF file or a point cache has none.
 void check_files_option(const Info_options& o) {
   if (!o.files) return;
-  const std::string format = io::animation_format(o.input.input);
-  if ((io::is_gltf(o.input.input) || format == "pc2" || format == "mdd"))
-    throw invalid_input("--files lists the frame files of a folder or glob; this input is one " + format + " file",
+  const std::string extension = internal::lower_extension(o.input.input);  // no listing of a folder here
+  if (io::is_gltf(o.input.input) || extension == ".pc2" || extension == ".mdd")
+    throw invalid_input("--files lists the frame files of a folder or glob; this input is one " + extension.substr(1) +
+                            " file",
                         {.file = o.input.input});
 }
 

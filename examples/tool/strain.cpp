@@ -90,12 +90,7 @@ std::vector<std::size_t> frames_to_draw(const Strain_command_options& o, std::si
     if (t >= frames)
       throw invalid_input("--png-frames: frame " + std::to_string(t) + " is past the last, " +
                           std::to_string(frames - 1), {.file = o.input.input});
-  if (!o.png_frames.empty()) return o.png_frames;
-  const std::size_t count = std::min<std::size_t>(6, frames);
-  std::vector<std::size_t> chosen;
-  for (std::size_t k = 0; k < count; ++k)
-    chosen.push_back(count == 1 ? 0 : std::size_t(std::lround(double(k) * double(frames - 1) / double(count - 1))));
-  return chosen;
+  return o.png_frames.empty() ? evenly_spaced_frames(frames, 6) : o.png_frames;
 }
 
 // A strip of frames, each seen from the same side and coloured by normalised strain (viridis),

@@ -1,4 +1,5 @@
 #include "view_data.h"
+#include "command.h"
 #include "motion_box.h"
 
 #include <deformseg/evolving_graph.h>
@@ -40,11 +41,8 @@ std::string base64(std::span<const std::uint8_t> bytes) {
 
 Surface_mesh_animation evenly_sampled(const Surface_mesh_animation& animation, std::size_t max_frames,
                                       std::vector<std::size_t>& numbers) {
-  const std::size_t frames = animation.num_frames(), kept = std::min(frames, std::max<std::size_t>(max_frames, 1));
-  numbers.clear();
-  for (std::size_t k = 0; k < kept; ++k)
-    numbers.push_back(kept == 1 ? 0 : std::size_t(std::llround(double(k) * double(frames - 1) / double(kept - 1))));
-  if (kept == frames) return animation;
+  numbers = evenly_spaced_frames(animation.num_frames(), std::max<std::size_t>(max_frames, 1));
+  if (numbers.size() == animation.num_frames()) return animation;
   Surface_mesh_animation sampled(animation.face_graph());
   for (std::size_t t : numbers)
     sampled.add_frame(std::span<const double>(animation.frame_matrix(t).data(), 3 * animation.num_vertices()));
@@ -72,10 +70,10 @@ struct Face_colors {
   nlohmann::json legend{};
 };
 
-Face_colors strain_colors_of(const Surface_mesh_animation& animation, Strain_reference reference, int threads) {
+// Each face in the viridis colour of its normalised strain, quantised to 256 steps.
+Face_colors strain_colors_of(const Strain_field<float>& field, Strain_reference reference) {
   Face_colors out;
   for (int k = 0; k < 256; ++k) out.palette.push_back(strain_color(k / 255.0));
-  const Strain_field<float> field = compute_strain(animation, {.reference = reference, .threads = threads});
   for (float v : field.values()) out.indices.push_back(std::uint16_t(std::lround(255 * std::clamp(double(v), 0.0, 1.0))));
   out.legend = {{"kind", "scale"},
                 {"title", reference == Strain_reference::rest_pose ? "normalised strain against frame 0"
@@ -171,16 +169,19 @@ nlohmann::json key_frames_json(const Evolving_graph& graph) {
 nlohmann::json view_json(const Surface_mesh_animation& animation, const std::string& name,
                          const std::vector<std::size_t>& frame_numbers, View_coloring coloring, int threads) {
   const std::size_t faces = animation.num_faces();
-  const Temporal_segmentation segments = temporal_segmentation(animation);
-  const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(animation);
+  // Each strain once: the rest-pose one serves the temporal segments (their default) and the
+  // strain colours, the previous-pose one the spatio-temporal segments (theirs) and its colours.
+  const Strain_field<float> rest = compute_strain(animation, {.threads = threads});
+  const Strain_field<float> previous =
+      compute_strain(animation, {.reference = Strain_reference::previous_pose, .threads = threads});
+  const Temporal_segmentation segments = temporal_segmentation(rest);
+  const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(previous, animation.triangles());
   const std::vector<double> areas = face_areas(animation, 0);
   const Evolving_graph graph = evolving_graph(Frame_segments(segmentation, animation.triangles(), areas));
   Face_colors colors;
   switch (coloring) {
-    case View_coloring::strain: colors = strain_colors_of(animation, Strain_reference::rest_pose, threads); break;
-    case View_coloring::previous_strain:
-      colors = strain_colors_of(animation, Strain_reference::previous_pose, threads);
-      break;
+    case View_coloring::strain: colors = strain_colors_of(rest, Strain_reference::rest_pose); break;
+    case View_coloring::previous_strain: colors = strain_colors_of(previous, Strain_reference::previous_pose); break;
     case View_coloring::temporal: colors = temporal_colors(segments, faces); break;
     case View_coloring::segments: colors = segment_colors_of(segmentation); break;
     case View_coloring::none:
