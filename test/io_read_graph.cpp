@@ -1,5 +1,10 @@
-#include <deformseg/ged/exact_ged.h>
+// The readers of graphs and labels first: no io header after them may lose deformseg::internal.
+#include <deformseg/io/motion_labels.h>
 #include <deformseg/io/read_graph.h>
+#include <deformseg/io/read_animation.h>
+#include <deformseg/io/gltf.h>
+
+#include <deformseg/ged/exact_ged.h>
 
 #include "test_support.h"
 

@@ -28,7 +28,13 @@ struct Labelled_clip {
   Labelled_item item{};
 };
 
-namespace internal::labels {
+}  // namespace deformseg::io
+
+// Not deformseg::io::internal: a namespace of that name would hide deformseg::internal from every
+// io header included after this one.
+namespace deformseg::internal::labels {
+
+using io::Labelled_clip;
 
 inline std::vector<std::string> split_fields(const std::string& line) {
   std::vector<std::string> fields(1);
@@ -88,7 +94,9 @@ inline Labelled_clip read_row(const std::string& line, const Columns& columns, c
   return row;
 }
 
-}  // namespace internal::labels
+}  // namespace deformseg::internal::labels
+
+namespace deformseg::io {
 
 /// @brief Reads a labels file: a header line naming the columns, then one line per animation.
 ///

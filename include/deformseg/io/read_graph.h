@@ -37,7 +37,14 @@ enum class Graph_format {
   graphml  ///< GraphML (`.graphml`)
 };
 
-namespace internal {
+}  // namespace deformseg::io
+
+// Not deformseg::io::internal: a namespace of that name would hide deformseg::internal from every
+// io header included after this one.
+namespace deformseg::internal {
+
+using io::Graph_format;
+using io::Labelled_graph;
 
 struct Read_vertex {
   std::string id;  // the DOT node name; GraphML ids are not reported by Boost
@@ -152,7 +159,9 @@ inline Graph_format format_of(const std::filesystem::path& path) {
                       {.file = path.string()});
 }
 
-}  // namespace internal
+}  // namespace deformseg::internal
+
+namespace deformseg::io {
 
 /// @brief Reads a labelled graph from a stream in the given format.
 ///
