@@ -99,12 +99,12 @@ void check_cat_lion(const Policy& policy, const char* name) {
 }
 
 template <class Policy>
-void check_self_and_copy(const Policy& policy) {
+void check_self_and_copy(const Policy& policy, const Eigen::Vector3d& turn_axis = Eigen::Vector3d(1, 1, -2)) {
   const auto a = tube(bend_hold_unbend);
   Bending_tube placed;
   placed.schedule = bend_hold_unbend;
   placed.placement = {.scale = 7.5,
-                      .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(2.5, Eigen::Vector3d(1, 1, -2).normalized())),
+                      .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(2.5, turn_axis.normalized())),
                       .translation = Eigen::Vector3d(40, -3, 9)};
   const Similarity self = motion_similarity(a, a, policy);
   CHECK(self.value == Approx(1.0));
@@ -116,7 +116,10 @@ void check_self_and_copy(const Policy& policy) {
 }  // namespace
 
 TEST_CASE("motion similarity: an animation and itself, or a moved, turned, scaled copy, give 1", "[similarity]") {
-  check_self_and_copy(Motion_signature_similarity<>{});
+  check_self_and_copy(Motion_signature_similarity<>{}, Eigen::Vector3d::UnitY());  // turned about its up only
+  Motion_signature_similarity<> directionless;
+  directionless.signatures.up = std::nullopt;
+  check_self_and_copy(directionless);
   check_self_and_copy(Strain_distribution_similarity<>{});
   check_self_and_copy(Evolving_graph_similarity<>{});
   const Similarity s = motion_similarity(tube(bend_hold_unbend), tube(bend_hold_unbend));

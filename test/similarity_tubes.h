@@ -74,12 +74,14 @@ inline std::vector<double> jointed_points(std::size_t frames, std::size_t points
 }
 
 /// Checks that `policy` gives exactly 1 for a tube against itself, and 1 to rounding against a
-/// moved, rotated and scaled copy, aligned frame to frame; returns the tube and its copy.
+/// moved, scaled copy rotated about `turn_axis`, aligned frame to frame; returns the tube and its
+/// copy.
 template <class Policy>
-std::pair<Surface_mesh_animation, Surface_mesh_animation> check_moved_copy_is_one(const Policy& policy) {
+std::pair<Surface_mesh_animation, Surface_mesh_animation> check_moved_copy_is_one(
+    const Policy& policy, const Eigen::Vector3d& turn_axis = Eigen::Vector3d(1, 2, 3)) {
   auto a = tube(bend_hold_unbend);
   const Placement moved{.scale = 2.5,
-                        .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized())),
+                        .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, turn_axis.normalized())),
                         .translation = Eigen::Vector3d(3, -1, 4)};
   auto b = tube(bend_hold_unbend, {}, moved);
   CHECK(motion_similarity(a, a, policy).value == 1.0);

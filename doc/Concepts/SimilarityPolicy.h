@@ -22,7 +22,7 @@
 ///
 /// | policy | header | describes an animation by | needs a correspondence |
 /// |---|---|---|---|
-/// | deformseg::Motion_signature_similarity (the default, deformseg::Default_similarity) | `similarity/motion_signature_similarity.h` | per-frame distributions of its vertices' displacement rates at several lags (deformseg::motion_signatures) | no |
+/// | deformseg::Motion_signature_similarity (the default, deformseg::Default_similarity) | `similarity/motion_signature_similarity.h` | per-frame distributions of its vertices' speeds and vertical rates at several lags (deformseg::motion_signatures) | no |
 /// | deformseg::Strain_distribution_similarity | `similarity/strain_distribution_similarity.h` | per-frame histograms of the strain | no |
 /// | deformseg::Evolving_graph_similarity (the thesis') | `similarity/evolving_graph_similarity.h` | its evolving graph and the GEDs of its key frames | no |
 /// | deformseg::Self_similarity_matching | `similarity/self_similarity_matching.h` | its frame x frame Procrustes self-dissimilarity matrix, each frame by the profile of its row | no |
