@@ -112,7 +112,18 @@ std::vector<std::array<std::uint32_t, 3>> triangles_of(const py::array& faces, s
   return triangles;
 }
 
-Animation animation_of_arrays(const py::array& faces, const py::array& frames) {
+// Any array-like (a list, a memory view, an array of another library) as a NumPy array, without
+// copy when it is one already.
+py::array as_array(const py::object& value, const char* name) {
+  py::array a = py::array::ensure(value);
+  if (!a) throw py::type_error(std::string(name) + ": expected an array, got " +
+                               py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+  return a;
+}
+
+Animation animation_of_arrays(const py::object& faces_like, const py::object& frames_like) {
+  const py::array frames = as_array(frames_like, "frames");
+  const py::array faces = as_array(faces_like, "faces");
   std::vector<double> positions = positions_of(frames);
   const auto vertices = std::size_t(frames.shape(1));
   const auto triangles = triangles_of(faces, vertices);
@@ -159,9 +170,10 @@ py::dict repair_dict(const io::Repair_report& r) {
 
 // read_animation: the rules of the tool's input options ("FILE.glb#CLIP", clip and topology only
 // where they apply, glTF welded unless weld=False, other formats only with weld=True).
-Animation read_input(std::string input, std::optional<std::string> clip, double fps,
+Animation read_input(const std::filesystem::path& path, std::optional<std::string> clip, double fps,
                std::optional<std::filesystem::path> topology, bool triangulate, std::optional<bool> weld,
                bool refuse_defects, int threads) {
+  std::string input = path.string();
   const std::size_t hash = input.rfind('#');
   if (hash != std::string::npos && io::is_gltf(input.substr(0, hash))) {
     if (clip) throw invalid_input("the clip is given twice: by clip= and after '#'", {.file = input});
@@ -689,7 +701,8 @@ Complexity: the policy's describe of each, one compare, plus one compare per shu
 equal to similarity(animations[i], animations[j], ...).value; or, with `database`, the (Q, D)
 array of each animation against each of the database. Each animation is described once, then
 pairs are compared in parallel; the result does not depend on the number of threads.
-policy, alignment, threshold: as `similarity`. progress: called as progress(done, total) on the
+policy (default "motion-signature"), alignment (default: the policy's), threshold (default: the
+graph policy's): as `similarity`. progress (default None): called as progress(done, total) on the
 calling thread (with the GIL) as the work advances, N + N (N + 1) / 2 steps (Q + D + Q D with a
 database); returning False stops the work and raises SimilarityStopped. The animations are not
 copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc");
