@@ -206,32 +206,34 @@ def test_similarity_matrix_reports_progress_and_stops(grid):
 
 
 def test_long_calls_release_the_gil(grid):
-    # A 400-frame animation of 20 000 triangles: its frame distances take a good fraction of a
-    # second, during which a Python thread keeps counting.
+    # A 400-frame animation of 20 000 triangles: its frame distances, on one thread, take a good
+    # fraction of a second, during which a Python thread keeps counting. Were the GIL held, the
+    # thread could count for at most about one switch interval (5 ms) before the call took it.
     a = deformseg.Animation(*grid(100, 100, 400))
     counter = [0]
-    running = threading.Event()
     stop = threading.Event()
 
     def count():
-        running.set()
         while not stop.is_set():
             counter[0] += 1
 
     thread = threading.Thread(target=count)
     thread.start()
-    running.wait()
     try:
-        start = counter[0]
-        began = time.perf_counter()
-        deformseg.frame_distances(a)
+        time.sleep(0.2)  # the counting rate with the main thread asleep
+        start, began = counter[0], time.perf_counter()
+        time.sleep(0.2)
+        rate = (counter[0] - start) / (time.perf_counter() - began)
+        start, began = counter[0], time.perf_counter()
+        deformseg.frame_distances(a, threads=1)
         seconds = time.perf_counter() - began
         during = counter[0] - start
     finally:
         stop.set()
         thread.join()
-    # Holding the GIL would leave the thread at most one switch interval (5 ms) of counting.
-    assert seconds > 0.05 and during > 10_000, (seconds, during)
+    held_at_most = 2 * rate * sys.getswitchinterval()
+    assert seconds > 10 * sys.getswitchinterval(), seconds
+    assert during > 4 * held_at_most, (during, held_at_most, seconds)
 
 
 # ---- stubs and docstrings ----------------------------------------------------------------------
