@@ -288,7 +288,8 @@ std::vector<std::pair<std::size_t, std::size_t>> temporal(const Animation& a, co
     py::gil_scoped_release release;
     const Segment_cost cost(distances_of(a.mesh, m, rest_frame, threads));
     if (method == "binary-split")
-      result = segment_frames(cost, Binary_split{.threshold = threshold_or(Binary_split{}.threshold), .min_length = min_length});
+      result = segment_frames(
+          cost, Binary_split{.threshold = threshold_or(Binary_split{}.threshold), .min_length = min_length});
     else if (method == "greedy")
       result = segment_frames(cost, Thesis_greedy{.threshold = threshold_or(Thesis_greedy{}.threshold)});
     else if (method == "barbic")
@@ -415,7 +416,8 @@ struct Animation_list {
     }
   }
   auto range() const {
-    return meshes | std::views::transform([](const Surface_mesh_animation* m) -> const Surface_mesh_animation& { return *m; });
+    return meshes |
+           std::views::transform([](const Surface_mesh_animation* m) -> const Surface_mesh_animation& { return *m; });
   }
 };
 
@@ -590,9 +592,12 @@ Complexity O(T V + F).)doc")
             return view(a.triangles().front().data(), {py::ssize_t(a.num_faces()), py::ssize_t(3)}, self);
           },
           "The (F, 3) uint32 vertex indices of the triangles: a read-only view (no copy).")
-      .def_property_readonly("num_frames", [](const Animation& a) { return a.mesh.num_frames(); }, "T, the number of frames.")
-      .def_property_readonly("num_vertices", [](const Animation& a) { return a.mesh.num_vertices(); }, "V, the number of vertices.")
-      .def_property_readonly("num_faces", [](const Animation& a) { return a.mesh.num_faces(); }, "F, the number of triangles.")
+      .def_property_readonly("num_frames", [](const Animation& a) { return a.mesh.num_frames(); },
+                             "T, the number of frames.")
+      .def_property_readonly("num_vertices", [](const Animation& a) { return a.mesh.num_vertices(); },
+                             "V, the number of vertices.")
+      .def_property_readonly("num_faces", [](const Animation& a) { return a.mesh.num_faces(); },
+                             "F, the number of triangles.")
       .def_property_readonly(
           "repair",
           [](const Animation& a) { return a.repair ? py::object(repair_dict(*a.repair)) : py::object(py::none()); },
@@ -711,7 +716,8 @@ copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc
       .def_readonly("first", &Motion_match::first, "The window's first frame in the long animation.")
       .def_readonly("last", &Motion_match::last, "Its last frame (inclusive).")
       .def_readonly("value", &Motion_match::value, "1 minus the mean frame dissimilarity along the path, in [0, 1].")
-      .def_readonly("alignment", &Motion_match::alignment, "The warping path: (frame of the query, frame of the long animation).")
+      .def_readonly("alignment", &Motion_match::alignment,
+                    "The warping path: (frame of the query, frame of the long animation).")
       .def("__repr__", [](const Motion_match& x) {
         return "<deformseg.MotionMatch frames " + std::to_string(x.first) + "-" + std::to_string(x.last) +
                " value=" + std::to_string(x.value) + ">";
