@@ -246,3 +246,17 @@ def test_ged_of_key_frames_as_tool(tool, tubes, tmp_path):
         nx = pytest.importorskip("networkx")
         assert deformseg.ged(graph[0].to_networkx(), graph[k].to_networkx()).distance == r.distance
         assert isinstance(graph.to_networkx()[k], nx.Graph)
+
+
+def test_point_cache_with_topology_as_tool(tool, tmp_path, csv_matrix):
+    cache = tmp_path / "cache"
+    tool("synth", cache, "--format", "pc2", "--schedule", "3:0", "8:60", "8:0")
+    pc2 = next(cache.glob("*.pc2"))
+    topology = cache / "tube.obj"
+    info = tool("info", pc2, "--topology", topology, "--json", "-")
+    a = deformseg.read_animation(pc2, topology=topology)
+    assert (a.num_frames, a.num_vertices, a.num_faces) == (info["frames"], info["vertices"], info["triangles"])
+    tool("strain", pc2, "--topology", topology, "--out", tmp_path / "strain.csv")
+    assert np.array_equal(deformseg.strain(a), csv_matrix(tmp_path / "strain.csv", np.float32))
+    with pytest.raises(deformseg.InvalidInput, match="needs a topology mesh"):
+        deformseg.read_animation(pc2)

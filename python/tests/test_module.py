@@ -262,3 +262,15 @@ def test_functions_document_shapes_defaults_and_complexity():
         assert "default" in getattr(deformseg, name).__doc__.lower(), name
     for name in ("strain", "frame_distances", "similarity_matrix", "Animation"):
         assert "(T, " in getattr(deformseg, name).__doc__ or "(N, N)" in getattr(deformseg, name).__doc__, name
+
+
+def test_results_do_not_depend_on_threads_or_on_concurrent_calls(grid):
+    from concurrent.futures import ThreadPoolExecutor
+    animations = [deformseg.Animation(*grid(6, 6, 20, seed=k)) for k in range(4)]
+    one = [deformseg.strain(a, threads=1) for a in animations]
+    assert all(np.array_equal(deformseg.strain(a, threads=2), s) for a, s in zip(animations, one))
+    alone = [deformseg.similarity(animations[0], b).value for b in animations]
+    with ThreadPoolExecutor(4) as pool:  # the GIL released, calls run at once on shared animations
+        strains = list(pool.map(deformseg.strain, animations))
+        together = list(pool.map(lambda b: deformseg.similarity(animations[0], b).value, animations))
+    assert all(np.array_equal(s, t) for s, t in zip(one, strains)) and together == alone
