@@ -274,3 +274,37 @@ def test_results_do_not_depend_on_threads_or_on_concurrent_calls(grid):
         strains = list(pool.map(deformseg.strain, animations))
         together = list(pool.map(lambda b: deformseg.similarity(animations[0], b).value, animations))
     assert all(np.array_equal(s, t) for s, t in zip(one, strains)) and together == alone
+
+
+def parameter_names(function):
+    """The parameter names of a function: from inspect, or from the signature line pybind11 puts
+    first in a compiled function's docstring."""
+    import inspect
+    try:
+        return [p for p in inspect.signature(function).parameters]
+    except ValueError:
+        line = function.__doc__.splitlines()[0]
+        inside, depth, names, current = line[line.index("(") + 1:], 0, [], ""
+        for character in inside:
+            if character in "([":
+                depth += 1
+            elif character in ")]":
+                if depth == 0:
+                    break
+                depth -= 1
+            if character == "," and depth == 0:
+                names.append(current)
+                current = ""
+            else:
+                current += character
+        names.append(current)
+        return [n.split(":")[0].strip() for n in names if n.strip() and n.strip() != "*"]
+
+
+def test_the_stub_gives_every_function_its_parameters():
+    stub = ast.parse((PACKAGE / "__init__.pyi").read_text())
+    for node in stub.body:
+        if isinstance(node, ast.FunctionDef):
+            arguments = node.args
+            stubbed = [a.arg for a in arguments.args + arguments.kwonlyargs]
+            assert stubbed == parameter_names(getattr(deformseg, node.name)), node.name
