@@ -12,6 +12,7 @@
 #include <deformseg/default_mesh.h>
 #include <deformseg/evolving_graph.h>
 #include <deformseg/exceptions.h>
+#include <deformseg/face_areas.h>
 #include <deformseg/find_motion.h>
 #include <deformseg/frame_distances.h>
 #include <deformseg/ged/bipartite_ged.h>
@@ -19,6 +20,7 @@
 #include <deformseg/ged/lower_bound.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/io/read_graph.h>
+#include <deformseg/io/read_mesh.h>
 #include <deformseg/motion_similarity.h>
 #include <deformseg/retrieval_evaluation.h>
 #include <deformseg/similarity/self_similarity_matching.h>
@@ -204,20 +206,50 @@ Strain_reference reference_of(const std::string& name) {
   refuse("reference must be 'rest' or 'previous', got '" + name + "'");
 }
 
-template <class Measure>
-Strain_field<float> strain_with(const Surface_mesh_animation& a, Strain_reference reference, std::size_t rest_frame,
-                                Measure measure, bool gaussian, std::optional<double> sigma, double tolerance,
-                                int threads) {
-  if (!gaussian)
-    return compute_strain(a, Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
-                                            .normalization = No_normalization{}, .degenerate_tolerance = tolerance,
-                                            .threads = threads});
-  return compute_strain(a, Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
-                                          .normalization = Gaussian_normalization{.sigma = sigma},
-                                          .degenerate_tolerance = tolerance, .threads = threads});
+// The tool's --reference-mesh: a rest pose kept apart from the frames (the cat folder's
+// cat-reference.obj), read from a mesh file, with the connectivity of the animation as read.
+struct Reference_mesh {
+  std::string path;
+  Surface_mesh graph;
+};
+
+std::optional<Reference_mesh> reference_mesh_of(const std::optional<std::filesystem::path>& path) {
+  if (!path) return std::nullopt;
+  const io::Triangle_soup soup = io::read_mesh(*path);
+  return Reference_mesh{path->string(), make_face_graph<Surface_mesh>(io::points_of(soup), soup.triangles)};
 }
 
-py::array strain(const Animation& a, const std::string& reference, std::size_t rest_frame, const std::string& measure,
+// The strain field of `a` with `options`, against `reference` when there is one; its errors then
+// name the reference mesh's file, as the tool's do: a mismatch of connectivity is that file's.
+template <class Options>
+Strain_field<float> field_of(const Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference,
+                             const Options& options) {
+  if (!reference) return compute_strain(a, options);
+  try {
+    return compute_strain(a, reference->graph, options);
+  } catch (const invalid_input& error) {
+    throw invalid_input(std::string(error.what()) + " (the reference mesh must have the connectivity of the "
+                        "animation as read: its num_vertices and num_faces)", {.file = reference->path});
+  }
+}
+
+template <class Measure>
+Strain_field<float> strain_with(const Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference_mesh,
+                                Strain_reference reference, std::size_t rest_frame, Measure measure, bool gaussian,
+                                std::optional<double> sigma, double tolerance, int threads) {
+  if (!gaussian)
+    return field_of(a, reference_mesh,
+                    Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
+                                   .normalization = No_normalization{}, .degenerate_tolerance = tolerance,
+                                   .threads = threads});
+  return field_of(a, reference_mesh,
+                  Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
+                                 .normalization = Gaussian_normalization{.sigma = sigma},
+                                 .degenerate_tolerance = tolerance, .threads = threads});
+}
+
+py::array strain(const Animation& a, const std::string& reference, std::size_t rest_frame,
+                 const std::optional<std::filesystem::path>& reference_mesh, const std::string& measure,
                  const std::string& normalize, std::optional<double> sigma, double degenerate_tolerance, int threads) {
   const Strain_reference ref = reference_of(reference);
   if (normalize != "gaussian" && normalize != "none")
@@ -226,13 +258,16 @@ py::array strain(const Animation& a, const std::string& reference, std::size_t r
   if (sigma && !gaussian) refuse("sigma asks for normalize='gaussian'");
   if (sigma && !(*sigma > 0)) refuse("sigma must be positive");
   if (ref == Strain_reference::previous_pose && rest_frame != 0) refuse("rest_frame asks for reference='rest'");
+  if (reference_mesh && (ref == Strain_reference::previous_pose || rest_frame != 0))
+    refuse("reference_mesh takes the place of the rest frame: it excludes reference='previous' and rest_frame");
   if (measure != "max-principal" && measure != "green-lagrange" && measure != "frobenius" && measure != "area-ratio")
     refuse("measure must be 'max-principal', 'green-lagrange', 'frobenius' or 'area-ratio', got '" + measure + "'");
   Strain_field<float> field;
   {
     py::gil_scoped_release release;
+    const std::optional<Reference_mesh> rest = reference_mesh_of(reference_mesh);
     const auto run = [&](auto m) {
-      return strain_with(a.mesh, ref, rest_frame, m, gaussian, sigma, degenerate_tolerance, threads);
+      return strain_with(a.mesh, rest, ref, rest_frame, m, gaussian, sigma, degenerate_tolerance, threads);
     };
     if (measure == "max-principal") field = run(Max_principal_strain{});
     else if (measure == "green-lagrange") field = run(Green_lagrange_strain{});
@@ -250,18 +285,28 @@ Frame_metric metric_of(const std::string& name) {
   refuse("metric must be 'euclidean', 'l1' or 'cosine', got '" + name + "'");
 }
 
-// The frame distances of the temporal segmentation: the default strain against `rest_frame`.
-Eigen::MatrixXf distances_of(const Surface_mesh_animation& a, Frame_metric metric, std::size_t rest_frame, int threads) {
-  const Strain_field<float> field = compute_strain(a, {.rest_frame = rest_frame, .threads = threads});
+void check_rest(const std::optional<std::filesystem::path>& reference_mesh, std::size_t rest_frame) {
+  if (reference_mesh && rest_frame != 0)
+    refuse("reference_mesh takes the place of the rest frame: it excludes rest_frame");
+}
+
+// The frame distances of the temporal segmentation: the default strain against `rest_frame`, or
+// against the reference mesh.
+Eigen::MatrixXf distances_of(const Surface_mesh_animation& a, Frame_metric metric, std::size_t rest_frame,
+                             const std::optional<std::filesystem::path>& reference_mesh, int threads) {
+  const Strain_field<float> field =
+      field_of(a, reference_mesh_of(reference_mesh), Strain_options{.rest_frame = rest_frame, .threads = threads});
   return frame_distances(field, {.metric = metric, .threads = threads});
 }
 
-py::array distances(const Animation& a, const std::string& metric, std::size_t rest_frame, int threads) {
+py::array distances(const Animation& a, const std::string& metric, std::size_t rest_frame,
+                    const std::optional<std::filesystem::path>& reference_mesh, int threads) {
   const Frame_metric m = metric_of(metric);
+  check_rest(reference_mesh, rest_frame);
   Eigen::MatrixXf d;
   {
     py::gil_scoped_release release;
-    d = distances_of(a.mesh, m, rest_frame, threads);
+    d = distances_of(a.mesh, m, rest_frame, reference_mesh, threads);
   }
   const auto n = py::ssize_t(d.rows());
   const auto item = py::ssize_t(sizeof(float));
@@ -272,11 +317,13 @@ std::vector<std::pair<std::size_t, std::size_t>> temporal(const Animation& a, co
                                                           std::optional<double> threshold, bool absolute,
                                                           std::optional<std::size_t> segments, std::size_t min_length,
                                                           const std::string& metric, std::size_t rest_frame,
+                                                          const std::optional<std::filesystem::path>& reference_mesh,
                                                           int threads) {
   if (method != "optimal" && method != "binary-split" && method != "greedy" && method != "barbic")
     refuse("method must be 'optimal', 'binary-split', 'greedy' or 'barbic', got '" + method + "'");
   const Frame_metric m = metric_of(metric);
   if (segments && method != "optimal") refuse("segments asks for method='optimal'");
+  check_rest(reference_mesh, rest_frame);
   if (segments && *segments == 0) refuse("segments must be at least 1");
   if (min_length == 0) refuse("min_length must be at least 1");
   if (threshold && !(*threshold >= 0)) refuse("threshold must be non-negative");
@@ -286,7 +333,7 @@ std::vector<std::pair<std::size_t, std::size_t>> temporal(const Animation& a, co
   Temporal_segmentation result;
   {
     py::gil_scoped_release release;
-    const Segment_cost cost(distances_of(a.mesh, m, rest_frame, threads));
+    const Segment_cost cost(distances_of(a.mesh, m, rest_frame, reference_mesh, threads));
     if (method == "binary-split")
       result = segment_frames(
           cost, Binary_split{.threshold = threshold_or(Binary_split{}.threshold), .min_length = min_length});
@@ -305,15 +352,23 @@ std::vector<std::pair<std::size_t, std::size_t>> temporal(const Animation& a, co
 
 // The evolving graph as plain data, which python/deformseg/_graphs.py makes into classes:
 // (frames, segments, [(first, last, [(kind, segment or None, triangles, area)], [(u, v)])]).
-py::tuple evolving(const Animation& a, double threshold, const std::string& reference, std::size_t min_triangles,
+// The reference: none given, previous, or rest with a reference mesh (as the tool's).
+py::tuple evolving(const Animation& a, double threshold, const std::optional<std::string>& reference,
+                   const std::optional<std::filesystem::path>& reference_mesh, std::size_t min_triangles,
                    std::size_t min_frames, std::size_t max_island) {
   if (!(threshold >= 0 && threshold <= 1)) refuse("threshold must be in [0, 1]");
-  const Spatiotemporal_options options{.reference = reference_of(reference), .threshold = threshold,
-                                       .min_triangles = min_triangles, .min_frames = min_frames,
-                                       .max_island = max_island};
+  if (reference_mesh && reference == "previous")
+    refuse("reference_mesh is a rest pose: it excludes reference='previous'");
+  const Spatiotemporal_options options{.reference = reference_of(reference.value_or(reference_mesh ? "rest" : "previous")),
+                                       .threshold = threshold, .min_triangles = min_triangles,
+                                       .min_frames = min_frames, .max_island = max_island};
   const Evolving_graph graph = [&] {
     py::gil_scoped_release release;
-    return evolving_graph(a.mesh, options);
+    if (!reference_mesh) return evolving_graph(a.mesh, options);
+    const Strain_field<float> field = field_of(a.mesh, reference_mesh_of(reference_mesh), Strain_options{});
+    const std::vector<double> areas = face_areas(a.mesh, 0);
+    const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(field, a.mesh.triangles(), options);
+    return evolving_graph(Frame_segments(segmentation, a.mesh.triangles(), areas));
   }();
   py::list key_frames;
   for (const Key_frame& k : graph) {
@@ -623,13 +678,15 @@ line and frame of the first problem, or for an option that does not apply (clip 
 topology for glTF), as the tool does. Complexity linear in the input's size. Releases the GIL.)doc");
 
   m.def("strain", &strain, "animation"_a, py::kw_only(), "reference"_a = "rest", "rest_frame"_a = 0,
-        "measure"_a = "max-principal", "normalize"_a = "gaussian", "sigma"_a = py::none(),
+        "reference_mesh"_a = py::none(), "measure"_a = "max-principal", "normalize"_a = "gaussian", "sigma"_a = py::none(),
         "degenerate_tolerance"_a = 1e-12, "threads"_a = 0,
         R"doc(The strain of every triangle at every frame: a (T, F) float32 array, row t the frame t
 (compute_strain; Strain_options' defaults).
 
 reference: "rest" (default; against frame `rest_frame`, default 0) or "previous" (against the
-frame before; frame 0's strain is 0). measure: "max-principal" (default, max |l - 1| over the
+frame before; frame 0's strain is 0). reference_mesh (default None): a mesh file (.obj, .off,
+.ply) with the animation's connectivity in another pose, a rest pose kept apart from the frames,
+in the place of frame `rest_frame`. measure: "max-principal" (default, max |l - 1| over the
 principal stretches l), "green-lagrange", "frobenius" or "area-ratio". normalize: "gaussian"
 (default, 1 - exp(-s^2 / 2 sigma^2), sigma the 95th percentile of the strains unless `sigma` gives
 it) or "none" (raw strains). degenerate_tolerance (default 1e-12): reference triangles thinner than
@@ -638,18 +695,20 @@ Invariant to rotation, translation and uniform scale of the whole animation. The
 library's result (no copy). Complexity O(T F). Releases the GIL.)doc");
 
   m.def("frame_distances", &distances, "animation"_a, py::kw_only(), "metric"_a = "euclidean", "rest_frame"_a = 0,
-        "threads"_a = 0,
+        "reference_mesh"_a = py::none(), "threads"_a = 0,
         R"doc(The (T, T) float32 matrix of distances between the frames' normalised rest-pose strains
 (the frame descriptors of the temporal segmentation): metric "euclidean" (default), "l1" or
-"cosine"; the strain against frame `rest_frame` (default 0). Symmetric, zero diagonal; a
+"cosine"; the strain against frame `rest_frame` (default 0), or against `reference_mesh` (default
+None; as in `strain`). Symmetric, zero diagonal; a
 Fortran-ordered array that owns the library's matrix (no copy). Complexity O(T F) for the strain,
 O(T^2 F) for the distances. Releases the GIL.)doc");
 
   m.def("temporal_segmentation", &temporal, "animation"_a, py::kw_only(), "method"_a = "optimal",
         "threshold"_a = py::none(), "absolute"_a = false, "segments"_a = py::none(), "min_length"_a = 1,
-        "metric"_a = "euclidean", "rest_frame"_a = 0, "threads"_a = 0,
+        "metric"_a = "euclidean", "rest_frame"_a = 0, "reference_mesh"_a = py::none(), "threads"_a = 0,
         R"doc(Intervals of similar poses: a list of (first, last) frame intervals, inclusive, covering
-0..T-1 in order, from the frame distances of `frame_distances(animation, metric=..., rest_frame=...)`.
+0..T-1 in order, from the frame distances of `frame_distances(animation, metric=..., rest_frame=...,
+reference_mesh=...)`.
 
 method: "optimal" (default; least length-weighted cost with a penalty per segment, or exactly
 `segments` segments), "binary-split", "greedy" (the thesis' Algorithm 4-1) or "barbic" (PCA change
@@ -659,8 +718,8 @@ detection). threshold: binary-split and greedy, the largest within-segment dissi
 segment (optimal, binary-split). Complexity O(T^2 F) for the distances, then the method's
 (optimal: O(T^2) per segment count). Releases the GIL.)doc");
 
-  m.def("_evolving_graph", &evolving, "animation"_a, "threshold"_a = 0.5, "reference"_a = "previous",
-        "min_triangles"_a = 10, "min_frames"_a = 2, "max_island"_a = 30,
+  m.def("_evolving_graph", &evolving, "animation"_a, "threshold"_a = 0.5, "reference"_a = py::none(),
+        "reference_mesh"_a = py::none(), "min_triangles"_a = 10, "min_frames"_a = 2, "max_island"_a = 30,
         "The evolving graph as tuples; `deformseg.evolving_graph` makes it an EvolvingGraph. Releases the GIL.");
 
   py::class_<Similarity_result>(m, "Similarity", "What `similarity` gives: how alike two animations move.")

@@ -49,6 +49,7 @@ def strain(
     *,
     reference: str = "rest",
     rest_frame: int = 0,
+    reference_mesh: Optional[_Path] = None,
     measure: str = "max-principal",
     normalize: str = "gaussian",
     sigma: Optional[float] = None,
@@ -56,7 +57,12 @@ def strain(
     threads: int = 0,
 ) -> npt.NDArray[np.float32]: ...  # (T, F)
 def frame_distances(
-    animation: Animation, *, metric: str = "euclidean", rest_frame: int = 0, threads: int = 0
+    animation: Animation,
+    *,
+    metric: str = "euclidean",
+    rest_frame: int = 0,
+    reference_mesh: Optional[_Path] = None,
+    threads: int = 0,
 ) -> npt.NDArray[np.float32]: ...  # (T, T)
 def temporal_segmentation(
     animation: Animation,
@@ -68,6 +74,7 @@ def temporal_segmentation(
     min_length: int = 1,
     metric: str = "euclidean",
     rest_frame: int = 0,
+    reference_mesh: Optional[_Path] = None,
     threads: int = 0,
 ) -> _Pairs: ...
 
@@ -105,7 +112,8 @@ def evolving_graph(
     animation: Animation,
     *,
     threshold: float = 0.5,
-    reference: str = "previous",
+    reference: Optional[str] = None,
+    reference_mesh: Optional[_Path] = None,
     min_triangles: int = 10,
     min_frames: int = 2,
     max_island: int = 30,

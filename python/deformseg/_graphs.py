@@ -2,6 +2,7 @@
 and the graph edit distance on networkx graphs or key frames (``ged``)."""
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Iterator, List, Optional, Tuple, Union
 
@@ -106,20 +107,23 @@ class EvolvingGraph:
         return [k.to_networkx() for k in self.key_frames]
 
 
-def evolving_graph(animation: _deformseg.Animation, *, threshold: float = 0.5, reference: str = "previous",
-                   min_triangles: int = 10, min_frames: int = 2, max_island: int = 30) -> EvolvingGraph:
+def evolving_graph(animation: _deformseg.Animation, *, threshold: float = 0.5, reference: Optional[str] = None,
+                   reference_mesh: Optional[Union[str, "os.PathLike[str]"]] = None, min_triangles: int = 10,
+                   min_frames: int = 2, max_island: int = 30) -> EvolvingGraph:
     """The spatio-temporal segmentation of `animation` and the evolving graph of its key frames
     (deformseg::evolving_graph with Spatiotemporal_options; the tool's ``spatiotemporal``).
 
     threshold (default 0.5): a triangle-frame is deformed above this normalised strain, in [0, 1];
-    reference: "previous" (default; deformed while it moves) or "rest" (away from frame 0);
+    reference: "previous" (the default; deformed while it moves) or "rest" (away from frame 0, or from
+    `reference_mesh`, and the default with it); reference_mesh (default None): a mesh file with the
+    animation's connectivity in a rest pose kept apart from the frames;
     min_triangles (default 10) and min_frames (default 2): smaller segments become rigid;
     max_island (default 30): rigid islands of at most this many triangles inside one segment join
     it (0: none). Node areas are shares of the mesh's area in frame 0. Raises InvalidInput as the
     library does. Complexity O(T F) besides the strain's O(T F). Releases the GIL.
     """
     frames, segments, key_frames = _deformseg._evolving_graph(
-        animation, threshold, reference, min_triangles, min_frames, max_island)
+        animation, threshold, reference, reference_mesh, min_triangles, min_frames, max_island)
     return EvolvingGraph(frames, segments, [
         KeyFrame(first, last, [Node(*node) for node in nodes], [tuple(edge) for edge in edges])
         for first, last, nodes, edges in key_frames])

@@ -260,3 +260,35 @@ def test_point_cache_with_topology_as_tool(tool, tmp_path, csv_matrix):
     assert np.array_equal(deformseg.strain(a), csv_matrix(tmp_path / "strain.csv", np.float32))
     with pytest.raises(deformseg.InvalidInput, match="needs a topology mesh"):
         deformseg.read_animation(pc2)
+
+
+def test_reference_mesh_as_tool(tool, tubes, tmp_path, csv_matrix):
+    # A rest pose kept apart from the frames: here the tube's frame 10, given as a mesh file.
+    folder = tubes[1]
+    rest = folder / "frame_0010.ply"
+    a = deformseg.read_animation(folder)
+    tool("strain", folder, "--reference-mesh", rest, "--measure", "frobenius", "--out", tmp_path / "s.csv")
+    assert np.array_equal(deformseg.strain(a, reference_mesh=rest, measure="frobenius"),
+                          csv_matrix(tmp_path / "s.csv", np.float32))
+    document = tool("temporal", folder, "--reference-mesh", rest, "--matrix", tmp_path / "d.csv", "--json", "-")
+    assert deformseg.temporal_segmentation(a, reference_mesh=rest) == [
+        (s["first"], s["last"]) for s in document["segments"]]
+    assert np.array_equal(deformseg.frame_distances(a, reference_mesh=rest), csv_matrix(tmp_path / "d.csv", np.float32))
+    document = tool("spatiotemporal", folder, "--reference-mesh", rest, "--threshold", "0.1", "--json", "-")
+    check_evolving_graph(deformseg.evolving_graph(a, reference_mesh=rest, threshold=0.1), document)
+
+
+def test_reference_mesh_errors_as_tool(tubes, tmp_path):
+    a = deformseg.read_animation(tubes[0])
+    other = tmp_path / "triangle.obj"
+    other.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    with pytest.raises(deformseg.InvalidInput, match="the reference mesh must have the connectivity") as error:
+        deformseg.strain(a, reference_mesh=other)
+    assert error.value.file == str(other)
+    rest = tubes[0] / "frame_0000.ply"
+    with pytest.raises(deformseg.InvalidInput, match="excludes reference='previous'"):
+        deformseg.strain(a, reference_mesh=rest, reference="previous")
+    with pytest.raises(deformseg.InvalidInput, match="excludes rest_frame"):
+        deformseg.temporal_segmentation(a, reference_mesh=rest, rest_frame=3)
+    with pytest.raises(deformseg.InvalidInput, match="excludes reference='previous'"):
+        deformseg.evolving_graph(a, reference_mesh=rest, reference="previous")
