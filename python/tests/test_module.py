@@ -206,10 +206,10 @@ def test_similarity_matrix_reports_progress_and_stops(grid):
 
 
 def test_long_calls_release_the_gil(grid):
-    # A 400-frame animation of 20 000 triangles: its frame distances, on one thread, take a good
-    # fraction of a second, during which a Python thread keeps counting. Were the GIL held, the
+    # A 600-frame animation of 20 000 triangles: its frame distances, on one thread, take about half
+    # a second, during which a Python thread keeps counting. Were the GIL held, the
     # thread could count for at most about one switch interval (5 ms) before the call took it.
-    a = deformseg.Animation(*grid(100, 100, 400))
+    a = deformseg.Animation(*grid(100, 100, 600))
     counter = [0]
     stop = threading.Event()
 
