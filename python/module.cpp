@@ -843,4 +843,5 @@ InvalidInput naming the file and line of a bad row. Complexity O(rows).)doc");
         "The graph edit distance of two graphs given as node labels and edges; `deformseg.ged` takes graphs. "
         "Releases the GIL.");
   m.attr("EXACT_GED_MAX_EXPANDED") = ged::Exact_ged{}.max_expanded;
+  m.attr("__version__") = DEFORMSEG_VERSION;
 }

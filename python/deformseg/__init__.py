@@ -24,6 +24,7 @@ from ._deformseg import (
     similarity_matrix,
     strain,
     temporal_segmentation,
+    __version__,
 )
 from ._graphs import EvolvingGraph, KeyFrame, Node, evolving_graph, ged
 

@@ -9,6 +9,7 @@ import numpy.typing as npt
 _Path = Union[str, "os.PathLike[str]"]
 _Pairs = List[Tuple[int, int]]
 
+__version__: str
 EXACT_GED_MAX_EXPANDED: int
 
 class InvalidInput(ValueError):

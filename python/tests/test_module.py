@@ -26,6 +26,7 @@ def test_animation_from_arrays(grid):
     assert np.array_equal(a.frames, frames) and np.array_equal(a.faces, faces)
     assert a.faces.dtype == np.uint32 and a.repair is None
     assert "7 frames" in repr(a)
+    assert deformseg.__version__.count(".") == 2
 
 
 def test_frames_and_faces_are_read_only_views_of_the_animation(grid):
