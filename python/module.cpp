@@ -644,7 +644,8 @@ Complexity O(T V + F).)doc")
           [](const py::object& self) {
             const Surface_mesh_animation& a = self.cast<const Animation&>().mesh;
             static_assert(sizeof(Surface_mesh_animation::Triangle) == 3 * sizeof(std::uint32_t));
-            return view(a.triangles().front().data(), {py::ssize_t(a.num_faces()), py::ssize_t(3)}, self);
+            const auto* indices = reinterpret_cast<const std::uint32_t*>(a.triangles().data());
+            return view(indices, {py::ssize_t(a.num_faces()), py::ssize_t(3)}, self);
           },
           "The (F, 3) uint32 vertex indices of the triangles: a read-only view (no copy).")
       .def_property_readonly("num_frames", [](const Animation& a) { return a.mesh.num_frames(); },
