@@ -1,0 +1,54 @@
+"""deformseg: segmentation and motion similarity of deforming meshes, from NumPy.
+
+A thin, typed layer over the C++ library's default types (``Surface_mesh_animation``, float32
+strains): the compiled functions come from ``deformseg._deformseg``; the evolving graph's classes,
+their networkx conversion and ``ged`` on graphs are pure Python (``deformseg._graphs``). Option
+names, defaults and errors are the C++ options' and the ``deformseg`` tool's; every long call
+releases the GIL.
+"""
+from ._deformseg import (
+    EXACT_GED_MAX_EXPANDED,
+    Animation,
+    GedResult,
+    InvalidInput,
+    MotionMatch,
+    RetrievalScores,
+    Similarity,
+    SimilarityStopped,
+    evaluate,
+    find_motion,
+    frame_distances,
+    read_animation,
+    read_motion_labels,
+    similarity,
+    similarity_matrix,
+    strain,
+    temporal_segmentation,
+    __version__,
+)
+from ._graphs import EvolvingGraph, KeyFrame, Node, evolving_graph, ged
+
+__all__ = [
+    "Animation",
+    "EvolvingGraph",
+    "EXACT_GED_MAX_EXPANDED",
+    "GedResult",
+    "InvalidInput",
+    "KeyFrame",
+    "MotionMatch",
+    "Node",
+    "RetrievalScores",
+    "Similarity",
+    "SimilarityStopped",
+    "evaluate",
+    "evolving_graph",
+    "find_motion",
+    "frame_distances",
+    "ged",
+    "read_animation",
+    "read_motion_labels",
+    "similarity",
+    "similarity_matrix",
+    "strain",
+    "temporal_segmentation",
+]

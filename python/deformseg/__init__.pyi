@@ -1,0 +1,204 @@
+# Type stubs of the deformseg package (the compiled deformseg._deformseg and deformseg._graphs).
+# Kept in sync by python/tests/test_module.py, which checks that every public name is here.
+import os
+from typing import Any, Callable, Iterator, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+_Path = Union[str, "os.PathLike[str]"]
+_Pairs = List[Tuple[int, int]]
+
+__version__: str
+EXACT_GED_MAX_EXPANDED: int
+
+class InvalidInput(ValueError):
+    file: Optional[str]
+    line: Optional[int]
+    frame: Optional[int]
+    message: str
+
+class SimilarityStopped(RuntimeError): ...
+
+class Animation:
+    def __init__(self, faces: npt.ArrayLike, frames: npt.ArrayLike) -> None: ...
+    @property
+    def frames(self) -> npt.NDArray[np.float64]: ...  # (T, V, 3), read-only view
+    @property
+    def faces(self) -> npt.NDArray[np.uint32]: ...  # (F, 3), read-only view
+    @property
+    def num_frames(self) -> int: ...
+    @property
+    def num_vertices(self) -> int: ...
+    @property
+    def num_faces(self) -> int: ...
+    @property
+    def repair(self) -> Optional[dict[str, int]]: ...
+
+def read_animation(
+    path: _Path,
+    clip: Optional[str] = None,
+    fps: float = 30.0,
+    topology: Optional[_Path] = None,
+    triangulate: bool = False,
+    weld: Optional[bool] = None,
+    refuse_defects: bool = False,
+    threads: int = 0,
+) -> Animation: ...
+def strain(
+    animation: Animation,
+    *,
+    reference: str = "rest",
+    rest_frame: int = 0,
+    reference_mesh: Optional[_Path] = None,
+    measure: str = "max-principal",
+    normalize: str = "gaussian",
+    sigma: Optional[float] = None,
+    degenerate_tolerance: float = 1e-12,
+    threads: int = 0,
+) -> npt.NDArray[np.float32]: ...  # (T, F)
+def frame_distances(
+    animation: Animation,
+    *,
+    metric: str = "euclidean",
+    rest_frame: int = 0,
+    reference_mesh: Optional[_Path] = None,
+    threads: int = 0,
+) -> npt.NDArray[np.float32]: ...  # (T, T)
+def temporal_segmentation(
+    animation: Animation,
+    *,
+    method: str = "optimal",
+    threshold: Optional[float] = None,
+    absolute: bool = False,
+    segments: Optional[int] = None,
+    min_length: int = 1,
+    metric: str = "euclidean",
+    rest_frame: int = 0,
+    reference_mesh: Optional[_Path] = None,
+    threads: int = 0,
+) -> _Pairs: ...
+
+class Node:
+    kind: str
+    segment: Optional[int]
+    triangles: int
+    area: float
+    def __init__(self, kind: str, segment: Optional[int], triangles: int, area: float) -> None: ...
+    @property
+    def label(self) -> str: ...
+
+class KeyFrame:
+    first: int
+    last: int
+    nodes: List[Node]
+    edges: _Pairs
+    def __init__(self, first: int, last: int, nodes: List[Node] = ..., edges: _Pairs = ...) -> None: ...
+    @property
+    def num_frames(self) -> int: ...
+    def to_networkx(self) -> Any: ...  # networkx.Graph
+
+class EvolvingGraph:
+    num_frames: int
+    num_segments: int
+    key_frames: List[KeyFrame]
+    def __init__(self, num_frames: int, num_segments: int, key_frames: List[KeyFrame] = ...) -> None: ...
+    def __len__(self) -> int: ...
+    def __getitem__(self, index: int) -> KeyFrame: ...
+    def __iter__(self) -> Iterator[KeyFrame]: ...
+    def key_frame_of(self, frame: int) -> int: ...
+    def to_networkx(self) -> List[Any]: ...  # networkx.Graph per key frame
+
+def evolving_graph(
+    animation: Animation,
+    *,
+    threshold: float = 0.5,
+    reference: Optional[str] = None,
+    reference_mesh: Optional[_Path] = None,
+    min_triangles: int = 10,
+    min_frames: int = 2,
+    max_island: int = 30,
+) -> EvolvingGraph: ...
+
+class Similarity:
+    @property
+    def value(self) -> float: ...
+    @property
+    def score(self) -> float: ...
+    @property
+    def alignment(self) -> _Pairs: ...
+    @property
+    def labels_a(self) -> List[int]: ...
+    @property
+    def labels_b(self) -> List[int]: ...
+    @property
+    def compared(self) -> str: ...
+    @property
+    def z_score(self) -> Optional[float]: ...
+    @property
+    def shuffled_copies(self) -> int: ...
+
+def similarity(
+    a: Animation,
+    b: Animation,
+    *,
+    policy: str = "motion-signature",
+    alignment: Optional[str] = None,
+    threshold: Optional[float] = None,
+    significance: Optional[int] = None,
+    seed: int = 1,
+) -> Similarity: ...
+def similarity_matrix(
+    animations: Sequence[Animation],
+    database: Optional[Sequence[Animation]] = None,
+    *,
+    policy: str = "motion-signature",
+    alignment: Optional[str] = None,
+    threshold: Optional[float] = None,
+    progress: Optional[Callable[[int, int], Optional[bool]]] = None,
+) -> npt.NDArray[np.float64]: ...  # (N, N), or (Q, D) with a database
+
+class MotionMatch:
+    @property
+    def first(self) -> int: ...
+    @property
+    def last(self) -> int: ...
+    @property
+    def value(self) -> float: ...
+    @property
+    def alignment(self) -> _Pairs: ...
+
+def find_motion(query: Animation, long_animation: Animation, count: int = 1, *, shortest: float = 0.5) -> List[MotionMatch]: ...
+
+class RetrievalScores:
+    queries: int
+    queries_without_relevant: int
+    queries_without_candidate: int
+    nn_accuracy: Optional[float]
+    mean_average_precision: Optional[float]
+    roc_auc: Optional[float]
+    median_same: Optional[float]
+    median_different: Optional[float]
+    same_pairs: int
+    different_pairs: int
+    labels: List[str]
+    confusion: List[List[int]]
+    @property
+    def per_motion(self) -> List[dict[str, Any]]: ...
+
+def evaluate(similarity: npt.ArrayLike, labels: Sequence[Any]) -> RetrievalScores: ...
+def read_motion_labels(path: _Path) -> List[dict[str, str]]: ...
+
+class GedResult:
+    distance: float
+    exact: bool
+    lower: float
+    mapping: List[int]
+    @property
+    def upper(self) -> Optional[float]: ...
+
+def ged(
+    g1: Any, g2: Any, *, method: str = "exact", max_expanded: int = ..., max_seconds: float = 0.0
+) -> GedResult: ...  # g1, g2: networkx.Graph or KeyFrame
+
+__all__: List[str]

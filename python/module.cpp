@@ -1,0 +1,848 @@
+// deformseg._deformseg: the compiled half of the Python module, over the library's default types
+// (Surface_mesh_animation, float strains). One translation unit, so that CGAL, Boost and Eigen are
+// parsed once. The pure-Python half (python/deformseg/) re-exports these names and adds the
+// evolving graph's classes, networkx conversions and `ged` on networkx graphs.
+//
+// Every call that can take long releases the GIL; the arguments it reads stay referenced by
+// Python objects held for the call. Option names, defaults and checks are those of the C++
+// options and of the `deformseg` tool, whose names the string options take.
+#include <deformseg/alignment/dtw.h>
+#include <deformseg/alignment/smith_waterman.h>
+#include <deformseg/alignment/subsequence_dtw.h>
+#include <deformseg/default_mesh.h>
+#include <deformseg/evolving_graph.h>
+#include <deformseg/exceptions.h>
+#include <deformseg/face_areas.h>
+#include <deformseg/find_motion.h>
+#include <deformseg/frame_distances.h>
+#include <deformseg/ged/bipartite_ged.h>
+#include <deformseg/ged/exact_ged.h>
+#include <deformseg/ged/lower_bound.h>
+#include <deformseg/io/read_animation.h>
+#include <deformseg/io/read_graph.h>
+#include <deformseg/io/read_mesh.h>
+#include <deformseg/motion_similarity.h>
+#include <deformseg/retrieval_evaluation.h>
+#include <deformseg/similarity/self_similarity_matching.h>
+#include <deformseg/similarity/significance.h>
+#include <deformseg/strain.h>
+#include <deformseg/temporal_segmentation.h>
+// After every other io header: it opens a namespace deformseg::io::internal, which would hide
+// deformseg::internal from the io headers that name it unqualified.
+#include <deformseg/io/motion_labels.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <random>
+#include <ranges>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+using namespace deformseg;
+
+namespace {
+
+// ---- Animations --------------------------------------------------------------------------------
+
+// An animation as Python holds it: the library's default model, and what the reader repaired.
+struct Animation {
+  Surface_mesh_animation mesh;
+  std::optional<io::Repair_report> repair{};
+};
+
+[[noreturn]] void refuse(const std::string& message) { throw invalid_input(message); }
+
+std::string shape_of(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t k = 0; k < a.ndim(); ++k) s += (k ? ", " : "") + std::to_string(a.shape(k));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+std::string dtype_of(const py::array& a) { return py::str(a.dtype()).cast<std::string>(); }
+
+// The (T, V, 3) coordinates of `frames` as the library stores them, doubles frame after frame:
+// one copy of a C-contiguous float64 or float32 array, a NumPy conversion first for any other.
+std::vector<double> positions_of(const py::array& frames) {
+  if (frames.dtype().kind() != 'f' || (frames.itemsize() != 4 && frames.itemsize() != 8))
+    throw py::type_error("frames: expected a float32 or float64 array of shape (T, V, 3), got dtype " +
+                         dtype_of(frames));
+  if (frames.ndim() != 3 || frames.shape(2) != 3 || frames.shape(0) < 1 || frames.shape(1) < 3)
+    throw py::value_error("frames: expected shape (T, V, 3) with T >= 1 and V >= 3, got " + shape_of(frames));
+  const auto count = std::size_t(frames.size());
+  const bool contiguous = (frames.flags() & py::array::c_style) != 0;
+  if (contiguous && frames.itemsize() == 8) {
+    const auto* data = static_cast<const double*>(frames.data());
+    py::gil_scoped_release release;
+    return std::vector<double>(data, data + count);
+  }
+  if (contiguous) {
+    const auto* data = static_cast<const float*>(frames.data());
+    py::gil_scoped_release release;
+    return std::vector<double>(data, data + count);
+  }
+  const auto converted = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(frames);
+  return std::vector<double>(converted.data(), converted.data() + count);
+}
+
+// The triangles of `faces`, an (F, 3) array of integers, each checked to be in [0, vertices).
+std::vector<std::array<std::uint32_t, 3>> triangles_of(const py::array& faces, std::size_t vertices) {
+  if (faces.dtype().kind() != 'i' && faces.dtype().kind() != 'u')
+    throw py::type_error("faces: expected an integer array of shape (F, 3), got dtype " + dtype_of(faces));
+  if (faces.ndim() != 2 || faces.shape(1) != 3 || faces.shape(0) < 1)
+    throw py::value_error("faces: expected shape (F, 3) with F >= 1, got " + shape_of(faces));
+  const auto indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(faces);
+  const auto read = indices.unchecked<2>();
+  std::vector<std::array<std::uint32_t, 3>> triangles(std::size_t(read.shape(0)));
+  for (py::ssize_t j = 0; j < read.shape(0); ++j)
+    for (py::ssize_t k = 0; k < 3; ++k) {
+      const std::int64_t v = read(j, k);
+      if (v < 0 || std::uint64_t(v) >= vertices)
+        throw invalid_input("faces: triangle " + std::to_string(j) + " has vertex index " + std::to_string(v) +
+                            " out of range [0, " + std::to_string(vertices) + ")");
+      triangles[std::size_t(j)][std::size_t(k)] = std::uint32_t(v);
+    }
+  return triangles;
+}
+
+// Any array-like (a list, a memory view, an array of another library) as a NumPy array, without
+// copy when it is one already.
+py::array as_array(const py::object& value, const char* name) {
+  py::array a = py::array::ensure(value);
+  if (!a) throw py::type_error(std::string(name) + ": expected an array, got " +
+                               py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+  return a;
+}
+
+Animation animation_of_arrays(const py::object& faces_like, const py::object& frames_like) {
+  const py::array frames = as_array(frames_like, "frames");
+  const py::array faces = as_array(faces_like, "faces");
+  std::vector<double> positions = positions_of(frames);
+  const auto vertices = std::size_t(frames.shape(1));
+  const auto triangles = triangles_of(faces, vertices);
+  py::gil_scoped_release release;
+  std::vector<std::array<double, 3>> rest(vertices);
+  std::copy_n(positions.data(), 3 * vertices, rest.front().data());
+  Surface_mesh graph = make_face_graph<Surface_mesh>(rest, triangles);
+  return {Surface_mesh_animation(std::move(graph), std::move(positions)), std::nullopt};
+}
+
+// A read-only NumPy view of `count` values at `data`, kept alive by `owner`.
+template <class T>
+py::array view(const T* data, std::vector<py::ssize_t> shape, const py::object& owner) {
+  py::array a(py::dtype::of<T>(), std::move(shape), {}, data, owner);
+  a.attr("setflags")(py::arg("write") = false);
+  return a;
+}
+
+// A NumPy array that owns `value` (moved to the heap) and shows `data` of it.
+template <class Owned, class T>
+py::array owning(Owned&& value, const T* (*data)(const Owned&), std::vector<py::ssize_t> shape,
+                 std::vector<py::ssize_t> strides = {}) {
+  auto* held = new Owned(std::forward<Owned>(value));
+  py::capsule owner(held, [](void* p) { delete static_cast<Owned*>(p); });
+  return py::array(py::dtype::of<T>(), std::move(shape), std::move(strides), data(*held), owner);
+}
+
+py::dict repair_dict(const io::Repair_report& r) {
+  py::dict d;
+  d["input_vertices"] = r.input_vertices;
+  d["input_triangles"] = r.input_triangles;
+  d["welded_vertices"] = r.welded_vertices;
+  d["degenerate_triangles"] = r.degenerate_triangles;
+  d["duplicate_triangles"] = r.duplicate_triangles;
+  d["non_manifold_edges"] = r.non_manifold_edges;
+  d["non_manifold_vertices"] = r.non_manifold_vertices;
+  d["duplicated_vertices"] = r.duplicated_vertices;
+  d["reoriented_triangles"] = r.reoriented_triangles;
+  d["unrepairable_triangles"] = r.unrepairable_triangles;
+  d["vertices"] = r.vertices;
+  d["triangles"] = r.triangles;
+  return d;
+}
+
+// read_animation: the rules of the tool's input options ("FILE.glb#CLIP", clip and topology only
+// where they apply, glTF welded unless weld=False, other formats only with weld=True).
+Animation read_input(const std::filesystem::path& path, std::optional<std::string> clip, double fps,
+               std::optional<std::filesystem::path> topology, bool triangulate, std::optional<bool> weld,
+               bool refuse_defects, int threads) {
+  std::string input = path.string();
+  const std::size_t hash = input.rfind('#');
+  if (hash != std::string::npos && io::is_gltf(input.substr(0, hash))) {
+    if (clip) throw invalid_input("the clip is given twice: by clip= and after '#'", {.file = input});
+    clip = input.substr(hash + 1);
+    input.resize(hash);
+  }
+  const bool gltf = io::is_gltf(input);
+  const auto location = Input_location{.file = input};
+  if (!gltf && clip) throw invalid_input("clip applies to glTF files only", location);
+  if (gltf && topology) throw invalid_input("topology does not apply to a glTF file: it has its own", location);
+  if (!(fps > 0)) throw invalid_input("fps must be positive", location);
+  if (threads < 0) throw invalid_input("threads must be 0 (all) or more", location);
+  const io::Repair_options repair{.weld = weld.value_or(gltf),
+                                  .defects = refuse_defects ? io::Defect_policy::refuse : io::Defect_policy::repair};
+  io::Animation_read_options options{.topology = topology, .triangulate = triangulate, .threads = threads,
+                                     .repair = repair, .clip = clip.value_or(""), .fps = fps};
+  py::gil_scoped_release release;
+  io::Repair_report report;
+  Surface_mesh_animation mesh = io::read_animation(input, options, &report);
+  return {std::move(mesh), report};
+}
+
+// ---- Strain, temporal segmentation, evolving graph ---------------------------------------------
+
+Strain_reference reference_of(const std::string& name) {
+  if (name == "rest") return Strain_reference::rest_pose;
+  if (name == "previous") return Strain_reference::previous_pose;
+  refuse("reference must be 'rest' or 'previous', got '" + name + "'");
+}
+
+// The tool's --reference-mesh: a rest pose kept apart from the frames (the cat folder's
+// cat-reference.obj), read from a mesh file, with the connectivity of the animation as read.
+struct Reference_mesh {
+  std::string path;
+  Surface_mesh graph;
+};
+
+std::optional<Reference_mesh> reference_mesh_of(const std::optional<std::filesystem::path>& path) {
+  if (!path) return std::nullopt;
+  const io::Triangle_soup soup = io::read_mesh(*path);
+  return Reference_mesh{path->string(), make_face_graph<Surface_mesh>(io::points_of(soup), soup.triangles)};
+}
+
+// The strain field of `a` with `options`, against `reference` when there is one; its errors then
+// name the reference mesh's file, as the tool's do: a mismatch of connectivity is that file's.
+template <class Options>
+Strain_field<float> field_of(const Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference,
+                             const Options& options) {
+  if (!reference) return compute_strain(a, options);
+  try {
+    return compute_strain(a, reference->graph, options);
+  } catch (const invalid_input& error) {
+    throw invalid_input(std::string(error.what()) + " (the reference mesh must have the connectivity of the "
+                        "animation as read: its num_vertices and num_faces)", {.file = reference->path});
+  }
+}
+
+template <class Measure>
+Strain_field<float> strain_with(const Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference_mesh,
+                                Strain_reference reference, std::size_t rest_frame, Measure measure, bool gaussian,
+                                std::optional<double> sigma, double tolerance, int threads) {
+  if (!gaussian)
+    return field_of(a, reference_mesh,
+                    Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
+                                   .normalization = No_normalization{}, .degenerate_tolerance = tolerance,
+                                   .threads = threads});
+  return field_of(a, reference_mesh,
+                  Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
+                                 .normalization = Gaussian_normalization{.sigma = sigma},
+                                 .degenerate_tolerance = tolerance, .threads = threads});
+}
+
+py::array strain(const Animation& a, const std::string& reference, std::size_t rest_frame,
+                 const std::optional<std::filesystem::path>& reference_mesh, const std::string& measure,
+                 const std::string& normalize, std::optional<double> sigma, double degenerate_tolerance, int threads) {
+  const Strain_reference ref = reference_of(reference);
+  if (normalize != "gaussian" && normalize != "none")
+    refuse("normalize must be 'gaussian' or 'none', got '" + normalize + "'");
+  const bool gaussian = normalize == "gaussian";
+  if (sigma && !gaussian) refuse("sigma asks for normalize='gaussian'");
+  if (sigma && !(*sigma > 0)) refuse("sigma must be positive");
+  if (ref == Strain_reference::previous_pose && rest_frame != 0) refuse("rest_frame asks for reference='rest'");
+  if (reference_mesh && (ref == Strain_reference::previous_pose || rest_frame != 0))
+    refuse("reference_mesh takes the place of the rest frame: it excludes reference='previous' and rest_frame");
+  if (measure != "max-principal" && measure != "green-lagrange" && measure != "frobenius" && measure != "area-ratio")
+    refuse("measure must be 'max-principal', 'green-lagrange', 'frobenius' or 'area-ratio', got '" + measure + "'");
+  Strain_field<float> field;
+  {
+    py::gil_scoped_release release;
+    const std::optional<Reference_mesh> rest = reference_mesh_of(reference_mesh);
+    const auto run = [&](auto m) {
+      return strain_with(a.mesh, rest, ref, rest_frame, m, gaussian, sigma, degenerate_tolerance, threads);
+    };
+    if (measure == "max-principal") field = run(Max_principal_strain{});
+    else if (measure == "green-lagrange") field = run(Green_lagrange_strain{});
+    else if (measure == "frobenius") field = run(Frobenius_strain{});
+    else field = run(Area_ratio_strain{});
+  }
+  const auto shape = std::vector<py::ssize_t>{py::ssize_t(field.num_frames()), py::ssize_t(field.num_faces())};
+  return owning(std::move(field), +[](const Strain_field<float>& f) { return f.values().data(); }, shape);
+}
+
+Frame_metric metric_of(const std::string& name) {
+  if (name == "euclidean") return Frame_metric::euclidean;
+  if (name == "l1") return Frame_metric::l1;
+  if (name == "cosine") return Frame_metric::cosine;
+  refuse("metric must be 'euclidean', 'l1' or 'cosine', got '" + name + "'");
+}
+
+void check_rest(const std::optional<std::filesystem::path>& reference_mesh, std::size_t rest_frame) {
+  if (reference_mesh && rest_frame != 0)
+    refuse("reference_mesh takes the place of the rest frame: it excludes rest_frame");
+}
+
+// The frame distances of the temporal segmentation: the default strain against `rest_frame`, or
+// against the reference mesh.
+Eigen::MatrixXf distances_of(const Surface_mesh_animation& a, Frame_metric metric, std::size_t rest_frame,
+                             const std::optional<std::filesystem::path>& reference_mesh, int threads) {
+  const Strain_field<float> field =
+      field_of(a, reference_mesh_of(reference_mesh), Strain_options{.rest_frame = rest_frame, .threads = threads});
+  return frame_distances(field, {.metric = metric, .threads = threads});
+}
+
+py::array distances(const Animation& a, const std::string& metric, std::size_t rest_frame,
+                    const std::optional<std::filesystem::path>& reference_mesh, int threads) {
+  const Frame_metric m = metric_of(metric);
+  check_rest(reference_mesh, rest_frame);
+  Eigen::MatrixXf d;
+  {
+    py::gil_scoped_release release;
+    d = distances_of(a.mesh, m, rest_frame, reference_mesh, threads);
+  }
+  const auto n = py::ssize_t(d.rows());
+  const auto item = py::ssize_t(sizeof(float));
+  return owning(std::move(d), +[](const Eigen::MatrixXf& x) { return x.data(); }, {n, n}, {item, n * item});
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> temporal(const Animation& a, const std::string& method,
+                                                          std::optional<double> threshold, bool absolute,
+                                                          std::optional<std::size_t> segments, std::size_t min_length,
+                                                          const std::string& metric, std::size_t rest_frame,
+                                                          const std::optional<std::filesystem::path>& reference_mesh,
+                                                          int threads) {
+  if (method != "optimal" && method != "binary-split" && method != "greedy" && method != "barbic")
+    refuse("method must be 'optimal', 'binary-split', 'greedy' or 'barbic', got '" + method + "'");
+  const Frame_metric m = metric_of(metric);
+  if (segments && method != "optimal") refuse("segments asks for method='optimal'");
+  check_rest(reference_mesh, rest_frame);
+  if (segments && *segments == 0) refuse("segments must be at least 1");
+  if (min_length == 0) refuse("min_length must be at least 1");
+  if (threshold && !(*threshold >= 0)) refuse("threshold must be non-negative");
+  const auto threshold_or = [&](Segmentation_threshold fallback) {
+    return threshold ? Segmentation_threshold{.value = *threshold, .relative = !absolute} : fallback;
+  };
+  Temporal_segmentation result;
+  {
+    py::gil_scoped_release release;
+    const Segment_cost cost(distances_of(a.mesh, m, rest_frame, reference_mesh, threads));
+    if (method == "binary-split")
+      result = segment_frames(
+          cost, Binary_split{.threshold = threshold_or(Binary_split{}.threshold), .min_length = min_length});
+    else if (method == "greedy")
+      result = segment_frames(cost, Thesis_greedy{.threshold = threshold_or(Thesis_greedy{}.threshold)});
+    else if (method == "barbic")
+      result = segment_frames(cost, Barbic_pca{});
+    else
+      result = segment_frames(cost, Optimal_partition{.penalty = threshold_or(Optimal_partition{}.penalty),
+                                                      .segments = segments, .min_length = min_length});
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  for (const Temporal_segment& s : result.segments) out.emplace_back(s.first, s.last);
+  return out;
+}
+
+// The evolving graph as plain data, which python/deformseg/_graphs.py makes into classes:
+// (frames, segments, [(first, last, [(kind, segment or None, triangles, area)], [(u, v)])]).
+// The reference: none given, previous, or rest with a reference mesh (as the tool's).
+py::tuple evolving(const Animation& a, double threshold, const std::optional<std::string>& reference,
+                   const std::optional<std::filesystem::path>& reference_mesh, std::size_t min_triangles,
+                   std::size_t min_frames, std::size_t max_island) {
+  if (!(threshold >= 0 && threshold <= 1)) refuse("threshold must be in [0, 1]");
+  if (reference_mesh && reference == "previous")
+    refuse("reference_mesh is a rest pose: it excludes reference='previous'");
+  const Spatiotemporal_options options{.reference = reference_of(reference.value_or(reference_mesh ? "rest" : "previous")),
+                                       .threshold = threshold, .min_triangles = min_triangles,
+                                       .min_frames = min_frames, .max_island = max_island};
+  const Evolving_graph graph = [&] {
+    py::gil_scoped_release release;
+    if (!reference_mesh) return evolving_graph(a.mesh, options);
+    const Strain_field<float> field = field_of(a.mesh, reference_mesh_of(reference_mesh), Strain_options{});
+    const std::vector<double> areas = face_areas(a.mesh, 0);
+    const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(field, a.mesh.triangles(), options);
+    return evolving_graph(Frame_segments(segmentation, a.mesh.triangles(), areas));
+  }();
+  py::list key_frames;
+  for (const Key_frame& k : graph) {
+    const Segment_graph& g = k.graph;
+    py::list nodes, edges;
+    for (std::size_t v = 0; v < boost::num_vertices(g); ++v) {
+      const bool rigid = g[v].kind == Segment_kind::rigid;
+      nodes.append(py::make_tuple(rigid ? "rigid" : "deformed", rigid ? py::object(py::none()) : py::int_(g[v].segment),
+                                  g[v].triangles, g[v].area));
+    }
+    for (auto e : boost::make_iterator_range(boost::edges(g)))
+      edges.append(py::make_tuple(std::min(boost::source(e, g), boost::target(e, g)),
+                                  std::max(boost::source(e, g), boost::target(e, g))));
+    key_frames.append(py::make_tuple(k.first_frame, k.last_frame, nodes, edges));
+  }
+  return py::make_tuple(graph.num_frames(), graph.num_segments(), key_frames);
+}
+
+// ---- Similarity ----------------------------------------------------------------------------------
+
+struct Similarity_result {
+  Similarity similarity;
+  std::optional<double> z_score;
+  std::size_t shuffled_copies = 0;
+};
+
+// The tool's --policy, --alignment and --threshold: calls `run` with the policy they name.
+template <class Run>
+auto with_policy(const std::string& policy, const std::optional<std::string>& alignment,
+                 std::optional<double> threshold, const Run& run) {
+  if (policy != "motion-signature" && policy != "histogram" && policy != "graph" && policy != "self-similarity")
+    refuse("policy must be 'motion-signature', 'histogram', 'graph' or 'self-similarity', got '" + policy + "'");
+  const std::string aligned = alignment.value_or(policy == "motion-signature" ? "dtw" : "smith-waterman");
+  if (aligned != "dtw" && aligned != "smith-waterman" && aligned != "subsequence-dtw")
+    refuse("alignment must be 'smith-waterman', 'dtw' or 'subsequence-dtw', got '" + aligned + "'");
+  if (threshold && policy != "graph") refuse("threshold applies to the graph policy only, not to policy '" + policy + "'");
+  if (threshold && !(*threshold >= 0 && *threshold <= 1)) refuse("threshold must be in [0, 1]");
+  const auto with_alignment = [&](auto aligner) {
+    using Aligner = decltype(aligner);
+    if (policy == "graph") {
+      Evolving_graph_similarity<ged::Bipartite_ged, Segment_costs, clustering::K_medoids, Aligner> p;
+      p.segmentation.threshold = threshold.value_or(p.segmentation.threshold);
+      return run(p);
+    }
+    if (policy == "self-similarity") return run(Self_similarity_matching<Aligner>{});
+    if (policy == "histogram") return run(Strain_distribution_similarity<Aligner>{});
+    return run(Motion_signature_similarity<Aligner>{});
+  };
+  if (aligned == "dtw") return with_alignment(alignment::Dtw{});
+  if (aligned == "subsequence-dtw") return with_alignment(alignment::Subsequence_dtw{});
+  return with_alignment(alignment::Smith_waterman{});
+}
+
+void require_motion(const Surface_mesh_animation& a, const char* which) {
+  if (a.num_frames() < 2)
+    throw invalid_input(std::string(which) + ": an animation of " + std::to_string(a.num_frames()) +
+                        " frame: a motion needs at least 2");
+}
+
+Similarity_result similarity(const Animation& a, const Animation& b, const std::string& policy,
+                             const std::optional<std::string>& alignment, std::optional<double> threshold,
+                             std::optional<std::size_t> significance, unsigned seed) {
+  if (significance == 1) refuse("significance needs 0 (none) or at least 2 shuffled copies");
+  if (significance.value_or(0) >= 2 && policy == "graph")
+    refuse("significance does not apply to the graph policy, whose frames are key-frame labels");
+  const std::size_t copies = significance.value_or(policy == "graph" ? 0 : 20);
+  require_motion(a.mesh, "a");
+  require_motion(b.mesh, "b");
+  return with_policy(policy, alignment, threshold, [&](const auto& p) {
+    py::gil_scoped_release release;
+    const auto da = p.describe(a.mesh), db = p.describe(b.mesh);
+    Similarity_result out{p.compare(da, db), std::nullopt, 0};
+    if constexpr (requires { frame_count(db); reordered_frames(db, std::span<const std::size_t>()); }) {
+      if (copies >= 2) {
+        std::mt19937 random(seed);
+        out.z_score = similarity_significance(p, da, db, copies, random);
+        out.shuffled_copies = copies;
+      }
+    }
+    return out;
+  });
+}
+
+// The animations of a Python sequence, as a random-access range of references (no copy); the
+// Python objects stay referenced in `held` while the GIL is released.
+struct Animation_list {
+  std::vector<py::object> held;
+  std::vector<const Surface_mesh_animation*> meshes;
+
+  Animation_list(const py::sequence& animations, const char* what) {
+    for (std::size_t i = 0; i < animations.size(); ++i) {
+      py::object item = animations[i];
+      if (!py::isinstance<Animation>(item))
+        throw py::type_error(std::string(what) + "[" + std::to_string(i) + "]: expected an Animation, got " +
+                             py::str(py::type::of(item).attr("__name__")).cast<std::string>());
+      const Surface_mesh_animation& mesh = item.cast<const Animation&>().mesh;
+      require_motion(mesh, (std::string(what) + "[" + std::to_string(i) + "]").c_str());
+      meshes.push_back(&mesh);
+      held.push_back(std::move(item));
+    }
+  }
+  auto range() const {
+    return meshes |
+           std::views::transform([](const Surface_mesh_animation* m) -> const Surface_mesh_animation& { return *m; });
+  }
+};
+
+py::array matrix(const py::sequence& animations, const std::optional<py::sequence>& database, const std::string& policy,
+                 const std::optional<std::string>& alignment, std::optional<double> threshold,
+                 const std::optional<py::function>& progress) {
+  const Animation_list rows(animations, "animations");
+  const std::optional<Animation_list> columns =
+      database ? std::optional<Animation_list>(std::in_place, *database, "database") : std::nullopt;
+  Similarity_progress report;
+  if (progress)
+    report = [&progress](std::size_t done, std::size_t total) {
+      py::gil_scoped_acquire acquire;
+      const py::object go = (*progress)(done, total);
+      return go.is_none() || go.cast<bool>();
+    };
+  Eigen::MatrixXd m = with_policy(policy, alignment, threshold, [&](const auto& p) {
+    py::gil_scoped_release release;
+    return columns ? similarity_matrix(rows.range(), columns->range(), p, report)
+                   : similarity_matrix(rows.range(), p, report);
+  });
+  const auto r = py::ssize_t(m.rows()), c = py::ssize_t(m.cols()), item = py::ssize_t(sizeof(double));
+  return owning(std::move(m), +[](const Eigen::MatrixXd& x) { return x.data(); }, {r, c}, {item, r * item});
+}
+
+std::vector<Motion_match> find(const Animation& query, const Animation& long_animation, std::size_t count,
+                               double shortest) {
+  if (count == 0) refuse("count must be at least 1");
+  if (!(shortest > 0 && shortest <= 1)) refuse("shortest must be in (0, 1]");
+  py::gil_scoped_release release;
+  return find_motion(query.mesh, long_animation.mesh, {.count = count, .shortest = shortest});
+}
+
+// ---- Retrieval evaluation ------------------------------------------------------------------------
+
+std::string field_of(const py::handle& item, const char* name) {
+  if (py::isinstance<py::dict>(item)) {
+    const auto d = py::reinterpret_borrow<py::dict>(item);
+    return d.contains(name) && !d[name].is_none() ? py::str(d[name]).cast<std::string>() : std::string();
+  }
+  if (py::hasattr(item, name) && !item.attr(name).is_none()) return py::str(item.attr(name)).cast<std::string>();
+  return {};
+}
+
+Retrieval_scores evaluate(const py::array_t<double, py::array::forcecast>& similarity, const py::sequence& labels) {
+  if (similarity.ndim() != 2 || similarity.shape(0) != similarity.shape(1))
+    throw py::value_error("similarity: expected a square (N, N) array, got " + shape_of(similarity));
+  if (std::size_t(similarity.shape(0)) != labels.size())
+    throw py::value_error("similarity is " + shape_of(similarity) + " but there are " + std::to_string(labels.size()) +
+                          " labels");
+  std::vector<Labelled_item> items;
+  for (const py::handle item : labels) {
+    Labelled_item l{field_of(item, "motion"), field_of(item, "body"), field_of(item, "rig"), field_of(item, "clip")};
+    if (l.motion.empty()) throw py::value_error("labels: every item needs a 'motion' ('-' for a distractor)");
+    items.push_back(std::move(l));
+  }
+  const auto n = Eigen::Index(similarity.shape(0));
+  Eigen::MatrixXd m(n, n);
+  const auto read = similarity.unchecked<2>();
+  for (Eigen::Index i = 0; i < n; ++i)
+    for (Eigen::Index j = 0; j < n; ++j) m(i, j) = read(i, j);
+  py::gil_scoped_release release;
+  return evaluate_retrieval(m, items);
+}
+
+py::list motion_labels(const std::filesystem::path& path) {
+  const std::vector<io::Labelled_clip> clips = io::read_motion_labels(path);
+  py::list out;
+  for (const auto& c : clips) {
+    py::dict d;
+    d["file"] = c.file.string();
+    d["clip"] = c.item.clip;
+    d["motion"] = c.item.motion;
+    d["rig"] = c.item.rig;
+    d["body"] = c.item.body;
+    out.append(d);
+  }
+  return out;
+}
+
+// ---- Graph edit distance -------------------------------------------------------------------------
+
+io::Labelled_graph labelled_graph(const std::vector<std::string>& labels,
+                                  const std::vector<std::pair<std::size_t, std::size_t>>& edges, const char* which) {
+  io::Labelled_graph g(labels.size());
+  for (std::size_t v = 0; v < labels.size(); ++v) g[v] = labels[v];
+  for (const auto& [u, v] : edges) {
+    if (u >= labels.size() || v >= labels.size())
+      throw py::value_error(std::string(which) + ": edge (" + std::to_string(u) + ", " + std::to_string(v) +
+                            ") names a node past the last, " + std::to_string(labels.size()) + " nodes");
+    if (u != v && !boost::edge(u, v, g).second) boost::add_edge(u, v, g);
+  }
+  return g;
+}
+
+ged::Ged_result graph_edit_distance(const std::vector<std::string>& labels_a,
+                                    const std::vector<std::pair<std::size_t, std::size_t>>& edges_a,
+                                    const std::vector<std::string>& labels_b,
+                                    const std::vector<std::pair<std::size_t, std::size_t>>& edges_b,
+                                    const std::string& method, std::size_t max_expanded, double max_seconds) {
+  if (method != "exact" && method != "bipartite" && method != "lower")
+    refuse("method must be 'exact', 'bipartite' or 'lower', got '" + method + "'");
+  if (!(max_seconds >= 0)) refuse("max_seconds must be non-negative");
+  const io::Labelled_graph a = labelled_graph(labels_a, edges_a, "g1"), b = labelled_graph(labels_b, edges_b, "g2");
+  py::gil_scoped_release release;
+  if (method == "bipartite") return ged::Bipartite_ged{}(a, b, ged::Unit_costs{});
+  if (method == "lower") return ged::Assignment_lower_bound{}(a, b, ged::Unit_costs{});
+  return ged::Exact_ged{.max_expanded = max_expanded, .max_seconds = max_seconds}(a, b, ged::Unit_costs{});
+}
+
+std::optional<double> bound_or_none(double x) { return std::isinf(x) ? std::nullopt : std::optional(x); }
+
+}  // namespace
+
+PYBIND11_MODULE(_deformseg, m) {
+  m.doc() = "The compiled half of deformseg; import `deformseg`, which re-exports it.";
+  using namespace pybind11::literals;
+
+  // invalid_input -> InvalidInput(ValueError), its message kept, its location as attributes.
+  static py::exception<invalid_input> invalid(m, "InvalidInput", PyExc_ValueError);
+  invalid.doc() = "Input that breaks a documented precondition (deformseg::invalid_input). A ValueError whose "
+                  "message reads 'FILE:LINE: frame K: MESSAGE' (unknown parts left out); `file` (str or None), "
+                  "`line` (int or None, from 1) and `frame` (int or None, from 0) give the parts.";
+  static py::exception<similarity_stopped> stopped(m, "SimilarityStopped", PyExc_RuntimeError);
+  stopped.doc() = "similarity_matrix was stopped: its progress callback returned False.";
+  py::register_exception_translator([](std::exception_ptr error) {
+    if (!error) return;
+    try {
+      std::rethrow_exception(error);
+    } catch (const invalid_input& e) {
+      py::object instance = py::reinterpret_borrow<py::object>(invalid.ptr())(e.what());
+      const Input_location& w = e.where();
+      instance.attr("file") = w.file.empty() ? py::object(py::none()) : py::str(w.file);
+      instance.attr("line") = w.line ? py::object(py::int_(*w.line)) : py::object(py::none());
+      instance.attr("frame") = w.frame ? py::object(py::int_(*w.frame)) : py::object(py::none());
+      instance.attr("message") = e.message();
+      PyErr_SetObject(invalid.ptr(), instance.ptr());
+    } catch (const similarity_stopped& e) {
+      stopped(e.what());
+    }
+  });
+
+  py::class_<Animation>(m, "Animation", R"doc(An animation of one triangle mesh: fixed connectivity, vertex positions per frame.
+
+Animation(faces, frames): from an (F, 3) integer array of vertex indices (each triangle
+counter-clockwise seen from outside; together an oriented 2-manifold, with or without boundary)
+and a (T, V, 3) float32 or float64 array of positions. Raises TypeError for another dtype,
+ValueError for another shape, InvalidInput for an index out of range, a non-manifold or
+inconsistently oriented triangle, or a non-finite coordinate (naming the triangle, or the frame
+and vertex). No repair is made: vertex i and face j stay the i-th and j-th given.
+
+What is copied: the library stores one contiguous block of float64 (x, y, z per vertex, frame
+after frame) that it owns, so `frames` is copied once: straight from a C-contiguous float32 or
+float64 array (float32 converted on the way), through one NumPy conversion first from any other
+layout. `frames` and `faces` are then read-only views of that storage, no copy.
+Complexity O(T V + F).)doc")
+      .def(py::init(&animation_of_arrays), "faces"_a, "frames"_a)
+      .def_property_readonly(
+          "frames",
+          [](const py::object& self) {
+            const Surface_mesh_animation& a = self.cast<const Animation&>().mesh;
+            return view(a.all_positions().data(),
+                        {py::ssize_t(a.num_frames()), py::ssize_t(a.num_vertices()), py::ssize_t(3)}, self);
+          },
+          "The (T, V, 3) float64 positions: a read-only view of the animation's own storage (no copy), "
+          "valid as long as it is referenced.")
+      .def_property_readonly(
+          "faces",
+          [](const py::object& self) {
+            const Surface_mesh_animation& a = self.cast<const Animation&>().mesh;
+            static_assert(sizeof(Surface_mesh_animation::Triangle) == 3 * sizeof(std::uint32_t));
+            const auto* indices = reinterpret_cast<const std::uint32_t*>(a.triangles().data());
+            return view(indices, {py::ssize_t(a.num_faces()), py::ssize_t(3)}, self);
+          },
+          "The (F, 3) uint32 vertex indices of the triangles: a read-only view (no copy).")
+      .def_property_readonly("num_frames", [](const Animation& a) { return a.mesh.num_frames(); },
+                             "T, the number of frames.")
+      .def_property_readonly("num_vertices", [](const Animation& a) { return a.mesh.num_vertices(); },
+                             "V, the number of vertices.")
+      .def_property_readonly("num_faces", [](const Animation& a) { return a.mesh.num_faces(); },
+                             "F, the number of triangles.")
+      .def_property_readonly(
+          "repair",
+          [](const Animation& a) { return a.repair ? py::object(repair_dict(*a.repair)) : py::object(py::none()); },
+          "What the reader's repair changed, as a dict of counts (the keys of the tool's `info --json` "
+          "'repair': input_vertices, welded_vertices, degenerate_triangles, ..., vertices, triangles); "
+          "None for an animation made from arrays.")
+      .def("__repr__", [](const Animation& a) {
+        return "<deformseg.Animation: " + std::to_string(a.mesh.num_frames()) + " frames, " +
+               std::to_string(a.mesh.num_vertices()) + " vertices, " + std::to_string(a.mesh.num_faces()) + " triangles>";
+      });
+
+  m.def("read_animation", &read_input, "path"_a, "clip"_a = py::none(), "fps"_a = 30.0, "topology"_a = py::none(),
+        "triangulate"_a = false, "weld"_a = py::none(), "refuse_defects"_a = false, "threads"_a = 0,
+        R"doc(Reads an animation: a glTF clip (.glb, .gltf; clip by name or index, or "FILE.glb#CLIP";
+default the first, sampled at `fps`, default 30), a folder of frame files (.obj, .off, .ply, in
+natural order), a glob pattern, or a point cache (.pc2, .mdd) with `topology` (a mesh file).
+
+`triangulate` (default False) fans polygons; `weld` (default: True for glTF, False otherwise)
+merges vertices that coincide in every frame; degenerate, duplicate and non-manifold triangles
+are repaired unless `refuse_defects` (default False); `threads` (default 0: all) read in
+parallel. `Animation.repair` says what the repair changed. Raises InvalidInput naming the file,
+line and frame of the first problem, or for an option that does not apply (clip for frames,
+topology for glTF), as the tool does. Complexity linear in the input's size. Releases the GIL.)doc");
+
+  m.def("strain", &strain, "animation"_a, py::kw_only(), "reference"_a = "rest", "rest_frame"_a = 0,
+        "reference_mesh"_a = py::none(), "measure"_a = "max-principal", "normalize"_a = "gaussian", "sigma"_a = py::none(),
+        "degenerate_tolerance"_a = 1e-12, "threads"_a = 0,
+        R"doc(The strain of every triangle at every frame: a (T, F) float32 array, row t the frame t
+(compute_strain; Strain_options' defaults).
+
+reference: "rest" (default; against frame `rest_frame`, default 0) or "previous" (against the
+frame before; frame 0's strain is 0). reference_mesh (default None): a mesh file (.obj, .off,
+.ply) with the animation's connectivity in another pose, a rest pose kept apart from the frames,
+in the place of frame `rest_frame`. measure: "max-principal" (default, max |l - 1| over the
+principal stretches l), "green-lagrange", "frobenius" or "area-ratio". normalize: "gaussian"
+(default, 1 - exp(-s^2 / 2 sigma^2), sigma the 95th percentile of the strains unless `sigma` gives
+it) or "none" (raw strains). degenerate_tolerance (default 1e-12): reference triangles thinner than
+this have strain 0. threads: 0 (default) all; the result is the same for any number.
+Invariant to rotation, translation and uniform scale of the whole animation. The array owns the
+library's result (no copy). Complexity O(T F). Releases the GIL.)doc");
+
+  m.def("frame_distances", &distances, "animation"_a, py::kw_only(), "metric"_a = "euclidean", "rest_frame"_a = 0,
+        "reference_mesh"_a = py::none(), "threads"_a = 0,
+        R"doc(The (T, T) float32 matrix of distances between the frames' normalised rest-pose strains
+(the frame descriptors of the temporal segmentation): metric "euclidean" (default), "l1" or
+"cosine"; the strain against frame `rest_frame` (default 0), or against `reference_mesh` (default
+None; as in `strain`). Symmetric, zero diagonal; a
+Fortran-ordered array that owns the library's matrix (no copy). Complexity O(T F) for the strain,
+O(T^2 F) for the distances. Releases the GIL.)doc");
+
+  m.def("temporal_segmentation", &temporal, "animation"_a, py::kw_only(), "method"_a = "optimal",
+        "threshold"_a = py::none(), "absolute"_a = false, "segments"_a = py::none(), "min_length"_a = 1,
+        "metric"_a = "euclidean", "rest_frame"_a = 0, "reference_mesh"_a = py::none(), "threads"_a = 0,
+        R"doc(Intervals of similar poses: a list of (first, last) frame intervals, inclusive, covering
+0..T-1 in order, from the frame distances of `frame_distances(animation, metric=..., rest_frame=...,
+reference_mesh=...)`.
+
+method: "optimal" (default; least length-weighted cost with a penalty per segment, or exactly
+`segments` segments), "binary-split", "greedy" (the thesis' Algorithm 4-1) or "barbic" (PCA change
+detection). threshold: binary-split and greedy, the largest within-segment dissimilarity (default
+0.5 and 0.2); optimal, the penalty per segment (default 0.03); relative to the mean frame distance
+(optimal: to the one-segment cost) unless `absolute`. min_length (default 1): fewest frames of a
+segment (optimal, binary-split). Complexity O(T^2 F) for the distances, then the method's
+(optimal: O(T^2) per segment count). Releases the GIL.)doc");
+
+  m.def("_evolving_graph", &evolving, "animation"_a, "threshold"_a = 0.5, "reference"_a = py::none(),
+        "reference_mesh"_a = py::none(), "min_triangles"_a = 10, "min_frames"_a = 2, "max_island"_a = 30,
+        "The evolving graph as tuples; `deformseg.evolving_graph` makes it an EvolvingGraph. Releases the GIL.");
+
+  py::class_<Similarity_result>(m, "Similarity", "What `similarity` gives: how alike two animations move.")
+      .def_property_readonly("value", [](const Similarity_result& s) { return s.similarity.value; },
+                             "The similarity in [0, 1]: 1 for an animation and itself (or a moved, scaled copy).")
+      .def_property_readonly("score", [](const Similarity_result& s) { return s.similarity.score; },
+                             "The alignment's raw score (its sense is the alignment policy's).")
+      .def_property_readonly("alignment", [](const Similarity_result& s) { return s.similarity.alignment; },
+                             "The aligned frames: a list of (frame of a, frame of b), increasing in both.")
+      .def_property_readonly("labels_a", [](const Similarity_result& s) { return s.similarity.labels_a; },
+                             "Per frame of a, the label aligned (graph policy: its key frame's cluster); else [].")
+      .def_property_readonly("labels_b", [](const Similarity_result& s) { return s.similarity.labels_b; },
+                             "Per frame of b, as labels_a.")
+      .def_property_readonly("compared", [](const Similarity_result& s) { return s.similarity.compared; },
+                             "What the policy compared, in words.")
+      .def_property_readonly("z_score", [](const Similarity_result& s) { return s.z_score; },
+                             "The z-score of value against frame-shuffled copies of b, or None.")
+      .def_property_readonly("shuffled_copies", [](const Similarity_result& s) { return s.shuffled_copies; },
+                             "How many shuffled copies the z-score was computed against (0: none).")
+      .def("__repr__", [](const Similarity_result& s) {
+        return "<deformseg.Similarity value=" + std::to_string(s.similarity.value) + ", " +
+               std::to_string(s.similarity.alignment.size()) + " aligned pairs>";
+      });
+
+  m.def("similarity", &similarity, "a"_a, "b"_a, py::kw_only(), "policy"_a = "motion-signature",
+        "alignment"_a = py::none(), "threshold"_a = py::none(), "significance"_a = py::none(), "seed"_a = 1u,
+        R"doc(How alike two animations move (motion_similarity), as the tool's `similarity` command.
+
+policy: "motion-signature" (default, Default_similarity: per-frame distributions of how fast the
+surface moves), "histogram" (strain histograms), "graph" (the thesis' evolving graphs) or
+"self-similarity". alignment: "smith-waterman", "dtw" or "subsequence-dtw" (default: dtw for
+motion-signature, smith-waterman otherwise). threshold: the graph policy's deformed threshold in
+[0, 1] (default 0.5). significance: the number of frame-shuffled copies of b the z-score is
+computed against (default 20, none for the graph policy; 0 none), shuffled by a std::mt19937
+seeded with `seed` (default 1). Returns a Similarity (value, score, alignment, z_score, ...).
+Complexity: the policy's describe of each, one compare, plus one compare per shuffled copy
+(motion-signature with DTW: O(T V) to describe, O(Ta Tb) to compare). Releases the GIL.)doc");
+
+  m.def("similarity_matrix", &matrix, "animations"_a, "database"_a = py::none(), py::kw_only(),
+        "policy"_a = "motion-signature", "alignment"_a = py::none(), "threshold"_a = py::none(),
+        "progress"_a = py::none(),
+        R"doc(The similarity of every pair of `animations`: an (N, N) float64 array, symmetric, entry (i, j)
+equal to similarity(animations[i], animations[j], ...).value; or, with `database`, the (Q, D)
+array of each animation against each of the database. Each animation is described once, then
+pairs are compared in parallel; the result does not depend on the number of threads.
+policy (default "motion-signature"), alignment (default: the policy's), threshold (default: the
+graph policy's): as `similarity`. progress (default None): called as progress(done, total) on the
+calling thread (with the GIL) as the work advances, N + N (N + 1) / 2 steps (Q + D + Q D with a
+database); returning False stops the work and raises SimilarityStopped. The animations are not
+copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc");
+
+  py::class_<Motion_match>(m, "MotionMatch", "A window of a long animation that matches a query (find_motion).")
+      .def_readonly("first", &Motion_match::first, "The window's first frame in the long animation.")
+      .def_readonly("last", &Motion_match::last, "Its last frame (inclusive).")
+      .def_readonly("value", &Motion_match::value, "1 minus the mean frame dissimilarity along the path, in [0, 1].")
+      .def_readonly("alignment", &Motion_match::alignment,
+                    "The warping path: (frame of the query, frame of the long animation).")
+      .def("__repr__", [](const Motion_match& x) {
+        return "<deformseg.MotionMatch frames " + std::to_string(x.first) + "-" + std::to_string(x.last) +
+               " value=" + std::to_string(x.value) + ">";
+      });
+
+  m.def("find_motion", &find, "query"_a, "long_animation"_a, "count"_a = 1, py::kw_only(), "shortest"_a = 0.5,
+        R"doc(Where a short motion occurs in a long animation: at most `count` (default 1, as
+Find_motion_options; the tool's `find` asks for 3) non-overlapping windows of `long_animation`,
+best first, each a MotionMatch (first, last, value, alignment), by motion signatures and
+subsequence DTW. shortest (default 0.5): the shortest window as a fraction of the query's length.
+Complexity two descriptions, then O(count Tq Tl). Releases the GIL.)doc");
+
+  py::class_<Retrieval_scores>(m, "RetrievalScores", "The figures of `evaluate` (evaluate_retrieval).")
+      .def_readonly("queries", &Retrieval_scores::queries, "Queries evaluated.")
+      .def_readonly("queries_without_relevant", &Retrieval_scores::queries_without_relevant,
+                    "Queries with no candidate of their motion.")
+      .def_readonly("queries_without_candidate", &Retrieval_scores::queries_without_candidate,
+                    "Items left out for having no candidate at all.")
+      .def_readonly("nn_accuracy", &Retrieval_scores::nn_accuracy, "Fraction of queries whose nearest candidate has their motion, or None.")
+      .def_readonly("mean_average_precision", &Retrieval_scores::mean_average_precision, "mAP, or None.")
+      .def_readonly("roc_auc", &Retrieval_scores::roc_auc, "ROC-AUC over same- vs different-motion pairs, or None.")
+      .def_readonly("median_same", &Retrieval_scores::median_same, "Median similarity of same-motion pairs, or None.")
+      .def_readonly("median_different", &Retrieval_scores::median_different, "Median of different-motion pairs, or None.")
+      .def_readonly("same_pairs", &Retrieval_scores::same_pairs, "Number of same-motion pairs.")
+      .def_readonly("different_pairs", &Retrieval_scores::different_pairs, "Number of different-motion pairs.")
+      .def_readonly("labels", &Retrieval_scores::labels, "Every motion, sorted: the rows and columns of confusion.")
+      .def_readonly("confusion", &Retrieval_scores::confusion, "confusion[r][c]: queries of labels[r] whose nearest has labels[c].")
+      .def_property_readonly(
+          "per_motion",
+          [](const Retrieval_scores& s) {
+            py::list out;
+            for (const auto& x : s.per_motion)
+              out.append(py::dict("motion"_a = x.motion, "queries"_a = x.queries, "correct"_a = x.correct,
+                                  "nn_accuracy"_a = x.nn_accuracy));
+            return out;
+          },
+          "Per query motion: dicts of motion, queries, correct, nn_accuracy.");
+
+  m.def("evaluate", &evaluate, "similarity"_a, "labels"_a,
+        R"doc(How well a similarity matrix retrieves the same motion on other bodies (evaluate_retrieval):
+`similarity` an (N, N) array (as similarity_matrix gives), `labels` N items, each a dict or an
+object with `motion` ('-' for a distractor) and optionally `body`, `rig`, `clip` (as
+read_motion_labels gives). Returns RetrievalScores: NN accuracy, mAP, ROC-AUC, medians, the
+confusion table. Complexity O(N^2 log N).)doc");
+
+  m.def("read_motion_labels", &motion_labels, "path"_a,
+        R"doc(The rows of a labels CSV file (header file,clip,motion[,rig][,body]): a list of dicts with
+file (relative paths made relative to the CSV's folder), clip, motion, rig and body. Raises
+InvalidInput naming the file and line of a bad row. Complexity O(rows).)doc");
+
+  py::class_<ged::Ged_result>(m, "GedResult", "What `ged` gives: lower <= distance <= upper.")
+      .def_readonly("distance", &ged::Ged_result::distance, "The distance found (exact, or the best upper bound).")
+      .def_readonly("exact", &ged::Ged_result::exact, "Whether distance is proven to be the graph edit distance.")
+      .def_readonly("lower", &ged::Ged_result::lower, "A proven lower bound.")
+      .def_property_readonly("upper", [](const ged::Ged_result& r) { return bound_or_none(r.upper); },
+                             "The cost of mapping, an upper bound; None when there is none (a pure lower bound).")
+      .def_readonly("mapping", &ged::Ged_result::mapping, "Node i of g1 -> node of g2, or -1 when i is deleted.")
+      .def("__repr__", [](const ged::Ged_result& r) {
+        return "<deformseg.GedResult distance=" + std::to_string(r.distance) + (r.exact ? " exact>" : ">");
+      });
+
+  m.def("_ged", &graph_edit_distance, "labels_a"_a, "edges_a"_a, "labels_b"_a, "edges_b"_a, "method"_a = "exact",
+        "max_expanded"_a = ged::Exact_ged{}.max_expanded, "max_seconds"_a = 0.0,
+        "The graph edit distance of two graphs given as node labels and edges; `deformseg.ged` takes graphs. "
+        "Releases the GIL.");
+  m.attr("EXACT_GED_MAX_EXPANDED") = ged::Exact_ged{}.max_expanded;
+  m.attr("__version__") = DEFORMSEG_VERSION;
+}
