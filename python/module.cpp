@@ -18,18 +18,17 @@
 #include <deformseg/ged/bipartite_ged.h>
 #include <deformseg/ged/exact_ged.h>
 #include <deformseg/ged/lower_bound.h>
+#include <deformseg/io/motion_labels.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/io/read_graph.h>
 #include <deformseg/io/read_mesh.h>
 #include <deformseg/motion_similarity.h>
 #include <deformseg/retrieval_evaluation.h>
+#include <deformseg/similarity/policy_choice.h>
 #include <deformseg/similarity/self_similarity_matching.h>
 #include <deformseg/similarity/significance.h>
 #include <deformseg/strain.h>
 #include <deformseg/temporal_segmentation.h>
-// After every other io header: it opens a namespace deformseg::io::internal, which would hide
-// deformseg::internal from the io headers that name it unqualified.
-#include <deformseg/io/motion_labels.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -395,31 +394,10 @@ struct Similarity_result {
   std::size_t shuffled_copies = 0;
 };
 
-// The tool's --policy, --alignment and --threshold: calls `run` with the policy they name.
-template <class Run>
-auto with_policy(const std::string& policy, const std::optional<std::string>& alignment,
-                 std::optional<double> threshold, const Run& run) {
-  if (policy != "motion-signature" && policy != "histogram" && policy != "graph" && policy != "self-similarity")
-    refuse("policy must be 'motion-signature', 'histogram', 'graph' or 'self-similarity', got '" + policy + "'");
-  const std::string aligned = alignment.value_or(policy == "motion-signature" ? "dtw" : "smith-waterman");
-  if (aligned != "dtw" && aligned != "smith-waterman" && aligned != "subsequence-dtw")
-    refuse("alignment must be 'smith-waterman', 'dtw' or 'subsequence-dtw', got '" + aligned + "'");
-  if (threshold && policy != "graph") refuse("threshold applies to the graph policy only, not to policy '" + policy + "'");
-  if (threshold && !(*threshold >= 0 && *threshold <= 1)) refuse("threshold must be in [0, 1]");
-  const auto with_alignment = [&](auto aligner) {
-    using Aligner = decltype(aligner);
-    if (policy == "graph") {
-      Evolving_graph_similarity<ged::Bipartite_ged, Segment_costs, clustering::K_medoids, Aligner> p;
-      p.segmentation.threshold = threshold.value_or(p.segmentation.threshold);
-      return run(p);
-    }
-    if (policy == "self-similarity") return run(Self_similarity_matching<Aligner>{});
-    if (policy == "histogram") return run(Strain_distribution_similarity<Aligner>{});
-    return run(Motion_signature_similarity<Aligner>{});
-  };
-  if (aligned == "dtw") return with_alignment(alignment::Dtw{});
-  if (aligned == "subsequence-dtw") return with_alignment(alignment::Subsequence_dtw{});
-  return with_alignment(alignment::Smith_waterman{});
+// The keywords policy, alignment, threshold and up, as the library's Policy_choice.
+Policy_choice policy_choice(const std::string& policy, const std::optional<std::string>& alignment,
+                            std::optional<double> threshold, const std::optional<std::string>& up) {
+  return {.policy = policy, .alignment = alignment.value_or(""), .threshold = threshold, .up = up.value_or("")};
 }
 
 void require_motion(const Surface_mesh_animation& a, const char* which) {
@@ -430,14 +408,17 @@ void require_motion(const Surface_mesh_animation& a, const char* which) {
 
 Similarity_result similarity(const Animation& a, const Animation& b, const std::string& policy,
                              const std::optional<std::string>& alignment, std::optional<double> threshold,
-                             std::optional<std::size_t> significance, unsigned seed) {
+                             const std::optional<std::string>& up, std::optional<std::size_t> significance,
+                             unsigned seed) {
+  const Policy_choice choice = policy_choice(policy, alignment, threshold, up);
+  check_policy_choice(choice);
   if (significance == 1) refuse("significance needs 0 (none) or at least 2 shuffled copies");
   if (significance.value_or(0) >= 2 && policy == "graph")
     refuse("significance does not apply to the graph policy, whose frames are key-frame labels");
   const std::size_t copies = significance.value_or(policy == "graph" ? 0 : 20);
   require_motion(a.mesh, "a");
   require_motion(b.mesh, "b");
-  return with_policy(policy, alignment, threshold, [&](const auto& p) {
+  return with_policy_choice(choice, [&](const auto& p) {
     py::gil_scoped_release release;
     const auto da = p.describe(a.mesh), db = p.describe(b.mesh);
     Similarity_result out{p.compare(da, db), std::nullopt, 0};
@@ -478,7 +459,9 @@ struct Animation_list {
 
 py::array matrix(const py::sequence& animations, const std::optional<py::sequence>& database, const std::string& policy,
                  const std::optional<std::string>& alignment, std::optional<double> threshold,
-                 const std::optional<py::function>& progress) {
+                 const std::optional<std::string>& up, const std::optional<py::function>& progress) {
+  const Policy_choice choice = policy_choice(policy, alignment, threshold, up);
+  check_policy_choice(choice);
   const Animation_list rows(animations, "animations");
   const std::optional<Animation_list> columns =
       database ? std::optional<Animation_list>(std::in_place, *database, "database") : std::nullopt;
@@ -489,7 +472,7 @@ py::array matrix(const py::sequence& animations, const std::optional<py::sequenc
       const py::object go = (*progress)(done, total);
       return go.is_none() || go.cast<bool>();
     };
-  Eigen::MatrixXd m = with_policy(policy, alignment, threshold, [&](const auto& p) {
+  Eigen::MatrixXd m = with_policy_choice(choice, [&](const auto& p) {
     py::gil_scoped_release release;
     return columns ? similarity_matrix(rows.range(), columns->range(), p, report)
                    : similarity_matrix(rows.range(), p, report);
@@ -746,28 +729,30 @@ segment (optimal, binary-split). Complexity O(T^2 F) for the distances, then the
       });
 
   m.def("similarity", &similarity, "a"_a, "b"_a, py::kw_only(), "policy"_a = "motion-signature",
-        "alignment"_a = py::none(), "threshold"_a = py::none(), "significance"_a = py::none(), "seed"_a = 1u,
+        "alignment"_a = py::none(), "threshold"_a = py::none(), "up"_a = py::none(), "significance"_a = py::none(),
+        "seed"_a = 1u,
         R"doc(How alike two animations move (motion_similarity), as the tool's `similarity` command.
 
-policy: "motion-signature" (default, Default_similarity: per-frame distributions of how fast the
-surface moves), "histogram" (strain histograms), "graph" (the thesis' evolving graphs) or
-"self-similarity". alignment: "smith-waterman", "dtw" or "subsequence-dtw" (default: dtw for
-motion-signature, smith-waterman otherwise). threshold: the graph policy's deformed threshold in
-[0, 1] (default 0.5). significance: the number of frame-shuffled copies of b the z-score is
+policy: "motion-signature" (default, Default_similarity: per-frame distributions of how fast,
+and how fast up or down, the surface moves), "histogram" (strain histograms), "graph" (the
+thesis' evolving graphs) or "self-similarity". alignment: "smith-waterman", "dtw" or
+"subsequence-dtw" (default: dtw for motion-signature, smith-waterman otherwise). threshold: the
+graph policy's deformed threshold in [0, 1] (default 0.5). up: the motion signatures' up axis,
+"+x", "-x", "+y", "-y", "+z", "-z" or "none" for speeds alone (default "+y"). significance: the number of frame-shuffled copies of b the z-score is
 computed against (default 20, none for the graph policy; 0 none), shuffled by a std::mt19937
 seeded with `seed` (default 1). Returns a Similarity (value, score, alignment, z_score, ...).
 Complexity: the policy's describe of each, one compare, plus one compare per shuffled copy
 (motion-signature with DTW: O(T V) to describe, O(Ta Tb) to compare). Releases the GIL.)doc");
 
   m.def("similarity_matrix", &matrix, "animations"_a, "database"_a = py::none(), py::kw_only(),
-        "policy"_a = "motion-signature", "alignment"_a = py::none(), "threshold"_a = py::none(),
+        "policy"_a = "motion-signature", "alignment"_a = py::none(), "threshold"_a = py::none(), "up"_a = py::none(),
         "progress"_a = py::none(),
         R"doc(The similarity of every pair of `animations`: an (N, N) float64 array, symmetric, entry (i, j)
 equal to similarity(animations[i], animations[j], ...).value; or, with `database`, the (Q, D)
 array of each animation against each of the database. Each animation is described once, then
 pairs are compared in parallel; the result does not depend on the number of threads.
 policy (default "motion-signature"), alignment (default: the policy's), threshold (default: the
-graph policy's): as `similarity`. progress (default None): called as progress(done, total) on the
+graph policy's), up (default "+y"): as `similarity`. progress (default None): called as progress(done, total) on the
 calling thread (with the GIL) as the work advances, N + N (N + 1) / 2 steps (Q + D + Q D with a
 database); returning False stops the work and raises SimilarityStopped. The animations are not
 copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc");

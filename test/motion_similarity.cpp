@@ -9,6 +9,7 @@
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/motion_similarity.h>
+#include <deformseg/similarity/policy_choice.h>
 #include <deformseg/synthetic.h>
 
 #include <Eigen/Geometry>
@@ -222,4 +223,37 @@ TEST_CASE("motion similarity: a motion found whole inside a longer one, by the s
   };
   check(Strain_distribution_similarity<>{}, "strain distribution");
   check(Evolving_graph_similarity<>{}, "evolving graph");
+}
+
+TEST_CASE("with_policy_choice: each name gives its policy and alignment, and bad choices are refused", "[similarity]") {
+  const auto a = tube(bend_hold_unbend), b = tube(other_timing, other_tube);
+  const auto value = [&](const Policy_choice& choice) {
+    return with_policy_choice(choice, [&](const auto& policy) { return motion_similarity(a, b, policy).value; });
+  };
+  CHECK(value({}) == motion_similarity(a, b).value);
+  CHECK(value({.policy = "histogram", .alignment = "dtw"}) ==
+        motion_similarity(a, b, Strain_distribution_similarity<alignment::Dtw>{}).value);
+  CHECK(value({.policy = "self-similarity"}) == motion_similarity(a, b, Self_similarity_matching<>{}).value);
+  Evolving_graph_similarity<> graphs;
+  graphs.segmentation.threshold = 0.2;
+  CHECK(value({.policy = "graph", .threshold = 0.2}) == motion_similarity(a, b, graphs).value);
+  Motion_signature_similarity<alignment::Smith_waterman> speeds;
+  speeds.signatures.up = std::nullopt;
+  CHECK(value({.alignment = "smith-waterman", .up = "none"}) == motion_similarity(a, b, speeds).value);
+  CHECK(alignment_name({.policy = "graph"}) == "smith-waterman");
+  CHECK(alignment_name({}) == "dtw");
+
+  CHECK(up_direction("") == Eigen::Vector3d::UnitY());
+  CHECK(up_direction("-z") == -Eigen::Vector3d::UnitZ());
+  CHECK(up_direction("+x") == Eigen::Vector3d::UnitX());
+  CHECK(!up_direction("none"));
+  CHECK_THROWS_WITH(up_direction("z"), Catch::Contains("unknown up direction 'z'"));
+  CHECK_THROWS_WITH(check_policy_choice({.policy = "signatures"}), Catch::Contains("unknown policy 'signatures'"));
+  CHECK_THROWS_WITH(check_policy_choice({.alignment = "lcss"}), Catch::Contains("unknown alignment 'lcss'"));
+  CHECK_THROWS_WITH(check_policy_choice({.threshold = 0.3}), Catch::Contains("graph policy only"));
+  CHECK_THROWS_WITH(check_policy_choice({.policy = "graph", .threshold = 1.5}), Catch::Contains("[0, 1]"));
+  CHECK_THROWS_WITH(check_policy_choice({.policy = "histogram", .up = "+z"}), Catch::Contains("motion-signature policy only"));
+  bool ran = false;
+  CHECK_THROWS_AS(with_policy_choice({.policy = "nope"}, [&](const auto&) { return ran = true; }), invalid_input);
+  CHECK(!ran);
 }

@@ -230,7 +230,7 @@ void print_scores(const Retrieval_scores& s, std::size_t items) {
 }
 
 void run_evaluate(const Evaluate_options& o) {
-  check_policy_options(o.policy);
+  check_policy_choice(o.policy);
   if (!(o.fps > 0)) throw invalid_input("--fps must be positive");
 #ifdef _OPENMP
   if (o.threads > 0) omp_set_num_threads(o.threads);  // the matrix's threads; the readers take theirs
@@ -240,7 +240,7 @@ void run_evaluate(const Evaluate_options& o) {
   const double read_seconds = seconds_since(start);
   progress("read " + std::to_string(read.animations.size()) + " clips in " + fixed(read_seconds, 1) + " s");
   Matrix_progress report{.descriptions = read.animations.size()};
-  const Eigen::MatrixXd m = with_policy(o.policy, [&](const auto& policy) {
+  const Eigen::MatrixXd m = with_policy_choice(o.policy, [&](const auto& policy) {
     return similarity_matrix(read.animations, policy, std::ref(report));
   });
   const double matrix_seconds = seconds_since(report.start);

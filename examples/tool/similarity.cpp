@@ -83,7 +83,7 @@ void write_alignment_figure(const Similarity& s, const Similarity_command_option
 }
 
 void run_similarity(const Similarity_command_options& o) {
-  check_policy_options(o.policy);
+  check_policy_choice(o.policy);
   if (o.copies == 1) throw invalid_input("--significance needs 0 (none) or at least 2 shuffled copies");
   if (o.copies.value_or(0) >= 2 && o.policy.policy == "graph")
     throw invalid_input("--significance does not apply to the graph policy, whose frames are key-frame labels");
@@ -94,7 +94,7 @@ void run_similarity(const Similarity_command_options& o) {
   require_motion(a, o.a.input);
   require_motion(b, o.b.input);
   progress("comparing " + std::to_string(a.num_frames()) + " and " + std::to_string(b.num_frames()) + " frames");
-  const Similarity_with_significance compared = with_policy(
+  const Similarity_with_significance compared = with_policy_choice(
       o.policy, [&](const auto& policy) { return compare_with_significance(policy, a, b, copies, o.seed); });
   const Similarity& s = compared.similarity;
   if (!o.png.empty()) write_alignment_figure(s, o, a.num_frames(), b.num_frames(), o.png);
@@ -162,7 +162,7 @@ void write_csv(const Eigen::MatrixXd& m, const std::vector<std::string>& names, 
 }
 
 void run_matrix(const Matrix_command_options& o) {
-  check_policy_options(o.policy);
+  check_policy_choice(o.policy);
   std::vector<Surface_mesh_animation> animations;
   for (const auto& input : o.inputs)
   {
@@ -172,7 +172,7 @@ void run_matrix(const Matrix_command_options& o) {
     require_motion(animations.back(), read.input);
   }
   progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
-  const Eigen::MatrixXd m = with_policy(o.policy, [&](const auto& policy) { return similarity_matrix(animations, policy); });
+  const Eigen::MatrixXd m = with_policy_choice(o.policy, [&](const auto& policy) { return similarity_matrix(animations, policy); });
   if (!o.csv.empty()) write_csv(m, o.inputs, o.csv);
   if (!o.png.empty()) write_heat_map(m, o, o.png);
   nlohmann::json rows = nlohmann::json::array();

@@ -145,6 +145,7 @@ def similarity(
     policy: str = "motion-signature",
     alignment: Optional[str] = None,
     threshold: Optional[float] = None,
+    up: Optional[str] = None,
     significance: Optional[int] = None,
     seed: int = 1,
 ) -> Similarity: ...
@@ -155,6 +156,7 @@ def similarity_matrix(
     policy: str = "motion-signature",
     alignment: Optional[str] = None,
     threshold: Optional[float] = None,
+    up: Optional[str] = None,
     progress: Optional[Callable[[int, int], Optional[bool]]] = None,
 ) -> npt.NDArray[np.float64]: ...  # (N, N), or (Q, D) with a database
 

@@ -145,6 +145,8 @@ SIMILARITY_OPTIONS = [
      ["--policy", "self-similarity", "--alignment", "dtw", "--significance", "5", "--seed", "7"]),
     ({"policy": "graph", "threshold": 0.2}, ["--policy", "graph", "--threshold", "0.2"]),
     ({"alignment": "subsequence-dtw", "significance": 0}, ["--alignment", "subsequence-dtw", "--significance", "0"]),
+    ({"up": "none"}, ["--up", "none"]),
+    ({"up": "-z"}, ["--up", "-z"]),
 ]
 
 
