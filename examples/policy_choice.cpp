@@ -39,9 +39,11 @@ int main(int argc, char** argv) {
     choices.push_back({.policy = "histogram", .up = "+z"});  // refused: the histograms have no up
   }
   for (const Policy_choice& choice : choices) {
-    const std::string name = choice.policy + ", " + alignment_name(choice) + (choice.up.empty() ? "" : ", up " + choice.up);
+    const std::string up = choice.up.empty() ? "" : ", up " + choice.up;
+    const std::string name = choice.policy + ", " + alignment_name(choice) + up;
     try {
-      const double value = with_policy_choice(choice, [&](const auto& policy) { return motion_similarity(a, b, policy).value; });
+      const double value =
+          with_policy_choice(choice, [&](const auto& policy) { return motion_similarity(a, b, policy).value; });
       std::printf("%-40s %.3f\n", name.c_str(), value);
     } catch (const invalid_input& e) {
       std::printf("%-40s refused: %s\n", name.c_str(), e.what());

@@ -252,7 +252,8 @@ TEST_CASE("with_policy_choice: each name gives its policy and alignment, and bad
   CHECK_THROWS_WITH(check_policy_choice({.alignment = "lcss"}), Catch::Contains("unknown alignment 'lcss'"));
   CHECK_THROWS_WITH(check_policy_choice({.threshold = 0.3}), Catch::Contains("graph policy only"));
   CHECK_THROWS_WITH(check_policy_choice({.policy = "graph", .threshold = 1.5}), Catch::Contains("[0, 1]"));
-  CHECK_THROWS_WITH(check_policy_choice({.policy = "histogram", .up = "+z"}), Catch::Contains("motion-signature policy only"));
+  CHECK_THROWS_WITH(check_policy_choice({.policy = "histogram", .up = "+z"}),
+                    Catch::Contains("motion-signature policy only"));
   bool ran = false;
   CHECK_THROWS_AS(with_policy_choice({.policy = "nope"}, [&](const auto&) { return ran = true; }), invalid_input);
   CHECK(!ran);

@@ -140,8 +140,9 @@ double rms_radius(std::span<const Coordinate> positions, std::span<const double>
 /// the up direction is zero or not finite, when `vertical_unit` is not positive or
 /// `vertical_weight` negative, or when the animation does not move its vertices apart from each
 /// other (zero radius).
-/// @par Complexity O(T V L log V) for T frames, V vertices and L lags (a sort or two per frame and lag),
-/// in parallel over frames; O(T L k) memory for the result. Deterministic whatever the thread count.
+/// @par Complexity O(T V L log V) for T frames, V vertices and L lags (a sort or two per frame and
+/// lag), in parallel over frames; O(T L k) memory for the result. Deterministic whatever the thread
+/// count.
 template <class Coordinate>
 Eigen::MatrixXd motion_signatures(std::span<const Coordinate> positions, std::span<const double> weights,
                                   const Motion_signature_options& options = {}) {
@@ -188,7 +189,8 @@ Eigen::MatrixXd motion_signatures(std::span<const Coordinate> positions, std::sp
       if (!up) continue;
       double* vertical = row + lags * k;
       internal::weighted_quantiles(rises, k, vertical);
-      for (std::size_t q = 0; q < k; ++q) vertical[q] = vertical_factor * std::asinh(vertical[q] / options.vertical_unit);
+      for (std::size_t q = 0; q < k; ++q)
+        vertical[q] = vertical_factor * std::asinh(vertical[q] / options.vertical_unit);
     }
   });
   return out;
