@@ -35,11 +35,15 @@ using namespace deformseg::test;
 TEST_CASE("weighted_quantiles: the smallest value whose cumulative weight reaches each level", "[motion_signature]") {
   std::mt19937 random(3);
   std::uniform_real_distribution<double> uniform(0, 1);
-  for (int trial = 0; trial < 50; ++trial) {
-    const std::size_t n = 1 + std::size_t(trial % 9), k = 1 + std::size_t(trial % 5);
+  // Small sets (sorted whole) and large ones (split around medians first), values with ties.
+  for (int trial = 0; trial < 60; ++trial) {
+    const std::size_t n = trial < 50 ? 1 + std::size_t(trial % 9) : 100 + 97 * std::size_t(trial - 50);
+    const std::size_t k = trial < 50 ? 1 + std::size_t(trial % 5) : 1 + std::size_t(trial % 17);
     std::vector<std::pair<double, double>> items(n);
     double total = 0;
-    for (auto& [value, weight] : items) total += (weight = uniform(random)), value = std::floor(10 * uniform(random));
+    const double distinct = n < 10 ? 10 : double(n) / 3;
+    for (auto& [value, weight] : items)
+      total += (weight = uniform(random)), value = std::floor(distinct * uniform(random));
     for (auto& item : items) item.second /= total;
     const auto brute = items;
     std::vector<double> out(k);

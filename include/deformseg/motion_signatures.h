@@ -65,17 +65,42 @@ struct Motion_signature_options {
 
 namespace internal {
 
-/// The `k` area-weighted quantiles of `rates` (value, weight pairs, weights summing to 1), which it
-/// sorts: quantile q is the smallest rate whose cumulative weight reaches (q + 1/2) / k.
-inline void weighted_quantiles(std::vector<std::pair<double, double>>& rates, std::size_t k, double* out) {
-  std::sort(rates.begin(), rates.end());
-  std::size_t at = 0;
-  double cumulative = rates.empty() ? 0 : rates.front().second;
-  for (std::size_t q = 0; q < k; ++q) {
-    const double level = (double(q) + 0.5) / double(k);
-    while (cumulative < level && at + 1 < rates.size()) cumulative += rates[++at].second;
-    out[q] = rates[at].first;
+/// The quantiles `first` to `last` (exclusive) of `k`, all of which lie in `rates[begin, end)`
+/// after the weight `before` of the rates below it: a quickselect that splits the levels at each
+/// median, so that only the parts holding a level are ordered further.
+inline void select_weighted_quantiles(std::span<std::pair<double, double>> rates, std::size_t begin,
+                                      std::size_t end, double before, std::size_t first, std::size_t last,
+                                      std::size_t k, double* out) {
+  const auto level = [k](std::size_t q) { return (double(q) + 0.5) / double(k); };
+  if (first == last) return;
+  if (end - begin <= 32) {  // few enough to sort, then walk up to each level
+    std::sort(rates.begin() + std::ptrdiff_t(begin), rates.begin() + std::ptrdiff_t(end));
+    std::size_t at = begin;
+    double cumulative = before + rates[at].second;
+    for (std::size_t q = first; q < last; ++q) {
+      while (cumulative < level(q) && at + 1 < end) cumulative += rates[++at].second;
+      out[q] = rates[at].first;
+    }
+    return;
   }
+  const std::size_t middle = begin + (end - begin) / 2;
+  std::nth_element(rates.begin() + std::ptrdiff_t(begin), rates.begin() + std::ptrdiff_t(middle),
+                   rates.begin() + std::ptrdiff_t(end));
+  double through_middle = before;
+  for (std::size_t i = begin; i <= middle; ++i) through_middle += rates[i].second;
+  std::size_t split = first;
+  while (split < last && level(split) <= through_middle) ++split;
+  select_weighted_quantiles(rates, begin, middle + 1, before, first, split, k, out);
+  select_weighted_quantiles(rates, middle + 1, end, through_middle, split, last, k, out);
+}
+
+/// The `k` area-weighted quantiles of `rates` (value, weight pairs, weights summing to 1), which it
+/// reorders: quantile q is the smallest rate whose cumulative weight reaches (q + 1/2) / k (the
+/// largest rate if rounding leaves the total short of it). O(n log k) expected, not a sort's
+/// O(n log n).
+inline void weighted_quantiles(std::vector<std::pair<double, double>>& rates, std::size_t k, double* out) {
+  if (rates.empty()) return;
+  select_weighted_quantiles(rates, 0, rates.size(), 0.0, 0, k, k, out);
 }
 
 /// The frames whose displacement gives frame t's rate at lag k: t - k and t + k, each cut at the
@@ -140,9 +165,9 @@ double rms_radius(std::span<const Coordinate> positions, std::span<const double>
 /// the up direction is zero or not finite, when `vertical_unit` is not positive or
 /// `vertical_weight` negative, or when the animation does not move its vertices apart from each
 /// other (zero radius).
-/// @par Complexity O(T V L log V) for T frames, V vertices and L lags (a sort or two per frame and
-/// lag), in parallel over frames; O(T L k) memory for the result. Deterministic whatever the thread
-/// count.
+/// @par Complexity O(T V L log k) expected for T frames, V vertices, L lags and k quantiles (a
+/// selection or two per frame and lag), in parallel over frames; O(T L k) memory for the result.
+/// Deterministic whatever the thread count.
 template <class Coordinate>
 Eigen::MatrixXd motion_signatures(std::span<const Coordinate> positions, std::span<const double> weights,
                                   const Motion_signature_options& options = {}) {
@@ -201,7 +226,7 @@ Eigen::MatrixXd motion_signatures(std::span<const Coordinate> positions, std::sp
 /// @tparam Mesh a `DeformingMesh`.
 /// @return the `T x (lags x quantiles)` signatures (twice the columns with an up direction).
 /// @throws invalid_input as the overload on raw positions.
-/// @par Complexity O(T V L log V), plus a copy of the positions for a mesh that is not a
+/// @par Complexity O(T V L log k) expected, plus a copy of the positions for a mesh that is not a
 /// `Deforming_mesh`.
 template <DeformingMesh Mesh>
 Eigen::MatrixXd motion_signatures(const Mesh& animation, const Motion_signature_options& options = {}) {

@@ -41,7 +41,7 @@ namespace deformseg {
 /// @tparam Alignment an `alignment::AlignmentPolicy` (default `alignment::Dtw`: the whole of both
 /// motions, warped; `alignment::Subsequence_dtw` finds a short motion inside a longer one).
 /// @tparam Normalization how the score becomes the value (default `Best_score_normalization`).
-/// @par Complexity `describe`: `motion_signatures`' O(T V L log V); `compare`: O(Ta Tb L k) for the
+/// @par Complexity `describe`: `motion_signatures`' O(T V L log k); `compare`: O(Ta Tb L k) for the
 /// frame dissimilarities plus the alignment's O(Ta Tb).
 template <alignment::AlignmentPolicy Alignment = alignment::Dtw, class Normalization = Best_score_normalization>
 struct Motion_signature_similarity {
