@@ -154,18 +154,7 @@ py::array owning(Owned&& value, const T* (*data)(const Owned&), std::vector<py::
 
 py::dict repair_dict(const io::Repair_report& r) {
   py::dict d;
-  d["input_vertices"] = r.input_vertices;
-  d["input_triangles"] = r.input_triangles;
-  d["welded_vertices"] = r.welded_vertices;
-  d["degenerate_triangles"] = r.degenerate_triangles;
-  d["duplicate_triangles"] = r.duplicate_triangles;
-  d["non_manifold_edges"] = r.non_manifold_edges;
-  d["non_manifold_vertices"] = r.non_manifold_vertices;
-  d["duplicated_vertices"] = r.duplicated_vertices;
-  d["reoriented_triangles"] = r.reoriented_triangles;
-  d["unrepairable_triangles"] = r.unrepairable_triangles;
-  d["vertices"] = r.vertices;
-  d["triangles"] = r.triangles;
+  for (const auto& [name, count] : r.counts()) d[py::str(name.data(), name.size())] = count;
   return d;
 }
 
@@ -174,12 +163,10 @@ py::dict repair_dict(const io::Repair_report& r) {
 Animation read_input(const std::filesystem::path& path, std::optional<std::string> clip, double fps,
                std::optional<std::filesystem::path> topology, bool triangulate, std::optional<bool> weld,
                bool refuse_defects, int threads) {
-  std::string input = path.string();
-  const std::size_t hash = input.rfind('#');
-  if (hash != std::string::npos && io::is_gltf(input.substr(0, hash))) {
-    if (clip) throw invalid_input("the clip is given twice: by clip= and after '#'", {.file = input});
-    clip = input.substr(hash + 1);
-    input.resize(hash);
+  auto [input, named_clip] = io::split_clip_suffix(path.string());
+  if (named_clip) {
+    if (clip) throw invalid_input("the clip is given twice: by clip= and after '#'", {.file = path.string()});
+    clip = std::move(named_clip);
   }
   const bool gltf = io::is_gltf(input);
   const auto location = Input_location{.file = input};

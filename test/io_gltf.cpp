@@ -102,6 +102,15 @@ Gltf_writer sampler_scene() {
 
 }  // namespace
 
+TEST_CASE("split_clip_suffix: FILE.glb#CLIP names a clip, other inputs stay whole", "[gltf]") {
+  using Split = std::pair<std::string, std::optional<std::string>>;
+  CHECK(deformseg::io::split_clip_suffix("Fox.glb#Walk") == Split("Fox.glb", "Walk"));
+  CHECK(deformseg::io::split_clip_suffix("a#b/Fox.GLTF#Run") == Split("a#b/Fox.GLTF", "Run"));
+  CHECK(deformseg::io::split_clip_suffix("Fox.glb#") == Split("Fox.glb", ""));
+  CHECK(deformseg::io::split_clip_suffix("Fox.glb") == Split("Fox.glb", std::nullopt));
+  CHECK(deformseg::io::split_clip_suffix("frames#1/") == Split("frames#1/", std::nullopt));
+}
+
 TEST_CASE("gltf: LINEAR translation and shortest-path slerp rotation, clamped outside their keys", "[gltf]") {
   const fs::path path = write(sampler_scene(), "samplers.gltf");
   const Sampled_gltf s = sample_gltf(path, {.clip = "linear", .fps = 2});

@@ -142,6 +142,11 @@ TEST_CASE("repair_triangles: a repeated vertex, a non-manifold edge and vertex, 
   CHECK(r.vertices == 23);
   CHECK(r.triangles == 13);
   CHECK(r.changed());
+  // The counts by name, for the report's writers, each its member's value.
+  const auto counts = r.counts();
+  CHECK(counts[3] == std::pair<std::string_view, std::size_t>("degenerate_triangles", 1));
+  CHECK(counts[7] == std::pair<std::string_view, std::size_t>("duplicated_vertices", 5));
+  CHECK(counts[11] == std::pair<std::string_view, std::size_t>("triangles", 13));
   CHECK(result.source_triangle == std::vector<std::uint32_t>{0, 1, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13});
   // Without welding, the vertices keep their indices and the copies follow.
   for (std::uint32_t i = 0; i < 18; ++i) CHECK(result.source_vertex[i] == i);

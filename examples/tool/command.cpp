@@ -52,12 +52,12 @@ io::Repair_options repair_options(const Input_options& options) {
 
 // "Fox.glb#Walk" names the clip Walk of Fox.glb, for commands that take many inputs.
 Input_options with_clip_of_name(Input_options options) {
-  const std::size_t hash = options.input.rfind('#');
-  if (hash == std::string::npos || !io::is_gltf(options.input.substr(0, hash))) return options;
+  auto [file, clip] = io::split_clip_suffix(options.input);
+  if (!clip) return options;
   if (!options.clip.empty())
     throw invalid_input("the clip is given twice: by --clip and after '#'", {.file = options.input});
-  options.clip = options.input.substr(hash + 1);
-  options.input.resize(hash);
+  options.input = std::move(file);
+  options.clip = std::move(*clip);
   return options;
 }
 
@@ -104,18 +104,9 @@ Surface_mesh read_reference_mesh(const std::string& path) {
 }
 
 nlohmann::json to_json(const io::Repair_report& r) {
-  return {{"input_vertices", r.input_vertices},
-          {"input_triangles", r.input_triangles},
-          {"welded_vertices", r.welded_vertices},
-          {"degenerate_triangles", r.degenerate_triangles},
-          {"duplicate_triangles", r.duplicate_triangles},
-          {"non_manifold_edges", r.non_manifold_edges},
-          {"non_manifold_vertices", r.non_manifold_vertices},
-          {"duplicated_vertices", r.duplicated_vertices},
-          {"reoriented_triangles", r.reoriented_triangles},
-          {"unrepairable_triangles", r.unrepairable_triangles},
-          {"vertices", r.vertices},
-          {"triangles", r.triangles}};
+  nlohmann::json counts = nlohmann::json::object();
+  for (const auto& [name, count] : r.counts()) counts[std::string(name)] = count;
+  return counts;
 }
 
 std::string describe(const io::Repair_report& r) {

@@ -22,6 +22,7 @@
 #include <set>
 #include <span>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -66,6 +67,24 @@ struct Repair_report {
   std::size_t unrepairable_triangles = 0;
   std::size_t vertices = 0;               ///< vertices after the repair
   std::size_t triangles = 0;              ///< triangles after the repair
+
+  /// @brief Every count by its member's name, in the order above: one list for the writers of a
+  /// report (the tool's JSON, the Python module's dict).
+  /// @par Complexity O(1).
+  std::array<std::pair<std::string_view, std::size_t>, 12> counts() const noexcept {
+    return {{{"input_vertices", input_vertices},
+             {"input_triangles", input_triangles},
+             {"welded_vertices", welded_vertices},
+             {"degenerate_triangles", degenerate_triangles},
+             {"duplicate_triangles", duplicate_triangles},
+             {"non_manifold_edges", non_manifold_edges},
+             {"non_manifold_vertices", non_manifold_vertices},
+             {"duplicated_vertices", duplicated_vertices},
+             {"reoriented_triangles", reoriented_triangles},
+             {"unrepairable_triangles", unrepairable_triangles},
+             {"vertices", vertices},
+             {"triangles", triangles}}};
+  }
 
   /// @brief Whether the repair changed anything.
   bool changed() const noexcept {

@@ -56,6 +56,15 @@ inline bool is_gltf(const std::filesystem::path& input) {
   return extension == ".gltf" || extension == ".glb";
 }
 
+/// @brief "Fox.glb#Walk" split into the glTF file and the clip after its last '#': `{"Fox.glb",
+/// "Walk"}`; any other input (no '#', or none after a glTF file name) whole, with no clip.
+/// @par Complexity O(length of the name).
+inline std::pair<std::string, std::optional<std::string>> split_clip_suffix(const std::string& input) {
+  const std::size_t hash = input.rfind('#');
+  if (hash == std::string::npos || !is_gltf(input.substr(0, hash))) return {input, std::nullopt};
+  return {input.substr(0, hash), input.substr(hash + 1)};
+}
+
 /// @brief The format of an input, by its extension: "gltf" or "glb", "pc2" or "mdd" for a point
 /// cache, else that of its frame files ("obj", "off" or "ply").
 /// @throws invalid_input when the input is a frame sequence with no frame file.
