@@ -13,14 +13,8 @@ namespace {
 
 using deformseg::alignment::Alignment;
 using deformseg::alignment::Dtw;
+using deformseg::alignment_test::absolute_differences;
 using deformseg::alignment_test::Pairs;
-
-Eigen::MatrixXd absolute_differences(const std::vector<double>& x, const std::vector<double>& y) {
-  Eigen::MatrixXd d(static_cast<Eigen::Index>(x.size()), static_cast<Eigen::Index>(y.size()));
-  for (std::size_t i = 0; i < x.size(); ++i)
-    for (std::size_t j = 0; j < y.size(); ++j) d(Eigen::Index(i), Eigen::Index(j)) = std::abs(x[i] - y[j]);
-  return d;
-}
 
 // The Sakoe–Chiba band as documented: |i (m - 1) - j (n - 1)| <= w min(n - 1, m - 1):
 // within w cells, counted along the longer sequence, of the line from corner to corner.

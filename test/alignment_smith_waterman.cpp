@@ -202,7 +202,7 @@ TEST_CASE("Smith_waterman: invalid scores and dissimilarities throw", "[alignmen
 }
 
 namespace {
-struct Not_a_policy {  // no higher_is_better
+struct Not_an_alignment_policy {  // no higher_is_better
   template <class D>
   Alignment align(std::size_t, std::size_t, const D&) const {
     return {};
@@ -214,4 +214,4 @@ struct Not_a_policy {  // no higher_is_better
 };
 }  // namespace
 
-static_assert(!deformseg::alignment::AlignmentPolicy<Not_a_policy>);
+static_assert(!deformseg::alignment::AlignmentPolicy<Not_an_alignment_policy>);

@@ -13,6 +13,7 @@ namespace {
 using deformseg::alignment::Alignment;
 using deformseg::alignment::Subsequence_dtw;
 using deformseg::alignment::Subsequence_query;
+using deformseg::alignment_test::absolute_differences;
 using deformseg::alignment_test::Pairs;
 
 // The least cost of warping all rows of d onto columns first..last, over every such part.
@@ -23,13 +24,6 @@ double brute_force_subsequence(const Eigen::MatrixXd& d) {
       best = std::min(best, deformseg::alignment_test::brute_force_warping(d, first, last,
                                                                  [](std::size_t, std::size_t) { return true; }));
   return best;
-}
-
-Eigen::MatrixXd absolute_differences(const std::vector<double>& x, const std::vector<double>& y) {
-  Eigen::MatrixXd d(static_cast<Eigen::Index>(x.size()), static_cast<Eigen::Index>(y.size()));
-  for (std::size_t i = 0; i < x.size(); ++i)
-    for (std::size_t j = 0; j < y.size(); ++j) d(Eigen::Index(i), Eigen::Index(j)) = std::abs(x[i] - y[j]);
-  return d;
 }
 
 }  // namespace

@@ -21,6 +21,14 @@ namespace deformseg::alignment_test {
 
 using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;
 
+/// The dissimilarity |x[i] - y[j]| of two sequences of numbers.
+inline Eigen::MatrixXd absolute_differences(const std::vector<double>& x, const std::vector<double>& y) {
+  Eigen::MatrixXd d(static_cast<Eigen::Index>(x.size()), static_cast<Eigen::Index>(y.size()));
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (std::size_t j = 0; j < y.size(); ++j) d(Eigen::Index(i), Eigen::Index(j)) = std::abs(x[i] - y[j]);
+  return d;
+}
+
 inline double entry(const Eigen::MatrixXd& d, std::size_t i, std::size_t j) {
   return d(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
 }

@@ -15,7 +15,18 @@
 #include <random>
 #include <string>
 
-using namespace deformseg::clustering;
+using deformseg::clustering::Agglomerative;
+using deformseg::clustering::check_distance_matrix;
+using deformseg::clustering::cluster;
+using deformseg::clustering::Clustering;
+using deformseg::clustering::ClusteringPolicy;
+using deformseg::clustering::group_identical_items;
+using deformseg::clustering::Grouped_items;
+using deformseg::clustering::K_means;
+using deformseg::clustering::K_medoids;
+using deformseg::clustering::Linkage;
+using deformseg::clustering::silhouette;
+using deformseg::clustering::WeightedClusteringPolicy;
 using deformseg_clustering_test::make_blobs;
 using deformseg_clustering_test::on_a_line;
 
@@ -45,7 +56,7 @@ struct Too_few_labels {
   Clustering operator()(const Eigen::MatrixXd&) const { return {}; }
 };
 
-struct Not_a_policy {};
+struct Not_a_clustering_policy {};
 struct Returns_labels_only {
   std::vector<std::size_t> operator()(const Eigen::MatrixXd& d) const { return std::vector<std::size_t>(std::size_t(d.rows())); }
 };
@@ -78,7 +89,7 @@ static_assert(ClusteringPolicy<K_medoids> && ClusteringPolicy<Agglomerative> && 
 static_assert(WeightedClusteringPolicy<K_medoids> && WeightedClusteringPolicy<Agglomerative> &&
               WeightedClusteringPolicy<K_means>);
 static_assert(ClusteringPolicy<Near_the_first> && !WeightedClusteringPolicy<Near_the_first>);
-static_assert(!ClusteringPolicy<Not_a_policy>);
+static_assert(!ClusteringPolicy<Not_a_clustering_policy>);
 static_assert(!ClusteringPolicy<Returns_labels_only>);
 static_assert(!ClusteringPolicy<Takes_a_vector>);
 static_assert(!ClusteringPolicy<Not_const_callable>);

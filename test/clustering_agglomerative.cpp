@@ -8,7 +8,9 @@
 #include <limits>
 #include <random>
 
-using namespace deformseg::clustering;
+using deformseg::clustering::Agglomerative;
+using deformseg::clustering::cluster;
+using deformseg::clustering::Linkage;
 using deformseg_clustering_test::make_blobs;
 using deformseg_clustering_test::on_a_line;
 

@@ -7,7 +7,9 @@
 #include <limits>
 #include <random>
 
-using namespace deformseg::clustering;
+using deformseg::clustering::cluster;
+using deformseg::clustering::Clustering;
+using deformseg::clustering::K_means;
 using deformseg_clustering_test::make_blobs;
 using deformseg_clustering_test::random_distances;
 

@@ -10,7 +10,9 @@
 #include <limits>
 #include <random>
 
-using namespace deformseg::clustering;
+using deformseg::clustering::cluster;
+using deformseg::clustering::Clustering;
+using deformseg::clustering::K_medoids;
 using deformseg_clustering_test::make_blobs;
 using deformseg_clustering_test::random_distances;
 

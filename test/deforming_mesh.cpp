@@ -1,5 +1,5 @@
 // Tests of deforming_mesh.h: the DeformingMesh concept, Deforming_mesh, make_face_graph.
-#include "test_support.h"
+#include "tetrahedron.h"
 
 #include <deformseg/default_mesh.h>
 #include <deformseg/deforming_mesh.h>
@@ -17,9 +17,8 @@ namespace {
 
 using Polyhedron = CGAL::Polyhedron_3<Kernel>;
 
-// A tetrahedron, oriented outwards.
-const std::vector<std::array<double, 3>> tetra_points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-const std::vector<std::array<int, 3>> tetra_triangles{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+using deformseg::test::tetra_points;
+using deformseg::test::tetra_triangles;
 
 // Frame t moves every vertex by (t, 2t, 3t).
 std::vector<double> translated_frames(std::size_t frames) {

@@ -51,7 +51,7 @@ std::vector<std::string> key_frames(const Evolving_graph& graph) {
   return out;
 }
 
-constexpr double right = std::numbers::pi / 2;
+using deformseg::test::right_angle;
 constexpr auto linear = Easing::linear;
 // A low threshold: linear blend skinning strains the bend's neutral axis about ten times less
 // than its outside, and the deformed band closes into a ring only when those cells count too.
@@ -159,7 +159,7 @@ TEST_CASE("frame segments: a band across a grid cuts its rigid part in two", "[e
 
 TEST_CASE("evolving graph: a tube bending once gives R, then R - D - R, then R", "[evolving_graph]") {
   Bending_tube spec;
-  spec.schedule = {{10, {0.0}}, {10, {right}, linear}, {10, {}}};
+  spec.schedule = {{10, {0.0}}, {10, {right_angle}, linear}, {10, {}}};
   const auto tube = make_bending_tube(spec);
   const Evolving_graph graph = evolving_graph(tube.animation, tube_options);
   // Previous-pose strain: deformed exactly while the joint moves (frames 11-20).
@@ -188,14 +188,15 @@ TEST_CASE("evolving graph: a tube bending once gives R, then R - D - R, then R",
 
 TEST_CASE("evolving graph: two joints bending one after the other, and overlapping", "[evolving_graph]") {
   Bending_tube spec = two_joints();
-  spec.schedule = {{5, {0.0, 0.0}}, {10, {right, 0.0}, linear}, {5, {}}, {10, {right, right}, linear}, {5, {}}};
+  spec.schedule = {{5, {0.0, 0.0}}, {10, {right_angle, 0.0}, linear}, {5, {}},
+                   {10, {right_angle, right_angle}, linear}, {5, {}}};
   CHECK(key_frames(evolving_graph(make_bending_tube(spec).animation, tube_options)) ==
         std::vector<std::string>{"0-5: R |", "6-15: D0 R R | 0-1 0-2", "16-20: R |", "21-30: D1 R R | 0-1 0-2",
                                  "31-35: R |"});
   // The upper joint starts while the lower one is half way: for six frames both bend, and the
   // middle of the tube is a rigid region between the two bands (it touches segments 0 and 1).
-  spec.schedule = {{5, {0.0, 0.0}}, {6, {right / 2, 0.0}, linear}, {6, {right, right / 2}, linear},
-                   {6, {right, right}, linear}, {5, {}}};
+  spec.schedule = {{5, {0.0, 0.0}}, {6, {right_angle / 2, 0.0}, linear}, {6, {right_angle, right_angle / 2}, linear},
+                   {6, {right_angle, right_angle}, linear}, {5, {}}};
   CHECK(key_frames(evolving_graph(make_bending_tube(spec).animation, tube_options)) ==
         std::vector<std::string>{"0-5: R |", "6-11: D0 R R | 0-1 0-2", "12-17: D0 D1 R R R | 0-2 0-3 1-3 1-4",
                                  "18-23: D1 R R | 0-1 0-2", "24-28: R |"});
@@ -203,7 +204,8 @@ TEST_CASE("evolving graph: two joints bending one after the other, and overlappi
 
 TEST_CASE("evolving graph: a moved, turned and scaled tube gives the same evolving graph", "[evolving_graph]") {
   Bending_tube spec = two_joints();
-  spec.schedule = {{4, {0.0, 0.0}}, {8, {right, 0.0}}, {8, {right, -right}, linear}, {4, {0.0, 0.0}}};
+  spec.schedule = {{4, {0.0, 0.0}}, {8, {right_angle, 0.0}}, {8, {right_angle, -right_angle}, linear},
+                   {4, {0.0, 0.0}}};
   const Evolving_graph a = evolving_graph(make_bending_tube(spec).animation, tube_options);
   spec.placement = {.scale = 0.02,
                     .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, -2, 3).normalized())),

@@ -1,20 +1,16 @@
 #include <deformseg/ged/edit_cost.h>
 #include <deformseg/ged/ged_result.h>
 
+#include "ged_support.h"
+
 #include <catch2/catch.hpp>
 
 #include <string>
 
 namespace {
 
-using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, int>;
-
-Graph make_graph(const std::vector<int>& labels, const std::vector<std::pair<int, int>>& edges) {
-  Graph g(labels.size());
-  for (std::size_t v = 0; v < labels.size(); ++v) g[v] = labels[v];
-  for (auto [u, v] : edges) boost::add_edge(static_cast<std::size_t>(u), static_cast<std::size_t>(v), g);
-  return g;
-}
+using Graph = deformseg::test::Ged_graph;
+using deformseg::test::make_graph;
 
 // A user policy: maps node i to node i and charges the rest (an upper bound, never exact).
 struct Identity_mapping_ged {
@@ -31,7 +27,7 @@ struct Double_costs : deformseg::ged::Unit_costs {
   double edge_deletion() const { return 2.0; }
 };
 
-struct Not_a_policy {
+struct Not_a_ged_policy {
   double operator()(const Graph&, const Graph&) const { return 0; }
 };
 
@@ -46,7 +42,7 @@ TEST_CASE("GED concepts accept models and reject non-models", "[ged][concepts]")
   STATIC_REQUIRE(GedCostModel<Double_costs, int>);
   STATIC_REQUIRE(!GedCostModel<int, int>);
   STATIC_REQUIRE(GedPolicy<Identity_mapping_ged, Graph, Unit_costs>);
-  STATIC_REQUIRE(!GedPolicy<Not_a_policy, Graph, Unit_costs>);
+  STATIC_REQUIRE(!GedPolicy<Not_a_ged_policy, Graph, Unit_costs>);
 }
 
 TEST_CASE("edit_cost: exact costs of given mappings", "[ged][edit_cost]") {

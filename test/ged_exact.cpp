@@ -11,14 +11,8 @@ namespace {
 using deformseg::ged::Exact_ged;
 using deformseg::test::brute_force_ged;
 using deformseg::test::Ged_graph;
+using deformseg::test::make_graph;
 using deformseg::test::random_labelled_graph;
-
-Ged_graph make_graph(const std::vector<int>& labels, const std::vector<std::pair<int, int>>& edges) {
-  Ged_graph g(labels.size());
-  for (std::size_t v = 0; v < labels.size(); ++v) g[v] = labels[v];
-  for (auto [u, v] : edges) boost::add_edge(static_cast<std::size_t>(u), static_cast<std::size_t>(v), g);
-  return g;
-}
 
 template <class C>
 void check_against_brute_force(unsigned seed, int pairs, const C& costs) {

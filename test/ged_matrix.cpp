@@ -14,7 +14,15 @@
 
 namespace {
 
-using namespace deformseg::ged;
+using deformseg::ged::Assignment_lower_bound;
+using deformseg::ged::Bipartite_ged;
+using deformseg::ged::edit_cost;
+using deformseg::ged::Exact_ged;
+using deformseg::ged::ged_matrix;
+using deformseg::ged::Ged_matrix_result;
+using deformseg::ged::ged_matrix_results;
+using deformseg::ged::Ged_result;
+using deformseg::ged::Unit_costs;
 using deformseg::test::Ged_graph;
 
 std::vector<Ged_graph> random_graphs(unsigned seed, std::size_t count) {

@@ -25,6 +25,14 @@ inline Ged_graph random_labelled_graph(std::mt19937& rng, std::size_t nodes, int
   return g;
 }
 
+/// The graph of node labels `labels` and undirected `edges` (pairs of node indices).
+inline Ged_graph make_graph(const std::vector<int>& labels, const std::vector<std::pair<int, int>>& edges) {
+  Ged_graph g(labels.size());
+  for (std::size_t v = 0; v < labels.size(); ++v) g[v] = labels[v];
+  for (auto [u, v] : edges) boost::add_edge(static_cast<std::size_t>(u), static_cast<std::size_t>(v), g);
+  return g;
+}
+
 /// The same graph with its nodes renumbered at random: isomorphic to `g`.
 inline Ged_graph permuted(const Ged_graph& g, std::mt19937& rng) {
   const std::size_t n = boost::num_vertices(g);
@@ -60,7 +68,7 @@ struct Node_heavy_costs {
   double edge_substitution() const { return 0.125; }
 };
 
-namespace internal {
+namespace by_definition {
 template <class C>
 void all_mappings(const Ged_graph& a, const Ged_graph& b, const C& costs, std::vector<int>& mapping,
                   std::vector<char>& used, std::size_t i, double& best) {
@@ -78,7 +86,7 @@ void all_mappings(const Ged_graph& a, const Ged_graph& b, const C& costs, std::v
     used[j] = 0;
   }
 }
-}  // namespace internal
+}  // namespace by_definition
 
 /// The graph edit distance by definition: the least edit cost over every injective partial map
 /// of the nodes of `a` into those of `b` (the nodes left out are deleted or inserted).
@@ -87,7 +95,7 @@ double brute_force_ged(const Ged_graph& a, const Ged_graph& b, const C& costs = 
   std::vector<int> mapping(boost::num_vertices(a));
   std::vector<char> used(boost::num_vertices(b), 0);
   double best = std::numeric_limits<double>::infinity();
-  internal::all_mappings(a, b, costs, mapping, used, 0, best);
+  by_definition::all_mappings(a, b, costs, mapping, used, 0, best);
   return best;
 }
 

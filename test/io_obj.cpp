@@ -1,6 +1,6 @@
 // Tests of io/obj.h (read_obj) and of the OBJ path of read_mesh_points, on small files made here
 // and, tagged [data], on the shared real animations against CGAL's reader.
-#include "test_support.h"
+#include "tetrahedron.h"
 
 #include <deformseg/exceptions.h>
 #include <deformseg/io/obj.h>
@@ -25,10 +25,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Triangles = std::vector<std::array<std::uint32_t, 3>>;
-
-// A tetrahedron, oriented outwards.
-const std::string tetrahedron =
+// The tetrahedron as an OBJ file.
+const std::string tetrahedron_obj =
     "v 0 0 0\n"
     "v 1 0 0\n"
     "v 0 1 0\n"
@@ -37,20 +35,18 @@ const std::string tetrahedron =
     "f 1 2 4\n"
     "f 2 3 4\n"
     "f 1 4 3\n";
-const std::vector<double> tetrahedron_points{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-const Triangles tetrahedron_triangles{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+using deformseg::test::Triangles;
+using deformseg::test::tetrahedron_points;
+using deformseg::test::tetrahedron_triangles;
 
 fs::path obj_file(const std::string& name, const std::string& text) { return deformseg::test::write_file("io_obj/" + name, text); }
 
-// The message of an error at `line` of `path`.
-std::string at(const fs::path& path, std::size_t line, const std::string& message) {
-  return path.string() + ":" + std::to_string(line) + ": " + message;
-}
+using deformseg::test::at;
 
 }  // namespace
 
 TEST_CASE("read_obj: vertices and triangles in the order of the file", "[io][obj]") {
-  const Triangle_soup soup = read_obj(obj_file("tetrahedron.obj", tetrahedron));
+  const Triangle_soup soup = read_obj(obj_file("tetrahedron.obj", tetrahedron_obj));
   CHECK(soup.num_vertices() == 4);
   CHECK(soup.points == tetrahedron_points);
   CHECK(soup.triangles == tetrahedron_triangles);
@@ -98,7 +94,7 @@ TEST_CASE("read_obj: every face corner form, relative indices, and the statement
 TEST_CASE("read_obj: CRLF endings, a last line without newline, indices before their vertices", "[io][obj]") {
   SECTION("CRLF") {
     std::string crlf;
-    for (const char c : tetrahedron) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+    for (const char c : tetrahedron_obj) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
     const Triangle_soup soup = read_obj(obj_file("crlf.obj", crlf));
     CHECK(soup.points == tetrahedron_points);
     CHECK(soup.triangles == tetrahedron_triangles);

@@ -1,6 +1,6 @@
 // Tests of io/off.h (read_off), io/ply.h (read_ply) and io/read_mesh.h (read_mesh, read_mesh_points
 // for OFF and PLY, the choice by extension), on small files made here.
-#include "test_support.h"
+#include "tetrahedron.h"
 
 #include <deformseg/exceptions.h>
 #include <deformseg/io/off.h>
@@ -28,10 +28,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+using deformseg::test::Triangles;
 
-const std::vector<double> tetrahedron_points{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
-const Triangles tetrahedron_triangles{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+using deformseg::test::tetrahedron_points;
+using deformseg::test::tetrahedron_triangles;
 const std::string tetrahedron_off =
     "OFF\n"
     "4 4 6\n"
@@ -42,9 +42,7 @@ fs::path file(const std::string& name, const std::string& text) {
   return deformseg::test::write_file("io_off_ply/" + name, text);
 }
 
-std::string at(const fs::path& path, std::size_t line, const std::string& message) {
-  return path.string() + ":" + std::to_string(line) + ": " + message;
-}
+using deformseg::test::at;
 
 // The bytes of `value` in little-endian order, as binary_little_endian PLY stores it.
 template <class T>

@@ -1,7 +1,7 @@
 // Tests of io/point_cache.h: PC2 and MDD round trips, header fields, files made byte by byte
 // here (so that the byte order is checked against the formats, not only against the writers),
 // and every error with its message.
-#include "test_support.h"
+#include "tetrahedron.h"
 
 #include <deformseg/default_mesh.h>
 #include <deformseg/deforming_mesh.h>
@@ -32,14 +32,9 @@ namespace {
 
 using Polyhedron = CGAL::Polyhedron_3<Kernel>;
 
-// A tetrahedron, oriented outwards: V = 4, so a frame is 48 bytes.
-const std::vector<std::array<double, 3>> tetra_points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-const std::vector<std::array<int, 3>> tetra_triangles{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-
-template <class Graph>
-Graph tetrahedron() {
-  return make_face_graph<Graph>(tetra_points, tetra_triangles);
-}
+// The tetrahedron: V = 4, so a frame is 48 bytes.
+using deformseg::test::graph_name;
+using deformseg::test::tetrahedron;
 
 // Frame t, vertex i, axis k at (i + 1) * (k + 1) / 10 + t / 3: values no float holds exactly.
 template <class Coordinate>
@@ -94,11 +89,6 @@ Bytes mdd_header(std::int32_t frames, std::int32_t points) {
   return bytes;
 }
 
-std::string file_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 // The error message for `path`, optionally at `frame`.
 std::string in_file(const fs::path& path, const std::string& message) { return path.string() + ": " + message; }
 std::string in_frame(const fs::path& path, std::size_t frame, const std::string& message) {
@@ -112,11 +102,6 @@ fs::path scratch(const std::string& name) {
   fs::create_directories(dir);
   fs::remove(dir / name);
   return dir / name;
-}
-
-template <class Graph>
-std::string graph_name() {
-  return std::same_as<Graph, Surface_mesh> ? "surface_mesh" : "polyhedron";
 }
 
 }  // namespace
@@ -164,7 +149,7 @@ TEST_CASE("write_pc2: the bytes of the format, and the header read back", "[io][
   const fs::path cache = scratch("header.pc2");
   io::write_pc2(animation, cache, {.start_frame = 10, .sample_rate = 0.5});
 
-  const std::string bytes = file_bytes(cache);
+  const std::string bytes = test::file_text(cache);
   REQUIRE(bytes.size() == 32 + 3 * 4 * 12);
   CHECK(bytes.substr(0, 32) == std::string("POINTCACHE2\0"
                                            "\x01\0\0\0"          // version 1
@@ -190,7 +175,7 @@ TEST_CASE("write_mdd: the bytes of the format, and the frame times read back", "
   const fs::path cache = scratch("header.MDD");
   io::write_mdd(animation, cache, 4.0);
 
-  const std::string bytes = file_bytes(cache);
+  const std::string bytes = test::file_text(cache);
   REQUIRE(bytes.size() == 8 + 3 * 4 + 3 * 4 * 12);
   CHECK(bytes.substr(0, 20) == std::string("\0\0\0\x03"    // 3 frames
                                            "\0\0\0\x04"    // 4 points

@@ -1,7 +1,7 @@
 // Tests of io/write_obj.h, io/write_off.h, io/write_ply.h and io/write_sequence.h: exact text, numbers that read
 // back identically, PLY face colours read back by CGAL, file names that sort in frame order, and
 // the errors.
-#include "test_support.h"
+#include "tetrahedron.h"
 
 #include <deformseg/color.h>
 #include <deformseg/default_mesh.h>
@@ -43,18 +43,14 @@ using Polyhedron = CGAL::Polyhedron_3<Kernel>;
 using Point = CGAL::Simple_cartesian<double>::Point_3;
 using Polygons = std::vector<std::vector<std::size_t>>;
 
-// A tetrahedron, oriented outwards.
-const std::vector<std::array<double, 3>> tetra_points{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-const std::vector<std::array<int, 3>> tetra_triangles{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-
-template <class Graph>
-Graph tetrahedron() {
-  return make_face_graph<Graph>(tetra_points, tetra_triangles);
-}
+using deformseg::test::graph_name;
+using deformseg::test::tetra_points;
+using deformseg::test::tetra_triangles;
+using deformseg::test::tetrahedron;
 
 // Frame t moves vertex i by (t / 10, t / 3, -t i / 7): values with long decimal expansions.
 template <class Coordinate>
-std::vector<Coordinate> moving_positions(std::size_t frames) {
+std::vector<Coordinate> drifting_positions(std::size_t frames) {
   std::vector<Coordinate> xyz;
   for (std::size_t t = 0; t < frames; ++t)
     for (std::size_t i = 0; i < 4; ++i) {
@@ -67,22 +63,14 @@ std::vector<Coordinate> moving_positions(std::size_t frames) {
 }
 
 template <class Graph, class Coordinate = double>
-Deforming_mesh<Graph, Coordinate> moving_tetrahedron(std::size_t frames) {
-  return Deforming_mesh<Graph, Coordinate>(tetrahedron<Graph>(), moving_positions<Coordinate>(frames));
-}
-
-template <class Graph>
-std::string graph_name() {
-  return std::same_as<Graph, Surface_mesh> ? "surface_mesh" : "polyhedron";
+Deforming_mesh<Graph, Coordinate> drifting_tetrahedron(std::size_t frames) {
+  return Deforming_mesh<Graph, Coordinate>(tetrahedron<Graph>(), drifting_positions<Coordinate>(frames));
 }
 
 // A path for a file a test writes, in a folder of its own, emptied first.
 fs::path output(const std::string& test, const std::string& name) { return test::fresh_dir("io_writers/" + test) / name; }
 
-std::string file_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using deformseg::test::file_text;
 
 // The triangles of a polygon soup, each rotated to start at its smallest index, as the
 // animation's triangle table may start each cycle anywhere.
@@ -189,7 +177,7 @@ TEST_CASE("write_off: the counts, the vertices as their shortest exact text, the
 }
 
 TEST_CASE("write_obj: a float animation is written in float's shortest form", "[io][writers][obj]") {
-  const auto animation = moving_tetrahedron<Surface_mesh, float>(2);
+  const auto animation = drifting_tetrahedron<Surface_mesh, float>(2);
   const fs::path file = output("obj_float", "frame1.obj");
   io::write_obj(animation, 1, file);
   // Vertex 0 of frame 1 is (0.1f, 1/3.f, 0): shorter than the double these floats are.
@@ -198,7 +186,7 @@ TEST_CASE("write_obj: a float animation is written in float's shortest form", "[
 
 TEMPLATE_TEST_CASE("write_obj: CGAL reads back the same points and triangles", "[io][writers][obj]", Surface_mesh,
                    Polyhedron) {
-  const auto animation = moving_tetrahedron<TestType>(3);
+  const auto animation = drifting_tetrahedron<TestType>(3);
   const fs::path file = output("obj_cgal_" + graph_name<TestType>(), "frame2.obj");
   io::write_obj(animation, 2, file);
   std::vector<Point> points;
@@ -209,7 +197,7 @@ TEMPLATE_TEST_CASE("write_obj: CGAL reads back the same points and triangles", "
 }
 
 TEST_CASE("write_ply: text PLY, with face colours, exactly", "[io][writers][ply]") {
-  const auto animation = moving_tetrahedron<Surface_mesh>(2);
+  const auto animation = drifting_tetrahedron<Surface_mesh>(2);
   const fs::path file = output("ply_ascii", "frame1.ply");
   io::write_ply(animation, 1, file, four_colors, {.encoding = io::Ply_encoding::ascii});
   const std::string expected = "ply\n"
@@ -234,7 +222,7 @@ TEST_CASE("write_ply: text PLY, with face colours, exactly", "[io][writers][ply]
 
 TEMPLATE_TEST_CASE("write_ply: binary PLY with face colours, read back by CGAL", "[io][writers][ply]", Surface_mesh,
                    Polyhedron) {
-  const auto animation = moving_tetrahedron<TestType>(3);
+  const auto animation = drifting_tetrahedron<TestType>(3);
   const fs::path file = output("ply_binary_" + graph_name<TestType>(), "frame2.ply");
   io::write_ply(animation, 2, file, four_colors);
 
@@ -270,7 +258,7 @@ TEMPLATE_TEST_CASE("write_ply: binary PLY with face colours, read back by CGAL",
 }
 
 TEST_CASE("write_ply: a float animation, without colours, as float properties", "[io][writers][ply]") {
-  const auto animation = moving_tetrahedron<Surface_mesh, float>(2);
+  const auto animation = drifting_tetrahedron<Surface_mesh, float>(2);
   const fs::path file = output("ply_float", "frame1.ply");
   io::write_ply(animation, 1, file);
   const std::string bytes = file_text(file);
@@ -288,7 +276,7 @@ TEST_CASE("write_ply: a float animation, without colours, as float properties", 
 }
 
 TEST_CASE("write_obj and write_ply reject bad arguments, naming the file", "[io][writers][errors]") {
-  const auto animation = moving_tetrahedron<Surface_mesh>(3);
+  const auto animation = drifting_tetrahedron<Surface_mesh>(3);
   const fs::path folder = test::fresh_dir("io_writers/errors");
 
   SECTION("a frame out of range") {
@@ -332,7 +320,7 @@ TEST_CASE("sequence_file_name: zero-padded to the width of the last frame", "[io
 }
 
 TEST_CASE("write_sequence: names that sort the same plainly and naturally", "[io][writers][sequence]") {
-  const auto animation = moving_tetrahedron<Surface_mesh>(12);
+  const auto animation = drifting_tetrahedron<Surface_mesh>(12);
   const fs::path folder = test::fresh_dir("io_writers/names") / "new" / "folder";
   const auto files = io::write_sequence(animation, folder, {.min_digits = 1});
   REQUIRE(files.size() == 12);
@@ -347,7 +335,7 @@ TEST_CASE("write_sequence: names that sort the same plainly and naturally", "[io
 
 TEMPLATE_TEST_CASE("write_sequence then read_frame_sequence: the same positions", "[io][writers][sequence]", float,
                    double) {
-  const auto animation = moving_tetrahedron<Surface_mesh, TestType>(5);
+  const auto animation = drifting_tetrahedron<Surface_mesh, TestType>(5);
   for (const auto format : {io::Mesh_format::obj, io::Mesh_format::off, io::Mesh_format::ply}) {
     const std::string extension = internal::file_extension(format);
     const fs::path folder = test::fresh_dir(std::string("io_writers/round_trip_") +
@@ -362,7 +350,7 @@ TEMPLATE_TEST_CASE("write_sequence then read_frame_sequence: the same positions"
 }
 
 TEST_CASE("write_sequence: per-frame face colours through a callback", "[io][writers][sequence]") {
-  const auto animation = moving_tetrahedron<Polyhedron>(3);
+  const auto animation = drifting_tetrahedron<Polyhedron>(3);
   const auto colors_of = [](std::size_t t) {
     std::vector<Rgb> colors;
     for (std::uint8_t j = 0; j < 4; ++j) colors.push_back({std::uint8_t(10 * t), std::uint8_t(50 * j), std::uint8_t(255 - j)});
@@ -386,7 +374,7 @@ TEST_CASE("write_sequence: per-frame face colours through a callback", "[io][wri
 }
 
 TEST_CASE("write_sequence rejects bad options, naming the folder or the file", "[io][writers][sequence][errors]") {
-  const auto animation = moving_tetrahedron<Surface_mesh>(3);
+  const auto animation = drifting_tetrahedron<Surface_mesh>(3);
   const fs::path folder = test::fresh_dir("io_writers/sequence_errors");
 
   SECTION("colours asked of OBJ") {

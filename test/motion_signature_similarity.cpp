@@ -203,7 +203,8 @@ TEST_CASE("motion_signature_similarity: a time-shifted cyclic motion scores near
 
 TEST_CASE("motion_signature_similarity: a motion inside a longer one is found at its frames", "[motion_signature]") {
   const Motion_signature_similarity<alignment::Subsequence_dtw> policy;
-  const auto longer = tube({{6, {right / 2}}, {6, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {6, {right / 2}}, {7, {0.0}}});
+  const auto longer = tube({{6, {right_angle / 2}}, {6, {0.0}}, {10, {right_angle}}, {8, {}}, {10, {0.0}},
+                            {6, {right_angle / 2}}, {7, {0.0}}});
   // Its frames 12 to 40 (the bend, the hold and the unbend), cut out.
   std::vector<std::size_t> cut;
   for (std::size_t t = 12; t <= 40; ++t) cut.push_back(t);
@@ -226,7 +227,7 @@ TEST_CASE("motion_signature_similarity: the same motion on another tube ranks ab
   const double same = motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
   const double timing = motion_similarity(a, tube(other_timing, other_tube), policy).value;
   const double small_bend = motion_similarity(
-      a, tube({{5, {0.0}}, {10, {right / 3}}, {8, {}}, {10, {0.0}}, {5, {}}}, other_tube), policy).value;
+      a, tube({{5, {0.0}}, {10, {right_angle / 3}}, {8, {}}, {10, {0.0}}, {5, {}}}, other_tube), policy).value;
   WARN("same motion on another tube " << same << ", other timing " << timing << ", a third of the bend "
                                       << small_bend);
   // Measured 0.998, 0.811 and 0.930 (0.1 apart or more before the scale of 1.44 became 1.77,
@@ -259,9 +260,9 @@ TEST_CASE("find_motion: a motion embedded twice in a longer one is found at its 
   // 80-118), a hold: the two windows are found, best first, each within 4 frames of where it is
   // (measured: 15-49 and 83-117; the motion starts standing still for 5 frames, and which of the
   // still frames after the half bends match them best depends on how far the lags see).
-  std::vector<Tube_phase> schedule{{6, {right / 2}}, {6, {0.0}}};
+  std::vector<Tube_phase> schedule{{6, {right_angle / 2}}, {6, {0.0}}};
   schedule.insert(schedule.end(), bend_hold_unbend.begin(), bend_hold_unbend.end());
-  schedule.insert(schedule.end(), {{18, {}}, {6, {right / 2}}, {6, {0.0}}});
+  schedule.insert(schedule.end(), {{18, {}}, {6, {right_angle / 2}}, {6, {0.0}}});
   schedule.insert(schedule.end(), bend_hold_unbend.begin(), bend_hold_unbend.end());
   schedule.push_back({10, {}});
   const auto longer = tube(schedule);

@@ -35,9 +35,10 @@ void check_tubes(const Policy& policy, const char* name) {
   const auto a = tube(bend_hold_unbend);
   const double same_motion_other_tube = motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
   const double other_timing =
-      motion_similarity(a, tube({{5, {0.0}}, {3, {right}}, {22, {}}, {3, {0.0}}, {5, {}}}), policy).value;
+      motion_similarity(a, tube({{5, {0.0}}, {3, {right_angle}}, {22, {}}, {3, {0.0}}, {5, {}}}), policy).value;
   const double two_bends = motion_similarity(
-      a, tube({{5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {}}}), policy).value;
+      a, tube({{5, {0.0}}, {5, {right_angle}}, {4, {}}, {5, {0.0}}, {5, {right_angle}}, {4, {}}, {5, {0.0}}, {5, {}}}),
+      policy).value;
   WARN(name << ": same schedule on another tube " << same_motion_other_tube << ", other timing " << other_timing
             << ", two bends " << two_bends);
   CHECK(same_motion_other_tube > other_timing);
@@ -45,7 +46,7 @@ void check_tubes(const Policy& policy, const char* name) {
 
   // A fast bend and a slow unbend, against the same played backwards (a slow bend and a fast
   // unbend): not the same motion, so below 1, yet nearer than a motion of other timing.
-  const auto fast_slow = tube({{5, {0.0}}, {3, {right}}, {6, {}}, {15, {0.0}}, {5, {}}});
+  const auto fast_slow = tube({{5, {0.0}}, {3, {right_angle}}, {6, {}}, {15, {0.0}}, {5, {}}});
   const double reversal = motion_similarity(fast_slow, frames_of(fast_slow, reversed_frames(fast_slow.num_frames())), policy).value;
   WARN(name << ": a schedule against its time reversal " << reversal);
   CHECK(reversal < 0.999);
@@ -56,10 +57,13 @@ void check_tubes(const Policy& policy, const char* name) {
 template <class Policy>
 double which_joint_first(const Policy& policy) {
   const std::vector<Tube_joint> joints{{.position = 0.3}, {.position = 0.7}};
-  const auto lower_first = tube({{5, {0.0, 0.0}}, {8, {right, 0.0}}, {8, {right, right}}, {5, {}}}, {}, {}, joints);
-  const auto upper_first = tube({{5, {0.0, 0.0}}, {8, {0.0, right}}, {8, {right, right}}, {5, {}}}, {}, {}, joints);
+  const auto lower_first =
+      tube({{5, {0.0, 0.0}}, {8, {right_angle, 0.0}}, {8, {right_angle, right_angle}}, {5, {}}}, {}, {}, joints);
+  const auto upper_first =
+      tube({{5, {0.0, 0.0}}, {8, {0.0, right_angle}}, {8, {right_angle, right_angle}}, {5, {}}}, {}, {}, joints);
   const auto other_tube_lower_first =
-      tube({{5, {0.0, 0.0}}, {8, {right, 0.0}}, {8, {right, right}}, {5, {}}}, other_tube, {}, joints);
+      tube({{5, {0.0, 0.0}}, {8, {right_angle, 0.0}}, {8, {right_angle, right_angle}}, {5, {}}}, other_tube, {},
+           joints);
   const double swapped = motion_similarity(lower_first, upper_first, policy).value;
   const double same = motion_similarity(lower_first, other_tube_lower_first, policy).value;
   WARN("which joint first: swapped " << swapped << ", same order on another tube " << same);
@@ -191,7 +195,7 @@ TEST_CASE("motion similarity: the cat and the lion with the thesis' evolving gra
 TEST_CASE("similarity matrix: symmetric, ones on the diagonal, equal to the pairwise calls", "[similarity]") {
   const std::vector<Surface_mesh_animation> animations{
       tube(bend_hold_unbend), tube(bend_hold_unbend, other_tube),
-      tube({{5, {0.0}}, {3, {right}}, {22, {}}, {3, {0.0}}, {5, {}}})};
+      tube({{5, {0.0}}, {3, {right_angle}}, {22, {}}, {3, {0.0}}, {5, {}}})};
   const auto check = [&](const auto& policy) {
     const Eigen::MatrixXd m = similarity_matrix(animations, policy);
     REQUIRE(m.rows() == 3);
@@ -211,7 +215,7 @@ TEST_CASE("similarity matrix: symmetric, ones on the diagonal, equal to the pair
 TEST_CASE("motion similarity: a motion found whole inside a longer one, by the shorter or the longer", "[similarity]") {
   // Standing still for 6 frames is all of the first 6 frames of a tube that then bends.
   const auto still = tube({{5, {}}});
-  const auto bends = tube({{5, {}}, {10, {right}}, {10, {}}});
+  const auto bends = tube({{5, {}}, {10, {right_angle}}, {10, {}}});
   const auto check = [&](auto policy, const char* name) {
     const double by_shorter = motion_similarity(still, bends, policy).value;
     policy.normalization.length = Normalize_by::longer;

@@ -1,6 +1,7 @@
 // Tests of retrieval_evaluation.h, io/motion_labels.h and the query x database similarity_matrix
 // (with its progress callback): figures computed by hand, the exclusion rules, ties, queries
 // without a relevant candidate, and a brute-force check of ROC-AUC.
+#include "similarity_tubes.h"
 #include "test_support.h"
 
 #include <deformseg/io/motion_labels.h>
@@ -226,17 +227,11 @@ TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]
 
 namespace {
 
-Surface_mesh_animation tube(const std::vector<Tube_phase>& schedule, double radius = 0.1) {
-  Bending_tube spec;
-  spec.shape.radius = radius;
-  spec.schedule = schedule;
-  return make_bending_tube(spec).animation;
-}
-
 std::vector<Surface_mesh_animation> some_tubes() {
-  constexpr double right = std::numbers::pi / 2;
-  return {tube({{5, {0.0}}, {10, {right}}, {8, {}}}), tube({{5, {0.0}}, {10, {right}}, {8, {}}}, 0.15),
-          tube({{5, {0.0}}, {3, {right}}, {12, {}}, {3, {0.0}}}), tube({{4, {0.0}}, {6, {-right}}})};
+  using test::right_angle, test::tube;
+  return {tube({{5, {0.0}}, {10, {right_angle}}, {8, {}}}),
+          tube({{5, {0.0}}, {10, {right_angle}}, {8, {}}}, {.radius = 0.15}),
+          tube({{5, {0.0}}, {3, {right_angle}}, {12, {}}, {3, {0.0}}}), tube({{4, {0.0}}, {6, {-right_angle}}})};
 }
 
 }  // namespace

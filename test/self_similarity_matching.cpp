@@ -75,9 +75,9 @@ TEST_CASE("self_similarity_matching: a motion inside a longer one is found", "[s
   Self_similarity_matching<> policy;
   const auto motion = tube(bend_hold_unbend);
   // 12 frames of another motion (a half bend and back), then the motion, then 12 more.
-  std::vector<Tube_phase> longer{{6, {right / 2}}, {6, {0.0}}};
+  std::vector<Tube_phase> longer{{6, {right_angle / 2}}, {6, {0.0}}};
   longer.insert(longer.end(), bend_hold_unbend.begin() + 1, bend_hold_unbend.end());
-  longer.insert(longer.end(), {{6, {right / 2}}, {7, {0.0}}});
+  longer.insert(longer.end(), {{6, {right_angle / 2}}, {7, {0.0}}});
   const auto inside = tube(longer);
   const std::size_t before = 12 - 5;  // the longer one has 12 frames first, the motion's 5-frame hold none
   const Similarity by_longer = motion_similarity(motion, inside, policy);
@@ -101,10 +101,12 @@ TEST_CASE("self_similarity_matching: the same motion on another tube ranks above
   const double same = motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
   const double timing = motion_similarity(a, tube(other_timing, other_tube), policy).value;
   const double two_bends = motion_similarity(
-      a, tube({{5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {}}}, other_tube),
+      a,
+      tube({{5, {0.0}}, {5, {right_angle}}, {4, {}}, {5, {0.0}}, {5, {right_angle}}, {4, {}}, {5, {0.0}}, {5, {}}},
+           other_tube),
       policy).value;
   const double small_bend = motion_similarity(
-      a, tube({{5, {0.0}}, {10, {right / 3}}, {8, {}}, {10, {0.0}}, {5, {}}}, other_tube), policy).value;
+      a, tube({{5, {0.0}}, {10, {right_angle / 3}}, {8, {}}, {10, {0.0}}, {5, {}}}, other_tube), policy).value;
   WARN("same motion on another tube " << same << ", other timing " << timing << ", two bends " << two_bends
                                       << ", a third of the bend " << small_bend);
   CHECK(same > 0.9);

@@ -17,12 +17,11 @@
 
 namespace deformseg::test {
 
-inline constexpr double right = std::numbers::pi / 2;
 
 /// Bend 90 degrees, hold, unbend (39 frames).
-inline const std::vector<Tube_phase> bend_hold_unbend{{5, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {5, {}}};
+inline const std::vector<Tube_phase> bend_hold_unbend{{5, {0.0}}, {10, {right_angle}}, {8, {}}, {10, {0.0}}, {5, {}}};
 /// The same bend, quick, then a long hold.
-inline const std::vector<Tube_phase> other_timing{{5, {0.0}}, {3, {right}}, {22, {}}, {3, {0.0}}, {5, {}}};
+inline const std::vector<Tube_phase> other_timing{{5, {0.0}}, {3, {right_angle}}, {22, {}}, {3, {0.0}}, {5, {}}};
 /// A thicker, longer, coarser tube without caps.
 inline const Tube_shape other_tube{.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false};
 
@@ -51,7 +50,7 @@ inline Surface_mesh_animation frames_of(const Surface_mesh_animation& a, const s
 /// One cycle (bend, unbend) of `period` frames, repeated: frame t is the cycle's frame
 /// (t + shift) mod period.
 inline Surface_mesh_animation cycles(std::size_t period, std::size_t frames, std::size_t shift) {
-  const auto cycle = tube({{period / 2, {right}}, {period - period / 2, {0.0}}});
+  const auto cycle = tube({{period / 2, {right_angle}}, {period - period / 2, {0.0}}});
   std::vector<std::size_t> order;
   for (std::size_t t = 0; t < frames; ++t) order.push_back((t + shift) % period);
   return frames_of(cycle, order);
@@ -63,7 +62,7 @@ inline Surface_mesh_animation cycles(std::size_t period, std::size_t frames, std
 inline std::vector<double> jointed_points(std::size_t frames, std::size_t points) {
   std::vector<double> positions;
   for (std::size_t t = 0; t < frames; ++t) {
-    const Eigen::AngleAxisd bend(right * double(t) / double(frames - 1), Eigen::Vector3d::UnitX());
+    const Eigen::AngleAxisd bend(right_angle * double(t) / double(frames - 1), Eigen::Vector3d::UnitX());
     for (std::size_t v = 0; v < points; ++v) {
       Eigen::Vector3d p(0.1 * double(v % 2), 0.1 * double(v % 3), double(v) / double(points));
       if (p.z() > 0.5) p = bend * (p - Eigen::Vector3d(0, 0, 0.5)) + Eigen::Vector3d(0, 0, 0.5);

@@ -35,7 +35,7 @@ namespace {
 using Polyhedron = CGAL::Polyhedron_3<Kernel>;
 using Vector3 = Eigen::Vector3d;
 using Map = std::function<Vector3(const Vector3&)>;
-constexpr double right_angle = std::numbers::pi / 2;
+using deformseg::test::right_angle;
 
 // A flat grid of n x n squares (two triangles each) in the plane z = 0, centred on the origin.
 struct Grid {
@@ -92,7 +92,7 @@ Map rigid(double angle, const Vector3& axis, const Vector3& translation) {
 }
 
 // A linear map, then a rigid motion.
-Map linear(const Eigen::Matrix3d& m, const Map& then = identity()) {
+Map linear_map(const Eigen::Matrix3d& m, const Map& then = identity()) {
   return [m, then](const Vector3& p) { return then(m * p); };
 }
 
@@ -259,7 +259,7 @@ TEST_CASE("strain: a uniform stretch by a gives |a - 1|, and each measure its fo
   const std::array<double, 6> factors{0.25, 0.9, 0.999, 1.0001, 1.5, 4.0};
   std::vector<Map> frames{identity()};
   const Map place = rigid(0.4, {1, 1, 0}, {3, -4, 5});
-  for (double a : factors) frames.push_back(linear(a * Eigen::Matrix3d::Identity(), place));
+  for (double a : factors) frames.push_back(linear_map(a * Eigen::Matrix3d::Identity(), place));
   // The tube (a closed surface: a uniform scale of space stretches every triangle by a in every
   // direction) and a flat grid in a tilted plane.
   for (const Grid& shape : {tube_shape(), flat_grid(6)}) {
@@ -292,7 +292,7 @@ TEST_CASE("strain: shears give their known principal stretches", "[strain]") {
   simple(0, 1) = g;
   const Eigen::Matrix3d pure = Eigen::Vector3d(k, 1 / k, 1).asDiagonal();
   const Map place = rigid(1.1, {0.3, -1, 2}, {-7, 8, 9});
-  const auto animation = animate(flat_grid(5), {place, linear(simple, place), linear(pure, place)});
+  const auto animation = animate(flat_grid(5), {place, linear_map(simple, place), linear_map(pure, place)});
 
   const double s1 = std::sqrt(1 + g * g / 4) + g / 2, s2 = std::sqrt(1 + g * g / 4) - g / 2;
   const std::array<std::array<double, 2>, 2> stretches{{{s1, s2}, {k, 1 / k}}};
@@ -333,7 +333,7 @@ TEST_CASE("strain: float strains are relatively exact against long double, slive
     Eigen::Matrix3d m = Eigen::Matrix3d::Identity();
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) m(r, c) += size * unit(random);
-    frames.push_back(linear(m, rigid(unit(random) * 3, {1, 2, 3}, {100, -200, 50})));
+    frames.push_back(linear_map(m, rigid(unit(random) * 3, {1, 2, 3}, {100, -200, 50})));
   }
   const auto animation = animate(shape, frames);
   const auto field = compute_strain(animation, raw());
@@ -366,7 +366,7 @@ TEST_CASE("strain: principal directions follow the stretch, in the deformed plan
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.9, Vector3(1, -2, 0.5).normalized()).toRotationMatrix();
   const Map place = [turn](const Vector3& p) { return Vector3(turn * p + Vector3(4, 5, 6)); };
   const Grid grid = flat_grid(4);
-  const auto animation = animate(grid, {identity(), linear(stretch, place), place});
+  const auto animation = animate(grid, {identity(), linear_map(stretch, place), place});
   const auto field = compute_strain(animation, {.principal_directions = true});
   REQUIRE(field.has_principal_directions());
   const auto stretched = field.principal_directions(1);

@@ -13,7 +13,7 @@ using namespace deformseg;
 
 namespace {
 
-constexpr double right_angle = std::numbers::pi / 2;
+using deformseg::test::right_angle;
 
 Eigen::Vector3d vertex(const Deforming_mesh<Surface_mesh>& a, std::size_t t, std::size_t i) {
   return a.frame_matrix(t).col(Eigen::Index(i));

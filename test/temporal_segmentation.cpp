@@ -18,7 +18,7 @@ using namespace deformseg;
 
 namespace {
 
-constexpr double right_angle = std::numbers::pi / 2;
+using deformseg::test::right_angle;
 
 // Two joints; poses (0, 0), (90, 0), (0, 90) degrees, each held 20 frames, with 4-frame
 // transitions: 66 frames.

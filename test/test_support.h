@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -18,6 +20,9 @@
 namespace deformseg::test {
 
 namespace fs = std::filesystem;
+
+/// A quarter turn, in radians: the bend of most synthetic joints.
+inline constexpr double right_angle = std::numbers::pi / 2;
 
 inline fs::path environment_path(const char* name, const char* fallback) {
   const char* value = std::getenv(name);
@@ -50,6 +55,17 @@ inline fs::path write_file(const std::string& name, const std::string& text) {
   fs::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
   return path;
+}
+
+/// The whole content of a file, byte for byte (empty when it cannot be read).
+inline std::string file_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// A reader's message for an error at `line` of `path`.
+inline std::string at(const fs::path& path, std::size_t line, const std::string& message) {
+  return path.string() + ":" + std::to_string(line) + ": " + message;
 }
 
 /// Unpacks an archive of the shared data (path relative to data_dir()) into the scratch folder

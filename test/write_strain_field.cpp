@@ -25,12 +25,7 @@ Strain_field<float> bent_tube_field() {
   return compute_strain(make_bending_tube(spec).animation);
 }
 
-std::string file_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using deformseg::test::file_text;
 
 }  // namespace
 
