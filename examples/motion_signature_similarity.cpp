@@ -1,5 +1,5 @@
 // Motion_signature_similarity, the default policy: each frame as the area-weighted quantiles of how
-// fast its vertices move, and how fast up or down, at lags of 1, 4 and 16 frames
+// fast its vertices move, and how fast up or down, at lags of 1, 4, 16 and 128 frames
 // (motion_signatures), frames aligned by DTW.
 // With no argument, a tube bending and unbending is compared with the same motion on another,
 // moved and scaled tube, and with other motions; each value is printed with its z-score against
@@ -41,10 +41,11 @@ int main() {
   std::printf("frame 10 of %zu, lag 1, speeds:     ", std::size_t(signatures.rows()));
   for (Eigen::Index q = 0; q < 8; ++q) std::printf(" %5.2f", signatures(10, q));
   std::printf("\nframe 10 of %zu, lag 1, rates up:   ", std::size_t(signatures.rows()));
-  for (Eigen::Index q = 24; q < 32; ++q) std::printf(" %5.2f", signatures(10, q));
+  const Eigen::Index rates_up = signatures.cols() / 2;  // the speeds of every lag come first
+  for (Eigen::Index q = rates_up; q < rates_up + 8; ++q) std::printf(" %5.2f", signatures(10, q));
   std::printf("\n\n");
 
-  const Motion_signature_similarity<> policy;  // lags 1, 4, 16; 8 quantiles; up +Y; scale 1.77; DTW
+  const Motion_signature_similarity<> policy;  // lags 1, 4, 16, 128; 8 quantiles; up +Y; scale 1.77; DTW
   const auto query = policy.describe(tube(bend_hold_unbend));
   struct Candidate {
     const char* name;

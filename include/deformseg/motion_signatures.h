@@ -38,8 +38,13 @@ struct Motion_signature_options {
   /// still over 2k, as if the body stood still before the first frame and after the last (game and
   /// captured clips mostly start and end at rest; a span shifted inwards instead measured worse on
   /// the shared characters, ROC-AUC 0.67 against 0.80). Short lags see speed, long ones the
-  /// amplitude of a motion. Default {1, 4, 16}; each at least 1.
-  std::vector<std::size_t> lags = {1, 4, 16};
+  /// amplitude of a motion; the longest, 128 frames (4 s at 30 fps), spans most clips whole, from
+  /// their first frame to their last, and so says how far the body ends from where it started (sat
+  /// down, fallen, back where it began): it raised mean average precision on the shared characters
+  /// from 0.435 to 0.459, every body left out in turn choosing it among longest lags of 32 to 128
+  /// (chapter 7).
+  /// Default {1, 4, 16, 128}; each at least 1.
+  std::vector<std::size_t> lags = {1, 4, 16, 128};
   /// @brief Quantiles of the rates per lag, at (q + 1/2) / quantiles of the surface's area. Default 8.
   std::size_t quantiles = 8;
   /// @brief The smallest rate told apart from standing still, in RMS radii per frame: smaller rates

@@ -24,7 +24,7 @@ namespace deformseg {
 
 /// @brief Similarity policy (models `SimilarityPolicy`): each frame of an animation becomes its
 /// motion signature (`motion_signatures`: the area-weighted quantiles of its vertices' speeds at
-/// lags of 1, 4 and 16 frames, as logarithms, and of their rates up or down), two frames are
+/// lags of 1, 4, 16 and 128 frames, as logarithms, and of their rates up or down), two frames are
 /// compared by the root mean square difference r of their signatures, made a dissimilarity
 /// `1 - exp(-(r / scale)^2)` in [0, 1), and the two frame sequences are aligned by `alignment`
 /// (dynamic time warping by default); `normalization` makes the value, for DTW one minus the mean
