@@ -1,5 +1,6 @@
 // The README's first program: make a synthetic animation, write it the ways users store theirs,
-// read it back with read_animation, and show what an error looks like.
+// read it back with read_animation, split a glTF clip's name off its file, and show what an error
+// looks like.
 //
 //   read_animation [INPUT [TOPOLOGY]]   INPUT: a folder or "glob" of frames, or a .pc2/.mdd cache
 #include <deformseg/io/point_cache.h>
@@ -42,6 +43,10 @@ int main(int argc, char** argv) {
   describe("tube_frames", frames);
   describe("tube.pc2", cached);
   std::cout << "frame 20, vertex 7: " << frames.frame_matrix(20).col(7).transpose() << '\n';
+
+  // A glTF file's clip may be named after a '#', as the tool's commands take it.
+  const auto [file, clip] = io::split_clip_suffix("Fox.glb#Walk");
+  std::cout << "Fox.glb#Walk: file " << file << ", clip " << clip.value_or("(none)") << '\n';
 
   // Bad input is an invalid_input that says what and where.
   try {

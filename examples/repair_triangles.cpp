@@ -49,6 +49,11 @@ int main() {
   const auto animation = io::make_repaired_animation(std::span<const double>(positions), corners.size(),
                                                      std::span(triangles), {.weld = true}, &report);
   print(report);
+  // The same counts by name, as a writer of reports (JSON, a dict) takes them: those not zero.
+  std::cout << "counts not zero:";
+  for (const auto& [name, count] : report.counts())
+    if (count != 0) std::cout << ' ' << name << '=' << count;
+  std::cout << '\n';
   std::cout << "the animation: " << animation.num_vertices() << " vertices, " << animation.num_faces()
             << " triangles, " << animation.num_frames() << " frames\n";
   // [repair]

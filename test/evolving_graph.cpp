@@ -10,9 +10,7 @@
 #include <boost/graph/adjacency_list.hpp>
 #include <Eigen/Geometry>
 
-#include <numbers>
 #include <random>
-#include <iterator>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -264,8 +262,7 @@ TEST_CASE("evolving graph: Graphviz draws every key frame of the horse", "[evolv
   REQUIRE(files.size() == graph.size());
   std::size_t with_exponent = 0;
   for (const auto& file : files) {
-    std::ifstream in(file);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text = test::file_text(file);
     with_exponent += text.find("e-0") != std::string::npos;
     INFO(file.string());
     CHECK(std::system(("dot -Tsvg -o /dev/null '" + file.string() + "' 2>&1").c_str()) == 0);

@@ -419,8 +419,7 @@ TEST_CASE("gltf: refusals name the file and what is wrong", "[gltf]") {
     const fs::path broken = deformseg::test::write_file("gltf/broken.gltf", "{\"asset\": {\"version\": \"2.0\"");
     CHECK_THROWS_WITH(sample_gltf(broken), Contains(broken.string()) && Contains("not a valid glTF"));
     const fs::path glb = write(sampler_scene(), "whole.glb");
-    std::ifstream in(glb, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string bytes = deformseg::test::file_text(glb);
     for (std::size_t cut : {std::size_t(10), bytes.size() / 2, bytes.size() - 4}) {
       const fs::path truncated = deformseg::test::write_file("gltf/truncated.glb", bytes.substr(0, cut));
       CHECK_THROWS_WITH(sample_gltf(truncated), Contains(truncated.string()));

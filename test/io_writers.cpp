@@ -25,7 +25,6 @@
 #include <cerrno>
 #include <charconv>
 #include <cstdint>
-#include <fstream>
 #include <iterator>
 #include <sstream>
 #include <string>

@@ -9,7 +9,6 @@
 #include <deformseg/retrieval_evaluation.h>
 #include <deformseg/synthetic.h>
 
-#include <numbers>
 #include <random>
 #include <vector>
 

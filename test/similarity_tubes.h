@@ -11,7 +11,6 @@
 #include <Eigen/Geometry>
 
 #include <cstddef>
-#include <numbers>
 #include <utility>
 #include <vector>
 

@@ -20,7 +20,6 @@
 #include <functional>
 #include <limits>
 #include <map>
-#include <numbers>
 #include <random>
 #include <vector>
 

@@ -7,7 +7,6 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
-#include <numbers>
 
 using namespace deformseg;
 

@@ -8,7 +8,6 @@
 
 #include <charconv>
 #include <cstring>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 #include <string>
