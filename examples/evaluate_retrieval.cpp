@@ -1,8 +1,10 @@
 // How well a similarity matrix retrieves the same motion on another body: five clips of three
-// bodies (the last a distractor, compared but never queried), a hand-made matrix, the scores.
+// bodies (the last a distractor, compared but never queried), a hand-made matrix, the scores and
+// what each query found.
 #include <deformseg/retrieval_evaluation.h>
 
 #include <iostream>
+#include <string>
 #include <vector>
 
 int main() {
@@ -24,4 +26,11 @@ int main() {
             << *scores.median_same << ", different " << *scores.median_different << '\n';
   for (const auto& m : scores.per_motion)
     std::cout << m.motion << ": " << m.correct << " of " << m.queries << " nearest neighbours right\n";
+  // What each query found: the clips a policy takes for which.
+  for (const Query_retrieval& q : scores.per_query) {
+    const Labelled_item &query = items[q.query], &nearest = items[q.nearest];
+    std::cout << query.body << " " << query.clip << ": nearest " << nearest.body << " " << nearest.clip << " ("
+              << q.nearest_similarity << "), first " << query.motion << " at rank "
+              << (q.first_relevant_rank ? std::to_string(*q.first_relevant_rank) : "none") << '\n';
+  }
 }

@@ -786,14 +786,28 @@ Complexity two descriptions, then O(count Tq Tl). Releases the GIL.)doc");
                                   "nn_accuracy"_a = x.nn_accuracy));
             return out;
           },
-          "Per query motion: dicts of motion, queries, correct, nn_accuracy.");
+          "Per query motion: dicts of motion, queries, correct, nn_accuracy.")
+      .def_property_readonly(
+          "per_query",
+          [](const Retrieval_scores& s) {
+            py::list out;
+            for (const auto& x : s.per_query)
+              out.append(py::dict("query"_a = x.query, "nearest"_a = x.nearest,
+                                  "nearest_similarity"_a = x.nearest_similarity,
+                                  "first_relevant_rank"_a = x.first_relevant_rank,
+                                  "average_precision"_a = x.average_precision));
+            return out;
+          },
+          "Per query, in the items' order: dicts of query and nearest (item indices), nearest_similarity, "
+          "first_relevant_rank (1 for the nearest; None without a candidate of its motion) and "
+          "average_precision (or None).");
 
   m.def("evaluate", &evaluate, "similarity"_a, "labels"_a,
         R"doc(How well a similarity matrix retrieves the same motion on other bodies (evaluate_retrieval):
 `similarity` an (N, N) array (as similarity_matrix gives), `labels` N items, each a dict or an
 object with `motion` ('-' for a distractor) and optionally `body`, `rig`, `clip` (as
 read_motion_labels gives). Returns RetrievalScores: NN accuracy, mAP, ROC-AUC, medians, the
-confusion table. Complexity O(N^2 log N).)doc");
+confusion table, and what each query found. Complexity O(N^2 log N).)doc");
 
   m.def("read_motion_labels", &motion_labels, "path"_a,
         R"doc(The rows of a labels CSV file (header file,clip,motion[,rig][,body]): a list of dicts with

@@ -76,6 +76,21 @@ TEST_CASE("evaluate_retrieval: a 5-item case computed by hand", "[evaluation]") 
   CHECK(r.per_motion[0].nn_accuracy == 0.5);
   CHECK(r.per_motion[1].motion == "b");
   CHECK(r.per_motion[1].correct == 1);
+  // Per query, from the rankings above: nearest, its value, first relevant rank, AP.
+  REQUIRE(r.per_query.size() == 4);
+  const auto check_query = [&](std::size_t i, std::size_t nearest, double value, std::size_t first, double ap) {
+    CAPTURE(i);
+    const Query_retrieval& found = r.per_query[i];
+    CHECK(found.query == i);
+    CHECK(found.nearest == nearest);
+    CHECK(found.nearest_similarity == value);
+    CHECK(found.first_relevant_rank == first);
+    CHECK(*found.average_precision == Approx(ap));
+  };
+  check_query(0, 2, .8, 2, 0.5);
+  check_query(1, 0, .7, 1, 1);
+  check_query(2, 4, .6, 3, 1.0 / 3);
+  check_query(3, 2, .9, 1, 1);
 }
 
 TEST_CASE("evaluate_retrieval: the same clip on the same rig is no candidate; queries without relevant one",
@@ -98,6 +113,14 @@ TEST_CASE("evaluate_retrieval: the same clip on the same rig is no candidate; qu
   // Same .1 .2 against different .5 .4 .3 .1 .2 .3: .1 -> 1/2, .2 -> 1 + 1/2: 2 of 12.
   CHECK(*r.roc_auc == Approx(2.0 / 12));
   CHECK(r.confusion == std::vector<std::vector<std::size_t>>{{0, 1}, {3, 0}});  // labels run, walk
+  // Query 1 has no relevant candidate: no rank, no AP; query 2 finds one second.
+  REQUIRE(r.per_query.size() == 4);
+  CHECK(r.per_query[1].nearest == 3);
+  CHECK_FALSE(r.per_query[1].first_relevant_rank);
+  CHECK_FALSE(r.per_query[1].average_precision);
+  CHECK(r.per_query[2].nearest == 3);
+  CHECK(r.per_query[2].first_relevant_rank == 2u);
+  CHECK(*r.per_query[2].average_precision == 0.5);
 }
 
 TEST_CASE("evaluate_retrieval: distractors are never queried; no candidate, no figure", "[evaluation]") {
@@ -109,6 +132,7 @@ TEST_CASE("evaluate_retrieval: distractors are never queried; no candidate, no f
   CHECK_FALSE(none.roc_auc);
   CHECK_FALSE(none.median_same);
   CHECK(none.per_motion.empty());
+  CHECK(none.per_query.empty());
 
   // One body: no query has a candidate.
   const std::vector<Labelled_item> one_body{item("walk", "A"), item("walk", "A"), item("-", "A")};
@@ -116,6 +140,7 @@ TEST_CASE("evaluate_retrieval: distractors are never queried; no candidate, no f
   CHECK(alone.queries == 0);
   CHECK(alone.queries_without_candidate == 2);
   CHECK_FALSE(alone.nn_accuracy);
+  CHECK(alone.per_query.empty());  // queries without candidate are not listed
 
   // A walk against a distractor only: a query, no relevant candidate, no same-motion pair.
   const std::vector<Labelled_item> against_distractor{item("walk", "A"), item("-", "B")};

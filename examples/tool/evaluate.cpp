@@ -33,6 +33,7 @@ struct Evaluate_options {
   bool skip_unreadable = false;
   std::string json;
   std::string png;
+  bool per_query = false;
 };
 
 using Clock = std::chrono::steady_clock;
@@ -184,18 +185,47 @@ nlohmann::json optional_json(const std::optional<double>& value) {
 
 std::string optional_text(const std::optional<double>& value) { return value ? fixed(*value) : "none"; }
 
+nlohmann::json optional_json(const std::optional<std::size_t>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
 nlohmann::json scores_json(const Retrieval_scores& s) {
   nlohmann::json per_motion = nlohmann::json::array();
   for (const auto& m : s.per_motion)
     per_motion.push_back({{"motion", m.motion}, {"queries", m.queries}, {"correct", m.correct},
                           {"nn_accuracy", m.nn_accuracy}});
+  nlohmann::json per_query = nlohmann::json::array();
+  for (const auto& q : s.per_query)
+    per_query.push_back({{"query", q.query}, {"nearest", q.nearest}, {"nearest_similarity", q.nearest_similarity},
+                         {"first_relevant_rank", optional_json(q.first_relevant_rank)},
+                         {"average_precision", optional_json(q.average_precision)}});
   return {{"queries", s.queries}, {"queries_without_relevant", s.queries_without_relevant},
           {"queries_without_candidate", s.queries_without_candidate}, {"nn_accuracy", optional_json(s.nn_accuracy)},
           {"mean_average_precision", optional_json(s.mean_average_precision)},
           {"roc_auc", optional_json(s.roc_auc)}, {"median_same", optional_json(s.median_same)},
           {"median_different", optional_json(s.median_different)}, {"same_pairs", s.same_pairs},
           {"different_pairs", s.different_pairs}, {"labels", s.labels}, {"confusion", s.confusion},
-          {"per_motion", per_motion}};
+          {"per_motion", per_motion}, {"per_query", per_query}};
+}
+
+// A clip as the labels name it: its file's name, and #CLIP for a clip of a glTF file.
+std::string clip_name(const io::Labelled_clip& clip) {
+  const std::string file = clip.file.filename().string();
+  return clip.item.clip.empty() ? file : file + "#" + clip.item.clip;
+}
+
+// One line per query: what it found nearest, and at which rank the first clip of its motion came.
+void print_per_query(const Retrieval_scores& s, const std::vector<io::Labelled_clip>& clips) {
+  std::cout << "per query (query: nearest candidate, its value; rank of the first of the query's motion)\n";
+  for (const auto& q : s.per_query) {
+    const io::Labelled_clip& query = clips[q.query];
+    const io::Labelled_clip& nearest = clips[q.nearest];
+    std::cout << "  " << clip_name(query) << " (" << query.item.motion << "): " << clip_name(nearest) << " ("
+              << nearest.item.motion << ") " << fixed(q.nearest_similarity) << "; "
+              << (q.first_relevant_rank ? "first " + query.item.motion + " at " + std::to_string(*q.first_relevant_rank)
+                                        : "no " + query.item.motion + " among the candidates")
+              << '\n';
+  }
 }
 
 void print_confusion(const Retrieval_scores& s) {
@@ -267,7 +297,10 @@ void run_evaluate(const Evaluate_options& o) {
                 {"seconds", {{"reading", read_seconds}, {"describing", report.describe_seconds},
                              {"comparing", matrix_seconds - report.describe_seconds}}}};
   }
-  write_outputs(document, o.json, [&] { print_scores(scores, items.size()); });
+  write_outputs(document, o.json, [&] {
+    print_scores(scores, items.size());
+    if (o.per_query) print_per_query(scores, read.clips);
+  });
 }
 
 }  // namespace
@@ -286,7 +319,10 @@ void add_evaluate_command(CLI::App& app) {
   command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
   command->add_flag("--skip-unreadable", o->skip_unreadable,
                     "Leave out, with a line on standard error, the clips that cannot be read, instead of stopping");
-  add_json_option(*command, o->json, "the labels, scores, matrix and times");
+  command->add_flag("--per-query", o->per_query,
+                    "Also print, for each query, its nearest candidate and the rank of the first candidate of its "
+                    "motion (the JSON always has them)");
+  add_json_option(*command, o->json, "the labels, scores (per query among them), matrix and times");
   command->add_option("--png", o->png,
                       "Draw the matrix with rows and columns grouped by motion (distractors last, white lines "
                       "between groups), each cell coloured by the rank of its value, into FILE.png")

@@ -41,6 +41,18 @@ struct Motion_retrieval {
   double nn_accuracy = 0;    ///< `correct / queries`
 };
 
+/// @brief What one query found: its nearest candidate, and how far down its ranking the first
+/// candidate of its motion came, to see which clips a policy takes for which.
+struct Query_retrieval {
+  std::size_t query = 0;    ///< the query's index among the items
+  std::size_t nearest = 0;  ///< the index of its nearest candidate (the first ranked)
+  double nearest_similarity = 0;  ///< their similarity
+  /// @brief The rank of its first relevant candidate, 1 for the nearest; empty when it has none.
+  std::optional<std::size_t> first_relevant_rank{};
+  /// @brief Its average precision; empty when it has no relevant candidate.
+  std::optional<double> average_precision{};
+};
+
 /// @brief The figures of `evaluate_retrieval`. Empty optionals where a figure has nothing to
 /// average over (no query, no relevant candidate, no pair of a kind).
 struct Retrieval_scores {
@@ -69,6 +81,8 @@ struct Retrieval_scores {
   std::vector<std::vector<std::size_t>> confusion{};
   /// @brief Per query motion (sorted), the nearest-neighbour accuracy.
   std::vector<Motion_retrieval> per_motion{};
+  /// @brief Per query (the `queries` of them, in the items' order), what it found.
+  std::vector<Query_retrieval> per_query{};
 };
 
 namespace internal::retrieval {
@@ -176,7 +190,8 @@ inline std::vector<Motion_retrieval> per_motion(const Retrieval_scores& scores) 
 /// @param similarity the N x N matrix, row = query, column = candidate; higher is more alike
 /// (need not be symmetric: only row q is read for query q).
 /// @param items the N items, in the order of the matrix's rows and columns.
-/// @return the figures (see `Retrieval_scores`); per query its nearest neighbour in `confusion`.
+/// @return the figures (see `Retrieval_scores`); per query, its nearest neighbour and the rank of
+/// its first relevant candidate in `per_query`.
 /// @pre `similarity` is N x N with finite entries, N = `items.size()`.
 /// @throws invalid_input naming the shapes or the first non-finite entry otherwise.
 /// @par Complexity O(N^2 log N): per query a sort of its candidates; then a sort of the pairs.
@@ -205,8 +220,19 @@ inline Retrieval_scores evaluate_retrieval(const Eigen::MatrixXd& similarity, st
     const std::string& nearest = items[ranking.front()].motion;
     correct += nearest == query.motion;
     ++scores.confusion[r::label_index(scores.labels, query.motion)][r::label_index(scores.labels, nearest)];
-    if (const auto ap = r::average_precision(ranking, items, query.motion)) precision_sum += *ap;
+    const auto first_relevant =
+        std::ranges::find_if(ranking, [&](std::size_t c) { return items[c].motion == query.motion; });
+    const std::optional<double> ap = r::average_precision(ranking, items, query.motion);
+    if (ap) precision_sum += *ap;
     else ++scores.queries_without_relevant;
+    scores.per_query.push_back(
+        {.query = q,
+         .nearest = ranking.front(),
+         .nearest_similarity = similarity(Eigen::Index(q), Eigen::Index(ranking.front())),
+         .first_relevant_rank = first_relevant == ranking.end()
+                                    ? std::nullopt
+                                    : std::optional(std::size_t(first_relevant - ranking.begin()) + 1),
+         .average_precision = ap});
   }
   if (scores.queries > 0) scores.nn_accuracy = correct / double(scores.queries);
   if (const std::size_t with_relevant = scores.queries - scores.queries_without_relevant; with_relevant > 0)

@@ -202,7 +202,7 @@ def test_evaluate_as_tool(tool, characters, tmp_path):
     expected = document["scores"]
     for name in ("queries", "queries_without_relevant", "queries_without_candidate", "nn_accuracy",
                  "mean_average_precision", "roc_auc", "median_same", "median_different", "same_pairs",
-                 "different_pairs", "labels", "confusion", "per_motion"):
+                 "different_pairs", "labels", "confusion", "per_motion", "per_query"):
         assert getattr(scores, name) == expected[name], name
 
 
