@@ -50,11 +50,13 @@ Strain_field<float> field_with(const Surface_mesh_animation& animation, const Su
   const int threads = o.input.threads;
   if (o.normalize == "none")
     return field_with(animation, reference_mesh, o,
-                      Strain_options{.reference = reference, .rest_frame = o.rest_frame, .measure = measure,
-                                     .normalization = No_normalization{}, .threads = threads});
+                      Strain_options<Measure, No_normalization>{.reference = reference, .rest_frame = o.rest_frame,
+                                                                .measure = measure, .threads = threads});
   return field_with(animation, reference_mesh, o,
-                    Strain_options{.reference = reference, .rest_frame = o.rest_frame, .measure = measure,
-                                   .normalization = Gaussian_normalization{.sigma = o.sigma}, .threads = threads});
+                    Strain_options<Measure, Gaussian_normalization>{.reference = reference, .rest_frame = o.rest_frame,
+                                                                    .measure = measure,
+                                                                    .normalization = {.sigma = o.sigma},
+                                                                    .threads = threads});
 }
 
 Strain_field<float> field_of(const Surface_mesh_animation& animation, const Surface_mesh* reference_mesh,

@@ -51,7 +51,8 @@ enum class Strain_reference {
 ///                                          .normalization = No_normalization{}});
 /// compute_strain(animation, {.normalization = {.sigma = 0.05}});              // Gaussian, given sigma
 /// @endcode
-/// all read as they mean.
+/// all read as they mean. That deduction needs GCC 11 or Clang 17; with Clang 16, name the
+/// template arguments (`Strain_options<Green_lagrange_strain, No_normalization>{...}`).
 /// @tparam Measure a `StrainMeasure`, default `Max_principal_strain`.
 /// @tparam Normalization a `StrainNormalization`, default `Gaussian_normalization`.
 template <StrainMeasure Measure = Max_principal_strain, StrainNormalization Normalization = Gaussian_normalization>
