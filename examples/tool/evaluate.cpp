@@ -179,15 +179,12 @@ void write_grouped_heat_map(const Eigen::MatrixXd& m, const std::vector<io::Labe
   figure.write(path);
 }
 
-nlohmann::json optional_json(const std::optional<double>& value) {
+template <class T>
+nlohmann::json optional_json(const std::optional<T>& value) {
   return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
 }
 
 std::string optional_text(const std::optional<double>& value) { return value ? fixed(*value) : "none"; }
-
-nlohmann::json optional_json(const std::optional<std::size_t>& value) {
-  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
-}
 
 nlohmann::json scores_json(const Retrieval_scores& s) {
   nlohmann::json per_motion = nlohmann::json::array();

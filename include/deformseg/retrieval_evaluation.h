@@ -44,8 +44,8 @@ struct Motion_retrieval {
 /// @brief What one query found: its nearest candidate, and how far down its ranking the first
 /// candidate of its motion came, to see which clips a policy takes for which.
 struct Query_retrieval {
-  std::size_t query = 0;    ///< the query's index among the items
-  std::size_t nearest = 0;  ///< the index of its nearest candidate (the first ranked)
+  std::size_t query = 0;          ///< the query's index among the items
+  std::size_t nearest = 0;        ///< the index of its nearest candidate (the first ranked)
   double nearest_similarity = 0;  ///< their similarity
   /// @brief The rank of its first relevant candidate, 1 for the nearest; empty when it has none.
   std::optional<std::size_t> first_relevant_rank{};
