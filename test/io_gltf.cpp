@@ -247,6 +247,38 @@ TEST_CASE("gltf: 8 influences with normalised byte weights; no weight at all sta
   check_point(s, 0, 2, 8, 1, 0);
 }
 
+TEST_CASE("gltf: a weighted joint that is negative, fractional or past the skin is refused, named", "[gltf]") {
+  // glTF's JOINTS are unsigned bytes or shorts; a file may still store them signed or as floats.
+  const auto skinned = [](int joints_type, const std::vector<float>& joints) {
+    Gltf_writer w;
+    const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+    const int joint_values = joints_type == Gltf_writer::float_type
+                                 ? w.floats(joints, "VEC4")
+                                 : w.values(std::vector<std::int8_t>(joints.begin(), joints.end()), joints_type, "VEC4");
+    // Vertex 0 weighs on its first two joints, the others on their first only.
+    const int weights = w.floats({0.5f, 0.5f, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, "VEC4");
+    w.push("meshes", {{"name", "arm"},
+                      {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"JOINTS_0", joint_values},
+                                                                   {"WEIGHTS_0", weights}}}}})}});
+    w.push("nodes", {{"name", "a"}});
+    w.push("nodes", {{"mesh", 0}, {"skin", 0}});
+    w.push("skins", {{"joints", {0}}});
+    return w;
+  };
+  // Joints past the first two of vertex 0 weigh nothing: whatever they hold is not read.
+  const std::vector<float> fine{0, 0, -7, 1e30f, 0, 5, 0, 0, 0, 0, 0, 0};
+  CHECK(sample_gltf(write(skinned(Gltf_writer::float_type, fine), "fine.gltf")).num_vertices == 3);
+  const auto refused = [&](int type, const std::vector<float>& joints, const std::string& message) {
+    const fs::path path = write(skinned(type, joints), "bad-joint.gltf");
+    CHECK_THROWS_WITH(sample_gltf(path), Contains(path.string()) && Contains(message));
+  };
+  refused(Gltf_writer::byte_type, {0, -128, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+          "mesh 'arm' primitive 0 vertex 0 refers to joint -128 of a skin with 1 joints");
+  refused(Gltf_writer::float_type, {0, 0, 0, 0, 0.5f, 0, 0, 0, 0, 0, 0, 0}, "vertex 1 refers to joint 0.5");
+  refused(Gltf_writer::float_type, {0, 0, 0, 0, 0, 0, 0, 0, 1e30f, 0, 0, 0}, "vertex 2 refers to joint 1e+30");
+  refused(Gltf_writer::byte_type, {0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, "vertex 0 refers to joint 1 of a skin with 1");
+}
+
 TEST_CASE("gltf: animated morph target weights, node and mesh weights at rest", "[gltf]") {
   Gltf_writer w;
   const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -101,6 +102,13 @@ inline std::vector<double> read_target_deltas(const tinygltf::Model& model, cons
   return deltas;
 }
 
+/// A joint index as read, for a message: an integer as one, anything else as the number it is.
+inline std::string joint_text(double joint) {
+  std::ostringstream text;
+  text << joint;
+  return text.str();
+}
+
 /// Reads JOINTS_n / WEIGHTS_n (n = 0, and 1 when present) into the part: joints become indices
 /// into the frame's joint table (skin's joints from `joint_base`); a vertex whose weights are all
 /// zero follows `rigid_entry`, the table's entry for the mesh node itself.
@@ -122,11 +130,12 @@ inline void read_influences(const tinygltf::Model& model, const tinygltf::Primit
         if (!(weight >= 0) || !std::isfinite(weight))
           throw invalid_input(name + " vertex " + std::to_string(v) + " has weight " + std::to_string(weight) +
                               "; glTF needs weights >= 0");
-        if (weight > 0 && joint >= double(joint_count))
-          throw invalid_input(name + " vertex " + std::to_string(v) + " refers to joint " +
-                              std::to_string(std::size_t(joint)) + " of a skin with " +
-                              std::to_string(joint_count) + " joints");
         if (weight == 0) continue;
+        // Checked before any conversion: a joint read from a signed or float accessor may be
+        // negative, fractional or huge, and converting such a value to an integer is undefined.
+        if (!(joint >= 0 && joint < double(joint_count)) || joint != std::floor(joint))
+          throw invalid_input(name + " vertex " + std::to_string(v) + " refers to joint " + joint_text(joint) +
+                              " of a skin with " + std::to_string(joint_count) + " joints");
         part.joints[v * part.influences + set * 4 + k] = joint_base + std::uint32_t(joint);
         part.weights[v * part.influences + set * 4 + k] = weight;
       }
