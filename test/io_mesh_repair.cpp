@@ -402,6 +402,25 @@ TEST_CASE("repair_triangles: random soups against brute force", "[io][repair][we
   CHECK(unrepairable == 0);  // CGAL's pass alone makes every one a manifold
 }
 
+TEST_CASE("weld_vertices: many vertices on one trajectory are one vertex; 0 and -0 alike", "[io][repair][weld]") {
+  // 60,000 vertices in 2 frames, all at the origin but vertex 1 (-0 for 0) and vertex 2, which
+  // leaves it in frame 1 by more than the tolerance, and vertex 3 by less. Compared pair by pair,
+  // the one group would take 1.8e9 comparisons (what a glTF accessor of zeros once cost).
+  const std::size_t n = 60000;
+  std::vector<double> positions(2 * 3 * n, 0.0);
+  positions[3 * 1] = -0.0;
+  positions[3 * n + 3 * 2] = 1.0;   // x only: the diagonal is 1, the welding distance 1e-3
+  positions[3 * n + 3 * 3] = 5e-4;  // within it of the origin, not of vertex 2
+  const std::vector<std::uint32_t> welded =
+      internal::weld_vertices(std::span<const double>(positions), n, 1e-3);
+  REQUIRE(welded.size() == n);
+  CHECK(welded[0] == 0);
+  CHECK(welded[1] == 0);
+  CHECK(welded[2] == 1);
+  CHECK(welded[3] == 0);
+  CHECK(std::count(welded.begin(), welded.end(), 0u) == std::ptrdiff_t(n - 1));
+}
+
 TEST_CASE("repair_triangles: parts that cannot be oriented, a Moebius strip and the projective plane", "[io][repair]") {
   // A strip of 2 x 6 quads whose ends are glued with a half turn, its middle row of vertices
   // inside the strip.

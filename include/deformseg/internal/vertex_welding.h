@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <concepts>
 #include <cstddef>
@@ -15,6 +16,7 @@
 #include <span>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace deformseg::internal {
@@ -106,11 +108,65 @@ bool coincide_in_every_frame(std::span<const T> positions, std::size_t num_verti
   return true;
 }
 
+/// A hash of each vertex's trajectory (its coordinates in every frame, 0 and -0 alike), computed
+/// frame after frame so that the positions are read in order.
+template <std::floating_point T>
+std::vector<std::uint64_t> trajectory_hashes(std::span<const T> positions, std::size_t num_vertices) {
+  std::vector<std::uint64_t> hashes(num_vertices, 0xcbf29ce484222325ull);
+  for (std::size_t frame = 0; frame < positions.size(); frame += 3 * num_vertices)
+    for (std::size_t v = 0; v < num_vertices; ++v)
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double x = double(positions[frame + 3 * v + k]);
+        hashes[v] = (hashes[v] ^ std::bit_cast<std::uint64_t>(x == 0 ? 0.0 : x)) * 0x100000001b3ull;  // FNV-1a
+      }
+  for (std::uint64_t& h : hashes) h ^= h >> 29;
+  return hashes;
+}
+
+/// Hashes vertices by their trajectory's hash and compares their trajectories, equal as numbers.
+template <std::floating_point T>
+struct Same_trajectory {
+  std::span<const T> positions;
+  std::size_t num_vertices;
+  const std::vector<std::uint64_t>* hashes;
+
+  std::size_t operator()(std::uint32_t v) const noexcept { return static_cast<std::size_t>((*hashes)[v]); }
+
+  bool operator()(std::uint32_t a, std::uint32_t b) const noexcept {
+    for (std::size_t frame = 0; frame < positions.size(); frame += 3 * num_vertices)
+      for (std::size_t k = 0; k < 3; ++k)
+        if (positions[frame + 3 * a + k] != positions[frame + 3 * b + k]) return false;
+    return true;
+  }
+};
+
+/// Unites the vertices whose trajectories are the same, and returns the smallest vertex of each
+/// trajectory in increasing order: the only ones the grid then compares. Without this, a point
+/// shared by many vertices (an unwelded mesh, a part scaled to nothing on its bone, an accessor
+/// of zeros) would cost a comparison per pair of them. O(T V) expected.
+template <std::floating_point T>
+std::vector<std::uint32_t> unite_same_trajectories(std::span<const T> positions, std::size_t num_vertices,
+                                                   Smallest_union_find& welded) {
+  const std::vector<std::uint64_t> hashes = trajectory_hashes(positions, num_vertices);
+  const Same_trajectory<T> same{positions, num_vertices, &hashes};
+  std::unordered_set<std::uint32_t, Same_trajectory<T>, Same_trajectory<T>> first_of_trajectory(num_vertices, same,
+                                                                                               same);
+  std::vector<std::uint32_t> distinct;
+  for (std::uint32_t v = 0; v < num_vertices; ++v) {
+    const auto [first, inserted] = first_of_trajectory.insert(v);
+    if (inserted) distinct.push_back(v);
+    else welded.unite(*first, v);
+  }
+  return distinct;
+}
+
 /// Welds the vertices of an animation (`T x 3V` positions, T >= 1) that coincide in every frame
 /// within `tolerance` times the diagonal of the bounding box of all frames, and the vertices that coincide with those (the transitive closure).
 /// @return the welded vertex of each input vertex, numbered in the order of their smallest input vertex.
-/// Candidates come from a hash grid of cells no smaller than `distance` on frame 0: the
-/// vertices in the 27 cells around a vertex, each checked over all frames; O(T V) expected.
+/// Vertices of the same trajectory are united first; among the others, candidates come from a
+/// hash grid of cells no smaller than `distance` on frame 0: the vertices in the 27 cells around
+/// a vertex, each checked over all frames. O(T V) expected, unless many vertices of different
+/// trajectories lie within `distance` of each other in frame 0.
 template <std::floating_point T>
 std::vector<std::uint32_t> weld_vertices(std::span<const T> positions, std::size_t num_vertices, double tolerance) {
   // Cells no smaller than `distance`, but not so small that a cell index overflows (a distance
@@ -125,12 +181,13 @@ std::vector<std::uint32_t> weld_vertices(std::span<const T> positions, std::size
       c.index[k] = static_cast<std::int64_t>(std::floor((double(positions[3 * v + k]) - box.low[k]) / cell));
     return c;
   };
-  std::unordered_map<Grid_cell, std::vector<std::uint32_t>, Grid_cell_hash> grid;
-  grid.reserve(num_vertices);
-  for (std::uint32_t v = 0; v < num_vertices; ++v) grid[cell_of(v)].push_back(v);
-
   Smallest_union_find welded(num_vertices);
-  for (std::uint32_t v = 0; v < num_vertices; ++v) {
+  const std::vector<std::uint32_t> distinct = unite_same_trajectories(positions, num_vertices, welded);
+  std::unordered_map<Grid_cell, std::vector<std::uint32_t>, Grid_cell_hash> grid;
+  grid.reserve(distinct.size());
+  for (const std::uint32_t v : distinct) grid[cell_of(v)].push_back(v);
+
+  for (const std::uint32_t v : distinct) {
     const Grid_cell home = cell_of(v);
     for (std::int64_t dx = -1; dx <= 1; ++dx)
       for (std::int64_t dy = -1; dy <= 1; ++dy)

@@ -348,9 +348,11 @@ namespace deformseg::io {
 /// finite and at least 0; with `weld`, every coordinate is finite. With no frame nothing is welded.
 /// @throws invalid_input naming what breaks a precondition, or the first defect with
 /// `Defect_policy::refuse`.
-/// @par Complexity O(T V + F log F) expected (welding: a hash grid on frame 0, each candidate pair
-/// checked over all frames); O(F log F) more per round of step 3 after the first, which only
-/// inputs that cannot be oriented need.
+/// @par Complexity O(T V + F log F) expected (welding: vertices of one trajectory united by a hash
+/// of it, then a hash grid on frame 0, each candidate pair checked over all frames; many vertices
+/// of different trajectories within the tolerance of each other in frame 0 cost a check per pair);
+/// O(F log F) more per round of step 3 after the first, which only inputs that cannot be oriented
+/// need.
 template <std::floating_point T>
 Repaired_triangles repair_triangles(std::span<const T> positions, std::size_t num_vertices,
                                     std::span<const std::array<std::uint32_t, 3>> triangles,
