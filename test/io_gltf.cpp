@@ -275,7 +275,8 @@ TEST_CASE("gltf: a weighted joint that is negative, fractional or past the skin 
   refused(Gltf_writer::byte_type, {0, -128, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
           "mesh 'arm' primitive 0 vertex 0 refers to joint -128 of a skin with 1 joints");
   refused(Gltf_writer::float_type, {0, 0, 0, 0, 0.5f, 0, 0, 0, 0, 0, 0, 0}, "vertex 1 refers to joint 0.5");
-  refused(Gltf_writer::float_type, {0, 0, 0, 0, 0, 0, 0, 0, 1e30f, 0, 0, 0}, "vertex 2 refers to joint 1e+30");
+  refused(Gltf_writer::float_type, {0, 0, 0, 0, 0, 0, 0, 0, 1e30f, 0, 0, 0},
+          "vertex 2 refers to joint 1.0000000150474662e+30");  // the float 1e30 exactly, as read
   refused(Gltf_writer::byte_type, {0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, "vertex 0 refers to joint 1 of a skin with 1");
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/file_io.h>
 #include <deformseg/internal/gltf_accessor.h>
 #include <deformseg/internal/gltf_scene.h>
 
@@ -13,7 +14,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -102,13 +102,6 @@ inline std::vector<double> read_target_deltas(const tinygltf::Model& model, cons
   return deltas;
 }
 
-/// A joint index as read, for a message: an integer as one, anything else as the number it is.
-inline std::string joint_text(double joint) {
-  std::ostringstream text;
-  text << joint;
-  return text.str();
-}
-
 /// Reads JOINTS_n / WEIGHTS_n (n = 0, and 1 when present) into the part: joints become indices
 /// into the frame's joint table (skin's joints from `joint_base`); a vertex whose weights are all
 /// zero follows `rigid_entry`, the table's entry for the mesh node itself.
@@ -134,7 +127,7 @@ inline void read_influences(const tinygltf::Model& model, const tinygltf::Primit
         // Checked before any conversion: a joint read from a signed or float accessor may be
         // negative, fractional or huge, and converting such a value to an integer is undefined.
         if (!(joint >= 0 && joint < double(joint_count)) || joint != std::floor(joint))
-          throw invalid_input(name + " vertex " + std::to_string(v) + " refers to joint " + joint_text(joint) +
+          throw invalid_input(name + " vertex " + std::to_string(v) + " refers to joint " + shortest_text(joint) +
                               " of a skin with " + std::to_string(joint_count) + " joints");
         part.joints[v * part.influences + set * 4 + k] = joint_base + std::uint32_t(joint);
         part.weights[v * part.influences + set * 4 + k] = weight;
