@@ -16,7 +16,6 @@
 
 namespace deformseg::test {
 
-
 /// Bend 90 degrees, hold, unbend (39 frames).
 inline const std::vector<Tube_phase> bend_hold_unbend{{5, {0.0}}, {10, {right_angle}}, {8, {}}, {10, {0.0}}, {5, {}}};
 /// The same bend, quick, then a long hold.

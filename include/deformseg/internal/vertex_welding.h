@@ -128,9 +128,9 @@ template <std::floating_point T>
 struct Same_trajectory {
   std::span<const T> positions;
   std::size_t num_vertices;
-  const std::vector<std::uint64_t>* hashes;
+  std::span<const std::uint64_t> hashes;
 
-  std::size_t operator()(std::uint32_t v) const noexcept { return static_cast<std::size_t>((*hashes)[v]); }
+  std::size_t operator()(std::uint32_t v) const noexcept { return static_cast<std::size_t>(hashes[v]); }
 
   bool operator()(std::uint32_t a, std::uint32_t b) const noexcept {
     for (std::size_t frame = 0; frame < positions.size(); frame += 3 * num_vertices)
@@ -148,7 +148,7 @@ template <std::floating_point T>
 std::vector<std::uint32_t> unite_same_trajectories(std::span<const T> positions, std::size_t num_vertices,
                                                    Smallest_union_find& welded) {
   const std::vector<std::uint64_t> hashes = trajectory_hashes(positions, num_vertices);
-  const Same_trajectory<T> same{positions, num_vertices, &hashes};
+  const Same_trajectory<T> same{positions, num_vertices, hashes};
   std::unordered_set<std::uint32_t, Same_trajectory<T>, Same_trajectory<T>> first_of_trajectory(num_vertices, same,
                                                                                                same);
   std::vector<std::uint32_t> distinct;
