@@ -810,7 +810,8 @@ read_motion_labels gives). Returns RetrievalScores: NN accuracy, mAP, ROC-AUC, m
 confusion table, and what each query found. Complexity O(N^2 log N).)doc");
 
   m.def("read_motion_labels", &motion_labels, "path"_a,
-        R"doc(The rows of a labels CSV file (header file,clip,motion[,rig][,body]): a list of dicts with
+        R"doc(The rows of a labels CSV file (header file,clip,motion[,rig][,body]; fields may be quoted
+as spreadsheets and R write them): a list of dicts with
 file (relative paths made relative to the CSV's folder), clip, motion, rig and body. Raises
 InvalidInput naming the file and line of a bad row. Complexity O(rows).)doc");
 

@@ -232,6 +232,24 @@ TEST_CASE("read_motion_labels: columns by name, defaults, files relative to the 
   CHECK(b[0].file == "/abs/Fox.glb");
 }
 
+TEST_CASE("read_motion_labels: quoted fields as spreadsheets and R write them, after a byte order mark",
+          "[evaluation]") {
+  const auto path = test::write_file("labels/quoted.csv",
+                                     "\xEF\xBB\xBF\"file\",\"clip\",\"motion\"\r\n"
+                                     "\"Knight.glb\",\"Walk, then \"\"run\"\"\",\"walk\"\r\n"
+                                     " \" spaced .glb\" , \"\" ,-\n"
+                                     "a.glb,\"x\",\"\"\"\"\n");
+  const auto rows = io::read_motion_labels(path);
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[0].file == path.parent_path() / "Knight.glb");
+  CHECK(rows[0].item.clip == "Walk, then \"run\"");
+  CHECK(rows[0].item.motion == "walk");
+  CHECK(rows[1].file == path.parent_path() / " spaced .glb");
+  CHECK(rows[1].item.clip.empty());
+  CHECK(rows[1].item.motion == "-");
+  CHECK(rows[2].item.motion == "\"");
+}
+
 TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]") {
   const auto fails = [](const std::string& name, const std::string& text, const std::string& message) {
     const auto path = test::write_file("labels/" + name, text);
@@ -245,6 +263,8 @@ TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]
   fails("empty_file.csv", "file,clip,motion\n,x,walk\n", ":2: the file field is empty");
   fails("repeated.csv", "file,clip,motion\na.glb,x,walk\na.glb,x,run\n", ":3: clip 'x' of a.glb is listed twice");
   fails("no_rows.csv", "file,clip,motion\n", ": the labels file lists no animation");
+  fails("open_quote.csv", "file,clip,motion\na.glb,\"x,walk\n", ":2: field 2 opens a quote that the line does not close");
+  fails("after_quote.csv", "file,clip,motion\na.glb,\"x\"y,walk\n", ":2: field 2 has text after its closing quote");
   CHECK_THROWS_WITH(io::read_motion_labels(test::scratch_dir() / "labels/missing.csv"),
                     Catch::Contains("missing.csv: cannot open the labels file"));
 }

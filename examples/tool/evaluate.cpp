@@ -309,7 +309,7 @@ void add_evaluate_command(CLI::App& app) {
                   "ROC-AUC, medians and the confusion table of a labelled set of clips");
   command->add_option("labels", o->labels,
                       "CSV file with the header file,clip,motion[,rig][,body] (files relative to its folder; "
-                      "motion '-': a distractor)")
+                      "motion '-': a distractor; fields may be in double quotes)")
       ->required();
   add_policy_options(*command, o->policy);
   command->add_option("--fps", o->fps, "Frames per second glTF clips are sampled at. Default: 30");

@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -36,17 +37,53 @@ namespace deformseg::internal::labels {
 
 using io::Labelled_clip;
 
-inline std::vector<std::string> split_fields(const std::string& line) {
-  std::vector<std::string> fields(1);
-  for (const char c : line) {
-    if (c == ',') fields.emplace_back();
-    else fields.back() += c;
+inline std::size_t skip_blanks(std::string_view line, std::size_t at) {
+  while (at < line.size() && (line[at] == ' ' || line[at] == '\t')) ++at;
+  return at;
+}
+
+inline std::string trimmed(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return {};
+  return std::string(text.substr(first, text.find_last_not_of(" \t") - first + 1));
+}
+
+// The quoted field whose opening quote is just before `at`, "" standing for a quote; `at` ends
+// past its closing quote.
+inline std::string read_quoted(std::string_view line, std::size_t& at, std::size_t field_number,
+                               const Input_location& where) {
+  std::string field;
+  while (true) {
+    const std::size_t quote = line.find('"', at);
+    if (quote == std::string_view::npos)
+      throw invalid_input("field " + std::to_string(field_number) + " opens a quote that the line does not close",
+                          where);
+    field.append(line.substr(at, quote - at));
+    at = quote + 1;
+    if (at >= line.size() || line[at] != '"') return field;
+    field += '"';
+    ++at;
   }
-  for (auto& field : fields) {
-    const auto first = field.find_first_not_of(" \t");
-    field = first == std::string::npos ? std::string() : field.substr(first, field.find_last_not_of(" \t") - first + 1);
+}
+
+// A line's fields as RFC 4180 writes them (spreadsheets, R, Python's csv): a field in double
+// quotes may hold commas, "" standing for a quote; spaces around a field are dropped.
+inline std::vector<std::string> split_fields(std::string_view line, const Input_location& where) {
+  std::vector<std::string> fields;
+  for (std::size_t at = 0;; ++at) {  // `at` steps over the comma that ends each field
+    at = skip_blanks(line, at);
+    if (at < line.size() && line[at] == '"') {
+      fields.push_back(read_quoted(line, ++at, fields.size() + 1, where));
+      at = skip_blanks(line, at);
+      if (at < line.size() && line[at] != ',')
+        throw invalid_input("field " + std::to_string(fields.size()) + " has text after its closing quote", where);
+    } else {
+      const std::size_t end = std::min(line.find(',', at), line.size());
+      fields.push_back(trimmed(line.substr(at, end - at)));
+      at = end;
+    }
+    if (at >= line.size()) return fields;
   }
-  return fields;
 }
 
 // The column of each of file, clip, motion, rig, body in the header (rig and body optional).
@@ -59,7 +96,7 @@ inline constexpr std::array<const char*, 5> column_names{"file", "clip", "motion
 
 inline Columns read_header(const std::string& line, const Input_location& where) {
   Columns columns;
-  const auto names = split_fields(line);
+  const auto names = split_fields(line, where);
   columns.count = names.size();
   for (std::size_t i = 0; i < names.size(); ++i) {
     const auto known = std::ranges::find(column_names, names[i]);
@@ -79,7 +116,7 @@ inline Columns read_header(const std::string& line, const Input_location& where)
 
 inline Labelled_clip read_row(const std::string& line, const Columns& columns, const std::filesystem::path& folder,
                               const Input_location& where) {
-  const auto fields = split_fields(line);
+  const auto fields = split_fields(line, where);
   if (fields.size() != columns.count)
     throw invalid_input(std::to_string(fields.size()) + " fields where the header has " +
                             std::to_string(columns.count),
@@ -101,18 +138,21 @@ namespace deformseg::io {
 /// @brief Reads a labels file: a header line naming the columns, then one line per animation.
 ///
 /// The columns are `file`, `clip`, `motion` (required) and `rig`, `body` (optional), in any
-/// order, separated by commas (no quoting; spaces around a field are dropped). `motion` is
+/// order, separated by commas as RFC 4180 has it: a field in double quotes may hold commas, `""`
+/// standing for a quote (a quoted field ends on its line); spaces around a field are dropped, and
+/// a UTF-8 byte order mark before the header (as spreadsheets write) is skipped. `motion` is
 /// `distractor_label` ("-") for a distractor; `body` defaults to the `file` field as written, and
 /// `rig` to empty. Empty lines and lines starting with `#` are skipped.
 /// @param path the CSV file.
 /// @return the rows in the file's order, `file` relative to the CSV's folder.
 /// @throws invalid_input naming the file (and the 1-based line) when it cannot be read, when the
 /// header names an unknown or repeated column or lacks a required one, when a row has another
-/// number of fields than the header, an empty file or motion field, or repeats a (file, clip)
-/// pair; or when it has no row.
+/// number of fields than the header, an empty file or motion field, a quote its line does not
+/// close or text after a closing quote, or repeats a (file, clip) pair; or when it has no row.
 /// @par Complexity O(size of the file + R log R) for R rows.
 inline std::vector<Labelled_clip> read_motion_labels(const std::filesystem::path& path) {
   namespace l = internal::labels;
+  constexpr std::string_view utf8_byte_order_mark = "\xEF\xBB\xBF";
   std::ifstream in(path, std::ios::binary);
   if (!in) throw invalid_input("cannot open the labels file", {.file = path.string()});
   const std::filesystem::path folder = path.parent_path();
@@ -122,6 +162,7 @@ inline std::vector<Labelled_clip> read_motion_labels(const std::filesystem::path
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (number == 1 && line.starts_with(utf8_byte_order_mark)) line.erase(0, utf8_byte_order_mark.size());
     if (line.find_first_not_of(" \t") == std::string::npos || line.front() == '#') continue;
     const Input_location where{.file = path.string(), .line = number};
     if (!columns) {
