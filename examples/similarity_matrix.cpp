@@ -1,5 +1,6 @@
 // The similarity matrix of four animations: two schedules, each on two tubes. Each animation is
-// described once; the pairs run in parallel.
+// described once; the pairs run in parallel. Then a pose of one frame among them, which the
+// matrix refuses, naming it.
 #include <deformseg/motion_similarity.h>
 #include <deformseg/synthetic.h>
 
@@ -26,4 +27,15 @@ int main() {
   const Eigen::MatrixXd m = similarity_matrix(animations);
   // [matrix]
   std::cout << "one bend (thin, thick), two bends (thin, thick):\n" << m << '\n';
+
+  // [pose]
+  // A pose of one frame has no motion to describe: the matrix names it, so that it can be left out.
+  const auto first = animations[0].frame_positions(0);
+  animations.emplace_back(animations[0].face_graph(), std::vector<double>(first.begin(), first.end()));
+  try {
+    similarity_matrix(animations);
+  } catch (const animation_not_described& e) {
+    std::cout << "animation " << e.index() << " not described: " << e.reason() << '\n';
+  }
+  // [pose]
 }

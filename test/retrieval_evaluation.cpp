@@ -326,3 +326,29 @@ TEST_CASE("similarity_matrix: progress reports every step and can stop", "[evalu
                   similarity_stopped);
   CHECK(calls_before_stop == 1);  // stopped after the descriptions, no pair compared
 }
+
+TEST_CASE("similarity_matrix: an animation the policy cannot describe is named, the first in index order",
+          "[evaluation][similarity]") {
+  auto tubes = some_tubes();
+  const auto pose = test::frames_of(tubes[0], {3});  // one frame: no motion to describe
+  tubes.insert(tubes.begin() + 2, pose);
+  tubes.push_back(pose);  // at 2 and 5
+  const auto refused = [](const auto& compute, std::size_t index, bool in_database) {
+    try {
+      compute();
+      FAIL("no animation_not_described");
+    } catch (const animation_not_described& e) {
+      CHECK(e.index() == index);
+      CHECK(e.in_database() == in_database);
+      CHECK(std::string(e.what()) == (in_database ? "database animation " : "animation ") + std::to_string(index) +
+                                         ": " + e.reason());
+      CHECK_THAT(e.reason(), Catch::Contains("a motion needs at least 2"));
+    }
+  };
+  refused([&] { similarity_matrix(tubes); }, 2, false);
+  refused([&] { similarity_matrix(std::span(tubes).first(2), tubes); }, 2, true);
+  refused([&] { similarity_matrix(std::span(tubes).last(2), tubes); }, 1, false);  // queries first
+  tubes.erase(tubes.begin() + 2);
+  tubes.pop_back();
+  CHECK_NOTHROW(similarity_matrix(tubes));
+}

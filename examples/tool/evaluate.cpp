@@ -256,6 +256,29 @@ void print_scores(const Retrieval_scores& s, std::size_t items) {
   print_confusion(s);
 }
 
+// The matrix of the clips read. A clip the policy cannot describe (a pose of one frame, say) stops
+// the command, named; with --skip-unreadable it is left out and the matrix made again without it.
+Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Matrix_progress& report) {
+  while (true) {
+    try {
+      report = Matrix_progress{.descriptions = read.animations.size()};
+      return with_policy_choice(o.policy, [&](const auto& policy) {
+        return similarity_matrix(read.animations, policy, std::ref(report));
+      });
+    } catch (const animation_not_described& e) {
+      const auto at = std::ptrdiff_t(e.index());
+      const io::Labelled_clip& clip = read.clips[e.index()];
+      const std::string clip_text = clip.item.clip.empty() ? "" : " clip '" + clip.item.clip + "'";
+      const std::string what = clip.file.string() + clip_text + ": " + e.reason();
+      if (!o.skip_unreadable) throw invalid_input(what + " (--skip-unreadable leaves it out)");
+      progress("skipped " + what);
+      read.skipped.push_back(what);
+      read.animations.erase(read.animations.begin() + at);
+      read.clips.erase(read.clips.begin() + at);
+    }
+  }
+}
+
 void run_evaluate(const Evaluate_options& o) {
   check_policy_choice(o.policy);
   if (!(o.fps > 0)) throw invalid_input("--fps must be positive");
@@ -263,13 +286,11 @@ void run_evaluate(const Evaluate_options& o) {
   if (o.threads > 0) omp_set_num_threads(o.threads);  // the matrix's threads; the readers take theirs
 #endif
   const auto start = Clock::now();
-  const Read_clips read = read_clips(io::read_motion_labels(o.labels), o);
+  Read_clips read = read_clips(io::read_motion_labels(o.labels), o);
   const double read_seconds = seconds_since(start);
   progress("read " + std::to_string(read.animations.size()) + " clips in " + fixed(read_seconds, 1) + " s");
-  Matrix_progress report{.descriptions = read.animations.size()};
-  const Eigen::MatrixXd m = with_policy_choice(o.policy, [&](const auto& policy) {
-    return similarity_matrix(read.animations, policy, std::ref(report));
-  });
+  Matrix_progress report;
+  const Eigen::MatrixXd m = matrix_of_clips(read, o, report);
   const double matrix_seconds = seconds_since(report.start);
   std::vector<Labelled_item> items;
   for (const auto& clip : read.clips) items.push_back(clip.item);
@@ -315,7 +336,8 @@ void add_evaluate_command(CLI::App& app) {
   command->add_option("--fps", o->fps, "Frames per second glTF clips are sampled at. Default: 30");
   command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
   command->add_flag("--skip-unreadable", o->skip_unreadable,
-                    "Leave out, with a line on standard error, the clips that cannot be read, instead of stopping");
+                    "Leave out, with a line on standard error, the clips that cannot be read or described (a "
+                    "pose of one frame), instead of stopping");
   command->add_flag("--per-query", o->per_query,
                     "Also print, for each query, its nearest candidate and the rank of the first candidate of its "
                     "motion (the JSON always has them)");

@@ -19,6 +19,7 @@
 #include <optional>
 #include <ranges>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -58,6 +59,32 @@ public:
   similarity_stopped() : std::runtime_error("the similarity matrix was stopped by its progress callback") {}
 };
 
+/// @brief Thrown by `similarity_matrix` when the policy cannot describe one of the animations (a
+/// single pose, which has no motion, say): the policy's `invalid_input`, its message after the
+/// animation's place, so that a caller can name the animation or leave it out and try again.
+class animation_not_described : public invalid_input {
+public:
+  /// @brief The error of the animation at `index` of the queries (`in_database` false; the only
+  /// range of the all-pairs matrix) or of the database, from the policy's `reason`.
+  animation_not_described(std::size_t index, bool in_database, const invalid_input& reason)
+      : invalid_input(std::string(in_database ? "database animation " : "animation ") + std::to_string(index) + ": " +
+                          reason.message(),
+                      reason.where()),
+        index_(index), in_database_(in_database), reason_(reason.what()) {}
+
+  /// @brief The animation's index in its range.
+  std::size_t index() const noexcept { return index_; }
+  /// @brief Whether it is of the database of a queries x database matrix.
+  bool in_database() const noexcept { return in_database_; }
+  /// @brief The policy's message, with its location, without the animation's index.
+  const std::string& reason() const noexcept { return reason_; }
+
+private:
+  std::size_t index_;
+  bool in_database_;
+  std::string reason_;
+};
+
 namespace internal {
 
 // Runs body(0) ... body(count - 1) in parallel batches, reporting `first_step + end of batch` to
@@ -76,15 +103,21 @@ void run_in_batches(std::size_t count, std::size_t first_step, std::size_t total
 }
 
 // Each animation of `animations` described once, in parallel, reported as steps from `first_step`.
+// An animation the policy refuses is named by an animation_not_described (in the database when
+// `database`).
 template <class Animations, class Policy>
 std::vector<typename Policy::Description> describe_all(const Animations& animations, const Policy& policy,
                                                        std::size_t first_step, std::size_t total_steps,
-                                                       const Similarity_progress& progress) {
+                                                       const Similarity_progress& progress, bool database = false) {
   const std::size_t n = std::size_t(std::ranges::size(animations));
   // Optional because a Description need not be default-constructible.
   std::vector<std::optional<typename Policy::Description>> made(n);
   run_in_batches(n, first_step, total_steps, progress, [&](std::size_t i) {
-    made[i].emplace(policy.describe(std::ranges::begin(animations)[std::ptrdiff_t(i)]));
+    try {
+      made[i].emplace(policy.describe(std::ranges::begin(animations)[std::ptrdiff_t(i)]));
+    } catch (const invalid_input& e) {
+      throw animation_not_described(i, database, e);
+    }
   });
   std::vector<typename Policy::Description> descriptions;
   descriptions.reserve(n);
@@ -105,7 +138,9 @@ std::vector<typename Policy::Description> describe_all(const Animations& animati
 /// @param progress called as the work advances (see `Similarity_progress`): N + N (N + 1) / 2
 /// steps; default none.
 /// @return the N x N matrix of similarity values.
-/// @throws invalid_input as the policy does (the first failing animation's or pair's exception).
+/// @throws animation_not_described (an invalid_input) for the first animation, in index order,
+/// that the policy cannot describe, naming it; invalid_input as the policy does for the first
+/// failing pair.
 /// @throws similarity_stopped when `progress` returned false.
 /// @par Complexity N describes and N (N + 1) / 2 compares; the result does not depend on the
 /// number of threads.
@@ -141,7 +176,9 @@ Eigen::MatrixXd similarity_matrix(const Animations& animations, const Policy& po
 /// @param progress called as the work advances (see `Similarity_progress`): Q + D + Q D steps;
 /// default none.
 /// @return the Q x D matrix of similarity values (not symmetric: a policy's `compare` need not be).
-/// @throws invalid_input as the policy does (the first failing animation's or pair's exception).
+/// @throws animation_not_described (an invalid_input) for the first query, or else the first
+/// database animation, in index order, that the policy cannot describe, naming it; invalid_input
+/// as the policy does for the first failing pair.
 /// @throws similarity_stopped when `progress` returned false.
 /// @par Complexity Q + D describes and Q D compares; the result does not depend on the number of
 /// threads.
@@ -155,7 +192,7 @@ Eigen::MatrixXd similarity_matrix(const Queries& queries, const Database& databa
   const std::size_t q = std::size_t(std::ranges::size(queries)), d = std::size_t(std::ranges::size(database));
   const std::size_t total = q + d + q * d;
   const auto rows = internal::describe_all(queries, policy, 0, total, progress);
-  const auto columns = internal::describe_all(database, policy, q, total, progress);
+  const auto columns = internal::describe_all(database, policy, q, total, progress, true);
   Eigen::MatrixXd values(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(d));
   internal::run_in_batches(q * d, q + d, total, progress, [&](std::size_t p) {
     values(Eigen::Index(p / d), Eigen::Index(p % d)) = policy.compare(rows[p / d], columns[p % d]).value;

@@ -209,6 +209,15 @@ def test_similarity_matrix_reports_progress_and_stops(grid):
         deformseg.similarity_matrix(animations, progress=failing)
 
 
+def test_similarity_matrix_names_a_pose_of_one_frame(grid):
+    faces, frames = grid(3, 4, 8)
+    animations = [deformseg.Animation(faces, frames), deformseg.Animation(faces, frames[:1])]
+    with pytest.raises(deformseg.InvalidInput, match=r"^animations\[1\]: an animation of 1 frame: a motion needs"):
+        deformseg.similarity_matrix(animations)
+    with pytest.raises(deformseg.InvalidInput, match=r"^database\[1\]: an animation of 1 frame"):
+        deformseg.similarity_matrix(animations[:1], animations)
+
+
 def test_long_calls_release_the_gil(grid):
     # A 600-frame animation of 20 000 triangles: its frame distances, on one thread, take about half
     # a second, during which a Python thread keeps counting. Were the GIL held, the
