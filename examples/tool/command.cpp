@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 
@@ -178,5 +179,20 @@ CLI::Validator output_file() {
 }
 
 void progress(const std::string& line) { std::cerr << "deformseg: " << line << '\n'; }
+
+bool Matrix_progress::operator()(std::size_t done, std::size_t total) {
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char elapsed[32];
+  std::snprintf(elapsed, sizeof elapsed, "%.1f s", seconds);
+  if (done == descriptions && describe_seconds == 0) {
+    describe_seconds = seconds;
+    progress("described " + std::to_string(descriptions) + " animations in " + elapsed);
+  }
+  if (done >= next_report || done == total) {
+    progress("matrix: " + std::to_string(done) + " of " + std::to_string(total) + " steps, " + elapsed);
+    next_report = done + std::max<std::size_t>(1, total / 20);
+  }
+  return true;
+}
 
 }  // namespace deformseg::tool

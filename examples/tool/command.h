@@ -14,6 +14,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -97,6 +99,17 @@ std::vector<std::size_t> evenly_spaced_frames(std::size_t frames, std::size_t co
 
 /// A line on standard error, for progress.
 void progress(const std::string& line);
+
+/// A similarity matrix's progress (a `Similarity_progress`) on standard error: a line when its
+/// `descriptions` are all made, with their time, and one about every 5 % of the steps.
+struct Matrix_progress {
+  std::size_t descriptions = 0;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  double describe_seconds = 0;  // set when the descriptions are all made
+  std::size_t next_report = 0;
+
+  bool operator()(std::size_t done, std::size_t total);
+};
 
 /// The check of a FILE option (`--json`, `--png`, `--csv`, ...), run as the command line is parsed,
 /// before any input is read: the file's folder exists. "-" (standard output) passes.

@@ -112,28 +112,6 @@ Read_clips read_clips(const std::vector<io::Labelled_clip>& rows, const Evaluate
   return out;
 }
 
-// Reports the matrix's progress on standard error about every 5 %, and when the descriptions are
-// all made (their time apart from the comparisons').
-struct Matrix_progress {
-  std::size_t descriptions = 0;
-  Clock::time_point start = Clock::now();
-  double describe_seconds = 0;
-  std::size_t next_report = 0;
-
-  bool operator()(std::size_t done, std::size_t total) {
-    if (done == descriptions && describe_seconds == 0) {
-      describe_seconds = seconds_since(start);
-      progress("described " + std::to_string(descriptions) + " animations in " + fixed(describe_seconds, 1) + " s");
-    }
-    if (done >= next_report || done == total) {
-      progress("matrix: " + std::to_string(done) + " of " + std::to_string(total) + " steps, " +
-               fixed(seconds_since(start), 1) + " s");
-      next_report = done + std::max<std::size_t>(1, total / 20);
-    }
-    return true;
-  }
-};
-
 // The items' order in the figure: by motion (distractors last), then body, then clip.
 std::vector<std::size_t> order_by_label(const std::vector<io::Labelled_clip>& clips) {
   std::vector<std::size_t> order(clips.size());

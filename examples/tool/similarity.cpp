@@ -172,8 +172,9 @@ void run_matrix(const Matrix_command_options& o) {
     require_motion(animations.back(), read.input);
   }
   progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
-  const Eigen::MatrixXd m =
-      with_policy_choice(o.policy, [&](const auto& policy) { return similarity_matrix(animations, policy); });
+  Matrix_progress report{.descriptions = animations.size()};
+  const Eigen::MatrixXd m = with_policy_choice(
+      o.policy, [&](const auto& policy) { return similarity_matrix(animations, policy, std::ref(report)); });
   if (!o.csv.empty()) write_csv(m, o.inputs, o.csv);
   if (!o.png.empty()) write_heat_map(m, o, o.png);
   nlohmann::json rows = nlohmann::json::array();
