@@ -555,6 +555,187 @@ ged::Ged_result graph_edit_distance(const std::vector<std::string>& labels_a,
 
 std::optional<double> bound_or_none(double x) { return std::isinf(x) ? std::nullopt : std::optional(x); }
 
+// ---- Pickling ------------------------------------------------------------------------------------
+// Every result pickles, so that it can come back from a worker process: __getstate__ gives a tuple
+// (version, fields...) of plain Python values and NumPy arrays, __setstate__ checks it and rebuilds
+// the C++ value. A layout that changes takes a new version; a state of another version or layout
+// is refused with a ValueError naming the class.
+
+constexpr int pickle_version = 1;
+
+[[noreturn]] void refuse_state(const char* type, const std::string& why) {
+  throw py::value_error(std::string("deformseg.") + type + ": cannot restore a pickled state: " + why);
+}
+
+// The fields of `state` after its version: `state` must be a tuple of the version `pickle_version`
+// and `fields` values, laid out as `layout` says (for the message).
+py::tuple state_fields(const py::object& pickled, const char* type, std::size_t fields, const char* layout) {
+  const std::string expected = std::string("expected the tuple ") + layout;
+  if (!py::isinstance<py::tuple>(pickled))
+    refuse_state(type, expected + ", got a " + py::str(py::type::of(pickled).attr("__name__")).cast<std::string>());
+  const auto state = py::reinterpret_borrow<py::tuple>(pickled);
+  if (state.size() != fields + 1) refuse_state(type, expected + ", got " + std::to_string(state.size()) + " items");
+  if (!py::isinstance<py::int_>(state[0]) || state[0].cast<long long>() != pickle_version)
+    refuse_state(type, "state version " + py::repr(state[0]).cast<std::string>() + ", this deformseg reads version " +
+                           std::to_string(pickle_version) + " (pickled by another version of deformseg?)");
+  return py::tuple(state[py::slice(1, py::ssize_t(fields + 1), 1)]);
+}
+
+// Field `index` of `fields` as a T, or a ValueError naming the class and the field.
+template <class T>
+T state_field(const py::tuple& fields, std::size_t index, const char* type, const char* name) {
+  try {
+    return fields[index].cast<T>();
+  } catch (const py::cast_error&) {
+    refuse_state(type, std::string("field '") + name + "' is a " +
+                           py::str(py::type::of(fields[index]).attr("__name__")).cast<std::string>() +
+                           ", not of the type pickled");
+  }
+}
+
+// The members of Repair_report in the order of its counts(), to restore them by name.
+constexpr std::array repair_members{
+    &io::Repair_report::input_vertices,        &io::Repair_report::input_triangles,
+    &io::Repair_report::welded_vertices,       &io::Repair_report::degenerate_triangles,
+    &io::Repair_report::duplicate_triangles,   &io::Repair_report::non_manifold_edges,
+    &io::Repair_report::non_manifold_vertices, &io::Repair_report::duplicated_vertices,
+    &io::Repair_report::reoriented_triangles,  &io::Repair_report::unrepairable_triangles,
+    &io::Repair_report::vertices,              &io::Repair_report::triangles};
+static_assert(repair_members.size() == std::tuple_size_v<decltype(io::Repair_report{}.counts())>);
+
+std::optional<io::Repair_report> repair_of_state(const py::handle& value) {
+  if (value.is_none()) return std::nullopt;
+  if (!py::isinstance<py::dict>(value)) refuse_state("Animation", "field 'repair' is neither a dict nor None");
+  const auto counts = py::reinterpret_borrow<py::dict>(value);
+  io::Repair_report report;
+  for (std::size_t k = 0; k < repair_members.size(); ++k) {
+    const std::string_view name = report.counts()[k].first;
+    const py::str key(name.data(), name.size());
+    if (!counts.contains(key)) refuse_state("Animation", "field 'repair' has no count '" + std::string(name) + "'");
+    report.*repair_members[k] = state_field<std::size_t>(py::make_tuple(counts[key]), 0, "Animation", "repair");
+  }
+  return report;
+}
+
+// Animation: (1, faces (F, 3) uint32, frames (T, V, 3) float64, repair dict or None). The frames
+// are copied bit for bit; the connectivity is rebuilt from the faces in their order.
+py::object animation_state(const py::object& self) {
+  const Animation& a = self.cast<const Animation&>();
+  return py::make_tuple(pickle_version, self.attr("faces"), self.attr("frames"),
+                        a.repair ? py::object(repair_dict(*a.repair)) : py::object(py::none()));
+}
+
+Animation animation_of_state(const py::object& state) {
+  const py::tuple f = state_fields(state, "Animation", 3, "(1, faces, frames, repair)");
+  const auto faces = py::array::ensure(f[0]), frames = py::array::ensure(f[1]);
+  if (!faces || (faces.dtype().kind() != 'i' && faces.dtype().kind() != 'u'))
+    refuse_state("Animation", "field 'faces' is not an array of integers");
+  if (!frames || frames.dtype().kind() != 'f' || frames.itemsize() != 8)
+    refuse_state("Animation", "field 'frames' is not an array of float64");
+  Animation a = animation_of_arrays(faces, frames);
+  a.repair = repair_of_state(f[2]);
+  return a;
+}
+
+// Similarity: (1, value, score, alignment, labels_a, labels_b, compared, z_score, shuffled_copies).
+py::object similarity_state(const Similarity_result& r) {
+  const Similarity& s = r.similarity;
+  return py::make_tuple(pickle_version, s.value, s.score, s.alignment, s.labels_a, s.labels_b, s.compared, r.z_score,
+                        r.shuffled_copies);
+}
+
+Similarity_result similarity_of_state(const py::object& state) {
+  constexpr const char* type = "Similarity";
+  const py::tuple f = state_fields(
+      state, type, 8, "(1, value, score, alignment, labels_a, labels_b, compared, z_score, shuffled_copies)");
+  Similarity_result r;
+  r.similarity.value = state_field<double>(f, 0, type, "value");
+  r.similarity.score = state_field<double>(f, 1, type, "score");
+  r.similarity.alignment = state_field<decltype(r.similarity.alignment)>(f, 2, type, "alignment");
+  r.similarity.labels_a = state_field<std::vector<std::size_t>>(f, 3, type, "labels_a");
+  r.similarity.labels_b = state_field<std::vector<std::size_t>>(f, 4, type, "labels_b");
+  r.similarity.compared = state_field<std::string>(f, 5, type, "compared");
+  r.z_score = state_field<std::optional<double>>(f, 6, type, "z_score");
+  r.shuffled_copies = state_field<std::size_t>(f, 7, type, "shuffled_copies");
+  return r;
+}
+
+// MotionMatch: (1, first, last, value, alignment).
+py::object motion_match_state(const Motion_match& m) {
+  return py::make_tuple(pickle_version, m.first, m.last, m.value, m.alignment);
+}
+
+Motion_match motion_match_of_state(const py::object& state) {
+  constexpr const char* type = "MotionMatch";
+  const py::tuple f = state_fields(state, type, 4, "(1, first, last, value, alignment)");
+  return {.first = state_field<std::size_t>(f, 0, type, "first"),
+          .last = state_field<std::size_t>(f, 1, type, "last"),
+          .value = state_field<double>(f, 2, type, "value"),
+          .alignment = state_field<decltype(Motion_match::alignment)>(f, 3, type, "alignment")};
+}
+
+// RetrievalScores: (1, queries, queries_without_relevant, queries_without_candidate, nn_accuracy,
+// mean_average_precision, roc_auc, median_same, median_different, same_pairs, different_pairs,
+// labels, confusion, per_motion, per_query), per_motion and per_query as lists of tuples in the
+// order of the members of Motion_retrieval and Query_retrieval.
+constexpr const char* retrieval_layout =
+    "(1, queries, queries_without_relevant, queries_without_candidate, nn_accuracy, mean_average_precision, "
+    "roc_auc, median_same, median_different, same_pairs, different_pairs, labels, confusion, per_motion, per_query)";
+
+py::object retrieval_state(const Retrieval_scores& s) {
+  py::list per_motion, per_query;
+  for (const Motion_retrieval& m : s.per_motion)
+    per_motion.append(py::make_tuple(m.motion, m.queries, m.correct, m.nn_accuracy));
+  for (const Query_retrieval& q : s.per_query)
+    per_query.append(
+        py::make_tuple(q.query, q.nearest, q.nearest_similarity, q.first_relevant_rank, q.average_precision));
+  return py::make_tuple(pickle_version, s.queries, s.queries_without_relevant, s.queries_without_candidate,
+                        s.nn_accuracy, s.mean_average_precision, s.roc_auc, s.median_same, s.median_different,
+                        s.same_pairs, s.different_pairs, s.labels, s.confusion, per_motion, per_query);
+}
+
+Retrieval_scores retrieval_of_state(const py::object& state) {
+  constexpr const char* type = "RetrievalScores";
+  const py::tuple f = state_fields(state, type, 14, retrieval_layout);
+  using Motion_tuple = std::tuple<std::string, std::size_t, std::size_t, double>;
+  using Query_tuple =
+      std::tuple<std::size_t, std::size_t, double, std::optional<std::size_t>, std::optional<double>>;
+  Retrieval_scores s;
+  s.queries = state_field<std::size_t>(f, 0, type, "queries");
+  s.queries_without_relevant = state_field<std::size_t>(f, 1, type, "queries_without_relevant");
+  s.queries_without_candidate = state_field<std::size_t>(f, 2, type, "queries_without_candidate");
+  s.nn_accuracy = state_field<std::optional<double>>(f, 3, type, "nn_accuracy");
+  s.mean_average_precision = state_field<std::optional<double>>(f, 4, type, "mean_average_precision");
+  s.roc_auc = state_field<std::optional<double>>(f, 5, type, "roc_auc");
+  s.median_same = state_field<std::optional<double>>(f, 6, type, "median_same");
+  s.median_different = state_field<std::optional<double>>(f, 7, type, "median_different");
+  s.same_pairs = state_field<std::size_t>(f, 8, type, "same_pairs");
+  s.different_pairs = state_field<std::size_t>(f, 9, type, "different_pairs");
+  s.labels = state_field<std::vector<std::string>>(f, 10, type, "labels");
+  s.confusion = state_field<std::vector<std::vector<std::size_t>>>(f, 11, type, "confusion");
+  for (const auto& [motion, queries, correct, accuracy] :
+       state_field<std::vector<Motion_tuple>>(f, 12, type, "per_motion"))
+    s.per_motion.push_back({.motion = motion, .queries = queries, .correct = correct, .nn_accuracy = accuracy});
+  for (const auto& [query, nearest, similarity, rank, precision] :
+       state_field<std::vector<Query_tuple>>(f, 13, type, "per_query"))
+    s.per_query.push_back({.query = query, .nearest = nearest, .nearest_similarity = similarity,
+                           .first_relevant_rank = rank, .average_precision = precision});
+  return s;
+}
+
+// GedResult: (1, distance, exact, lower, upper, mapping), upper as stored (inf for none).
+py::object ged_state(const ged::Ged_result& r) {
+  return py::make_tuple(pickle_version, r.distance, r.exact, r.lower, r.upper, r.mapping);
+}
+
+ged::Ged_result ged_of_state(const py::object& state) {
+  constexpr const char* type = "GedResult";
+  const py::tuple f = state_fields(state, type, 5, "(1, distance, exact, lower, upper, mapping)");
+  return {.distance = state_field<double>(f, 0, type, "distance"), .exact = state_field<bool>(f, 1, type, "exact"),
+          .lower = state_field<double>(f, 2, type, "lower"), .upper = state_field<double>(f, 3, type, "upper"),
+          .mapping = state_field<std::vector<int>>(f, 4, type, "mapping")};
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_deformseg, m) {
@@ -600,6 +781,7 @@ float64 array (float32 converted on the way), through one NumPy conversion first
 layout. `frames` and `faces` are then read-only views of that storage, no copy.
 Complexity O(T V + F).)doc")
       .def(py::init(&animation_of_arrays), "faces"_a, "frames"_a)
+      .def(py::pickle(&animation_state, &animation_of_state))
       .def_property_readonly(
           "frames",
           [](const py::object& self) {
@@ -694,6 +876,7 @@ segment (optimal, binary-split). Complexity O(T^2 F) for the distances, then the
         "The evolving graph as tuples; `deformseg.evolving_graph` makes it an EvolvingGraph. Releases the GIL.");
 
   py::class_<Similarity_result>(m, "Similarity", "What `similarity` gives: how alike two animations move.")
+      .def(py::pickle(&similarity_state, &similarity_of_state))
       .def_property_readonly("value", [](const Similarity_result& s) { return s.similarity.value; },
                              "The similarity in [0, 1]: 1 for an animation and itself (or a moved, scaled copy).")
       .def_property_readonly("score", [](const Similarity_result& s) { return s.similarity.score; },
@@ -745,6 +928,7 @@ database); returning False stops the work and raises SimilarityStopped. The anim
 copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc");
 
   py::class_<Motion_match>(m, "MotionMatch", "A window of a long animation that matches a query (find_motion).")
+      .def(py::pickle(&motion_match_state, &motion_match_of_state))
       .def_readonly("first", &Motion_match::first, "The window's first frame in the long animation.")
       .def_readonly("last", &Motion_match::last, "Its last frame (inclusive).")
       .def_readonly("value", &Motion_match::value, "1 minus the mean frame dissimilarity along the path, in [0, 1].")
@@ -763,6 +947,7 @@ subsequence DTW. shortest (default 0.5): the shortest window as a fraction of th
 Complexity two descriptions, then O(count Tq Tl). Releases the GIL.)doc");
 
   py::class_<Retrieval_scores>(m, "RetrievalScores", "The figures of `evaluate` (evaluate_retrieval).")
+      .def(py::pickle(&retrieval_state, &retrieval_of_state))
       .def_readonly("queries", &Retrieval_scores::queries, "Queries evaluated.")
       .def_readonly("queries_without_relevant", &Retrieval_scores::queries_without_relevant,
                     "Queries with no candidate of their motion.")
@@ -816,6 +1001,7 @@ file (relative paths made relative to the CSV's folder), clip, motion, rig and b
 InvalidInput naming the file and line of a bad row. Complexity O(rows).)doc");
 
   py::class_<ged::Ged_result>(m, "GedResult", "What `ged` gives: lower <= distance <= upper.")
+      .def(py::pickle(&ged_state, &ged_of_state))
       .def_readonly("distance", &ged::Ged_result::distance, "The distance found (exact, or the best upper bound).")
       .def_readonly("exact", &ged::Ged_result::exact, "Whether distance is proven to be the graph edit distance.")
       .def_readonly("lower", &ged::Ged_result::lower, "A proven lower bound.")
