@@ -487,6 +487,27 @@ std::string field_of(const py::handle& item, const char* name) {
   return {};
 }
 
+// Item `index` of evaluate's labels: a motion name, or a dict or an object with `motion` and
+// optionally `body`, `rig`, `clip` (and `file`). The body defaults to the file, as in a labels
+// file, else to the item alone: then every other item is a candidate of its query.
+Labelled_item labelled_item(const py::handle& item, std::size_t index) {
+  const std::string where = "labels[" + std::to_string(index) + "]";
+  Labelled_item l;
+  if (py::isinstance<py::str>(item)) {
+    l.motion = item.cast<std::string>();
+  } else if (py::isinstance<py::dict>(item) || py::hasattr(item, "motion")) {
+    l = {field_of(item, "motion"), field_of(item, "body"), field_of(item, "rig"), field_of(item, "clip")};
+    if (l.body.empty()) l.body = field_of(item, "file");
+  } else {
+    throw py::type_error(where + ": expected a motion name (str), a dict or an object with a 'motion', got " +
+                         py::str(py::type::of(item).attr("__name__")).cast<std::string>());
+  }
+  if (l.motion.empty()) throw py::value_error(where + ": no motion (a name, or '-' for a distractor)");
+  // A body no given name can equal (it starts with a NUL character): the item's own.
+  if (l.body.empty()) l.body = std::string(1, '\0') + "item " + std::to_string(index);
+  return l;
+}
+
 Retrieval_scores evaluate(const py::array_t<double, py::array::forcecast>& similarity, const py::sequence& labels) {
   if (similarity.ndim() != 2 || similarity.shape(0) != similarity.shape(1))
     throw py::value_error("similarity: expected a square (N, N) array, got " + shape_of(similarity));
@@ -494,11 +515,7 @@ Retrieval_scores evaluate(const py::array_t<double, py::array::forcecast>& simil
     throw py::value_error("similarity is " + shape_of(similarity) + " but there are " + std::to_string(labels.size()) +
                           " labels");
   std::vector<Labelled_item> items;
-  for (const py::handle item : labels) {
-    Labelled_item l{field_of(item, "motion"), field_of(item, "body"), field_of(item, "rig"), field_of(item, "clip")};
-    if (l.motion.empty()) throw py::value_error("labels: every item needs a 'motion' ('-' for a distractor)");
-    items.push_back(std::move(l));
-  }
+  for (std::size_t i = 0; i < labels.size(); ++i) items.push_back(labelled_item(labels[i], i));
   const auto n = Eigen::Index(similarity.shape(0));
   Eigen::MatrixXd m(n, n);
   const auto read = similarity.unchecked<2>();
@@ -989,10 +1006,15 @@ Complexity two descriptions, then O(count Tq Tl). Releases the GIL.)doc");
 
   m.def("evaluate", &evaluate, "similarity"_a, "labels"_a,
         R"doc(How well a similarity matrix retrieves the same motion on other bodies (evaluate_retrieval):
-`similarity` an (N, N) array (as similarity_matrix gives), `labels` N items, each a dict or an
-object with `motion` ('-' for a distractor) and optionally `body`, `rig`, `clip` (as
-read_motion_labels gives). Returns RetrievalScores: NN accuracy, mAP, ROC-AUC, medians, the
-confusion table, and what each query found. Complexity O(N^2 log N).)doc");
+`similarity` an (N, N) array (as similarity_matrix gives), `labels` N items, each a motion name
+(str) or a dict or an object with `motion` and optionally `body`, `rig`, `clip`, `file` (as
+read_motion_labels gives); '-' as motion marks a distractor (a candidate, never a query). The
+candidates of a query are the items of other bodies; an item's body defaults to its `file`, and
+without either the item is a body of its own (so every other item is a candidate: a list of motion
+names compares every item with every other). Raises TypeError for an item of another type,
+ValueError for an item without a motion. Returns RetrievalScores: NN accuracy, mAP, ROC-AUC,
+medians, the confusion table, and what each query found (items of one body have no candidate:
+queries_without_candidate counts them). Complexity O(N^2 log N).)doc");
 
   m.def("read_motion_labels", &motion_labels, "path"_a,
         R"doc(The rows of a labels CSV file (header file,clip,motion[,rig][,body]; fields may be quoted

@@ -1,7 +1,7 @@
 # Type stubs of the deformseg package (the compiled deformseg._deformseg and deformseg._graphs).
 # Kept in sync by python/tests/test_module.py, which checks that every public name is here.
 import os
-from typing import Any, Callable, Iterator, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Iterator, List, Mapping, Optional, Protocol, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -190,7 +190,13 @@ class RetrievalScores:
     @property
     def per_query(self) -> List[dict[str, Any]]: ...
 
-def evaluate(similarity: npt.ArrayLike, labels: Sequence[Any]) -> RetrievalScores: ...
+class _Labelled(Protocol):  # an object with a motion; body, rig, clip and file are read when present
+    motion: str
+
+# A motion name, a dict (motion, and optionally body, rig, clip, file) or an object with a motion.
+_Label = Union[str, Mapping[str, Optional[str]], _Labelled]
+
+def evaluate(similarity: npt.ArrayLike, labels: Sequence[_Label]) -> RetrievalScores: ...
 def read_motion_labels(path: _Path) -> List[dict[str, str]]: ...
 
 class GedResult:
