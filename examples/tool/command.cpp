@@ -173,9 +173,30 @@ CLI::Validator output_file() {
         std::error_code error;
         if (!folder.empty() && !std::filesystem::is_directory(folder, error))
           return "cannot write " + path + ": the folder " + folder.string() + " does not exist";
+        if (std::filesystem::is_directory(path, error)) return "cannot write " + path + ": it is a folder";
         return {};
       },
       "FILE");
+}
+
+CLI::Validator output_folder() {
+  return CLI::Validator(
+      [](std::string& path) -> std::string {
+        std::error_code error;
+        // The nearest part of the path that exists must be a folder: the rest is created.
+        for (std::filesystem::path part = path; !part.empty(); part = part.parent_path()) {
+          if (!std::filesystem::exists(part, error)) {
+            if (part == part.parent_path()) break;
+            continue;
+          }
+          if (std::filesystem::is_directory(part, error)) return {};
+          return part == std::filesystem::path(path) ? "cannot write into " + path + ": it is a file, not a folder"
+                                                     : "cannot create the folder " + path + ": " + part.string() +
+                                                           " is a file, not a folder";
+        }
+        return {};
+      },
+      "DIR");
 }
 
 void progress(const std::string& line) { std::cerr << "deformseg: " << line << '\n'; }

@@ -111,9 +111,15 @@ struct Matrix_progress {
   bool operator()(std::size_t done, std::size_t total);
 };
 
-/// The check of a FILE option (`--json`, `--png`, `--csv`, ...), run as the command line is parsed,
-/// before any input is read: the file's folder exists. "-" (standard output) passes.
+/// The check of a FILE option (`--json`, `--png`, `--csv`, `--out`, ...), run as the command line is
+/// parsed, before any input is read: the file's folder exists and the file is not a folder. "-"
+/// (standard output) passes.
 CLI::Validator output_file();
+
+/// The check of a DIR option (`--mesh-dir`, `--dot`, view's `--out`, convert's and synth's OUT),
+/// run as the command line is parsed, before any input is read: the folder exists, or can be
+/// created (the nearest part of its path that exists is a folder, not a file).
+CLI::Validator output_folder();
 
 /// What a failed command line most likely meant, given its arguments (without the program's
 /// name): "unknown command 'inof': did you mean 'info'?", the same for a sub-command's long

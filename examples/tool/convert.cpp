@@ -55,7 +55,7 @@ void add_convert_command(CLI::App& app) {
       "convert", "Write an animation (a glTF clip, a point cache, frames) as a frame sequence, or as "
                  "a point cache with its topology mesh");
   add_input_options(*command, o->input);
-  command->add_option("out", o->out, "Folder to write into (created when missing)")->required();
+  command->add_option("out", o->out, "Folder to write into (created when missing)")->required()->check(output_folder());
   command->add_option("--format", o->format,
                       "obj, off or ply: a file per frame (frame_0000.ply, ...); pc2 or mdd: a point "
                       "cache NAME.pc2 with NAME.obj as its topology, NAME from the input")

@@ -113,9 +113,13 @@ void add_spatiotemporal_command(CLI::App& app) {
                       "Rigid islands of at most this many triangles inside one segment join it (0: none). "
                       "Default: 30");
   add_json_option(*command, options->json, "the evolving graph");
-  command->add_option("--dot", options->dot, "Write each key frame's graph as a Graphviz DOT file into DIR");
+  command->add_option("--dot", options->dot,
+                      "Write each key frame's graph as a Graphviz DOT file into DIR (created when missing)")
+      ->check(output_folder());
   command->add_option("--mesh-dir", options->mesh_dir,
-                      "Write every frame as a PLY mesh coloured by segment (rigid: grey) into DIR");
+                      "Write every frame as a PLY mesh coloured by segment (rigid: grey) into DIR (created when "
+                      "missing)")
+      ->check(output_folder());
   command->callback([options] { run(*options); });
 }
 

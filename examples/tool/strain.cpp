@@ -209,10 +209,12 @@ void add_strain_command(CLI::App& app) {
   command->add_option("--sigma", options->sigma, "The Gaussian normalisation's sigma")->check(CLI::PositiveNumber);
   command->add_option("--out", options->out,
                       "Write the field: FILE.csv (a line per frame, a column per triangle) or any other "
-                      "name for a one-line JSON header and little-endian float32 values, frame after frame");
+                      "name for a one-line JSON header and little-endian float32 values, frame after frame")
+      ->check(output_file());
   command->add_option("--mesh-dir", options->mesh_dir,
                       "Write every frame as a PLY mesh coloured by normalised strain (viridis: dark purple "
-                      "0, yellow 1) into DIR");
+                      "0, yellow 1) into DIR (created when missing)")
+      ->check(output_folder());
   command->add_option("--png", options->png,
                       "Draw frames coloured by normalised strain (viridis), side by side, seen along the axis in "
                       "which the motion is thinnest, into FILE.png")

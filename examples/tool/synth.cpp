@@ -110,7 +110,9 @@ void add_synth_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "synth", "Write a synthetic tube bending at joints on a schedule, with its ground truth "
                "(OUT/ground_truth.json: which joint deforms each triangle, the phases)");
-  command->add_option("out", o->out, "Folder to write the animation into")->required();
+  command->add_option("out", o->out, "Folder to write the animation into (created when missing)")
+      ->required()
+      ->check(output_folder());
   command->add_option("--format", o->format, "obj or ply: a file per frame; pc2 or mdd: a point "
                                              "cache with tube.obj as its topology")
       ->check(CLI::IsMember({"obj", "ply", "pc2", "mdd"}))->capture_default_str();

@@ -89,7 +89,10 @@ void add_view_command(CLI::App& app) {
   command->add_option("inputs", o->inputs, "One or two animations (glTF clips as FILE.glb#CLIP, folders, quoted globs, point caches)")
       ->required()
       ->expected(1, 2);
-  command->add_option("--out", o->out, "The folder to write index.html and what it needs into")->required();
+  command->add_option("--out", o->out,
+                      "The folder to write index.html and what it needs into (created when missing)")
+      ->required()
+      ->check(output_folder());
   command->add_option("--color", o->color,
                       "strain: against frame 0 (default); previous-strain: against the frame before; temporal: by "
                       "temporal segment; segments: by spatio-temporal segment, as the graph's nodes; none")
