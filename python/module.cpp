@@ -921,8 +921,10 @@ segment (optimal, binary-split). Complexity O(T^2 F) for the distances, then the
         R"doc(How alike two animations move (motion_similarity), as the tool's `similarity` command.
 
 policy: "motion-signature" (default, Default_similarity: per-frame distributions of how fast,
-and how fast up or down, the surface moves), "histogram" (strain histograms), "graph" (the
-thesis' evolving graphs) or "self-similarity". alignment: "smith-waterman", "dtw" or
+and how fast up or down, the surface moves), "histogram" (strain histograms; its values crowd near
+1: the Knight's Walking_A against a frozen copy of itself 0.997, against its Death_A 0.996, so
+read the z-score or a rank, not the value), "graph" (the thesis' evolving graphs) or
+"self-similarity". alignment: "smith-waterman", "dtw" or
 "subsequence-dtw" (default: dtw for motion-signature, smith-waterman otherwise). threshold: the
 graph policy's deformed threshold in [0, 1] (default 0.5). up: the motion signatures' up axis,
 "+x", "-x", "+y", "-y", "+z", "-z" or "none" for speeds alone (default "+y"). significance: the number of frame-shuffled copies of b the z-score is

@@ -19,7 +19,9 @@ inline void add_policy_options(CLI::App& command, Policy_options& o) {
   command.add_option("--policy", o.policy,
                      "motion-signature: per-frame distributions of how fast, and how fast up or down, the surface "
                      "moves at several time scales, no correspondence needed (default); "
-                     "histogram: per-frame histograms of the strain, no correspondence needed; "
+                     "histogram: per-frame histograms of the strain, no correspondence needed; its values crowd "
+                     "near 1 (the Knight's Walking_A against a frozen copy of itself 0.997, against its Death_A "
+                     "0.996): read the z-score or a rank, not the value; "
                      "graph: the thesis' evolving graphs, GED, clustering and label alignment; "
                      "self-similarity: each animation's own frame x frame distances after rigid alignment")
       ->check(CLI::IsMember(names(policy_names)));

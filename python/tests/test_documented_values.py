@@ -1,0 +1,22 @@
+"""What the docstrings say of the values, checked: the histogram policy's values crowd near 1."""
+import numpy as np
+
+import deformseg
+
+
+def test_the_histogram_policy_says_its_values_crowd_near_1():
+    doc = " ".join(deformseg.similarity.__doc__.split())
+    assert '"histogram" (strain histograms; its values crowd near 1:' in doc
+    assert "frozen copy of itself 0.997, against its Death_A 0.996" in doc
+
+
+def test_the_histogram_figures_of_the_docs(characters):
+    # The figures the docstring, the tool's --help and chapter 7 give: the Knight's walk against a
+    # frozen copy of itself (its first frame held) and against its death.
+    knight = characters / "Knight.glb"
+    walk = deformseg.read_animation(knight, clip="Walking_A")
+    death = deformseg.read_animation(knight, clip="Death_A")
+    frozen = deformseg.Animation(walk.faces, np.repeat(walk.frames[:1], walk.num_frames, axis=0))
+    histogram = {"policy": "histogram", "significance": 0}
+    assert round(deformseg.similarity(walk, frozen, **histogram).value, 3) == 0.997
+    assert round(deformseg.similarity(walk, death, **histogram).value, 3) == 0.996
