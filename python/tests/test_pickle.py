@@ -192,6 +192,16 @@ def test_a_bad_state_is_refused_naming_the_class(type_, grid):
         assert reason in str(error.value), (bad, str(error.value))
 
 
+def test_every_repair_count_comes_back_under_its_name(grid, tmp_path):
+    faces, frames = deformseg.Animation(*grid(2, 2, 3)).__getstate__()[1:3]
+    names = list(deformseg.read_animation(write_obj_frames(tmp_path / "frames")).repair)
+    assert len(names) == 12
+    counts = {name: k + 1 for k, name in enumerate(names)}  # every count another value
+    restored = new_of(deformseg.Animation)
+    restored.__setstate__((1, faces, frames, counts))
+    assert restored.repair == counts and list(restored.repair) == names
+
+
 def test_an_animation_state_is_checked_as_its_arrays_are(grid):
     faces, frames, repair = deformseg.Animation(*grid(2, 2, 3)).__getstate__()[1:]
     bad_faces = np.array(faces)
