@@ -642,7 +642,9 @@ default the first, sampled at `fps`, default 30), a folder of frame files (.obj,
 natural order), a glob pattern, or a point cache (.pc2, .mdd) with `topology` (a mesh file).
 
 `triangulate` (default False) fans polygons; `weld` (default: True for glTF, False otherwise)
-merges vertices that coincide in every frame; degenerate, duplicate and non-manifold triangles
+merges vertices that coincide in every frame (for glTF, by what the file fixes: the same rest
+position, skin weights and morph deltas, so that every clip of a file has one mesh, the same
+vertices and triangles); degenerate, duplicate and non-manifold triangles
 are repaired unless `refuse_defects` (default False); `threads` (default 0: all) read in
 parallel. `Animation.repair` says what the repair changed. Raises InvalidInput naming the file,
 line and frame of the first problem, or for an option that does not apply (clip for frames,

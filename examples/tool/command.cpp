@@ -27,7 +27,9 @@ void add_input_options(CLI::App& command, Input_options& options) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   CLI::Option* weld = command.add_flag(
-      "--weld", options.weld, "Weld the vertices that coincide in every frame (always done for glTF)");
+      "--weld", options.weld,
+      "Weld the vertices that coincide in every frame (glTF files are always welded, by the rule that gives "
+      "every clip of a file one mesh: the same rest position, skin weights and morph deltas)");
   command.add_flag("--no-weld", options.no_weld, "glTF: keep the file's vertices, in its order, unwelded")
       ->excludes(weld);
   command.add_flag("--refuse-defects", options.refuse_defects,
