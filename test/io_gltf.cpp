@@ -581,6 +581,30 @@ TEST_CASE("gltf: welded by what the file fixes, so that every clip has one mesh"
   }
 }
 
+TEST_CASE("read_animation: FILE.glb#CLIP names the clip; a file of several clips needs one", "[gltf][io]") {
+  const std::string path = write(seam_scene(), "seam_clips.glb").string();
+  deformseg::io::Repair_report report;
+  const auto bend = deformseg::io::read_animation(path + "#bend", {}, &report);
+  CHECK(bend.num_frames() == 31);
+  CHECK(report.welded_vertices == 2);
+  CHECK(std::ranges::equal(bend.all_positions(), deformseg::io::read_animation(path, {.clip = "bend"}).all_positions()));
+  CHECK(std::ranges::equal(bend.all_positions(), deformseg::io::read_animation(path + "#1").all_positions()));
+  CHECK(deformseg::io::animation_format(path + "#bend") == "glb");
+  CHECK_THROWS_WITH(deformseg::io::read_animation(path + "#bend", {.clip = "still"}), Contains("given twice"));
+  CHECK_THROWS_WITH(deformseg::io::read_animation(path + "#walk"),
+                    Contains("no clip 'walk'") && Contains("'still', 'bend'") && Contains(path));
+  // No clip named: refused, naming the clips and how to choose, where the first was read unsaid.
+  CHECK_THROWS_WITH(deformseg::io::read_animation(path),
+                    Contains("holds 2 clips") && Contains("seam_clips.glb#still") && Contains("'still', 'bend'") &&
+                        Contains(path));
+  // A file of one clip gives it; a file of none its rest pose.
+  Gltf_writer one = seam_scene();
+  one.doc["animations"].erase(0);
+  CHECK(deformseg::io::read_animation(write(one, "seam_one_clip.glb").string()).num_frames() == 31);
+  one.doc.erase("animations");
+  CHECK(deformseg::io::read_animation(write(one, "seam_no_clip.glb").string()).num_frames() == 1);
+}
+
 // ---- The shared characters (../shared/data/characters, SOURCE.md and motions.csv) ------------
 
 namespace {

@@ -490,6 +490,26 @@ private:
   internal::gltf::Loaded_file file_;
 };
 
+/// @brief The rule of the readers that take any animation (`read_animation`, the tool's commands,
+/// Python's `read_animation`) for a glTF file and the clip asked: a clip must be named
+/// ("FILE.glb#CLIP", or a clip option) when the file holds more than one, rather than the first
+/// read unsaid; a file of one clip gives it, a file without animation its rest pose.
+/// @param file the file to read.
+/// @param clip the clip asked (a name or an index); empty for none.
+/// @throws invalid_input naming the file when `clip` is empty and the file holds two clips or
+/// more: the message lists them.
+/// @par Complexity O(clips).
+inline void require_clip_choice(const Gltf_file& file, const std::string& clip) {
+  const std::vector<std::string> names = file.clip_names();
+  if (!clip.empty() || names.size() < 2) return;
+  std::string list;
+  for (const std::string& name : names) list.append(list.empty() ? "" : ", ").append("'" + name + "'");
+  throw invalid_input("the file holds " + std::to_string(names.size()) + " clips: name the one to read, as in \"" +
+                          file.path().filename().string() + "#" + names.front() + "\" or by the clip option (the " +
+                          "clips: " + list + ")",
+                      {.file = file.path().string()});
+}
+
 /// @brief Samples one clip of a glTF 2.0 file into positions and triangles, without repair:
 /// `Gltf_file(path).sample(options)` (see `Gltf_file` for what is read and how).
 ///
