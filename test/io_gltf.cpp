@@ -587,7 +587,8 @@ TEST_CASE("read_animation: FILE.glb#CLIP names the clip; a file of several clips
   const auto bend = deformseg::io::read_animation(path + "#bend", {}, &report);
   CHECK(bend.num_frames() == 31);
   CHECK(report.welded_vertices == 2);
-  CHECK(std::ranges::equal(bend.all_positions(), deformseg::io::read_animation(path, {.clip = "bend"}).all_positions()));
+  const auto by_option = deformseg::io::read_animation(path, {.clip = "bend"});
+  CHECK(std::ranges::equal(bend.all_positions(), by_option.all_positions()));
   CHECK(std::ranges::equal(bend.all_positions(), deformseg::io::read_animation(path + "#1").all_positions()));
   CHECK(deformseg::io::animation_format(path + "#bend") == "glb");
   CHECK_THROWS_WITH(deformseg::io::read_animation(path + "#bend", {.clip = "still"}), Contains("given twice"));
@@ -723,7 +724,8 @@ TEST_CASE("gltf: the five KayKit bodies give the same frames per clip", "[gltf][
   }
 }
 
-TEST_CASE("gltf: every clip of a shared character has the file's one mesh, seams welded", "[gltf][data][repair][weld]") {
+TEST_CASE("gltf: every clip of a shared character has the file's one mesh, seams welded",
+          "[gltf][data][repair][weld]") {
   // Vertices and triangles after welding and repair: the same for every clip of a file. The KayKit
   // props that overlap (the Knight's shields, the Rogue's crossbows, on nodes of their own) stay
   // apart, where welding per clip merged some of their vertices and dropped triangles.

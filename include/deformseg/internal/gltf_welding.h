@@ -37,6 +37,7 @@ class Scene_vertices {
 public:
   explicit Scene_vertices(const Scene_geometry& geometry, std::size_t skin_joints)
       : geometry_(geometry), rigid_base_(std::uint32_t(skin_joints)) {
+    vertex_.reserve(geometry.vertices);
     for (std::uint32_t p = 0; p < geometry.parts.size(); ++p)
       for (std::uint32_t i = 0; i < geometry.parts[p].vertex_count; ++i) vertex_.push_back({p, i});
   }
@@ -113,7 +114,8 @@ struct Same_scene_vertex {
     std::uint64_t h = 0xcbf29ce484222325ull;
     for (std::size_t k = 0; k < 3; ++k) h = mix(h, vertices.rest(v)[k]);
     const Influences influences = vertices.influences(v);
-    for (std::size_t k = 0; k < influences.count; ++k) h = mix(mix(h, double(influences.entry[k])), influences.weight[k]);
+    for (std::size_t k = 0; k < influences.count; ++k)
+      h = mix(mix(h, double(influences.entry[k])), influences.weight[k]);
     if (vertices.morphed(v)) {  // the targets that move it: a part with fewer targets has zeros past them
       h = mix(h, double(vertices.part(v).node));
       for (std::size_t t = 0; t < vertices.part(v).targets; ++t) {

@@ -145,7 +145,8 @@ struct Same_trajectory {
 /// Without this, a point shared by many vertices (an unwelded mesh, a part scaled to nothing on
 /// its bone, an accessor of zeros) would cost a comparison per pair of them. O(V) expected.
 template <class Same>
-std::vector<std::uint32_t> unite_same_vertices(std::size_t num_vertices, const Same& same, Smallest_union_find& welded) {
+std::vector<std::uint32_t> unite_same_vertices(std::size_t num_vertices, const Same& same,
+                                               Smallest_union_find& welded) {
   std::unordered_set<std::uint32_t, Same, Same> first_of_class(num_vertices, same, same);
   std::vector<std::uint32_t> distinct;
   for (std::uint32_t v = 0; v < num_vertices; ++v) {
