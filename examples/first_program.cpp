@@ -1,6 +1,6 @@
 // A whole first program: reads two animations (or, given none, makes two bending tubes), then
 // prints the strain of the first, its temporal segments and how alike the two move.
-//   first_program A B     A and B: glTF files (FILE.glb#CLIP picks a clip), frame folders, quoted globs
+//   first_program A B     A and B: glTF clips as FILE.glb#CLIP (a file of one clip: FILE.glb), frame folders, globs
 #include <deformseg/io/read_animation.h>
 #include <deformseg/motion_similarity.h>
 #include <deformseg/strain.h>

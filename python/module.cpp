@@ -837,11 +837,14 @@ Complexity O(T V + F).)doc")
   m.def("read_animation", &read_input, "path"_a, "clip"_a = py::none(), "fps"_a = 30.0, "topology"_a = py::none(),
         "triangulate"_a = false, "weld"_a = py::none(), "refuse_defects"_a = false, "threads"_a = 0,
         R"doc(Reads an animation: a glTF clip (.glb, .gltf; clip by name or index, or "FILE.glb#CLIP";
-default the first, sampled at `fps`, default 30), a folder of frame files (.obj, .off, .ply, in
-natural order), a glob pattern, or a point cache (.pc2, .mdd) with `topology` (a mesh file).
+needed when the file holds several, which are then listed in the error; a file of one clip gives
+it; sampled at `fps`, default 30), a folder of frame files (.obj, .off, .ply, in natural order), a
+glob pattern, or a point cache (.pc2, .mdd) with `topology` (a mesh file).
 
 `triangulate` (default False) fans polygons; `weld` (default: True for glTF, False otherwise)
-merges vertices that coincide in every frame; degenerate, duplicate and non-manifold triangles
+merges vertices that coincide in every frame (for glTF, by what the file fixes: the same rest
+position, skin weights and morph deltas, so that every clip of a file has one mesh, the same
+vertices and triangles); degenerate, duplicate and non-manifold triangles
 are repaired unless `refuse_defects` (default False); `threads` (default 0: all) read in
 parallel. `Animation.repair` says what the repair changed. Raises InvalidInput naming the file,
 line and frame of the first problem, or for an option that does not apply (clip for frames,

@@ -484,6 +484,128 @@ TEST_CASE("gltf: refusals name the file and what is wrong", "[gltf]") {
   }
 }
 
+namespace {
+
+// Two quads side by side, x = 0..1 and x = 1..2, skinned on a root joint and a tip joint at x = 1,
+// each quad with its own copies of the seam's vertices (as glTF splits a mesh along a UV seam),
+// half on each joint: vertices 1 and 4 at (1, 0, 0) (vertex 4's weights 1 and 1, halved), 2 and 7
+// at (1, 1, 0). Then a triangle apart, 8 to 10, its vertex 8 at (1, 1, 0) too but a quarter on the
+// root and three quarters on the tip. Clip "still" does not move the tip; clip "bend" turns it by
+// 90 degrees about z, which takes vertex 8 away from vertices 2 and 7.
+Gltf_writer seam_scene() {
+  Gltf_writer w;
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0,  //
+                                 1, 1, 0, 1.5f, 2, 0, 0.5f, 2, 0},
+                                "VEC3");
+  const std::vector<std::uint8_t> joint_values{0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 1, 0,
+                                               0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  const int joints = w.values(joint_values, Gltf_writer::ubyte_type, "VEC4");
+  const int weights = w.floats({1, 0, 0, 0, 0.5f, 0.5f, 0, 0, 0.5f, 0.5f, 0, 0, 1, 0, 0, 0,      //
+                                1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 0.5f, 0.5f, 0, 0,            //
+                                0.25f, 0.75f, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0},
+                               "VEC4");
+  const int indices = w.indices({0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7, 8, 9, 10});
+  const int ibm = w.floats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1,    //
+                            1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -1, 0, 0, 1},  // translate(-1, 0, 0)
+                           "MAT4");
+  w.push("meshes", {{"name", "quads"},
+                    {"primitives", json::array({{{"attributes", {{"POSITION", position}, {"JOINTS_0", joints},
+                                                                 {"WEIGHTS_0", weights}}},
+                                                 {"indices", indices}}})}});
+  w.push("nodes", {{"name", "root"}, {"children", {1}}});
+  w.push("nodes", {{"name", "tip"}, {"translation", {1, 0, 0}}});
+  w.push("nodes", {{"name", "body"}, {"mesh", 0}, {"skin", 0}});
+  w.push("skins", {{"joints", {0, 1}}, {"inverseBindMatrices", ibm}});
+  w.push("scenes", {{"nodes", {0, 2}}});
+  json still = new_animation("still");
+  add_channel(still, w, 1, "translation", {0, 1}, {1, 0, 0, 1, 0, 0}, "VEC3");
+  w.push("animations", still);
+  json bend = new_animation("bend");
+  const float s = float(half_root2);
+  add_channel(bend, w, 1, "rotation", {0, 1}, {0, 0, 0, 1, 0, 0, s, s}, "VEC4");
+  w.push("animations", bend);
+  return w;
+}
+
+// The positions of output vertex `v` in every frame.
+std::vector<double> trajectory(const deformseg::Surface_mesh_animation& a, std::size_t v) {
+  std::vector<double> xyz;
+  for (std::size_t t = 0; t < a.num_frames(); ++t)
+    for (std::size_t k = 0; k < 3; ++k) xyz.push_back(a.frame_positions(t)[3 * v + k]);
+  return xyz;
+}
+
+}  // namespace
+
+TEST_CASE("gltf: welded by what the file fixes, so that every clip has one mesh", "[gltf][repair][weld]") {
+  Gltf_writer w = seam_scene();
+  SECTION("the same skin weights (after normalisation) are welded, other weights are not, in every clip") {
+    const deformseg::io::Gltf_file file(write(w, "seam.gltf"));
+    deformseg::io::Gltf_read_report still_report, bend_report;
+    const auto still = file.read({.clip = "still"}, &still_report);
+    const auto bend = file.read({.clip = "bend"}, &bend_report);
+    // Vertices 4 and 7 welded to 1 and 2; vertex 8 not, although it coincides with vertex 2 in
+    // every frame of "still": the triangle apart stays apart in both clips.
+    for (const auto* report : {&still_report, &bend_report}) {
+      CHECK(report->repair.welded_vertices == 2);
+      CHECK(report->repair.duplicated_vertices == 0);
+    }
+    CHECK(still.num_vertices() == 9);
+    CHECK(bend.num_vertices() == 9);
+    CHECK(std::ranges::equal(still.triangles(), bend.triangles()));
+    CHECK(std::ranges::equal(file.repair().triangles, bend.triangles()));
+    const std::vector<std::uint32_t> sources{0, 1, 2, 3, 5, 6, 8, 9, 10};
+    CHECK(file.repair().source_vertex == sources);
+    // A welded vertex moves as all its copies; vertex 8 leaves vertex 2 when the tip turns.
+    const Sampled_gltf sampled = file.sample({.clip = "bend"});
+    for (std::size_t t = 0; t < sampled.report.frames; ++t)
+      for (std::size_t k = 0; k < 3; ++k) {
+        const auto at = [&](std::size_t v) { return sampled.positions[(t * 11 + v) * 3 + k]; };
+        CHECK(at(4) == Approx(at(1)).margin(1e-12));
+        CHECK(at(7) == Approx(at(2)).margin(1e-12));
+      }
+    CHECK(trajectory(bend, 2) != trajectory(bend, 6));
+    CHECK(trajectory(still, 2) == trajectory(still, 6));
+  }
+  SECTION("the same weights with different morph target deltas are not welded") {
+    const std::vector<float> up{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0,
+                                0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0};  // vertices 4 and 7 up
+    w.doc["meshes"][0]["primitives"][0]["targets"] = json::array({{{"POSITION", w.floats(up, "VEC3")}}});
+    const deformseg::io::Gltf_file file(write(w, "seam_morph.gltf"));
+    // The target's weight is 0 in both clips, but a clip may set it: vertices 4 and 7 stay apart.
+    for (const char* clip : {"still", "bend"}) CHECK(file.read({.clip = clip}).num_vertices() == 11);
+  }
+  SECTION("without welding, the file's vertices") {
+    const deformseg::io::Gltf_file file(write(w, "seam_unwelded.gltf"));
+    CHECK(file.read({.clip = "still", .repair = {.weld = false}}).num_vertices() == 11);
+  }
+}
+
+TEST_CASE("read_animation: FILE.glb#CLIP names the clip; a file of several clips needs one", "[gltf][io]") {
+  const std::string path = write(seam_scene(), "seam_clips.glb").string();
+  deformseg::io::Repair_report report;
+  const auto bend = deformseg::io::read_animation(path + "#bend", {}, &report);
+  CHECK(bend.num_frames() == 31);
+  CHECK(report.welded_vertices == 2);
+  const auto by_option = deformseg::io::read_animation(path, {.clip = "bend"});
+  CHECK(std::ranges::equal(bend.all_positions(), by_option.all_positions()));
+  CHECK(std::ranges::equal(bend.all_positions(), deformseg::io::read_animation(path + "#1").all_positions()));
+  CHECK(deformseg::io::animation_format(path + "#bend") == "glb");
+  CHECK_THROWS_WITH(deformseg::io::read_animation(path + "#bend", {.clip = "still"}), Contains("given twice"));
+  CHECK_THROWS_WITH(deformseg::io::read_animation(path + "#walk"),
+                    Contains("no clip 'walk'") && Contains("'still', 'bend'") && Contains(path));
+  // No clip named: refused, naming the clips and how to choose, where the first was read unsaid.
+  CHECK_THROWS_WITH(deformseg::io::read_animation(path),
+                    Contains("holds 2 clips") && Contains("seam_clips.glb#still") && Contains("'still', 'bend'") &&
+                        Contains(path));
+  // A file of one clip gives it; a file of none its rest pose.
+  Gltf_writer one = seam_scene();
+  one.doc["animations"].erase(0);
+  CHECK(deformseg::io::read_animation(write(one, "seam_one_clip.glb").string()).num_frames() == 31);
+  one.doc.erase("animations");
+  CHECK(deformseg::io::read_animation(write(one, "seam_no_clip.glb").string()).num_frames() == 1);
+}
+
 // ---- The shared characters (../shared/data/characters, SOURCE.md and motions.csv) ------------
 
 namespace {
@@ -600,6 +722,35 @@ TEST_CASE("gltf: the five KayKit bodies give the same frames per clip", "[gltf][
     REQUIRE(other.skins.size() == 1);
     CHECK(other.skins[0].joints == 41);
   }
+}
+
+TEST_CASE("gltf: every clip of a shared character has the file's one mesh, seams welded",
+          "[gltf][data][repair][weld]") {
+  // Vertices and triangles after welding and repair: the same for every clip of a file. The KayKit
+  // props that overlap (the Knight's shields, the Rogue's crossbows, on nodes of their own) stay
+  // apart, where welding per clip merged some of their vertices and dropped triangles.
+  const std::map<std::string, std::pair<std::size_t, std::size_t>> expected{
+      {"Barbarian.glb", {3423, 6543}}, {"Fox.glb", {290, 576}},      {"Knight.glb", {3665, 6952}},
+      {"Mage.glb", {2951, 5683}},      {"RobotExpressive.glb", {1820, 3234}}, {"Rogue.glb", {3326, 6373}},
+      {"Rogue_Hooded.glb", {3144, 6035}}};
+  std::size_t files = 0;
+  for (const auto& entry : fs::directory_iterator(characters())) {
+    if (!deformseg::io::is_gltf(entry.path())) continue;
+    const std::string name = entry.path().filename().string();
+    INFO(name);
+    ++files;
+    const deformseg::io::Gltf_file file(entry.path());
+    const auto mesh = file.repair();
+    CHECK(std::pair(mesh.source_vertex.size(), mesh.triangles.size()) == expected.at(name));
+    CHECK(mesh.report.welded_vertices > 0);
+    for (const std::string& clip : file.clip_names()) {
+      INFO(clip);
+      const auto animation = file.read({.clip = clip});
+      CHECK(animation.num_vertices() == mesh.source_vertex.size());
+      CHECK(std::ranges::equal(animation.triangles(), mesh.triangles));
+    }
+  }
+  CHECK(files == expected.size());
 }
 
 namespace {

@@ -412,7 +412,7 @@ TEST_CASE("weld_vertices: many vertices on one trajectory are one vertex; 0 and 
   positions[3 * n + 3 * 2] = 1.0;   // x only: the diagonal is 1, the welding distance 1e-3
   positions[3 * n + 3 * 3] = 5e-4;  // within it of the origin, not of vertex 2
   const std::vector<std::uint32_t> welded =
-      internal::weld_vertices(std::span<const double>(positions), n, 1e-3);
+      deformseg::internal::weld_vertices(std::span<const double>(positions), n, 1e-3);
   REQUIRE(welded.size() == n);
   CHECK(welded[0] == 0);
   CHECK(welded[1] == 0);

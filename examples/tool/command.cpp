@@ -22,12 +22,16 @@ void add_input_options(CLI::App& command, Input_options& options) {
                    "Fan-triangulate polygons instead of rejecting them");
   command.add_option("--threads", options.threads, "Threads to use (0: all)")
       ->check(CLI::NonNegativeNumber);
-  command.add_option("--clip", options.clip, "glTF: the clip to read, by name or index (default: the first)");
+  command.add_option("--clip", options.clip,
+                     "glTF: the clip to read, by name or index (or as FILE.glb#CLIP); required when the file "
+                     "holds several");
   command.add_option("--fps", options.fps, "glTF: frames per second the clip is sampled at")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   CLI::Option* weld = command.add_flag(
-      "--weld", options.weld, "Weld the vertices that coincide in every frame (always done for glTF)");
+      "--weld", options.weld,
+      "Weld the vertices that coincide in every frame (glTF files are always welded, by the rule that gives "
+      "every clip of a file one mesh: the same rest position, skin weights and morph deltas)");
   command.add_flag("--no-weld", options.no_weld, "glTF: keep the file's vertices, in its order, unwelded")
       ->excludes(weld);
   command.add_flag("--refuse-defects", options.refuse_defects,
@@ -51,7 +55,8 @@ io::Repair_options repair_options(const Input_options& options) {
           .defects = options.refuse_defects ? io::Defect_policy::refuse : io::Defect_policy::repair};
 }
 
-// "Fox.glb#Walk" names the clip Walk of Fox.glb, for commands that take many inputs.
+}  // namespace
+
 Input_options with_clip_of_name(Input_options options) {
   auto [file, clip] = io::split_clip_suffix(options.input);
   if (!clip) return options;
@@ -62,8 +67,6 @@ Input_options with_clip_of_name(Input_options options) {
   return options;
 }
 
-}  // namespace
-
 Surface_mesh_animation read_input(const Input_options& given, Input_report* report) {
   const Input_options options = with_clip_of_name(given);
   check_input_options(options);
@@ -72,10 +75,11 @@ Surface_mesh_animation read_input(const Input_options& given, Input_report* repo
   Surface_mesh_animation animation = [&] {
     if (io::is_gltf(options.input)) {
       found.gltf.emplace();
-      Surface_mesh_animation read = io::read_gltf(options.input,
-                                                  {.clip = options.clip, .fps = options.fps,
-                                                   .repair = repair_options(options), .threads = options.threads},
-                                                  &*found.gltf);
+      const io::Gltf_file file(options.input);
+      if (!options.first_clip_by_default) io::require_clip_choice(file, options.clip);
+      Surface_mesh_animation read = file.read({.clip = options.clip, .fps = options.fps,
+                                               .repair = repair_options(options), .threads = options.threads},
+                                              &*found.gltf);
       found.repair = found.gltf->repair;
       return read;
     }

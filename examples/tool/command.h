@@ -29,11 +29,12 @@ struct Input_options {
   std::string topology;
   bool triangulate = false;
   int threads = 0;
-  std::string clip;         // glTF: a clip's name or index; empty: the first
+  std::string clip;         // glTF: a clip's name or index; empty: the only one (several refused)
   double fps = 30;          // glTF: frames per second of the sampling
   bool weld = false;        // --weld: weld a frame sequence's or a point cache's vertices
   bool no_weld = false;     // --no-weld: keep a glTF file's vertices as they are
   bool refuse_defects = false;  // --refuse-defects: fail on degenerate or non-manifold triangles
+  bool first_clip_by_default = false;  // info: a glTF file of several clips, none named, gives its first
 };
 
 /// What reading the input found besides the animation.
@@ -45,6 +46,11 @@ struct Input_report {
 /// Adds INPUT, --topology, --triangulate, --threads, --clip, --fps, --weld, --no-weld and
 /// --refuse-defects to a sub-command.
 void add_input_options(CLI::App& command, Input_options& options);
+
+/// The options with the clip of an input "Fox.glb#Walk" moved to `clip` (Walk) and the input
+/// made the file's name (Fox.glb); others as they are.
+/// @throws invalid_input when a clip is given by `--clip` and after '#' both.
+Input_options with_clip_of_name(Input_options options);
 
 /// Reads the animation the options name, saying on standard error what it reads and, when the
 /// repair changed the mesh, what it changed; what it found goes to `report` when not null.

@@ -36,7 +36,7 @@ std::vector<std::filesystem::path> write(const Surface_mesh_animation& animation
     return io::write_sequence(animation, out, {.format = format});
   }
   internal::create_folder(out);
-  const std::string stem = input_stem(o.input.input);
+  const std::string stem = input_stem(with_clip_of_name(o.input).input);
   const auto topology = out / (stem + ".obj");
   const auto cache = out / (stem + "." + o.format);
   io::write_obj(animation, 0, topology);

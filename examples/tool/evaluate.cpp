@@ -85,6 +85,7 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
   }
   for (const std::size_t i : of_file) {
     try {
+      io::require_clip_choice(*gltf, rows[i].item.clip);  // an empty clip names a file's only one
       out.animations.push_back(gltf->read({.clip = rows[i].item.clip, .fps = o.fps, .threads = o.threads}));
       out.clips.push_back(rows[i]);
     } catch (const invalid_input& e) {

@@ -122,12 +122,15 @@ void add_info_command(CLI::App& app) {
   auto options = std::make_shared<Info_options>();
   CLI::App* command = app.add_subcommand(
       "info", "Frames, vertices, triangles, bounding box over all frames, format, memory used and what "
-              "the repair of the mesh changed; for glTF also the clips, skins and meshes");
+              "the repair of the mesh changed; for glTF also the clips, skins and meshes (of a file of several "
+              "clips with none named, the first clip is read, and named)");
   add_input_options(*command, options->input);
   command->add_flag("--files", options->files,
                     "List the frame files of a folder or glob in the order they are read, frame by frame");
   add_json_option(*command, options->json, "the answer");
   command->callback([options] {
+    options->input = with_clip_of_name(options->input);  // "Fox.glb#Walk": the file is Fox.glb
+    options->input.first_clip_by_default = true;  // info lists the clips of a file whichever it reads
     check_files_option(*options);
     Input_report report;
     const nlohmann::json info = describe(*options, report);

@@ -35,6 +35,21 @@ def test_read_animation_as_info_gltf(tool, fox):
     assert deformseg.read_animation(fox, clip="Run", fps=12).num_frames == at_12["frames"]
 
 
+def test_read_animation_needs_a_clip_of_a_file_of_several(tool, fox):
+    """A clip is named ("FILE.glb#CLIP" or clip=) for a file of several, as the tool asks; without
+    one, the file's clips are listed where the first was read unsaid."""
+    walk = deformseg.read_animation(f"{fox}#Walk")
+    assert walk.num_frames == tool("info", f"{fox}#Walk", "--json", "-")["frames"]
+    assert np.array_equal(walk.frames, deformseg.read_animation(fox, clip="Walk").frames)
+    with pytest.raises(deformseg.InvalidInput, match=r"holds 3 clips: .*'Survey', 'Walk', 'Run'"):
+        deformseg.read_animation(fox)
+    with pytest.raises(deformseg.InvalidInput, match="given twice"):
+        deformseg.read_animation(f"{fox}#Walk", clip="Run")
+    # Every clip of the file has its one mesh.
+    survey, run = deformseg.read_animation(fox, clip="Survey"), deformseg.read_animation(fox, clip="Run")
+    assert np.array_equal(survey.faces, run.faces) and np.array_equal(walk.faces, run.faces)
+
+
 # ---- strain ------------------------------------------------------------------------------------
 
 STRAIN_OPTIONS = [

@@ -140,49 +140,43 @@ struct Same_trajectory {
   }
 };
 
-/// Unites the vertices whose trajectories are the same, and returns the smallest vertex of each
-/// trajectory in increasing order: the only ones the grid then compares. Without this, a point
-/// shared by many vertices (an unwelded mesh, a part scaled to nothing on its bone, an accessor
-/// of zeros) would cost a comparison per pair of them. O(T V) expected.
-template <std::floating_point T>
-std::vector<std::uint32_t> unite_same_trajectories(std::span<const T> positions, std::size_t num_vertices,
-                                                   Smallest_union_find& welded) {
-  const std::vector<std::uint64_t> hashes = trajectory_hashes(positions, num_vertices);
-  const Same_trajectory<T> same{positions, num_vertices, hashes};
-  std::unordered_set<std::uint32_t, Same_trajectory<T>, Same_trajectory<T>> first_of_trajectory(num_vertices, same,
-                                                                                               same);
+/// Unites the vertices that `same` finds equal (it hashes a vertex and compares two), and returns
+/// the smallest vertex of each class in increasing order: the only ones the grid then compares.
+/// Without this, a point shared by many vertices (an unwelded mesh, a part scaled to nothing on
+/// its bone, an accessor of zeros) would cost a comparison per pair of them. O(V) expected.
+template <class Same>
+std::vector<std::uint32_t> unite_same_vertices(std::size_t num_vertices, const Same& same,
+                                               Smallest_union_find& welded) {
+  std::unordered_set<std::uint32_t, Same, Same> first_of_class(num_vertices, same, same);
   std::vector<std::uint32_t> distinct;
   for (std::uint32_t v = 0; v < num_vertices; ++v) {
-    const auto [first, inserted] = first_of_trajectory.insert(v);
+    const auto [first, inserted] = first_of_class.insert(v);
     if (inserted) distinct.push_back(v);
     else welded.unite(*first, v);
   }
   return distinct;
 }
 
-/// Welds the vertices of an animation (`T x 3V` positions, T >= 1) that coincide in every frame
-/// within `tolerance` times the diagonal of the bounding box of all frames, and the vertices that coincide with those (the transitive closure).
+/// Welds vertices: first those `same` finds equal (see `unite_same_vertices`); then, among the
+/// first of each class, every pair that `coincide` accepts of the vertices whose `points` (3
+/// finite coordinates per vertex) lie in the same or neighbouring cells of a hash grid of `cell`-sized
+/// cells; then the transitive closure.
 /// @return the welded vertex of each input vertex, numbered in the order of their smallest input vertex.
-/// Vertices of the same trajectory are united first; among the others, candidates come from a
-/// hash grid of cells no smaller than `distance` on frame 0: the vertices in the 27 cells around
-/// a vertex, each checked over all frames. O(T V) expected, unless many vertices of different
-/// trajectories lie within `distance` of each other in frame 0.
-template <std::floating_point T>
-std::vector<std::uint32_t> weld_vertices(std::span<const T> positions, std::size_t num_vertices, double tolerance) {
-  // Cells no smaller than `distance`, but not so small that a cell index overflows (a distance
-  // of 0 still welds vertices in the same place); indices from the corner of frame 0's box.
-  const Bounding_box box = bounding_box(positions.first(3 * num_vertices));
-  const double extent = bounding_box(positions).diagonal();
-  const double distance = tolerance * extent;
-  const double cell = extent == 0 ? 1.0 : std::max(distance, extent * 0x1p-40);
-  const auto cell_of = [&](std::size_t v) {
+/// @pre `coincide` accepts only vertices whose points are less than `cell` apart in each coordinate.
+/// O(V) expected, unless many vertices `same` tells apart lie within a cell of each other.
+template <class Same, class Coincide>
+std::vector<std::uint32_t> weld_on_grid(std::span<const double> points, double cell, const Same& same,
+                                        const Coincide& coincide) {
+  const std::size_t num_vertices = points.size() / 3;
+  const Bounding_box box = bounding_box(points);
+  const auto cell_of = [&](std::size_t v) {  // indices from the corner of the box
     Grid_cell c;
     for (std::size_t k = 0; k < 3; ++k)
-      c.index[k] = static_cast<std::int64_t>(std::floor((double(positions[3 * v + k]) - box.low[k]) / cell));
+      c.index[k] = static_cast<std::int64_t>(std::floor((points[3 * v + k] - box.low[k]) / cell));
     return c;
   };
   Smallest_union_find welded(num_vertices);
-  const std::vector<std::uint32_t> distinct = unite_same_trajectories(positions, num_vertices, welded);
+  const std::vector<std::uint32_t> distinct = unite_same_vertices(num_vertices, same, welded);
   std::unordered_map<Grid_cell, std::vector<std::uint32_t>, Grid_cell_hash> grid;
   grid.reserve(distinct.size());
   for (const std::uint32_t v : distinct) grid[cell_of(v)].push_back(v);
@@ -195,12 +189,37 @@ std::vector<std::uint32_t> weld_vertices(std::span<const T> positions, std::size
           const auto found = grid.find({{home.index[0] + dx, home.index[1] + dy, home.index[2] + dz}});
           if (found == grid.end()) continue;
           for (const std::uint32_t w : found->second)
-            if (w < v && welded.find(w) != welded.find(v) &&
-                coincide_in_every_frame(positions, num_vertices, v, w, distance))
-              welded.unite(v, w);
+            if (w < v && welded.find(w) != welded.find(v) && coincide(v, w)) welded.unite(v, w);
         }
   }
   return welded.numbered_sets();
+}
+
+/// The cell of a welding grid for vertices at most `distance` apart in a box of diagonal
+/// `extent`: no smaller than `distance`, but not so small that a cell index overflows (a distance
+/// of 0 still welds vertices in the same place).
+inline double welding_cell(double distance, double extent) {
+  return extent == 0 ? 1.0 : std::max(distance, extent * 0x1p-40);
+}
+
+/// Welds the vertices of an animation (`T x 3V` positions, T >= 1) that coincide in every frame
+/// within `tolerance` times the diagonal of the bounding box of all frames, and the vertices that
+/// coincide with those (the transitive closure).
+/// @return the welded vertex of each input vertex, numbered in the order of their smallest input vertex.
+/// Vertices of the same trajectory are united first; among the others, candidates come from a
+/// hash grid of cells no smaller than `distance` on frame 0: the vertices in the 27 cells around
+/// a vertex, each checked over all frames. O(T V) expected, unless many vertices of different
+/// trajectories lie within `distance` of each other in frame 0.
+template <std::floating_point T>
+std::vector<std::uint32_t> weld_vertices(std::span<const T> positions, std::size_t num_vertices, double tolerance) {
+  const double extent = bounding_box(positions).diagonal();
+  const double distance = tolerance * extent;
+  const std::vector<double> first_frame(positions.begin(), positions.begin() + std::ptrdiff_t(3 * num_vertices));
+  const std::vector<std::uint64_t> hashes = trajectory_hashes(positions, num_vertices);
+  return weld_on_grid(std::span<const double>(first_frame), welding_cell(distance, extent),
+                      Same_trajectory<T>{positions, num_vertices, hashes}, [&](std::uint32_t v, std::uint32_t w) {
+                        return coincide_in_every_frame(positions, num_vertices, v, w, distance);
+                      });
 }
 
 }  // namespace deformseg::internal

@@ -19,6 +19,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/gltf_animation.h>
 #include <deformseg/internal/gltf_mesh.h>
+#include <deformseg/internal/gltf_welding.h>
 #include <deformseg/io/mesh_repair.h>
 
 #include <tiny_gltf.h>
@@ -52,8 +53,9 @@ struct Gltf_read_options {
   std::string clip{};
   /// @brief Frames per second the clip is sampled at. Default 30.
   double fps = 30;
-  /// @brief The repair `read_gltf` applies (see `mesh_repair.h`). Default: welding on (glTF
-  /// splits vertices along UV seams and hard edges), defects repaired.
+  /// @brief The repair `read_gltf` applies (see `mesh_repair.h`; welding by what the file fixes,
+  /// the same for every clip: see `Gltf_file::repair`). Default: welding on (glTF splits vertices
+  /// along UV seams and hard edges), defects repaired.
   Repair_options repair{.weld = true};
   /// @brief Threads that sample frames in parallel: 0 (default) uses OpenMP's default. The
   /// result does not depend on it.
@@ -294,6 +296,18 @@ inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_opti
   return sampled;
 }
 
+/// The connectivity every clip of the file shares: the scene's vertices welded by what the file
+/// fixes (see `gltf_welding.h`) when `options.weld`, then the triangles repaired once.
+inline io::Repaired_triangles repair_scene(const Rig& rig, const io::Repair_options& options) {
+  const std::span<const std::array<std::uint32_t, 3>> triangles(rig.geometry.triangles);
+  check_repair_input(std::span<const double>(), rig.geometry.vertices, triangles, options);
+  std::size_t skin_joints = 0;
+  for (const auto& joints : rig.skins.joints) skin_joints += joints.size();
+  std::vector<std::uint32_t> welded;
+  if (options.weld) welded = weld_scene_vertices(rig.geometry, skin_joints, options.weld_tolerance);
+  return repair_welded(triangles, welding_of(std::move(welded), rig.geometry.vertices), options.defects);
+}
+
 inline io::Gltf_mesh_info mesh_info(const tinygltf::Model& model, std::size_t mesh) {
   io::Gltf_mesh_info info{.name = model.meshes[mesh].name};
   for (std::size_t p = 0; p < model.meshes[mesh].primitives.size(); ++p) {
@@ -406,25 +420,56 @@ public:
     }
   }
 
-  /// @brief Reads one clip as an animation: `sample`, then `make_repaired_animation` with
-  /// `options.repair` (welding on by default).
+  /// @brief The connectivity every clip of the file shares, repaired by `options` and decided
+  /// from the file alone, whatever the clip: what `read` gives every clip.
+  ///
+  /// With `options.weld`, two vertices are welded when they coincide in every frame of every clip
+  /// by what the file fixes: their rest positions (POSITION, in their mesh's space) are within
+  /// `weld_tolerance` times the diagonal of the bounding box of all rest positions; they have the
+  /// same influences (the same joints of the same skins, weights after normalisation within
+  /// `weld_tolerance`; or, for a vertex of an unskinned primitive or of no weight, the same node);
+  /// and the same morph target deltas (within the same distance) on the same node, unless neither
+  /// has any. Vertices that coincide with a welded one join it (transitive closure). The triangles
+  /// are then repaired once, as `repair_triangles` steps 2 to 4 do (or the first defect refused).
+  /// Two vertices that coincide in one clip only (a hand resting on a hip) are not welded.
+  /// @param options `weld` (the glTF default: true), `weld_tolerance` (1e-6), `defects` (repair).
+  /// @return as `repair_triangles`: the triangles over the output vertices, the source of every
+  /// output vertex and triangle (input vertices in the order of `Sampled_gltf`), the counts.
+  /// @pre `options.weld_tolerance` is finite and at least 0.
+  /// @throws invalid_input naming the file, as `repair_triangles`.
+  /// @par Complexity O(V + F log F) expected (a hash grid on the rest positions, as
+  /// `repair_triangles` on frame 0).
+  Repaired_triangles repair(const Repair_options& options = Gltf_read_options{}.repair) const {
+    try {
+      return internal::gltf::repair_scene(file_.rig, options);
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path_.string()});
+    }
+  }
+
+  /// @brief Reads one clip as an animation: `sample`, then the connectivity of
+  /// `repair(options.repair)`, which every clip of the file shares, each output vertex moving as
+  /// its source vertex (welding on by default).
   /// @tparam Graph the connectivity type (default `Surface_mesh`).
   /// @tparam Coordinate the stored coordinate type (default `double`).
   /// @param options `clip` (default: the first), `fps` (30), `repair` (weld, defects repaired),
   /// `threads` (0: all).
   /// @param report where to store the clip read, its times and frames, the primitives skipped
   /// and what the repair changed, when not null.
-  /// @pre as `sample`.
-  /// @throws invalid_input naming the file, as `sample` and `make_repaired_animation`.
-  /// @par Complexity that of `sample`, plus the repair's O(T V + F log F).
+  /// @pre as `sample` and `repair`.
+  /// @throws invalid_input naming the file, as `sample` and `repair`.
+  /// @par Complexity that of `sample`, plus the repair's O(V + F log F) and a copy of the positions.
   template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
   Deforming_mesh<Graph, Coordinate> read(const Gltf_read_options& options = {},
                                          Gltf_read_report* report = nullptr) const {
     Sampled_gltf sampled = sample(options);
+    const Repaired_triangles repaired = repair(options.repair);
     try {
-      Deforming_mesh<Graph, Coordinate> animation = make_repaired_animation<Graph, Coordinate>(
-          std::span<const double>(sampled.positions), sampled.num_vertices,
-          std::span<const std::array<std::uint32_t, 3>>(sampled.triangles), options.repair, &sampled.report.repair);
+      Deforming_mesh<Graph, Coordinate> animation = internal::animation_of<Graph, Coordinate>(
+          repaired,
+          internal::positions_of_sources<Coordinate>(std::span<const double>(sampled.positions), sampled.num_vertices,
+                                                     repaired.source_vertex),
+          &sampled.report.repair);
       if (report) *report = std::move(sampled.report);
       return animation;
     } catch (const invalid_input& e) {
@@ -445,6 +490,26 @@ private:
   internal::gltf::Loaded_file file_;
 };
 
+/// @brief The rule of the readers that take any animation (`read_animation`, the tool's commands,
+/// Python's `read_animation`) for a glTF file and the clip asked: a clip must be named
+/// ("FILE.glb#CLIP", or a clip option) when the file holds more than one, rather than the first
+/// read unsaid; a file of one clip gives it, a file without animation its rest pose.
+/// @param file the file to read.
+/// @param clip the clip asked (a name or an index); empty for none.
+/// @throws invalid_input naming the file when `clip` is empty and the file holds two clips or
+/// more: the message lists them.
+/// @par Complexity O(clips).
+inline void require_clip_choice(const Gltf_file& file, const std::string& clip) {
+  const std::vector<std::string> names = file.clip_names();
+  if (!clip.empty() || names.size() < 2) return;
+  std::string list;
+  for (const std::string& name : names) list.append(list.empty() ? "" : ", ").append("'" + name + "'");
+  throw invalid_input("the file holds " + std::to_string(names.size()) + " clips: name the one to read, as in \"" +
+                          file.path().filename().string() + "#" + names.front() + "\" or by the clip option (the " +
+                          "clips: " + list + ")",
+                      {.file = file.path().string()});
+}
+
 /// @brief Samples one clip of a glTF 2.0 file into positions and triangles, without repair:
 /// `Gltf_file(path).sample(options)` (see `Gltf_file` for what is read and how).
 ///
@@ -461,9 +526,9 @@ inline Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_re
   return Gltf_file(path).sample(options);
 }
 
-/// @brief Reads one clip of a glTF 2.0 file as an animation: `sample_gltf`, then
-/// `make_repaired_animation` with `options.repair` (welding on by default); that is,
-/// `Gltf_file(path).read<Graph, Coordinate>(options, report)`.
+/// @brief Reads one clip of a glTF 2.0 file as an animation: `sample_gltf`, then the connectivity
+/// every clip of the file shares (`Gltf_file::repair` with `options.repair`, welding on by
+/// default); that is, `Gltf_file(path).read<Graph, Coordinate>(options, report)`.
 ///
 /// @tparam Graph the connectivity type (default `Surface_mesh`).
 /// @tparam Coordinate the stored coordinate type (default `double`).
@@ -473,9 +538,9 @@ inline Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_re
 /// @param report where to store the clip read, its times and frames, the primitives skipped and
 /// what the repair changed, when not null.
 /// @pre as `sample_gltf`.
-/// @throws invalid_input naming the file, as `sample_gltf` and `make_repaired_animation`.
-/// @par Complexity that of `sample_gltf`, plus the repair's O(T V + F log F).
-/// @sa sample_gltf, gltf_contents, Gltf_file, make_repaired_animation
+/// @throws invalid_input naming the file, as `sample_gltf` and `Gltf_file::repair`.
+/// @par Complexity that of `sample_gltf`, plus the repair's O(V + F log F) and a copy of the positions.
+/// @sa sample_gltf, gltf_contents, Gltf_file, Gltf_file::repair
 template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
 Deforming_mesh<Graph, Coordinate> read_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {},
                                             Gltf_read_report* report = nullptr) {

@@ -38,10 +38,13 @@ enum class Defect_policy {
 /// @brief How a mesh is repaired (every reader takes these).
 struct Repair_options {
   /// @brief Merge vertices whose positions coincide in every frame (within `weld_tolerance`).
-  /// Default false for frame sequences and point caches; the glTF reader's default is true.
+  /// Default false for frame sequences and point caches; the glTF reader's default is true, and
+  /// it welds by what the file fixes for all its clips (rest position, skin influences, morph
+  /// deltas: see `Gltf_file::repair`), so that every clip of a file has one mesh.
   bool weld = false;
   /// @brief Two vertices coincide when, in every frame, no coordinate differs by more than this
-  /// fraction of the diagonal of the bounding box over all frames. Default 1e-6.
+  /// fraction of the diagonal of the bounding box over all frames (glTF: of the bounding box of
+  /// the rest positions, and skin weights differ by no more than this). Default 1e-6.
   double weld_tolerance = 1e-6;
   /// @brief Repair (default) or refuse degenerate, duplicate and non-manifold triangles.
   Defect_policy defects = Defect_policy::repair;
@@ -136,19 +139,24 @@ struct Welding {
   std::vector<std::uint32_t> representative{};
 };
 
-template <std::floating_point T>
-Welding weld(std::span<const T> positions, std::size_t num_vertices, const io::Repair_options& options) {
-  Welding result;
-  if (options.weld && !positions.empty()) {
-    check_finite_positions(positions, num_vertices);
-    result.welded = weld_vertices(positions, num_vertices, options.weld_tolerance);
-  } else {
+/// The welding of `welded`, the welded vertex of each input vertex numbered in the order of their
+/// smallest input vertex; the identity when it is empty and `num_vertices` is not.
+inline Welding welding_of(std::vector<std::uint32_t> welded, std::size_t num_vertices) {
+  Welding result{.welded = std::move(welded)};
+  if (result.welded.empty()) {
     result.welded.resize(num_vertices);
     std::iota(result.welded.begin(), result.welded.end(), 0u);
   }
-  for (std::uint32_t v = 0; v < num_vertices; ++v)
+  for (std::uint32_t v = 0; v < result.welded.size(); ++v)
     if (result.welded[v] == result.representative.size()) result.representative.push_back(v);
   return result;
+}
+
+template <std::floating_point T>
+Welding weld(std::span<const T> positions, std::size_t num_vertices, const io::Repair_options& options) {
+  if (!options.weld || positions.empty()) return welding_of({}, num_vertices);
+  check_finite_positions(positions, num_vertices);
+  return welding_of(weld_vertices(positions, num_vertices, options.weld_tolerance), num_vertices);
 }
 
 /// The vertex a triangle repeats, if any.
@@ -301,6 +309,19 @@ inline io::Repaired_triangles repaired_triangles(Oriented_soup soup, const Weldi
   return result;
 }
 
+/// Steps 2 to 4 of `repair_triangles` (or the refusal of the first defect) once `welding` is made.
+inline io::Repaired_triangles repair_welded(std::span<const Soup_triangle> triangles, const Welding& welding,
+                                            io::Defect_policy defects) {
+  std::vector<Soup_triangle> welded(triangles.size());
+  for (std::size_t j = 0; j < triangles.size(); ++j)
+    for (std::size_t k = 0; k < 3; ++k) welded[j][k] = welding.welded[triangles[j][k]];
+  const Screened_triangles screened = screen_triangles(welded);
+  if (defects == io::Defect_policy::refuse) refuse_defects(triangles, welded, screened, welding);
+  Oriented_soup soup = soup_of(welded, screened.kept, welding.representative.size());
+  make_oriented_manifold(soup);
+  return repaired_triangles(std::move(soup), welding, screened, triangles.size());
+}
+
 }  // namespace deformseg::internal
 
 namespace deformseg::io {
@@ -358,15 +379,7 @@ Repaired_triangles repair_triangles(std::span<const T> positions, std::size_t nu
                                     std::span<const std::array<std::uint32_t, 3>> triangles,
                                     const Repair_options& options = {}) {
   internal::check_repair_input(positions, num_vertices, triangles, options);
-  const internal::Welding welding = internal::weld(positions, num_vertices, options);
-  std::vector<internal::Soup_triangle> welded(triangles.size());
-  for (std::size_t j = 0; j < triangles.size(); ++j)
-    for (std::size_t k = 0; k < 3; ++k) welded[j][k] = welding.welded[triangles[j][k]];
-  const internal::Screened_triangles screened = internal::screen_triangles(welded);
-  if (options.defects == Defect_policy::refuse) internal::refuse_defects(triangles, welded, screened, welding);
-  internal::Oriented_soup soup = internal::soup_of(welded, screened.kept, welding.representative.size());
-  internal::make_oriented_manifold(soup);
-  return internal::repaired_triangles(std::move(soup), welding, screened, triangles.size());
+  return internal::repair_welded(triangles, internal::weld(positions, num_vertices, options), options.defects);
 }
 
 }  // namespace deformseg::io

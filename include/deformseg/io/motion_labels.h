@@ -25,7 +25,8 @@ struct Labelled_clip {
   /// @brief The animation: the `file` column, relative to the labels file's folder (an absolute
   /// path is kept): a `.glb`/`.gltf` file, a folder of frames, a point cache...
   std::filesystem::path file{};
-  /// @brief Its labels; `item.clip` names the clip in `file` (empty: the file's first or only one).
+  /// @brief Its labels; `item.clip` names the clip in `file` (empty: none; the tool's `evaluate` then reads
+  /// a file of one clip, or a `FILE.glb#CLIP` in the file column, and refuses a file of several).
   Labelled_item item{};
 };
 

@@ -43,7 +43,9 @@ struct Animation_read_options {
   /// that is degenerate, duplicate and non-manifold triangles repaired, and vertices welded for
   /// glTF (which splits them along seams) but not for frame sequences and point caches.
   std::optional<Repair_options> repair{};
-  /// @brief glTF: the clip to read, by name or index; empty (default) for the first.
+  /// @brief glTF: the clip to read, by name or index (or after a '#' in the input, "Fox.glb#Walk").
+  /// Empty (default): the file's only clip, or its rest pose when it has none; a file of several
+  /// clips is refused, naming them (see `require_clip_choice`).
   std::string clip{};
   /// @brief glTF: frames per second the clip is sampled at. Default 30.
   double fps = 30;
@@ -65,13 +67,13 @@ inline std::pair<std::string, std::optional<std::string>> split_clip_suffix(cons
   return {input.substr(0, hash), input.substr(hash + 1)};
 }
 
-/// @brief The format of an input, by its extension: "gltf" or "glb", "pc2" or "mdd" for a point
-/// cache, else that of its frame files ("obj", "off" or "ply").
+/// @brief The format of an input, by its extension: "gltf" or "glb" (with or without a "#CLIP"
+/// after it), "pc2" or "mdd" for a point cache, else that of its frame files ("obj", "off" or "ply").
 /// @throws invalid_input when the input is a frame sequence with no frame file.
 /// @par Complexity that of listing the folder, for a frame sequence.
 inline std::string animation_format(const std::string& input) {
   const auto extension = [](const std::filesystem::path& path) { return internal::lower_extension(path).substr(1); };
-  const std::string ext = internal::lower_extension(input);
+  const std::string ext = internal::lower_extension(split_clip_suffix(input).first);
   if (ext == ".pc2" || ext == ".mdd" || ext == ".gltf" || ext == ".glb") return ext.substr(1);
   return extension(list_frame_files(input).front());
 }
@@ -87,9 +89,10 @@ Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input, cons
   if (options.topology)
     throw invalid_input("a glTF file has its own connectivity: no topology mesh applies", {.file = input});
 #if DEFORMSEG_HAS_GLTF
+  const io::Gltf_file file(input);
+  io::require_clip_choice(file, options.clip);
   io::Gltf_read_report read;
-  auto animation = io::read_gltf<Graph, Coordinate>(
-      input,
+  auto animation = file.read<Graph, Coordinate>(
       {.clip = options.clip, .fps = options.fps,
        .repair = options.repair.value_or(io::Gltf_read_options{}.repair), .threads = options.threads},
       &read);
@@ -107,31 +110,42 @@ Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input, cons
 
 namespace deformseg::io {
 
-/// @brief Reads an animation: a glTF clip (`.gltf`, `.glb`, see `read_gltf`), a point cache
+/// @brief Reads an animation: a glTF clip (`.gltf`, `.glb`, see `read_gltf`; "FILE.glb#CLIP" names
+/// the clip, as `options.clip` does; a file of several clips needs one named), a point cache
 /// (`.pc2`, `.mdd`, with `options.topology`), or a sequence of frame files given as a folder or a
 /// glob pattern (see `read_frame_sequence`).
 ///
 /// For frames and point caches the triangles of the topology (or the first frame) are read, then
 /// the positions of every frame, and `repair_triangles` repairs or refuses the triangles (before
 /// the positions are read, unless it welds, which compares every frame). Vertex `i` of a point
-/// cache is vertex `i` of the topology file. A glTF clip is sampled at `options.fps`, then welded
-/// and repaired.
+/// cache is vertex `i` of the topology file. A glTF clip is sampled at `options.fps`, then given
+/// the connectivity every clip of its file shares (`Gltf_file::repair`: welded by what the file
+/// fixes, and repaired).
 ///
 /// @tparam Graph the connectivity type, a `FaceGraph` (default `Surface_mesh`).
 /// @tparam Coordinate the stored coordinate type (default `double`).
-/// @param input a glTF file, a folder or glob of frame files, or a `.pc2` or `.mdd` file.
+/// @param input a glTF file (maybe followed by "#CLIP"), a folder or glob of frame files, or a
+/// `.pc2` or `.mdd` file.
 /// @param options `topology` (default none), `triangulate` (default false), `threads` (default 0:
 /// all), `repair` (default: the format's; defects repaired, glTF welded), `clip` (default: the
-/// first) and `fps` (default 30) for glTF.
+/// only one) and `fps` (default 30) for glTF.
 /// @param report where to store what the repair changed, when not null (default null).
-/// @pre a point cache comes with `options.topology`; a glTF file comes with no `topology`, and
-/// deformseg was built with tinygltf (`DEFORMSEG_HAS_GLTF`); every frame is valid (see the readers).
+/// @pre a point cache comes with `options.topology`; a glTF file comes with no `topology`, a clip
+/// (after '#' or in `options.clip`, not both) unless it holds one clip or none, and deformseg was
+/// built with tinygltf (`DEFORMSEG_HAS_GLTF`); every frame is valid (see the readers).
 /// @throws invalid_input naming the file, line or frame of the first problem found; with
 /// `Defect_policy::refuse`, the first defect of the connectivity, located at its file.
 /// @par Complexity linear in the size of the input, plus the repair's (see `repair_triangles`).
 template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
 Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input, const Animation_read_options& options = {},
                                                  Repair_report* report = nullptr) {
+  if (const auto [file, clip] = split_clip_suffix(input); clip) {
+    if (!options.clip.empty())
+      throw invalid_input("the clip is given twice: by the clip option and after '#'", {.file = input});
+    Animation_read_options named = options;
+    named.clip = *clip;
+    return internal::read_gltf_input<Graph, Coordinate>(file, named, report);
+  }
   if (is_gltf(input)) return internal::read_gltf_input<Graph, Coordinate>(input, options, report);
   const Repair_options repair = options.repair.value_or(Repair_options{});
   const std::string format = animation_format(input);
