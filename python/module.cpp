@@ -37,6 +37,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -122,7 +123,8 @@ py::array as_array(const py::object& value, const char* name) {
   return a;
 }
 
-Animation animation_of_arrays(const py::object& faces_like, const py::object& frames_like) {
+Animation animation_of_arrays(const py::object& faces_like, const py::object& frames_like, double fps) {
+  if (!(fps > 0) || !std::isfinite(fps)) throw invalid_input("fps must be positive and finite");
   const py::array frames = as_array(frames_like, "frames");
   const py::array faces = as_array(faces_like, "faces");
   std::vector<double> positions = positions_of(frames);
@@ -132,7 +134,9 @@ Animation animation_of_arrays(const py::object& faces_like, const py::object& fr
   std::vector<std::array<double, 3>> rest(vertices);
   std::copy_n(positions.data(), 3 * vertices, rest.front().data());
   Surface_mesh graph = make_face_graph<Surface_mesh>(rest, triangles);
-  return {Surface_mesh_animation(std::move(graph), std::move(positions)), std::nullopt};
+  Surface_mesh_animation mesh(std::move(graph), std::move(positions));
+  mesh.set_frames_per_second(fps);
+  return {std::move(mesh), std::nullopt};
 }
 
 // A read-only NumPy view of `count` values at `data`, kept alive by `owner`.
@@ -587,9 +591,9 @@ PYBIND11_MODULE(_deformseg, m) {
 
   py::class_<Animation>(m, "Animation", R"doc(An animation of one triangle mesh: fixed connectivity, vertex positions per frame.
 
-Animation(faces, frames): from an (F, 3) integer array of vertex indices (each triangle
+Animation(faces, frames, fps=30): from an (F, 3) integer array of vertex indices (each triangle
 counter-clockwise seen from outside; together an oriented 2-manifold, with or without boundary)
-and a (T, V, 3) float32 or float64 array of positions. Raises TypeError for another dtype,
+and a (T, V, 3) float32 or float64 array of positions, sampled at `fps` frames per second. Raises TypeError for another dtype,
 ValueError for another shape, InvalidInput for an index out of range, a non-manifold or
 inconsistently oriented triangle, or a non-finite coordinate (naming the triangle, or the frame
 and vertex). No repair is made: vertex i and face j stay the i-th and j-th given.
@@ -599,7 +603,7 @@ after frame) that it owns, so `frames` is copied once: straight from a C-contigu
 float64 array (float32 converted on the way), through one NumPy conversion first from any other
 layout. `frames` and `faces` are then read-only views of that storage, no copy.
 Complexity O(T V + F).)doc")
-      .def(py::init(&animation_of_arrays), "faces"_a, "frames"_a)
+      .def(py::init(&animation_of_arrays), "faces"_a, "frames"_a, "fps"_a = 30.0)
       .def_property_readonly(
           "frames",
           [](const py::object& self) {
@@ -620,6 +624,9 @@ Complexity O(T V + F).)doc")
           "The (F, 3) uint32 vertex indices of the triangles: a read-only view (no copy).")
       .def_property_readonly("num_frames", [](const Animation& a) { return a.mesh.num_frames(); },
                              "T, the number of frames.")
+      .def_property_readonly("fps", [](const Animation& a) { return a.mesh.frames_per_second(); },
+                             "The frame rate, in frames per second: the motion signatures measure rates per "
+                             "second, so that the same motion sampled at any rate compares as the same.")
       .def_property_readonly("num_vertices", [](const Animation& a) { return a.mesh.num_vertices(); },
                              "V, the number of vertices.")
       .def_property_readonly("num_faces", [](const Animation& a) { return a.mesh.num_faces(); },
@@ -638,8 +645,10 @@ Complexity O(T V + F).)doc")
   m.def("read_animation", &read_input, "path"_a, "clip"_a = py::none(), "fps"_a = 30.0, "topology"_a = py::none(),
         "triangulate"_a = false, "weld"_a = py::none(), "refuse_defects"_a = false, "threads"_a = 0,
         R"doc(Reads an animation: a glTF clip (.glb, .gltf; clip by name or index, or "FILE.glb#CLIP";
-default the first, sampled at `fps`, default 30), a folder of frame files (.obj, .off, .ply, in
-natural order), a glob pattern, or a point cache (.pc2, .mdd) with `topology` (a mesh file).
+default the first), a folder of frame files (.obj, .off, .ply, in natural order), a glob pattern,
+or a point cache (.pc2, .mdd) with `topology` (a mesh file). `fps` (default 30) is the frame rate
+of every format (`Animation.fps`): a glTF clip is sampled at it; frame files and point caches,
+whose files do not say their rate, are taken to be sampled at it.
 
 `triangulate` (default False) fans polygons; `weld` (default: True for glTF, False otherwise)
 merges vertices that coincide in every frame; degenerate, duplicate and non-manifold triangles

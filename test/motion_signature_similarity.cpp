@@ -8,6 +8,7 @@
 #include <deformseg/alignment/subsequence_dtw.h>
 #include <deformseg/find_motion.h>
 #include <deformseg/io/gltf.h>
+#include <deformseg/io/read_animation.h>
 #include <deformseg/motion_similarity.h>
 #include <deformseg/motion_signatures.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
@@ -67,9 +68,10 @@ TEST_CASE("weighted_quantiles: the smallest value whose cumulative weight reache
 }
 
 TEST_CASE("motion_signatures: a uniform translation has the exact rate everywhere", "[motion_signature]") {
-  // Four points at unit distance from their centroid (RMS radius 1), moving 0.02 per frame: inside
-  // the animation every vertex's rate at lags 1, 4 and 16 is 0.02; near the ends the spans are cut,
-  // and at lag 128 they are cut at both ends in every frame: 39 frames of travel over 256.
+  // Four points at unit distance from their centroid (RMS radius 1), moving 0.02 per frame at 30
+  // fps, 0.6 per second: inside the animation every vertex's rate at lags 1, 4 and 16 thirtieths of
+  // a second is 0.6; near the ends the spans are cut, and at lag 128/30 s they are cut at both ends
+  // in every frame: 39 frames of travel over 256.
   const std::vector<Eigen::Vector3d> points{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
   const std::size_t frames = 40;
   std::vector<double> positions;
@@ -83,8 +85,8 @@ TEST_CASE("motion_signatures: a uniform translation has the exact rate everywher
   REQUIRE(s.rows() == 40);
   REQUIRE(s.cols() == 64);
   // Speeds first (4 lags x 8 quantiles), then the rates along up, +Y: 0.8 of the speed, rising.
-  const auto rising = [](double speed) { return std::sqrt(0.2) * std::asinh(0.8 * speed / 3e-4); };
-  const double whole = 0.02 * 39 / 256;
+  const auto rising = [](double speed) { return std::sqrt(0.2) * std::asinh(0.8 * speed / 9e-3); };
+  const double whole = 0.6 * 39 / 256;
   for (Eigen::Index t : {0, 16, 20, 23, 39})
     for (Eigen::Index c = 0; c < 8; ++c) {
       CHECK(s(t, 24 + c) == Approx(std::log(whole)).epsilon(1e-12));
@@ -92,8 +94,8 @@ TEST_CASE("motion_signatures: a uniform translation has the exact rate everywher
     }
   for (Eigen::Index t : {16, 20, 23})
     for (Eigen::Index c = 0; c < 24; ++c) {
-      CHECK(s(t, c) == Approx(std::log(0.02)).epsilon(1e-12));
-      CHECK(s(t, 32 + c) == Approx(rising(0.02)).epsilon(1e-12));
+      CHECK(s(t, c) == Approx(std::log(0.6)).epsilon(1e-12));
+      CHECK(s(t, 32 + c) == Approx(rising(0.6)).epsilon(1e-12));
     }
   // Without an up direction, the speeds alone.
   const Eigen::MatrixXd speeds = motion_signatures(std::span<const double>(positions), weights, {.up = std::nullopt});
@@ -101,17 +103,19 @@ TEST_CASE("motion_signatures: a uniform translation has the exact rate everywher
   CHECK(speeds == s.leftCols(32));
   // Frame 0 at lag 16: from frame 0 to frame 16, over 32 frames: half the rate; frame 39 at lag 4:
   // from frame 35 to 39, over 8: half too; lag 1 is whole at frame 1.
-  CHECK(s(0, 16) == Approx(std::log(0.01)).epsilon(1e-12));
-  CHECK(s(39, 8) == Approx(std::log(0.01)).epsilon(1e-12));
-  CHECK(s(1, 0) == Approx(std::log(0.02)).epsilon(1e-12));
-  CHECK(internal::rate_span(20, 4, 40) == std::pair<std::size_t, std::size_t>(16, 24));
-  CHECK(internal::rate_span(1, 4, 40) == std::pair<std::size_t, std::size_t>(0, 5));
-  CHECK(internal::rate_span(38, 4, 40) == std::pair<std::size_t, std::size_t>(34, 39));
+  CHECK(s(0, 16) == Approx(std::log(0.3)).epsilon(1e-12));
+  CHECK(s(39, 8) == Approx(std::log(0.3)).epsilon(1e-12));
+  CHECK(s(1, 0) == Approx(std::log(0.6)).epsilon(1e-12));
+  // Lags of whole frames read the frames themselves; spans are cut at the ends.
+  CHECK(internal::frame_at(20.0 / 30 - 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(16, 0.0));
+  CHECK(internal::frame_at(1.0 / 30 - 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(0, 0.0));
+  CHECK(internal::frame_at(38.0 / 30 + 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(39, 0.0));
+  CHECK(internal::frame_at(0.25, 10, 40) == std::pair<std::size_t, double>(2, 0.5));
   // Standing still gives the floor.
   std::vector<double> still(positions.begin(), positions.begin() + 12);
   still.insert(still.end(), positions.begin(), positions.begin() + 12);
   const Eigen::MatrixXd standing = motion_signatures(std::span<const double>(still), weights);
-  CHECK(standing.leftCols(32).maxCoeff() == Approx(std::log(1e-4)));
+  CHECK(standing.leftCols(32).maxCoeff() == Approx(std::log(3e-3)));
   CHECK(standing.rightCols(32).cwiseAbs().maxCoeff() == 0.0);
 }
 
@@ -120,17 +124,17 @@ TEST_CASE("motion_signatures: rigid parts moving on a joint are seen", "[motion_
   const std::size_t points = 20;
   const std::vector<double> positions = jointed_points(9, points);
   const std::vector<double> weights(points, 1.0 / points);
-  const Eigen::MatrixXd s = motion_signatures(std::span<const double>(positions), weights, {.lags = {1}, .quantiles = 4});
+  const Eigen::MatrixXd s = motion_signatures(std::span<const double>(positions), weights, {.lags = {1.0 / 30}, .quantiles = 4});
   // The lower half (the first quantiles) stands still, the upper half moves.
-  CHECK(s(4, 0) == Approx(std::log(1e-4)));
-  CHECK(s(4, 3) > std::log(0.01));
+  CHECK(s(4, 0) == Approx(std::log(3e-3)));
+  CHECK(s(4, 3) > std::log(0.3));
 }
 
 TEST_CASE("motion_signature_similarity: an animation against itself and a moved, scaled copy turned about up is 1",
           "[motion_signature]") {
   const Motion_signature_similarity<> policy;
   const auto [a, b] = check_moved_copy_is_one(policy, Eigen::Vector3d::UnitY());
-  CHECK((policy.describe(a) - policy.describe(b)).cwiseAbs().maxCoeff() < 1e-9);
+  CHECK((policy.describe(a).signatures - policy.describe(b).signatures).cwiseAbs().maxCoeff() < 1e-9);
   // Without an up direction, turned about any axis.
   Motion_signature_similarity<> directionless;
   directionless.signatures.up = std::nullopt;
@@ -318,8 +322,76 @@ TEST_CASE("similarity_significance: ordered frames stand out from shuffled ones"
   CHECK_THROWS_AS(similarity_significance(policy, a, same, 1, again), invalid_input);
   // A description in another order: row t is row order[t].
   const std::vector<std::size_t> order{2, 0, 1};
-  const Eigen::MatrixXd three = a.topRows(3), reordered = reordered_frames(three, std::span<const std::size_t>(order));
+  const Eigen::MatrixXd three = a.signatures.topRows(3), reordered = reordered_frames(three, std::span<const std::size_t>(order));
   CHECK(reordered.row(0) == three.row(2));
   CHECK(reordered.row(1) == three.row(0));
   CHECK(frame_count(reordered) == 3);
+}
+
+// --- Issue 25: the value does not depend on the sampling rate; find_motion finds copies. ---
+
+TEST_CASE("motion_signature_similarity: a tube's motion sampled at 15, 30 or 60 fps is the same motion",
+          "[motion_signature]") {
+  // The bend at 30 fps; every other frame of it at 15 fps; its schedule at twice the frames at
+  // 60 fps. Played faster (the 30 fps frames shown at 60 fps) it is a faster motion.
+  const auto at_30 = tube(bend_hold_unbend);
+  std::vector<std::size_t> even;
+  for (std::size_t t = 0; t < at_30.num_frames(); t += 2) even.push_back(t);
+  auto at_15 = frames_of(at_30, even);
+  at_15.set_frames_per_second(15);
+  std::vector<Tube_phase> doubled = bend_hold_unbend;
+  for (auto& phase : doubled) phase.frames *= 2;
+  auto at_60 = tube(doubled, other_tube);
+  at_60.set_frames_per_second(60);
+  auto faster = at_30;
+  faster.set_frames_per_second(60);
+  const Motion_signature_similarity<> policy;
+  const Similarity slow = motion_similarity(at_15, at_30, policy), fine = motion_similarity(at_60, at_30, policy);
+  const double played_faster = motion_similarity(faster, at_30, policy).value;
+  WARN("15 fps against 30: " << slow.value << ", 60 fps (another tube) against 30: " << fine.value
+                             << ", played twice as fast: " << played_faster);
+  CHECK(slow.value >= 0.95);
+  CHECK(fine.value >= 0.95);
+  CHECK(played_faster < 0.9);
+  // The alignment names each animation's own frames, every one of them.
+  CHECK(slow.alignment.front() == std::pair<std::size_t, std::size_t>(0, 0));
+  CHECK(slow.alignment.back() == std::pair<std::size_t, std::size_t>(at_15.num_frames() - 1, at_30.num_frames() - 1));
+  for (std::size_t k = 1; k < slow.alignment.size(); ++k) {
+    CHECK(slow.alignment[k].first - slow.alignment[k - 1].first <= 1);
+    CHECK(slow.alignment[k].second - slow.alignment[k - 1].second <= 1);
+  }
+  // Described every 1/30 s below 30 fps, at the frames from 30 fps up.
+  CHECK(policy.describe(at_15).signatures.rows() == Eigen::Index(at_30.num_frames()));
+  CHECK(policy.describe(at_60).signatures.rows() == Eigen::Index(at_60.num_frames()));
+  // At 30 fps the signatures are those of the frames themselves.
+  CHECK(policy.describe(at_30).signatures == motion_signatures(at_30));
+  CHECK_THROWS_WITH(at_15.set_frames_per_second(0), Catch::Contains("frame rate"));
+}
+
+TEST_CASE("motion_signature_similarity: a shared clip read at 15, 24, 30 or 60 fps is the same motion; walk and "
+          "run stay apart",
+          "[motion_signature][data]") {
+  const auto dir = test::data_dir() / "characters";
+  const auto read = [&](const std::string& file, const std::string& clip, double fps) {
+    auto a = io::read_animation((dir / file).string(), {.clip = clip, .fps = fps});
+    CHECK(a.frames_per_second() == fps);
+    return a;
+  };
+  const Motion_signature_similarity<> policy;
+  double lowest_self = 1;
+  for (const auto& [file, clip] : std::vector<std::pair<std::string, std::string>>{
+           {"Knight.glb", "Walking_A"}, {"Knight.glb", "Running_A"}, {"RobotExpressive.glb", "Running"},
+           {"Mage.glb", "Jump_Full_Short"}, {"Fox.glb", "Walk"}}) {
+    const auto at_30 = policy.describe(read(file, clip, 30));
+    for (const double fps : {15.0, 24.0, 30.0, 60.0}) {
+      const double value = policy.compare(policy.describe(read(file, clip, fps)), at_30).value;
+      WARN(file << "#" << clip << " at " << fps << " fps against 30: " << value);
+      CHECK(value >= 0.95);
+      if (file == "Knight.glb") lowest_self = std::min(lowest_self, value);
+    }
+  }
+  const double walk_run = motion_similarity(read("Knight.glb", "Walking_A", 30), read("Knight.glb", "Running_A", 15),
+                                            policy).value;
+  WARN("Knight Walking_A against Running_A at 15 fps: " << walk_run);
+  CHECK(walk_run < lowest_self - 0.3);
 }

@@ -54,7 +54,7 @@ void add_find_command(CLI::App& app) {
   command->add_option("--topology-long", o->long_animation.topology, "Connectivity of the long animation, for a point cache");
   command->add_option("--clip-query", o->query.clip, "glTF: the query's clip, by name or index (default: the first)");
   command->add_option("--clip-long", o->long_animation.clip, "glTF: the long animation's clip (default: the first)");
-  command->add_option("--fps", o->query.fps, "glTF: frames per second both clips are sampled at")
+  command->add_option("--fps", o->query.fps, "Frames per second of both inputs: glTF clips are sampled at it, frame files and point caches play at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_option("--threads", o->query.threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);

@@ -106,6 +106,18 @@ def test_similarity_of_an_animation_with_itself_is_1(grid):
     assert m.shape == (2, 2) and np.allclose(m, 1.0)
 
 
+def test_the_frame_rate_is_the_animations_and_the_same_motion_at_half_the_rate_is_the_same(grid):
+    faces, frames = grid(4, 6, 13)
+    a = deformseg.Animation(faces, frames)
+    half = deformseg.Animation(faces, frames[::2], fps=15)
+    assert (a.fps, half.fps) == (30.0, 15.0)
+    # The same motion sampled at 15 fps: the same motion; the same frames played at 60: a faster one.
+    assert deformseg.similarity(half, a).value >= 0.95
+    assert deformseg.similarity(deformseg.Animation(faces, frames, fps=60), a).value < 0.95
+    with pytest.raises(deformseg.InvalidInput, match="fps"):
+        deformseg.Animation(faces, frames, fps=0)
+
+
 # ---- errors ------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("frames, message", [

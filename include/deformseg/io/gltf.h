@@ -50,7 +50,8 @@ struct Gltf_read_options {
   /// @brief The clip (glTF animation) to sample: empty (default) for the file's first clip; else
   /// the first clip of that name; else, when all digits, the clip of that index.
   std::string clip{};
-  /// @brief Frames per second the clip is sampled at. Default 30.
+  /// @brief Frames per second the clip is sampled at, the frame rate of the animation `read`
+  /// gives (`Deforming_mesh::frames_per_second`). Default 30.
   double fps = 30;
   /// @brief The repair `read_gltf` applies (see `mesh_repair.h`). Default: welding on (glTF
   /// splits vertices along UV seams and hard edges), defects repaired.
@@ -425,6 +426,7 @@ public:
       Deforming_mesh<Graph, Coordinate> animation = make_repaired_animation<Graph, Coordinate>(
           std::span<const double>(sampled.positions), sampled.num_vertices,
           std::span<const std::array<std::uint32_t, 3>>(sampled.triangles), options.repair, &sampled.report.repair);
+      animation.set_frames_per_second(options.fps);
       if (report) *report = std::move(sampled.report);
       return animation;
     } catch (const invalid_input& e) {
