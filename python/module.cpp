@@ -593,10 +593,10 @@ PYBIND11_MODULE(_deformseg, m) {
 
 Animation(faces, frames, fps=30): from an (F, 3) integer array of vertex indices (each triangle
 counter-clockwise seen from outside; together an oriented 2-manifold, with or without boundary)
-and a (T, V, 3) float32 or float64 array of positions, sampled at `fps` frames per second. Raises TypeError for another dtype,
-ValueError for another shape, InvalidInput for an index out of range, a non-manifold or
-inconsistently oriented triangle, or a non-finite coordinate (naming the triangle, or the frame
-and vertex). No repair is made: vertex i and face j stay the i-th and j-th given.
+and a (T, V, 3) float32 or float64 array of positions, sampled at `fps` frames per second.
+Raises TypeError for another dtype, ValueError for another shape, InvalidInput for an index out
+of range, a non-manifold or inconsistently oriented triangle, a non-finite coordinate (naming the
+triangle, or the frame and vertex), or an fps that is not positive. No repair is made: vertex i and face j stay the i-th and j-th given.
 
 What is copied: the library stores one contiguous block of float64 (x, y, z per vertex, frame
 after frame) that it owns, so `frames` is copied once: straight from a C-contiguous float32 or
@@ -756,7 +756,9 @@ copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc
   py::class_<Motion_match>(m, "MotionMatch", "A window of a long animation that matches a query (find_motion).")
       .def_readonly("first", &Motion_match::first, "The window's first frame in the long animation.")
       .def_readonly("last", &Motion_match::last, "Its last frame (inclusive).")
-      .def_readonly("value", &Motion_match::value, "1 minus the mean frame dissimilarity along the path, in [0, 1].")
+      .def_readonly("value", &Motion_match::value,
+                    "The similarity of the query to the window's frames cut out as an animation of their own, "
+                    "in [0, 1]: 1 for an exact, moved or scaled copy.")
       .def_readonly("alignment", &Motion_match::alignment,
                     "The warping path: (frame of the query, frame of the long animation).")
       .def("__repr__", [](const Motion_match& x) {
@@ -767,9 +769,12 @@ copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc
   m.def("find_motion", &find, "query"_a, "long_animation"_a, "count"_a = 1, py::kw_only(), "shortest"_a = 0.5,
         R"doc(Where a short motion occurs in a long animation: at most `count` (default 1, as
 Find_motion_options; the tool's `find` asks for 3) non-overlapping windows of `long_animation`,
-best first, each a MotionMatch (first, last, value, alignment), by motion signatures and
-subsequence DTW. shortest (default 0.5): the shortest window as a fraction of the query's length.
-Complexity two descriptions, then O(count Tq Tl). Releases the GIL.)doc");
+best first, each a MotionMatch (first, last, value, alignment), by motion signatures: windows
+proposed by a slope-bounded subsequence DTW, each re-described alone and scored against the query
+(value 1 for an exact, moved or scaled copy, found at its frames). shortest (default 0.5): a
+window lasts from `shortest` to 1 / `shortest` times the query's duration. Complexity two
+descriptions, O(count Tq Tl / shortest^2), then a few descriptions of candidate windows per match.
+Releases the GIL.)doc");
 
   py::class_<Retrieval_scores>(m, "RetrievalScores", "The figures of `evaluate` (evaluate_retrieval).")
       .def_readonly("queries", &Retrieval_scores::queries, "Queries evaluated.")

@@ -311,7 +311,8 @@ void add_evaluate_command(CLI::App& app) {
                       "motion '-': a distractor; fields may be in double quotes)")
       ->required();
   add_policy_options(*command, o->policy);
-  command->add_option("--fps", o->fps, "Frames per second: glTF clips are sampled at it, frame folders play at it. Default: 30");
+  command->add_option("--fps", o->fps,
+                      "Frames per second: glTF clips are sampled at it, frame folders play at it. Default: 30");
   command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
   command->add_flag("--skip-unreadable", o->skip_unreadable,
                     "Leave out, with a line on standard error, the clips that cannot be read or described (a "
