@@ -271,7 +271,10 @@ std::vector<Motion_match> find_cut_windows(const Policy& policy, const typename 
   if (n == 0 || m == 0) throw invalid_input("find_motion: an animation without frames");
   // Lengths in the long animation's frames: the query's duration at its frame rate.
   const double in_frames = double(query_frames - 1) * frames_per_second(long_animation) / query_fps + 1;
-  const auto [shortest, longest] = window_lengths(in_frames, options);
+  // At least two frames: a single pose has no motion to describe.
+  const auto lengths = window_lengths(in_frames, options);
+  const std::size_t shortest = std::max<std::size_t>(lengths.first, std::min<std::size_t>(2, frames));
+  const std::size_t longest = std::max(lengths.second, shortest);
   const double in_rows = frames > 1 ? (in_frames - 1) * double(m - 1) / double(frames - 1) + 1 : 1;
   const auto [shortest_rows, longest_rows] = window_lengths(in_rows, options);
   const std::size_t steepest = steepest_slope(n, shortest_rows, longest_rows);
@@ -362,7 +365,8 @@ std::vector<Motion_match> find_cut_windows(const Policy& policy, const typename 
 /// copy of the query, moved or scaled, inside the long animation scores exactly as the query
 /// against itself (1), and a window is judged by its own frames only, not by what comes before or
 /// after it. Windows last from `options.shortest` to 1 / `options.shortest` times the query's
-/// duration (counted in the long animation's frames at the two frame rates, `frames_per_second`).
+/// duration (counted in the long animation's frames at the two frame rates, `frames_per_second`),
+/// and at least two frames.
 ///
 /// The search: the long animation is described whole once, and `find_motion_in`'s warping with
 /// bounded slopes proposes the 6 best windows of each free stretch; each is re-described alone; the
