@@ -413,7 +413,7 @@ TEST_CASE("motion_signature_similarity: a tube's motion sampled at 15, 30 or 60 
   CHECK_THROWS_WITH(at_15.set_frames_per_second(0), Catch::Contains("frame rate"));
 }
 
-TEST_CASE("motion_signature_similarity: a shared clip read at 15, 24, 30 or 60 fps is the same motion; walk and "
+TEST_CASE("motion_signature_similarity: a shared clip read at 15, 24, 30 or 60 fps is the same motion, walk and "
           "run stay apart",
           "[motion_signature][data]") {
   const auto dir = test::data_dir() / "characters";
