@@ -35,7 +35,8 @@ int main(int argc, char** argv) try {
   for (const Temporal_segment& segment : poses.segments)
     std::cout << "segment: frames " << segment.first << " to " << segment.last << '\n';
 
-  // How alike A and B move: 1 for the same motion, whatever the shape, size or speed.
+  // How alike A and B move: 1 for the same motion, whatever the shape, size or frame rate; a faster
+  // motion (as B's quicker bend) is another motion.
   const Similarity similarity = motion_similarity(a, b);
   std::cout << "similarity of A and B: " << similarity.value << '\n';
 } catch (const std::exception& error) {  // deformseg::invalid_input names the file, line or frame

@@ -1,6 +1,6 @@
 // Motion_signature_similarity, the default policy: each frame as the area-weighted quantiles of how
-// fast its vertices move, and how fast up or down, at lags of 1, 4, 16 and 128 frames
-// (motion_signatures), frames aligned by DTW.
+// fast its vertices move, and how fast up or down, at lags of 1, 4, 16 and 128 thirtieths of a
+// second (motion_signatures: rates per second at the animation's frame rate), frames aligned by DTW.
 // With no argument, a tube bending and unbending is compared with the same motion on another,
 // moved and scaled tube, and with other motions; each value is printed with its z-score against
 // frame-shuffled copies (similarity_significance).
@@ -36,7 +36,7 @@ int main() {
   const Placement moved{.scale = 3, .translation = Eigen::Vector3d(1, 2, 3)};
 
   // The signature of one frame in the middle of the bend, 8 quantiles per lag: the speeds, as log
-  // RMS radii per frame; then the rates up (+Y), as asinh(rate / 3e-4), weighted by sqrt(0.2).
+  // RMS radii per second (30 fps); then the rates up (+Y), as asinh(rate / 9e-3), weighted by sqrt(0.2).
   const Eigen::MatrixXd signatures = motion_signatures(tube(bend_hold_unbend));
   std::printf("frame 10 of %zu, lag 1, speeds:     ", std::size_t(signatures.rows()));
   for (Eigen::Index q = 0; q < 8; ++q) std::printf(" %5.2f", signatures(10, q));
@@ -45,7 +45,7 @@ int main() {
   for (Eigen::Index q = rates_up; q < rates_up + 8; ++q) std::printf(" %5.2f", signatures(10, q));
   std::printf("\n\n");
 
-  const Motion_signature_similarity<> policy;  // lags 1, 4, 16, 128; 8 quantiles; up +Y; scale 1.77; DTW
+  const Motion_signature_similarity<> policy;  // lags 1, 4, 16, 128 / 30 s; 8 quantiles; up +Y; scale 1.77; DTW
   const auto query = policy.describe(tube(bend_hold_unbend));
   struct Candidate {
     const char* name;

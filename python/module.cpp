@@ -37,6 +37,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -122,7 +123,8 @@ py::array as_array(const py::object& value, const char* name) {
   return a;
 }
 
-Animation animation_of_arrays(const py::object& faces_like, const py::object& frames_like) {
+Animation animation_of_arrays(const py::object& faces_like, const py::object& frames_like, double fps) {
+  if (!(fps > 0) || !std::isfinite(fps)) throw invalid_input("fps must be positive and finite");
   const py::array frames = as_array(frames_like, "frames");
   const py::array faces = as_array(faces_like, "faces");
   std::vector<double> positions = positions_of(frames);
@@ -132,7 +134,9 @@ Animation animation_of_arrays(const py::object& faces_like, const py::object& fr
   std::vector<std::array<double, 3>> rest(vertices);
   std::copy_n(positions.data(), 3 * vertices, rest.front().data());
   Surface_mesh graph = make_face_graph<Surface_mesh>(rest, triangles);
-  return {Surface_mesh_animation(std::move(graph), std::move(positions)), std::nullopt};
+  Surface_mesh_animation mesh(std::move(graph), std::move(positions));
+  mesh.set_frames_per_second(fps);
+  return {std::move(mesh), std::nullopt};
 }
 
 // A read-only NumPy view of `count` values at `data`, kept alive by `owner`.
@@ -634,23 +638,23 @@ std::optional<io::Repair_report> repair_of_state(const py::handle& value) {
   return report;
 }
 
-// Animation: (1, faces (F, 3) uint32, frames (T, V, 3) float64, repair dict or None). The frames
-// are copied bit for bit; the connectivity is rebuilt from the faces in their order.
+// Animation: (1, faces (F, 3) uint32, frames (T, V, 3) float64, fps, repair dict or None). The
+// frames are copied bit for bit; the connectivity is rebuilt from the faces in their order.
 py::object animation_state(const py::object& self) {
   const Animation& a = self.cast<const Animation&>();
-  return py::make_tuple(pickle_version, self.attr("faces"), self.attr("frames"),
+  return py::make_tuple(pickle_version, self.attr("faces"), self.attr("frames"), a.mesh.frames_per_second(),
                         a.repair ? py::object(repair_dict(*a.repair)) : py::object(py::none()));
 }
 
 Animation animation_of_state(const py::object& state) {
-  const py::tuple f = state_fields(state, "Animation", 3, "(1, faces, frames, repair)");
+  const py::tuple f = state_fields(state, "Animation", 4, "(1, faces, frames, fps, repair)");
   const auto faces = py::array::ensure(f[0]), frames = py::array::ensure(f[1]);
   if (!faces || (faces.dtype().kind() != 'i' && faces.dtype().kind() != 'u'))
     refuse_state("Animation", "field 'faces' is not an array of integers");
   if (!frames || frames.dtype().kind() != 'f' || frames.itemsize() != 8)
     refuse_state("Animation", "field 'frames' is not an array of float64");
-  Animation a = animation_of_arrays(faces, frames);
-  a.repair = repair_of_state(f[2]);
+  Animation a = animation_of_arrays(faces, frames, state_field<double>(f, 2, "Animation", "fps"));
+  a.repair = repair_of_state(f[3]);
   return a;
 }
 
@@ -785,19 +789,19 @@ PYBIND11_MODULE(_deformseg, m) {
 
   py::class_<Animation>(m, "Animation", R"doc(An animation of one triangle mesh: fixed connectivity, vertex positions per frame.
 
-Animation(faces, frames): from an (F, 3) integer array of vertex indices (each triangle
+Animation(faces, frames, fps=30): from an (F, 3) integer array of vertex indices (each triangle
 counter-clockwise seen from outside; together an oriented 2-manifold, with or without boundary)
-and a (T, V, 3) float32 or float64 array of positions. Raises TypeError for another dtype,
-ValueError for another shape, InvalidInput for an index out of range, a non-manifold or
-inconsistently oriented triangle, or a non-finite coordinate (naming the triangle, or the frame
-and vertex). No repair is made: vertex i and face j stay the i-th and j-th given.
+and a (T, V, 3) float32 or float64 array of positions, sampled at `fps` frames per second.
+Raises TypeError for another dtype, ValueError for another shape, InvalidInput for an index out
+of range, a non-manifold or inconsistently oriented triangle, a non-finite coordinate (naming the
+triangle, or the frame and vertex), or an fps that is not positive. No repair is made: vertex i and face j stay the i-th and j-th given.
 
 What is copied: the library stores one contiguous block of float64 (x, y, z per vertex, frame
 after frame) that it owns, so `frames` is copied once: straight from a C-contiguous float32 or
 float64 array (float32 converted on the way), through one NumPy conversion first from any other
 layout. `frames` and `faces` are then read-only views of that storage, no copy.
 Complexity O(T V + F).)doc")
-      .def(py::init(&animation_of_arrays), "faces"_a, "frames"_a)
+      .def(py::init(&animation_of_arrays), "faces"_a, "frames"_a, "fps"_a = 30.0)
       .def(py::pickle(&animation_state, &animation_of_state))
       .def_property_readonly(
           "frames",
@@ -819,6 +823,9 @@ Complexity O(T V + F).)doc")
           "The (F, 3) uint32 vertex indices of the triangles: a read-only view (no copy).")
       .def_property_readonly("num_frames", [](const Animation& a) { return a.mesh.num_frames(); },
                              "T, the number of frames.")
+      .def_property_readonly("fps", [](const Animation& a) { return a.mesh.frames_per_second(); },
+                             "The frame rate, in frames per second: the motion signatures measure rates per "
+                             "second, so that the same motion sampled at any rate compares as the same.")
       .def_property_readonly("num_vertices", [](const Animation& a) { return a.mesh.num_vertices(); },
                              "V, the number of vertices.")
       .def_property_readonly("num_faces", [](const Animation& a) { return a.mesh.num_faces(); },
@@ -838,8 +845,10 @@ Complexity O(T V + F).)doc")
         "triangulate"_a = false, "weld"_a = py::none(), "refuse_defects"_a = false, "threads"_a = 0,
         R"doc(Reads an animation: a glTF clip (.glb, .gltf; clip by name or index, or "FILE.glb#CLIP";
 needed when the file holds several, which are then listed in the error; a file of one clip gives
-it; sampled at `fps`, default 30), a folder of frame files (.obj, .off, .ply, in natural order), a
-glob pattern, or a point cache (.pc2, .mdd) with `topology` (a mesh file).
+it), a folder of frame files (.obj, .off, .ply, in natural order), a glob pattern, or a point
+cache (.pc2, .mdd) with `topology` (a mesh file). `fps` (default 30) is the frame rate of every
+format (`Animation.fps`): a glTF clip is sampled at it; frame files and point caches, whose files
+do not say their rate, are taken to be sampled at it.
 
 `triangulate` (default False) fans polygons; `weld` (default: True for glTF, False otherwise)
 merges vertices that coincide in every frame (for glTF, by what the file fixes: the same rest
@@ -953,7 +962,9 @@ copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc
       .def(py::pickle(&motion_match_state, &motion_match_of_state))
       .def_readonly("first", &Motion_match::first, "The window's first frame in the long animation.")
       .def_readonly("last", &Motion_match::last, "Its last frame (inclusive).")
-      .def_readonly("value", &Motion_match::value, "1 minus the mean frame dissimilarity along the path, in [0, 1].")
+      .def_readonly("value", &Motion_match::value,
+                    "The similarity of the query to the window's frames cut out as an animation of their own, "
+                    "in [0, 1]: 1 for an exact, moved or scaled copy.")
       .def_readonly("alignment", &Motion_match::alignment,
                     "The warping path: (frame of the query, frame of the long animation).")
       .def("__repr__", [](const Motion_match& x) {
@@ -964,9 +975,12 @@ copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc
   m.def("find_motion", &find, "query"_a, "long_animation"_a, "count"_a = 1, py::kw_only(), "shortest"_a = 0.5,
         R"doc(Where a short motion occurs in a long animation: at most `count` (default 1, as
 Find_motion_options; the tool's `find` asks for 3) non-overlapping windows of `long_animation`,
-best first, each a MotionMatch (first, last, value, alignment), by motion signatures and
-subsequence DTW. shortest (default 0.5): the shortest window as a fraction of the query's length.
-Complexity two descriptions, then O(count Tq Tl). Releases the GIL.)doc");
+best first, each a MotionMatch (first, last, value, alignment), by motion signatures: windows
+proposed by a slope-bounded subsequence DTW, each re-described alone and scored against the query
+(value 1 for an exact, moved or scaled copy, found at its frames). shortest (default 0.5): a
+window lasts from `shortest` to 1 / `shortest` times the query's duration. Complexity two
+descriptions, O(count Tq Tl / shortest^2), then a few descriptions of candidate windows per match.
+Releases the GIL.)doc");
 
   py::class_<Retrieval_scores>(m, "RetrievalScores", "The figures of `evaluate` (evaluate_retrieval).")
       .def(py::pickle(&retrieval_state, &retrieval_of_state))

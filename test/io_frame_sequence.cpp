@@ -7,6 +7,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/obj.h>
+#include <deformseg/io/read_animation.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polyhedron_3.h>
@@ -129,6 +130,15 @@ TEST_CASE("read_frame_sequence: connectivity of the first frame, positions of al
     CHECK(std::ranges::equal(polyhedron.all_positions(), animation.all_positions()));
     CHECK(polyhedron.num_faces() == 4);
   }
+}
+
+TEST_CASE("read_frame_sequence and read_animation: the frame rate is an input, 30 by default",
+          "[io][frame_sequence]") {
+  const fs::path folder = tetrahedron_sequence("tetrahedron_rate", 3);
+  CHECK(read_frame_sequence(folder.string()).frames_per_second() == 30);
+  CHECK(read_frame_sequence(folder.string(), {.fps = 24}).frames_per_second() == 24);
+  CHECK(deformseg::io::read_animation(folder.string(), {.fps = 12.5}).frames_per_second() == 12.5);
+  CHECK_THROWS_WITH(read_frame_sequence(folder.string(), {.fps = 0}), Catch::Contains("fps must be positive"));
 }
 
 TEST_CASE("read_frame_sequence: the connectivity of a topology file, in another format", "[io][frame_sequence]") {

@@ -7,6 +7,8 @@
 #include <deformseg/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/point_cache.h>
+#include <deformseg/io/read_animation.h>
+#include <deformseg/io/write_off.h>
 
 #include <CGAL/Polyhedron_3.h>
 
@@ -123,6 +125,21 @@ TEMPLATE_TEST_CASE("write_mdd then read_mdd: float coordinates come back exactly
   const auto read = io::read_mdd<TestType, float>(cache, tetrahedron<TestType>());
   REQUIRE(read.num_frames() == 3);
   CHECK(std::ranges::equal(read.all_positions(), animation.all_positions()));
+}
+
+TEST_CASE("read_pc2, read_mdd and read_animation: the frame rate is an input, 30 by default", "[io][pc2][mdd]") {
+  const auto animation = moving_tetrahedron<Surface_mesh, float>(3);
+  const fs::path pc2 = scratch("tetra_rate.pc2"), mdd = scratch("tetra_rate.mdd");
+  io::write_pc2(animation, pc2);
+  io::write_mdd(animation, mdd);
+  CHECK(io::read_pc2(pc2, tetrahedron<Surface_mesh>()).frames_per_second() == 30);
+  CHECK(io::read_pc2(pc2, tetrahedron<Surface_mesh>(), 24).frames_per_second() == 24);
+  CHECK(io::read_mdd(mdd, tetrahedron<Surface_mesh>(), 60).frames_per_second() == 60);
+  const fs::path topology = scratch("tetra_rate.off");
+  io::write_off(animation, 0, topology);
+  CHECK(io::read_animation(pc2.string(), {.topology = topology, .fps = 15}).frames_per_second() == 15);
+  CHECK_THROWS_WITH(io::read_animation(mdd.string(), {.topology = topology, .fps = -1}),
+                    Catch::Contains("fps must be positive"));
 }
 
 TEST_CASE("point caches of a double animation hold its coordinates rounded to float", "[io][pc2][mdd]") {

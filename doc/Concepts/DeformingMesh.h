@@ -15,6 +15,11 @@
 ///
 /// Frames are counted from 0. The positions must be finite.
 ///
+/// Optionally, `m.frames_per_second()` (convertible to `double`) gives the frame rate; the
+/// descriptors that count time in seconds (deformseg::motion_signatures) read it through
+/// deformseg::frames_per_second, which gives 30 for a model without it. deformseg::Deforming_mesh
+/// has it (30 by default; the readers set it from their `fps` option).
+///
 /// \par Has models
 /// deformseg::Deforming_mesh<FaceGraph, Coordinate>, for any FaceGraph (tested with
 /// `CGAL::Surface_mesh` and `CGAL::Polyhedron_3`).

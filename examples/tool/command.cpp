@@ -25,7 +25,8 @@ void add_input_options(CLI::App& command, Input_options& options) {
   command.add_option("--clip", options.clip,
                      "glTF: the clip to read, by name or index (or as FILE.glb#CLIP); required when the file "
                      "holds several");
-  command.add_option("--fps", options.fps, "glTF: frames per second the clip is sampled at")
+  command.add_option("--fps", options.fps,
+                     "Frames per second: a glTF clip is sampled at it; frame files and point caches play at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   CLI::Option* weld = command.add_flag(
@@ -84,7 +85,7 @@ Surface_mesh_animation read_input(const Input_options& given, Input_report* repo
       return read;
     }
     io::Animation_read_options read{.triangulate = options.triangulate, .threads = options.threads,
-                                    .repair = repair_options(options)};
+                                    .repair = repair_options(options), .fps = options.fps};
     if (!options.topology.empty()) read.topology = options.topology;
     return io::read_animation(options.input, read, &found.repair);
   }();

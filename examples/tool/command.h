@@ -30,7 +30,7 @@ struct Input_options {
   bool triangulate = false;
   int threads = 0;
   std::string clip;         // glTF: a clip's name or index; empty: the only one (several refused)
-  double fps = 30;          // glTF: frames per second of the sampling
+  double fps = 30;          // frames per second: glTF's sampling, frame files' and point caches' rate
   bool weld = false;        // --weld: weld a frame sequence's or a point cache's vertices
   bool no_weld = false;     // --no-weld: keep a glTF file's vertices as they are
   bool refuse_defects = false;  // --refuse-defects: fail on degenerate or non-manifold triangles

@@ -70,7 +70,7 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
   };
   if (!is_gltf(file)) {
     try {
-      out.animations.push_back(io::read_animation(file.string(), {.threads = o.threads}));
+      out.animations.push_back(io::read_animation(file.string(), {.threads = o.threads, .fps = o.fps}));
       out.clips.push_back(rows[of_file.front()]);
     } catch (const invalid_input& e) {
       skip_or_throw(of_file, e);
@@ -312,7 +312,8 @@ void add_evaluate_command(CLI::App& app) {
                       "motion '-': a distractor; fields may be in double quotes)")
       ->required();
   add_policy_options(*command, o->policy);
-  command->add_option("--fps", o->fps, "Frames per second glTF clips are sampled at. Default: 30");
+  command->add_option("--fps", o->fps,
+                      "Frames per second: glTF clips are sampled at it, frame folders play at it. Default: 30");
   command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
   command->add_flag("--skip-unreadable", o->skip_unreadable,
                     "Leave out, with a line on standard error, the clips that cannot be read or described (a "

@@ -46,21 +46,25 @@ void run_find(const Find_command_options& o) {
 
 void add_find_command(CLI::App& app) {
   auto o = std::make_shared<Find_command_options>();
-  CLI::App* command = app.add_subcommand("find", "Where a short motion occurs in a long animation: the best "
-                                                 "non-overlapping windows, by motion signatures and subsequence DTW");
+  CLI::App* command = app.add_subcommand(
+      "find", "Where a short motion occurs in a long animation: the best non-overlapping windows, by motion "
+              "signatures; a window's value is the query against its frames described alone (1 for a copy)");
   command->add_option("query", o->query.input, "The short motion (a glTF file, FILE.glb#CLIP, a folder, a quoted glob or a point cache)")->required();
   command->add_option("long", o->long_animation.input, "The long animation to search")->required();
   command->add_option("--topology-query", o->query.topology, "Connectivity of the query, for a point cache");
   command->add_option("--topology-long", o->long_animation.topology, "Connectivity of the long animation, for a point cache");
   command->add_option("--clip-query", o->query.clip, "glTF: the query's clip, by name or index (default: the first)");
   command->add_option("--clip-long", o->long_animation.clip, "glTF: the long animation's clip (default: the first)");
-  command->add_option("--fps", o->query.fps, "glTF: frames per second both clips are sampled at")
+  command->add_option("--fps", o->query.fps,
+                      "Frames per second of both inputs: glTF clips are sampled at it, frame files and point caches "
+                      "play at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_option("--threads", o->query.threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
   command->add_option("--count", o->count, "How many windows at most")->capture_default_str();
   command->add_option("--shortest", o->shortest,
-                      "The shortest window, as a fraction of the query's length (0.5: up to twice as fast)")
+                      "A window lasts from this fraction of the query's duration to its inverse, in (0, 1] "
+                      "(0.5: from half to twice, a motion up to twice as fast or as slow)")
       ->capture_default_str();
   add_json_option(*command, o->json, "the windows, their values and warping paths");
   command->callback([o] { run_find(*o); });

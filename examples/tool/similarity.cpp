@@ -205,7 +205,9 @@ void add_similarity_command(CLI::App& app) {
   command->add_option("--topology-b", o->b.topology, "Connectivity of B, for a point cache");
   command->add_option("--clip-a", o->a.clip, "glTF: the clip of A, by name or index (default: the first)");
   command->add_option("--clip-b", o->b.clip, "glTF: the clip of B, by name or index (default: the first)");
-  command->add_option("--fps", o->a.fps, "glTF: frames per second both clips are sampled at")
+  command->add_option("--fps", o->a.fps,
+                      "Frames per second of both inputs: glTF clips are sampled at it, frame files and point caches "
+                      "play at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_option("--threads", o->a.threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
@@ -230,7 +232,9 @@ void add_matrix_command(CLI::App& app) {
       ->required()
       ->expected(2, -1);
   command->add_option("--topology", o->topology, "Connectivity for point caches (all inputs share it)");
-  command->add_option("--fps", o->fps, "glTF: frames per second the clips (FILE.glb#CLIP) are sampled at")
+  command->add_option("--fps", o->fps,
+                      "Frames per second of every input: glTF clips are sampled at it, frame files and point caches "
+                      "play at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_option("--threads", o->threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);

@@ -99,7 +99,9 @@ void add_view_command(CLI::App& app) {
       ->check(CLI::IsMember({"strain", "previous-strain", "temporal", "segments", "none"}));
   command->add_option("--max-frames", o->max_frames, "At most this many frames, evenly spaced, are shown. Default: 1000");
   command->add_option("--topology", o->topology, "Connectivity for point caches (the inputs share it)");
-  command->add_option("--fps", o->fps, "glTF: frames per second the clips are sampled at; the page plays at it")
+  command->add_option("--fps", o->fps,
+                      "Frames per second of the inputs: glTF clips are sampled at it, frame files and point caches "
+                      "play at it; the page plays at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);

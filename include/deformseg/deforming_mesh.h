@@ -60,6 +60,9 @@ concept ReadablePropertyMap = requires(const Map& map, const Key& key) {
 /// - `m.frame_point_map(t)` gives a readable property map from the graph's vertex descriptors to
 ///   the vertex positions at frame `t`.
 ///
+/// An animation may also give its frame rate, `m.frames_per_second()` (see `frames_per_second`); the
+/// concept does not require it.
+///
 /// Has models: `deformseg::Deforming_mesh`. See `doc/Concepts/DeformingMesh.h`.
 template <class M>
 concept DeformingMesh =
@@ -71,6 +74,9 @@ concept DeformingMesh =
           typename boost::graph_traits<typename M::Face_graph>::vertex_descriptor>;
     };
 
+/// @brief The frame rate of an animation that does not say its own: 30 frames per second.
+inline constexpr double default_frames_per_second = 30;
+
 /// @brief The default model of `DeformingMesh`: the connectivity of a `FaceGraph` and the vertex
 /// positions of every frame, stored contiguously.
 ///
@@ -81,6 +87,9 @@ concept DeformingMesh =
 /// `vertices(g)`); face `j` likewise.
 ///
 /// Copies share the connectivity, which never changes once built, and copy the positions.
+///
+/// The animation carries its frame rate (`frames_per_second`, default 30), which the readers set
+/// and descriptors that measure time in seconds read (`motion_signatures`).
 ///
 /// @tparam Graph a `FaceGraph` whose faces are all triangles, with a vertex point property map.
 /// @tparam Coordinate the stored coordinate type: `double` (default, exact for any input) or
@@ -185,6 +194,31 @@ public:
       for (int k = 0; k < 3; ++k) xyz[3 * i + k] = static_cast<Coordinate>(CGAL::to_double(p[k]));
     }
     add_frame(std::span<const Coordinate>(xyz));
+  }
+
+  /// @brief The frames `first` to `last` (inclusive) as an animation of their own: the same
+  /// connectivity (shared, not copied), those frames' positions and this frame rate.
+  /// @pre `first <= last < num_frames()`; otherwise throws `invalid_input`.
+  /// @par Complexity O((last - first + 1) V).
+  Deforming_mesh frames(std::size_t first, std::size_t last) const {
+    if (first > last) throw invalid_input("frames " + std::to_string(first) + " to " + std::to_string(last) +
+                                          ": the first is after the last");
+    check_frame(last);
+    Deforming_mesh window(topology_, frames_per_second_);
+    const std::size_t block = 3 * num_vertices();
+    window.positions_.assign(positions_.begin() + std::ptrdiff_t(first * block),
+                             positions_.begin() + std::ptrdiff_t((last + 1) * block));
+    return window;
+  }
+
+  /// @brief The frame rate, in frames per second. Default 30.
+  double frames_per_second() const noexcept { return frames_per_second_; }
+  /// @brief Sets the frame rate, in frames per second.
+  /// @pre `fps` is finite and positive; otherwise throws `invalid_input`.
+  void set_frames_per_second(double fps) {
+    if (!(fps > 0) || !std::isfinite(fps))
+      throw invalid_input("the frame rate must be positive and finite, not " + std::to_string(fps) + " fps");
+    frames_per_second_ = fps;
   }
 
   /// @brief Reserves storage for `frames` frames in all, so that adding them does not reallocate.
@@ -308,9 +342,25 @@ private:
                           std::to_string(num_frames()) + " frames");
   }
 
+  // An animation on the connectivity of another, without frames.
+  Deforming_mesh(std::shared_ptr<const Topology> topology, double fps)
+      : topology_(std::move(topology)), frames_per_second_(fps) {}
+
   std::shared_ptr<const Topology> topology_;
   std::vector<Coordinate> positions_;
+  double frames_per_second_ = default_frames_per_second;
 };
+
+/// @brief The frame rate of `animation`: its `frames_per_second()` when its type has one (as
+/// `Deforming_mesh`), else `default_frames_per_second` (30).
+/// @par Complexity O(1).
+template <DeformingMesh M>
+double frames_per_second(const M& animation) {
+  if constexpr (requires { { animation.frames_per_second() } -> std::convertible_to<double>; })
+    return animation.frames_per_second();
+  else
+    return default_frames_per_second;
+}
 
 /// @brief Builds a `FaceGraph` from points and triangles given by vertex indices, keeping the
 /// points' order as the vertex index order and the triangles' order as the face index order.
@@ -357,7 +407,8 @@ Graph make_face_graph(const PointRange& points, const TriangleRange& triangles) 
 /// contiguous positions.
 ///
 /// The copy's connectivity is a copy of `animation.face_graph()`; its vertices correspond to the
-/// original's in the order of `vertices(g)`, which copying a `FaceGraph` keeps.
+/// original's in the order of `vertices(g)`, which copying a `FaceGraph` keeps. Its frame rate is
+/// the original's (`frames_per_second`).
 /// @par Complexity O(T V).
 template <std::floating_point Coordinate = double, DeformingMesh M>
 Deforming_mesh<typename M::Face_graph, Coordinate> make_deforming_mesh(const M& animation) {
@@ -370,6 +421,7 @@ Deforming_mesh<typename M::Face_graph, Coordinate> make_deforming_mesh(const M& 
   for (auto v : vertices(animation.face_graph()))
     original[get(copy.vertex_index_map(), *copied++)] = v;
 
+  copy.set_frames_per_second(frames_per_second(animation));
   copy.reserve_frames(animation.num_frames());
   for (std::size_t t = 0; t < animation.num_frames(); ++t)
     copy.add_frame_from(animation.frame_point_map(t), std::span<const vertex_descriptor>(original));

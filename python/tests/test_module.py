@@ -106,6 +106,29 @@ def test_similarity_of_an_animation_with_itself_is_1(grid):
     assert m.shape == (2, 2) and np.allclose(m, 1.0)
 
 
+def test_the_frame_rate_is_the_animations_and_the_same_motion_at_half_the_rate_is_the_same(grid):
+    faces, frames = grid(4, 6, 61)
+    a = deformseg.Animation(faces, frames)
+    half = deformseg.Animation(faces, frames[::2], fps=15)
+    assert (a.fps, half.fps) == (30.0, 15.0)
+    # The same motion sampled at 15 fps: the same motion; the same frames played at 60: a faster one.
+    same = deformseg.similarity(half, a).value
+    faster = deformseg.similarity(deformseg.Animation(faces, frames, fps=60), a).value
+    assert same >= 0.99 and faster < same - 0.02, (same, faster)
+    with pytest.raises(deformseg.InvalidInput, match="fps"):
+        deformseg.Animation(faces, frames, fps=0)
+
+
+def test_find_motion_finds_a_copy_at_its_frames_with_value_1(grid):
+    faces, frames = grid(4, 6, 12)
+    louder = frames[:, :, :] * np.array([1.0, 1.0, 3.0])  # the same wave, three times as high
+    still = np.repeat(frames[:1], 10, axis=0)
+    long_animation = deformseg.Animation(faces, np.concatenate([louder[::-1], frames, still, louder]))
+    match = deformseg.find_motion(deformseg.Animation(faces, frames), long_animation)[0]
+    assert (match.first, match.last, match.value) == (12, 23, 1.0)
+    assert match.alignment[0] == (0, 12) and match.alignment[-1] == (11, 23)
+
+
 # ---- errors ------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("frames, message", [

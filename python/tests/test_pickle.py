@@ -192,23 +192,30 @@ def test_a_bad_state_is_refused_naming_the_class(type_, grid):
         assert reason in str(error.value), (bad, str(error.value))
 
 
+def test_an_animation_keeps_its_frame_rate(grid):
+    restored = pickle.loads(pickle.dumps(deformseg.Animation(*grid(2, 2, 3), fps=24.0)))
+    assert restored.fps == 24.0
+
+
 def test_every_repair_count_comes_back_under_its_name(grid, tmp_path):
     faces, frames = deformseg.Animation(*grid(2, 2, 3)).__getstate__()[1:3]
     names = list(deformseg.read_animation(write_obj_frames(tmp_path / "frames")).repair)
     assert len(names) == 12
     counts = {name: k + 1 for k, name in enumerate(names)}  # every count another value
     restored = new_of(deformseg.Animation)
-    restored.__setstate__((1, faces, frames, counts))
+    restored.__setstate__((1, faces, frames, 30.0, counts))
     assert restored.repair == counts and list(restored.repair) == names
 
 
 def test_an_animation_state_is_checked_as_its_arrays_are(grid):
-    faces, frames, repair = deformseg.Animation(*grid(2, 2, 3)).__getstate__()[1:]
+    faces, frames, fps, repair = deformseg.Animation(*grid(2, 2, 3)).__getstate__()[1:]
     bad_faces = np.array(faces)
     bad_faces[0, 0] = 99
     with pytest.raises(deformseg.InvalidInput, match="out of range"):
-        new_of(deformseg.Animation).__setstate__((1, bad_faces, frames, repair))
+        new_of(deformseg.Animation).__setstate__((1, bad_faces, frames, fps, repair))
     with pytest.raises(ValueError, match="field 'repair' has no count 'input_vertices'"):
-        new_of(deformseg.Animation).__setstate__((1, faces, frames, {}))
+        new_of(deformseg.Animation).__setstate__((1, faces, frames, fps, {}))
     with pytest.raises(ValueError, match="field 'frames' is not an array of float64"):
-        new_of(deformseg.Animation).__setstate__((1, faces, frames.astype(np.float32), repair))
+        new_of(deformseg.Animation).__setstate__((1, faces, frames.astype(np.float32), fps, repair))
+    with pytest.raises(deformseg.InvalidInput, match="fps must be positive"):
+        new_of(deformseg.Animation).__setstate__((1, faces, frames, 0.0, repair))

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cmath>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
@@ -254,6 +255,9 @@ struct Frame_sequence_options {
   /// not welded (`weld` false: a frame file's vertices are its own) and degenerate, duplicate
   /// and non-manifold triangles are repaired (`defects` = `Defect_policy::repair`).
   Repair_options repair{};
+  /// @brief The animation's frame rate (`Deforming_mesh::frames_per_second`), which frame files do
+  /// not give. Default 30.
+  double fps = default_frames_per_second;
 };
 
 /// @brief Reads an animation stored as one mesh file per frame (OBJ, OFF or PLY), all with the
@@ -274,7 +278,7 @@ struct Frame_sequence_options {
 /// @param directory_or_glob the frames, as for `list_frame_files`: a folder, a pattern with `*` and
 /// `?` in the file name part, or one file.
 /// @param options `topology` (default: the first frame), `triangulate` (default false), `threads`
-/// (default 0: all), `repair` (default: no welding, defects repaired).
+/// (default 0: all), `repair` (default: no welding, defects repaired), `fps` (default 30).
 /// @param report where to store what the repair changed, when not null (default null).
 /// @return the animation, frame `t` from the `t`-th file in natural order; vertex `i` is the
 /// file's vertex `i` unless the repair welded or copied vertices (`report`, and
@@ -282,8 +286,8 @@ struct Frame_sequence_options {
 /// @pre every frame has as many vertices as the connectivity, all with finite coordinates. The
 /// faces of frames other than the first are not read: they are assumed to be the same.
 /// @throws invalid_input naming the file, the frame and, for a malformed number, the line of the
-/// first problem: no frame file, a file that cannot be read or parsed, a face that is not a
-/// triangle, a frame with another vertex count, a non-finite coordinate; with
+/// first problem: a frame rate that is not positive and finite, no frame file, a file that cannot
+/// be read or parsed, a face that is not a triangle, a frame with another vertex count, a non-finite coordinate; with
 /// `Defect_policy::refuse`, the first defect of the connectivity, located at its file. When
 /// several frames are bad, the lowest one is reported.
 /// @par Complexity O(total size of the files), divided among the threads, plus the repair's
@@ -295,6 +299,8 @@ Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& directo
                                                       Repair_report* report = nullptr) {
   if (options.threads < 0)
     throw invalid_input(internal::join("threads must be 0 (all) or more, not ", std::to_string(options.threads)));
+  if (!(options.fps > 0) || !std::isfinite(options.fps))
+    throw invalid_input("fps must be positive and finite, not " + std::to_string(options.fps));
   const std::vector<std::filesystem::path> files = list_frame_files(directory_or_glob);
   const std::filesystem::path topology_file = options.topology.value_or(files.front());
   const Input_location topology_location{.file = topology_file.string(),
@@ -332,7 +338,9 @@ Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& directo
     repaired = internal::repaired_topology(std::span<const Coordinate>(positions), block / 3,
                                            std::span<const std::array<std::uint32_t, 3>>(soup.triangles), options.repair,
                                            topology_location);
-  return internal::repaired_animation<Graph, Coordinate>(std::move(positions), block / 3, repaired, report);
+  auto animation = internal::repaired_animation<Graph, Coordinate>(std::move(positions), block / 3, repaired, report);
+  animation.set_frames_per_second(options.fps);
+  return animation;
 }
 
 }  // namespace deformseg::io

@@ -51,7 +51,8 @@ struct Gltf_read_options {
   /// @brief The clip (glTF animation) to sample: empty (default) for the file's first clip; else
   /// the first clip of that name; else, when all digits, the clip of that index.
   std::string clip{};
-  /// @brief Frames per second the clip is sampled at. Default 30.
+  /// @brief Frames per second the clip is sampled at, the frame rate of the animation `read`
+  /// gives (`Deforming_mesh::frames_per_second`). Default 30.
   double fps = 30;
   /// @brief The repair `read_gltf` applies (see `mesh_repair.h`; welding by what the file fixes,
   /// the same for every clip: see `Gltf_file::repair`). Default: welding on (glTF splits vertices
@@ -470,6 +471,7 @@ public:
           internal::positions_of_sources<Coordinate>(std::span<const double>(sampled.positions), sampled.num_vertices,
                                                      repaired.source_vertex),
           &sampled.report.repair);
+      animation.set_frames_per_second(options.fps);
       if (report) *report = std::move(sampled.report);
       return animation;
     } catch (const invalid_input& e) {

@@ -327,6 +327,8 @@ inline Point_cache_info read_point_cache_info(const std::filesystem::path& cache
 /// convert to either exactly.
 /// @param cache the `.pc2` file, read with one call.
 /// @param topology the connectivity: vertex `i` of the cache is the vertex of index `i`.
+/// @param frames_per_second the animation's frame rate (`Deforming_mesh::frames_per_second`), which
+/// a PC2 file does not give. Default 30.
 /// @return the animation, frame `t` from sample `t`. The header's start frame and sample rate
 /// are not kept: `read_point_cache_info` gives them.
 /// @pre the file is a PC2 file of version 1 with as many points as `topology` has vertices, at
@@ -340,8 +342,11 @@ inline Point_cache_info read_point_cache_info(const std::filesystem::path& cache
 /// @par Complexity O(T V).
 /// @sa read_mdd, read_point_cache_info, write_pc2
 template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
-Deforming_mesh<Graph, Coordinate> read_pc2(const std::filesystem::path& cache, Graph topology) {
-  return internal::read_point_cache<Point_cache_format::pc2, Graph, Coordinate>(cache, std::move(topology));
+Deforming_mesh<Graph, Coordinate> read_pc2(const std::filesystem::path& cache, Graph topology,
+                                           double frames_per_second = default_frames_per_second) {
+  auto animation = internal::read_point_cache<Point_cache_format::pc2, Graph, Coordinate>(cache, std::move(topology));
+  animation.set_frames_per_second(frames_per_second);
+  return animation;
 }
 
 /// @brief Reads a LightWave/Blender MDD point cache as an animation of `topology`.
@@ -351,6 +356,8 @@ Deforming_mesh<Graph, Coordinate> read_pc2(const std::filesystem::path& cache, G
 /// convert to either exactly.
 /// @param cache the `.mdd` file, read with one call.
 /// @param topology the connectivity: vertex `i` of the cache is the vertex of index `i`.
+/// @param frames_per_second the animation's frame rate (`Deforming_mesh::frames_per_second`).
+/// Default 30, whatever the file's frame times say.
 /// @return the animation, frame `t` from the file's frame `t`. The frame times are not kept:
 /// `read_point_cache_info` gives them.
 /// @pre the file has as many points as `topology` has vertices, at least one frame, finite
@@ -364,8 +371,11 @@ Deforming_mesh<Graph, Coordinate> read_pc2(const std::filesystem::path& cache, G
 /// @par Complexity O(T V).
 /// @sa read_pc2, read_point_cache_info, write_mdd
 template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
-Deforming_mesh<Graph, Coordinate> read_mdd(const std::filesystem::path& cache, Graph topology) {
-  return internal::read_point_cache<Point_cache_format::mdd, Graph, Coordinate>(cache, std::move(topology));
+Deforming_mesh<Graph, Coordinate> read_mdd(const std::filesystem::path& cache, Graph topology,
+                                           double frames_per_second = default_frames_per_second) {
+  auto animation = internal::read_point_cache<Point_cache_format::mdd, Graph, Coordinate>(cache, std::move(topology));
+  animation.set_frames_per_second(frames_per_second);
+  return animation;
 }
 
 /// @brief Writes an animation as a Blender/Maya PC2 point cache (version 1), with one call.

@@ -18,6 +18,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cctype>
 #include <cstdint>
@@ -47,7 +48,9 @@ struct Animation_read_options {
   /// Empty (default): the file's only clip, or its rest pose when it has none; a file of several
   /// clips is refused, naming them (see `require_clip_choice`).
   std::string clip{};
-  /// @brief glTF: frames per second the clip is sampled at. Default 30.
+  /// @brief The animation's frame rate, in frames per second (`Deforming_mesh::frames_per_second`):
+  /// for glTF the rate the clip is sampled at, for frame files and point caches (whose rate the
+  /// files do not give) the rate they were sampled at. Default 30.
   double fps = 30;
 };
 
@@ -120,7 +123,7 @@ namespace deformseg::io {
 /// the positions are read, unless it welds, which compares every frame). Vertex `i` of a point
 /// cache is vertex `i` of the topology file. A glTF clip is sampled at `options.fps`, then given
 /// the connectivity every clip of its file shares (`Gltf_file::repair`: welded by what the file
-/// fixes, and repaired).
+/// fixes, and repaired). Every format's animation has the frame rate `options.fps`.
 ///
 /// @tparam Graph the connectivity type, a `FaceGraph` (default `Surface_mesh`).
 /// @tparam Coordinate the stored coordinate type (default `double`).
@@ -128,7 +131,8 @@ namespace deformseg::io {
 /// `.pc2` or `.mdd` file.
 /// @param options `topology` (default none), `triangulate` (default false), `threads` (default 0:
 /// all), `repair` (default: the format's; defects repaired, glTF welded), `clip` (default: the
-/// only one) and `fps` (default 30) for glTF.
+/// only one) for glTF, and `fps` (default 30): the rate a glTF clip is sampled at, the rate of
+/// frame files and point caches.
 /// @param report where to store what the repair changed, when not null (default null).
 /// @pre a point cache comes with `options.topology`; a glTF file comes with no `topology`, a clip
 /// (after '#' or in `options.clip`, not both) unless it holds one clip or none, and deformseg was
@@ -154,9 +158,12 @@ Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input, const
                                                   {.topology = options.topology,
                                                    .triangulate = options.triangulate,
                                                    .threads = options.threads,
-                                                   .repair = repair},
+                                                   .repair = repair,
+                                                   .fps = options.fps},
                                                   report);
 
+  if (!(options.fps > 0) || !std::isfinite(options.fps))
+    throw invalid_input("fps must be positive and finite, not " + std::to_string(options.fps), {.file = input});
   if (!options.topology)
     throw invalid_input("a ." + format + " point cache needs a topology mesh (.obj, .off or .ply)",
                         {.file = input});
@@ -180,7 +187,9 @@ Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input, const
   if (repair.weld)
     repaired = internal::repaired_topology(std::span<const Coordinate>(positions), vertices, triangles, repair,
                                            topology_location);
-  return internal::repaired_animation<Graph, Coordinate>(std::move(positions), vertices, repaired, report);
+  auto animation = internal::repaired_animation<Graph, Coordinate>(std::move(positions), vertices, repaired, report);
+  animation.set_frames_per_second(options.fps);
+  return animation;
 }
 
 }  // namespace deformseg::io
