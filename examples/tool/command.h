@@ -10,6 +10,7 @@
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/strain.h>
+#include <deformseg/threads.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -35,6 +36,10 @@ struct Input_options {
   bool no_weld = false;     // --no-weld: keep a glTF file's vertices as they are
   bool refuse_defects = false;  // --refuse-defects: fail on degenerate or non-manifold triangles
 };
+
+/// The check of every `--threads`: 0 (all) to max_threads, refused when the command line is read,
+/// before any work.
+inline const CLI::Range thread_counts(0, max_threads);
 
 /// What reading the input found besides the animation.
 struct Input_report {

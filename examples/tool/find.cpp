@@ -57,7 +57,7 @@ void add_find_command(CLI::App& app) {
   command->add_option("--fps", o->query.fps, "glTF: frames per second both clips are sampled at")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command->add_option("--threads", o->query.threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", o->query.threads, "Threads for reading (0: all)")->check(thread_counts);
   command->add_option("--count", o->count, "How many windows at most")->capture_default_str();
   command->add_option("--shortest", o->shortest,
                       "The shortest window, as a fraction of the query's length (0.5: up to twice as fast)")

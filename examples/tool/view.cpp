@@ -99,7 +99,7 @@ void add_view_command(CLI::App& app) {
   command->add_option("--fps", o->fps, "glTF: frames per second the clips are sampled at; the page plays at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(thread_counts);
   command->callback([o] { run(*o); });
 }
 
