@@ -4,7 +4,8 @@ A thin, typed layer over the C++ library's default types (``Surface_mesh_animati
 strains): the compiled functions come from ``deformseg._deformseg``; the evolving graph's classes,
 their networkx conversion and ``ged`` on graphs are pure Python (``deformseg._graphs``). Option
 names, defaults and errors are the C++ options' and the ``deformseg`` tool's; every long call
-releases the GIL.
+releases the GIL and stops on Ctrl-C (``KeyboardInterrupt``), and no thread of the library lives
+between calls, so fork-based process pools work after any call.
 """
 from ._deformseg import (
     EXACT_GED_MAX_EXPANDED,
