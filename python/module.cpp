@@ -4,8 +4,8 @@
 // evolving graph's classes, networkx conversions and `ged` on networkx graphs.
 //
 // Every call that can take long releases the GIL and can be interrupted by Ctrl-C; the arguments
-// it reads stay referenced by Python objects held for the call. Option names, defaults and checks are those of the C++
-// options and of the `deformseg` tool, whose names the string options take.
+// it reads stay referenced by Python objects held for the call. Option names, defaults and checks
+// are those of the C++ options and of the `deformseg` tool, whose names the string options take.
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/alignment/subsequence_dtw.h>

@@ -5,6 +5,7 @@
 // elsewhere.
 #include <deformseg/evolving_graph.h>
 #include <deformseg/frame_distances.h>
+#include <deformseg/ged/exact_ged.h>
 #include <deformseg/histogram_distance.h>
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/motion_similarity.h>
@@ -14,6 +15,8 @@
 #include <deformseg/synthetic.h>
 #include <deformseg/threads.h>
 
+#include "ged_support.h"
+
 #include <catch2/catch.hpp>
 
 #include <atomic>
@@ -21,6 +24,7 @@
 #include <cstdlib>
 #include <mutex>
 #include <numbers>
+#include <random>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -228,6 +232,14 @@ TEST_CASE("interruption: serial loops check between steps; what the check throws
     CHECK_NOTHROW(interruption_point());
   }
   CHECK(interruption_check_installed());  // the outer scope's check is back
+}
+
+TEST_CASE("interruption: an exact graph edit distance search stops between expansions", "[threads][ged]") {
+  // Two dense 20-node graphs of one label: the search runs to its 200,000 expansions, seconds.
+  std::mt19937 random(2);
+  const auto a = test::random_labelled_graph(random, 20, 1, 0.5), b = test::random_labelled_graph(random, 20, 1, 0.5);
+  const Interruption_scope scope([] { return false; });
+  CHECK_THROWS_AS(ged::Exact_ged{}(a, b), cancelled);
 }
 
 TEST_CASE("interruption: similarity_stopped is a cancelled", "[threads]") {

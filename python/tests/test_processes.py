@@ -134,6 +134,17 @@ def test_ctrl_c_interrupts_a_long_graph_matrix(characters):
     assert interrupted and latency < _LATENCY_BOUND, latency
 
 
+@pytest.mark.skipif(sys.platform == "win32", reason="SIGINT is sent with os.kill")
+def test_ctrl_c_interrupts_a_long_exact_graph_edit_distance():
+    nx = pytest.importorskip("networkx")
+    # Two dense 20-node graphs of one label: the search runs to its 200 000 expansions, seconds.
+    g1, g2 = (nx.gnp_random_graph(20, 0.5, seed=seed) for seed in (1, 2))
+    for g in (g1, g2):
+        nx.set_node_attributes(g, "a", "label")
+    interrupted, latency = _interrupted(lambda: deformseg.ged(g1, g2), 0.3)
+    assert interrupted and latency < _LATENCY_BOUND, latency
+
+
 def test_a_signal_handler_that_does_not_raise_lets_the_call_finish(grid):
     calls = []
     before = signal.signal(signal.SIGINT, lambda number, frame: calls.append(number))
