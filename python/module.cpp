@@ -3,9 +3,9 @@
 // parsed once. The pure-Python half (python/deformseg/) re-exports these names and adds the
 // evolving graph's classes, networkx conversions and `ged` on networkx graphs.
 //
-// Every call that can take long releases the GIL; the arguments it reads stay referenced by
-// Python objects held for the call. Option names, defaults and checks are those of the C++
-// options and of the `deformseg` tool, whose names the string options take.
+// Every call that can take long releases the GIL and can be interrupted by Ctrl-C; the arguments
+// it reads stay referenced by Python objects held for the call. Option names, defaults and checks
+// are those of the C++ options and of the `deformseg` tool, whose names the string options take.
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/alignment/subsequence_dtw.h>
@@ -29,6 +29,7 @@
 #include <deformseg/similarity/significance.h>
 #include <deformseg/strain.h>
 #include <deformseg/temporal_segmentation.h>
+#include <deformseg/threads.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -51,6 +52,23 @@ namespace py = pybind11;
 using namespace deformseg;
 
 namespace {
+
+// ---- Long calls ----------------------------------------------------------------------------------
+
+// The library's long loops call this on the calling thread about every 20 ms (threads.h): a
+// signal caught meanwhile runs its Python handler, and what the handler raises
+// (KeyboardInterrupt for Ctrl-C) stops the call and comes out of it.
+bool no_signal_raised() {
+  py::gil_scoped_acquire acquire;
+  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  return true;
+}
+
+// The GIL released for a call that can take long, which Ctrl-C can interrupt.
+struct Interruptible_call {
+  Interruption_scope scope{&no_signal_raised};
+  py::gil_scoped_release release;
+};
 
 // ---- Animations --------------------------------------------------------------------------------
 
@@ -82,12 +100,12 @@ std::vector<double> positions_of(const py::array& frames) {
   const bool contiguous = (frames.flags() & py::array::c_style) != 0;
   if (contiguous && frames.itemsize() == 8) {
     const auto* data = static_cast<const double*>(frames.data());
-    py::gil_scoped_release release;
+    Interruptible_call call;
     return std::vector<double>(data, data + count);
   }
   if (contiguous) {
     const auto* data = static_cast<const float*>(frames.data());
-    py::gil_scoped_release release;
+    Interruptible_call call;
     return std::vector<double>(data, data + count);
   }
   const auto converted = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(frames);
@@ -130,7 +148,7 @@ Animation animation_of_arrays(const py::object& faces_like, const py::object& fr
   std::vector<double> positions = positions_of(frames);
   const auto vertices = std::size_t(frames.shape(1));
   const auto triangles = triangles_of(faces, vertices);
-  py::gil_scoped_release release;
+  Interruptible_call call;
   std::vector<std::array<double, 3>> rest(vertices);
   std::copy_n(positions.data(), 3 * vertices, rest.front().data());
   Surface_mesh graph = make_face_graph<Surface_mesh>(rest, triangles);
@@ -177,12 +195,16 @@ Animation read_input(const std::filesystem::path& path, std::optional<std::strin
   if (!gltf && clip) throw invalid_input("clip applies to glTF files only", location);
   if (gltf && topology) throw invalid_input("topology does not apply to a glTF file: it has its own", location);
   if (!(fps > 0)) throw invalid_input("fps must be positive", location);
-  if (threads < 0) throw invalid_input("threads must be 0 (all) or more", location);
+  try {
+    thread_count(threads);
+  } catch (const invalid_input& e) {
+    throw e.located(location);
+  }
   const io::Repair_options repair{.weld = weld.value_or(gltf),
                                   .defects = refuse_defects ? io::Defect_policy::refuse : io::Defect_policy::repair};
   io::Animation_read_options options{.topology = topology, .triangulate = triangulate, .threads = threads,
                                      .repair = repair, .clip = clip.value_or(""), .fps = fps};
-  py::gil_scoped_release release;
+  Interruptible_call call;
   io::Repair_report report;
   Surface_mesh_animation mesh = io::read_animation(input, options, &report);
   return {std::move(mesh), report};
@@ -254,7 +276,7 @@ py::array strain(const Animation& a, const std::string& reference, std::size_t r
     refuse("measure must be 'max-principal', 'green-lagrange', 'frobenius' or 'area-ratio', got '" + measure + "'");
   Strain_field<float> field;
   {
-    py::gil_scoped_release release;
+    Interruptible_call call;
     const std::optional<Reference_mesh> rest = reference_mesh_of(reference_mesh);
     const auto run = [&](auto m) {
       return strain_with(a.mesh, rest, ref, rest_frame, m, gaussian, sigma, degenerate_tolerance, threads);
@@ -295,7 +317,7 @@ py::array distances(const Animation& a, const std::string& metric, std::size_t r
   check_rest(reference_mesh, rest_frame);
   Eigen::MatrixXf d;
   {
-    py::gil_scoped_release release;
+    Interruptible_call call;
     d = distances_of(a.mesh, m, rest_frame, reference_mesh, threads);
   }
   const auto n = py::ssize_t(d.rows());
@@ -322,7 +344,7 @@ std::vector<std::pair<std::size_t, std::size_t>> temporal(const Animation& a, co
   };
   Temporal_segmentation result;
   {
-    py::gil_scoped_release release;
+    Interruptible_call call;
     const Segment_cost cost(distances_of(a.mesh, m, rest_frame, reference_mesh, threads));
     if (method == "binary-split")
       result = segment_frames(
@@ -353,7 +375,7 @@ py::tuple evolving(const Animation& a, double threshold, const std::optional<std
                                        .threshold = threshold, .min_triangles = min_triangles,
                                        .min_frames = min_frames, .max_island = max_island};
   const Evolving_graph graph = [&] {
-    py::gil_scoped_release release;
+    Interruptible_call call;
     if (!reference_mesh) return evolving_graph(a.mesh, options);
     const Strain_field<float> field = field_of(a.mesh, reference_mesh_of(reference_mesh), Strain_options{});
     const std::vector<double> areas = face_areas(a.mesh, 0);
@@ -410,7 +432,7 @@ Similarity_result similarity(const Animation& a, const Animation& b, const std::
   require_motion(a.mesh, "a");
   require_motion(b.mesh, "b");
   return with_policy_choice(choice, [&](const auto& p) {
-    py::gil_scoped_release release;
+    Interruptible_call call;
     const auto da = p.describe(a.mesh), db = p.describe(b.mesh);
     Similarity_result out{p.compare(da, db), std::nullopt, 0};
     if constexpr (requires { frame_count(db); reordered_frames(db, std::span<const std::size_t>()); }) {
@@ -464,7 +486,7 @@ py::array matrix(const py::sequence& animations, const std::optional<py::sequenc
       return go.is_none() || go.cast<bool>();
     };
   Eigen::MatrixXd m = with_policy_choice(choice, [&](const auto& p) {
-    py::gil_scoped_release release;
+    Interruptible_call call;
     return columns ? similarity_matrix(rows.range(), columns->range(), p, report)
                    : similarity_matrix(rows.range(), p, report);
   });
@@ -476,7 +498,7 @@ std::vector<Motion_match> find(const Animation& query, const Animation& long_ani
                                double shortest) {
   if (count == 0) refuse("count must be at least 1");
   if (!(shortest > 0 && shortest <= 1)) refuse("shortest must be in (0, 1]");
-  py::gil_scoped_release release;
+  Interruptible_call call;
   return find_motion(query.mesh, long_animation.mesh, {.count = count, .shortest = shortest});
 }
 
@@ -525,7 +547,7 @@ Retrieval_scores evaluate(const py::array_t<double, py::array::forcecast>& simil
   const auto read = similarity.unchecked<2>();
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) m(i, j) = read(i, j);
-  py::gil_scoped_release release;
+  Interruptible_call call;
   return evaluate_retrieval(m, items);
 }
 
@@ -568,7 +590,7 @@ ged::Ged_result graph_edit_distance(const std::vector<std::string>& labels_a,
     refuse("method must be 'exact', 'bipartite' or 'lower', got '" + method + "'");
   if (!(max_seconds >= 0)) refuse("max_seconds must be non-negative");
   const io::Labelled_graph a = labelled_graph(labels_a, edges_a, "g1"), b = labelled_graph(labels_b, edges_b, "g2");
-  py::gil_scoped_release release;
+  Interruptible_call call;
   if (method == "bipartite") return ged::Bipartite_ged{}(a, b, ged::Unit_costs{});
   if (method == "lower") return ged::Assignment_lower_bound{}(a, b, ged::Unit_costs{});
   return ged::Exact_ged{.max_expanded = max_expanded, .max_seconds = max_seconds}(a, b, ged::Unit_costs{});
@@ -854,8 +876,8 @@ do not say their rate, are taken to be sampled at it.
 merges vertices that coincide in every frame (for glTF, by what the file fixes: the same rest
 position, skin weights and morph deltas, so that every clip of a file has one mesh, the same
 vertices and triangles); degenerate, duplicate and non-manifold triangles
-are repaired unless `refuse_defects` (default False); `threads` (default 0: all) read in
-parallel. `Animation.repair` says what the repair changed. Raises InvalidInput naming the file,
+are repaired unless `refuse_defects` (default False); `threads` (default 0: all, at most 1024) read
+in parallel. `Animation.repair` says what the repair changed. Raises InvalidInput naming the file,
 line and frame of the first problem, or for an option that does not apply (clip for frames,
 topology for glTF), as the tool does. Complexity linear in the input's size. Releases the GIL.)doc");
 
@@ -872,7 +894,7 @@ in the place of frame `rest_frame`. measure: "max-principal" (default, max |l - 
 principal stretches l), "green-lagrange", "frobenius" or "area-ratio". normalize: "gaussian"
 (default, 1 - exp(-s^2 / 2 sigma^2), sigma the 95th percentile of the strains unless `sigma` gives
 it) or "none" (raw strains). degenerate_tolerance (default 1e-12): reference triangles thinner than
-this have strain 0. threads: 0 (default) all; the result is the same for any number.
+this have strain 0. threads: 0 (default) all, at most 1024; the result is the same for any number.
 Invariant to rotation, translation and uniform scale of the whole animation. The array owns the
 library's result (no copy). Complexity O(T F). Releases the GIL.)doc");
 

@@ -1,13 +1,10 @@
 #include <deformseg/ged/ged_matrix.h>
 #include <deformseg/ged/lower_bound.h>
+#include <deformseg/threads.h>
 
 #include "ged_support.h"
 
 #include <catch2/catch.hpp>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <random>
 #include <span>
@@ -75,16 +72,13 @@ TEST_CASE("ged_matrix: the same for any number of threads", "[ged][matrix]") {
   const Ged_matrix_result two = ged_matrix_results(graphs, Exact_ged{}, Unit_costs{}, {.threads = 2});
   CHECK(one.distance == two.distance);
   for (std::size_t p = 0; p < one.pairs.size(); ++p) CHECK(one.pairs[p].mapping == two.pairs[p].mapping);
-#ifdef _OPENMP
   const auto uneven = deformseg::test::Uneven_costs{};
-  const int before = omp_get_max_threads();
-  omp_set_num_threads(1);
+  deformseg::set_default_threads(1);
   const Eigen::MatrixXd serial = ged_matrix(graphs, Bipartite_ged{}, uneven);
-  omp_set_num_threads(2);
+  deformseg::set_default_threads(7);
   const Eigen::MatrixXd parallel = ged_matrix(graphs, Bipartite_ged{}, uneven);
-  omp_set_num_threads(before);
+  deformseg::set_default_threads(0);
   CHECK(serial == parallel);
-#endif
 }
 
 TEST_CASE("ged_matrix: both directions give the tighter bounds", "[ged][matrix]") {

@@ -213,7 +213,7 @@ TEST_CASE("read_frame_sequence: errors name the file and the frame, the lowest f
   }
   SECTION("a negative thread count") {
     CHECK_THROWS_MATCHES(read_frame_sequence(folder.string(), {.threads = -1}), invalid_input,
-                         Message("threads must be 0 (all) or more, not -1"));
+                         Message("threads must be 0 (the default) to 1024, not -1"));
   }
 }
 

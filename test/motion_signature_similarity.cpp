@@ -14,12 +14,9 @@
 #include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/similarity/significance.h>
 #include <deformseg/synthetic.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Geometry>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -188,17 +185,12 @@ TEST_CASE("motion_signature_similarity: rising and falling at one speed are told
 
 TEST_CASE("motion_signatures: the same whatever the number of threads", "[motion_signature]") {
   const auto a = tube(bend_hold_unbend);
-#ifdef _OPENMP
-  const int threads = omp_get_max_threads();
-  omp_set_num_threads(1);
+  set_default_threads(1);
   const Eigen::MatrixXd one = motion_signatures(a);
-  omp_set_num_threads(3);
-  const Eigen::MatrixXd three = motion_signatures(a);
-  omp_set_num_threads(threads);
-  CHECK(one == three);
-#else
-  CHECK(motion_signatures(a) == motion_signatures(a));
-#endif
+  set_default_threads(7);
+  const Eigen::MatrixXd seven = motion_signatures(a);
+  set_default_threads(0);
+  CHECK(one == seven);
 }
 
 TEST_CASE("motion_signature_similarity: a time-shifted cyclic motion scores near 1", "[motion_signature]") {

@@ -8,13 +8,10 @@
 #include <deformseg/motion_similarity.h>
 #include <deformseg/retrieval_evaluation.h>
 #include <deformseg/synthetic.h>
+#include <deformseg/threads.h>
 
 #include <random>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 using namespace deformseg;
 
@@ -292,16 +289,15 @@ TEST_CASE("similarity_matrix: queries x database equals the pairwise calls, what
     for (Eigen::Index d = 0; d < 3; ++d)
       CHECK(m(q, d) == motion_similarity(queries[std::size_t(q)], database[std::size_t(d)], policy).value);
   CHECK(m(0, 2) == Approx(1.0));  // tube 0 against itself
-#ifdef _OPENMP
-  const int threads = omp_get_max_threads();
-  omp_set_num_threads(1);
+  set_default_threads(1);
   const Eigen::MatrixXd one_thread = similarity_matrix(queries, database, policy);
   const Eigen::MatrixXd all_one_thread = similarity_matrix(tubes, policy);
-  omp_set_num_threads(std::max(2, threads));
-  CHECK(one_thread == similarity_matrix(queries, database, policy));
-  CHECK(all_one_thread == similarity_matrix(tubes, policy));
-  omp_set_num_threads(threads);
-#endif
+  for (const int threads : {2, 7}) {
+    set_default_threads(threads);
+    CHECK(one_thread == similarity_matrix(queries, database, policy));
+    CHECK(all_one_thread == similarity_matrix(tubes, policy));
+  }
+  set_default_threads(0);
   CHECK(similarity_matrix(std::vector<Surface_mesh_animation>{}, database, policy).size() == 0);
 }
 

@@ -8,6 +8,7 @@
 #include <deformseg/internal/strain_math.h>
 #include <deformseg/strain.h>
 #include <deformseg/synthetic.h>
+#include <deformseg/threads.h>
 
 #include <CGAL/Polyhedron_3.h>
 
@@ -22,10 +23,6 @@
 #include <map>
 #include <random>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 using namespace deformseg;
 
@@ -474,16 +471,13 @@ TEST_CASE("strain: one thread and all threads give bit-identical fields", "[stra
       const auto exact_two = compute_strain<double>(tube.animation, {.reference = reference, .threads = 2});
       CHECK(same(exact_one, exact_two));
     }
-#ifdef _OPENMP
-  // The default team follows omp_set_num_threads.
-  const int before = omp_get_max_threads();
-  omp_set_num_threads(1);
+  // The default follows set_default_threads.
+  set_default_threads(1);
   const auto serial = compute_strain(tube.animation);
-  omp_set_num_threads(2);
+  set_default_threads(7);
   const auto parallel = compute_strain(tube.animation);
-  omp_set_num_threads(before);
+  set_default_threads(0);
   CHECK(same(serial, parallel));
-#endif
 }
 
 TEST_CASE("strain: previous-pose strain of a sequence that holds still is 0", "[strain]") {

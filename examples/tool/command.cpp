@@ -21,7 +21,7 @@ void add_input_options(CLI::App& command, Input_options& options) {
   command.add_flag("--triangulate", options.triangulate,
                    "Fan-triangulate polygons instead of rejecting them");
   command.add_option("--threads", options.threads, "Threads to use (0: all)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(thread_counts);
   command.add_option("--clip", options.clip,
                      "glTF: the clip to read, by name or index (or as FILE.glb#CLIP); required when the file "
                      "holds several");

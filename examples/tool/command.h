@@ -10,6 +10,7 @@
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/strain.h>
+#include <deformseg/threads.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -36,6 +37,10 @@ struct Input_options {
   bool refuse_defects = false;  // --refuse-defects: fail on degenerate or non-manifold triangles
   bool first_clip_by_default = false;  // info: a glTF file of several clips, none named, gives its first
 };
+
+/// The check of every `--threads`: 0 (all) to max_threads, refused when the command line is read,
+/// before any work.
+inline const CLI::Range thread_counts(0, max_threads);
 
 /// What reading the input found besides the animation.
 struct Input_report {

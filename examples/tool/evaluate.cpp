@@ -18,10 +18,6 @@
 #include <numeric>
 #include <tuple>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
 namespace deformseg::tool {
 namespace {
 
@@ -261,9 +257,7 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
 void run_evaluate(const Evaluate_options& o) {
   check_policy_choice(o.policy);
   if (!(o.fps > 0)) throw invalid_input("--fps must be positive");
-#ifdef _OPENMP
-  if (o.threads > 0) omp_set_num_threads(o.threads);  // the matrix's threads; the readers take theirs
-#endif
+  set_default_threads(o.threads);  // the matrix's threads; the readers take theirs
   const auto start = Clock::now();
   Read_clips read = read_clips(io::read_motion_labels(o.labels), o);
   const double read_seconds = seconds_since(start);
@@ -314,7 +308,7 @@ void add_evaluate_command(CLI::App& app) {
   add_policy_options(*command, o->policy);
   command->add_option("--fps", o->fps,
                       "Frames per second: glTF clips are sampled at it, frame folders play at it. Default: 30");
-  command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(thread_counts);
   command->add_flag("--skip-unreadable", o->skip_unreadable,
                     "Leave out, with a line on standard error, the clips that cannot be read or described (a "
                     "pose of one frame), instead of stopping");

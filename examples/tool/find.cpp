@@ -60,7 +60,7 @@ void add_find_command(CLI::App& app) {
                       "play at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command->add_option("--threads", o->query.threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", o->query.threads, "Threads for reading (0: all)")->check(thread_counts);
   command->add_option("--count", o->count, "How many windows at most")->capture_default_str();
   command->add_option("--shortest", o->shortest,
                       "A window lasts from this fraction of the query's duration to its inverse, in (0, 1] "

@@ -157,7 +157,7 @@ void add_ged_matrix_command(CLI::App& app) {
                     "symmetric matrix, pair i < j computed as i -> j");
   command->add_option("files", options->files, "The graphs (.dot, .gv, .graphml)")->required();
   add_method_options(*command, options->method);
-  command->add_option("--threads", options->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", options->threads, "Threads to use (0: all)")->check(thread_counts);
   command->add_option("--csv", options->csv, "Write the distance matrix as CSV to FILE ('-': standard output)")
       ->check(output_file());
   add_json_option(*command, options->json, "distances and bounds");

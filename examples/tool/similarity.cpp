@@ -210,7 +210,7 @@ void add_similarity_command(CLI::App& app) {
                       "play at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command->add_option("--threads", o->a.threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", o->a.threads, "Threads for reading (0: all)")->check(thread_counts);
   add_policy_options(*command, o->policy);
   command->add_option("--significance", o->copies,
                       "The z-score of the value against this many copies of B with frames shuffled (0: none). "
@@ -237,7 +237,7 @@ void add_matrix_command(CLI::App& app) {
                       "play at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command->add_option("--threads", o->threads, "Threads for reading (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", o->threads, "Threads for reading (0: all)")->check(thread_counts);
   add_policy_options(*command, o->policy);
   command->add_option("--csv", o->csv, "Write the matrix as CSV, with the inputs as row and column names, to FILE")
       ->check(output_file());

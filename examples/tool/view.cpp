@@ -104,7 +104,7 @@ void add_view_command(CLI::App& app) {
                       "play at it; the page plays at it")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(CLI::NonNegativeNumber);
+  command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(thread_counts);
   command->callback([o] { run(*o); });
 }
 

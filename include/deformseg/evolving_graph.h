@@ -7,6 +7,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/face_areas.h>
 #include <deformseg/frame_segments.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/spatiotemporal_segments.h>
 
 #include <algorithm>
@@ -120,14 +121,14 @@ inline Key_frame averaged_key_frame(const std::vector<Frame_graph>& frames, std:
 /// @param frames the frames of a segmentation, as `Frame_segments` gives them.
 /// @return the key frames, in time order.
 /// @par Complexity O(T (F + E)) for T frames of F triangles and E shared edges, frames in
-/// parallel (OpenMP); the result does not depend on the number of threads. Memory O(F) per
+/// parallel; the result does not depend on the number of threads. Memory O(F) per
 /// thread besides the frames' (small) graphs.
 inline Evolving_graph evolving_graph(const Frame_segments& frames) {
   const std::size_t count = frames.num_frames();
   std::vector<internal::Frame_graph> graphs(count);
-#pragma omp parallel for schedule(dynamic)
-  for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(count); ++t)
-    graphs[std::size_t(t)] = internal::Frame_segments_access::frame_graph(frames, std::size_t(t));
+  internal::parallel_for(count, 0, [&](std::size_t t) {
+    graphs[t] = internal::Frame_segments_access::frame_graph(frames, t);
+  });
   std::vector<Key_frame> key_frames;
   for (std::size_t first = 0; first < count;) {
     std::size_t last = first;

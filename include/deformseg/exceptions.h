@@ -1,5 +1,6 @@
 /// @file exceptions.h
-/// @brief The exception deformseg throws for input that breaks a documented precondition.
+/// @brief The exceptions deformseg throws: for input that breaks a documented precondition
+/// (`invalid_input`), and for a call stopped before its end (`cancelled`).
 #pragma once
 
 #include <cstddef>
@@ -60,6 +61,16 @@ private:
 
   std::string message_;
   Input_location where_;
+};
+
+/// @brief Thrown by a call that was stopped before its end because it was asked to stop: an
+/// `Interruption_check` returned false, or (its subclass `similarity_stopped`) a progress
+/// callback did.
+class cancelled : public std::runtime_error {
+public:
+  /// @brief The exception, with a message saying who stopped the call.
+  explicit cancelled(const std::string& message = "the computation was interrupted by its interruption check")
+      : std::runtime_error(message) {}
 };
 
 }  // namespace deformseg

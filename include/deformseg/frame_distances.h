@@ -4,13 +4,11 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/strain.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -40,7 +38,8 @@ enum class Frame_metric {
 struct Frame_distance_options {
   /// @brief The metric. Default: `Frame_metric::euclidean`.
   Frame_metric metric = Frame_metric::euclidean;
-  /// @brief Threads (0: OpenMP's default). The result is bit-identical for any number.
+  /// @brief Threads (0: `default_threads()`), at most `max_threads`. The result is bit-identical
+  /// for any number.
   int threads = 0;
 };
 
@@ -51,25 +50,14 @@ namespace internal {
 inline constexpr std::size_t distance_tile = 128;
 
 template <class Work>
-void for_each_tile_pair(std::size_t frames, [[maybe_unused]] int threads, const Work& work) {
+void for_each_tile_pair(std::size_t frames, int threads, const Work& work) {
   const std::size_t tiles = (frames + distance_tile - 1) / distance_tile;
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i < tiles; ++i)
     for (std::size_t j = i; j < tiles; ++j) pairs.emplace_back(i, j);
-#ifdef _OPENMP
-  const int team = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel num_threads(team)
-#endif
-  {
-#ifdef _OPENMP
-    // Eigen would run each tile's product on threads of its own, blocked by their number; one
-    // thread per tile keeps the result the same for any team (the setting is this region's).
-    omp_set_num_threads(1);
-#pragma omp for schedule(dynamic, 1)
-#endif
-    for (std::int64_t p = 0; p < std::int64_t(pairs.size()); ++p)
-      work(pairs[std::size_t(p)].first * distance_tile, pairs[std::size_t(p)].second * distance_tile);
-  }
+  parallel_for(pairs.size(), threads, [&](std::size_t p) {
+    work(pairs[p].first * distance_tile, pairs[p].second * distance_tile);
+  });
 }
 
 // sum_j (x_j - y_j)^2 in double, the exact way, for pairs where the Gram formula cancels.
@@ -153,7 +141,7 @@ void l1_distances(const Strain_field<Value>& field, int threads,
 /// @param field the strain field (`F x T`).
 /// @param options the metric (default Euclidean) and threads.
 /// @return the symmetric `T x T` matrix.
-/// @throws invalid_input when the field is empty.
+/// @throws invalid_input when the field is empty, or for `threads` out of [0, `max_threads`].
 /// @par Complexity
 /// O(T^2 F): `T^2 F` multiply-adds for Euclidean and cosine (half a full product, by symmetry),
 /// `1.5 T^2 F` operations for L1; O(T^2) memory.
@@ -164,6 +152,7 @@ auto frame_distances(const Strain_field<Value>& field, const Frame_distance_opti
   if (field.num_frames() == 0 || field.num_faces() == 0)
     throw invalid_input("frame_distances: the strain field is empty (" + std::to_string(field.num_faces()) +
                         " triangles, " + std::to_string(field.num_frames()) + " frames)");
+  thread_count(options.threads, "frame_distances");
   const auto frames = Eigen::Index(field.num_frames());
   Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> distances =
       Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>::Zero(frames, frames);

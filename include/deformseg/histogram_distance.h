@@ -5,12 +5,10 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/parallel_for.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -130,10 +128,10 @@ double histogram_distance(const Eigen::MatrixBase<Derived1>& h1, const Eigen::Ma
 /// @param a `Ta x n` histograms, one per row.
 /// @param b `Tb x n` histograms, the same bins.
 /// @param metric earth mover's (default) or total variation, see `Histogram_metric`.
-/// @param threads threads (0, the default: OpenMP's default).
+/// @param threads threads (0, the default: `default_threads()`).
 /// @return the `Ta x Tb` distances (an empty matrix when `a` or `b` has no row).
 /// @pre both have the same number n >= 1 of columns; every row finite, >= 0 and summing to 1
-/// (within 1e-6); `threads >= 0`.
+/// (within 1e-6); `threads` from 0 to `max_threads`.
 /// @throws invalid_input naming the broken precondition (the matrix and row).
 /// @par Complexity O(Ta Tb n) time, O((Ta + Tb) n + Ta Tb) memory. Measured
 /// (test/bench/histograms.cpp, 500 x 500 frames of 18 bins): 2.2 ms on one thread, 1.4 ms on two.
@@ -144,19 +142,16 @@ Eigen::MatrixXd histogram_distances(const Eigen::MatrixBase<DerivedA>& a, const 
   if (a.cols() != b.cols() || a.cols() == 0)
     throw invalid_input("histogram_distances: the histograms have " + std::to_string(a.cols()) + " and " +
                         std::to_string(b.cols()) + " bins; expected the same number, at least 1");
-  if (threads < 0)
-    throw invalid_input("histogram_distances: threads must be 0 (all) or more, not " + std::to_string(threads));
+  thread_count(threads, "histogram_distances");
   internal::check_histograms(a, "histogram_distances, first argument");
   internal::check_histograms(b, "histogram_distances, second argument");
   const internal::Histogram_rows u = internal::metric_rows(a, metric), v = internal::metric_rows(b, metric);
   const double factor = internal::metric_factor(metric, a.cols());
   Eigen::MatrixXd distances(a.rows(), b.rows());
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic) num_threads(threads > 0 ? threads : omp_get_max_threads())
-#endif
-  for (std::int64_t i = 0; i < std::int64_t(a.rows()); ++i)
+  internal::parallel_for(std::size_t(a.rows()), threads, [&](std::size_t i) {
     for (Eigen::Index j = 0; j < b.rows(); ++j)
       distances(Eigen::Index(i), j) = internal::scaled_l1(u, Eigen::Index(i), v, j, factor);
+  });
   return distances;
 }
 

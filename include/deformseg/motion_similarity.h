@@ -52,11 +52,12 @@ Similarity motion_similarity(const Mesh& a, const Mesh& b, const Policy& policy 
 /// descriptions, when all are made. An empty function (the default) is never called.
 using Similarity_progress = std::function<bool(std::size_t done, std::size_t total)>;
 
-/// @brief Thrown by `similarity_matrix` when its `Similarity_progress` returned false.
-class similarity_stopped : public std::runtime_error {
+/// @brief Thrown by `similarity_matrix` when its `Similarity_progress` returned false: a
+/// `cancelled`, as when an `Interruption_check` (threads.h) stops it.
+class similarity_stopped : public cancelled {
 public:
   /// @brief The exception, with a fixed message.
-  similarity_stopped() : std::runtime_error("the similarity matrix was stopped by its progress callback") {}
+  similarity_stopped() : cancelled("the similarity matrix was stopped by its progress callback") {}
 };
 
 /// @brief Thrown by `similarity_matrix` when the policy cannot describe one of the animations (a
@@ -129,7 +130,7 @@ std::vector<typename Policy::Description> describe_all(const Animations& animati
 
 /// @brief The similarity of every pair of `animations`: each animation described once
 /// (`policy.describe`, its evolving graph or histograms), then each pair i < j compared,
-/// descriptions and pairs in parallel (OpenMP); the matrix is symmetric (entry (j, i) is entry
+/// descriptions and pairs in parallel; the matrix is symmetric (entry (j, i) is entry
 /// (i, j)) with the diagonal the comparison of each animation with itself, so 1 for the library's
 /// policies, and entry (i, j) equals `motion_similarity(animations[i], animations[j], policy).value`.
 /// @tparam Animations a random-access range of a `DeformingMesh` type.
@@ -141,9 +142,10 @@ std::vector<typename Policy::Description> describe_all(const Animations& animati
 /// @throws animation_not_described (an invalid_input) for the first animation, in index order,
 /// that the policy cannot describe, naming it; invalid_input as the policy does for the first
 /// failing pair.
-/// @throws similarity_stopped when `progress` returned false.
-/// @par Complexity N describes and N (N + 1) / 2 compares; the result does not depend on the
-/// number of threads.
+/// @throws similarity_stopped when `progress` returned false; cancelled when the calling
+/// thread's `Interruption_check` stopped it (threads.h).
+/// @par Complexity N describes and N (N + 1) / 2 compares, on `default_threads()` threads (see
+/// `set_default_threads`); the result does not depend on their number.
 template <std::ranges::random_access_range Animations, class Policy = Default_similarity>
   requires DeformingMesh<std::ranges::range_value_t<Animations>> &&
            SimilarityPolicy<Policy, std::ranges::range_value_t<Animations>>
@@ -166,7 +168,7 @@ Eigen::MatrixXd similarity_matrix(const Animations& animations, const Policy& po
 }
 
 /// @brief The similarity of each of `queries` against each animation of `database`: every
-/// animation described once, then each (query, database) pair compared, in parallel (OpenMP);
+/// animation described once, then each (query, database) pair compared, in parallel;
 /// entry (q, d) equals `motion_similarity(queries[q], database[d], policy).value`.
 /// @tparam Queries a random-access range of a `DeformingMesh` type.
 /// @tparam Database a random-access range of the same `DeformingMesh` type.
@@ -179,9 +181,10 @@ Eigen::MatrixXd similarity_matrix(const Animations& animations, const Policy& po
 /// @throws animation_not_described (an invalid_input) for the first query, or else the first
 /// database animation, in index order, that the policy cannot describe, naming it; invalid_input
 /// as the policy does for the first failing pair.
-/// @throws similarity_stopped when `progress` returned false.
-/// @par Complexity Q + D describes and Q D compares; the result does not depend on the number of
-/// threads.
+/// @throws similarity_stopped when `progress` returned false; cancelled when the calling
+/// thread's `Interruption_check` stopped it (threads.h).
+/// @par Complexity Q + D describes and Q D compares, on `default_threads()` threads (see
+/// `set_default_threads`); the result does not depend on their number.
 template <std::ranges::random_access_range Queries, std::ranges::random_access_range Database,
           class Policy = Default_similarity>
   requires DeformingMesh<std::ranges::range_value_t<Queries>> &&

@@ -7,6 +7,7 @@
 #include <deformseg/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/face_adjacency.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/strain.h>
 
 #include <algorithm>
@@ -245,7 +246,7 @@ inline void absorb_islands(std::span<std::int32_t> labels, const Face_adjacency&
 /// @throws invalid_input when `triangles` and the field have different triangle counts or the
 /// threshold is not finite.
 /// @par Complexity O(F T alpha(F T)) time for the union-find, O(F log F) for the adjacency, the
-/// islands' absorption frames in parallel (OpenMP; the result does not depend on the threads);
+/// islands' absorption frames in parallel (the result does not depend on the threads);
 /// memory 9 bytes per cell (labels, union-find, deformed flag), independent of the adjacency.
 template <std::floating_point Value>
 Spatiotemporal_segmentation spatiotemporal_segmentation(const Strain_field<Value>& field,
@@ -263,10 +264,10 @@ Spatiotemporal_segmentation spatiotemporal_segmentation(const Strain_field<Value
   std::vector<std::int32_t> labels = internal::connected_cells(deformed, faces, frames, adjacency);
   internal::remove_small_segments(labels, faces, frames, options);
   if (options.max_island > 0) {
-#pragma omp parallel for schedule(dynamic)
-    for (std::ptrdiff_t t = 0; t < std::ptrdiff_t(frames); ++t)  // frames apart: each its own labels
-      internal::absorb_islands(std::span<std::int32_t>(labels).subspan(std::size_t(t) * faces, faces), adjacency,
+    internal::parallel_for(frames, 0, [&](std::size_t t) {  // frames apart: each its own labels
+      internal::absorb_islands(std::span<std::int32_t>(labels).subspan(t * faces, faces), adjacency,
                                options.max_island);
+    });
     internal::renumber_by_first_appearance(labels);
   }
   return Spatiotemporal_segmentation(faces, frames, std::move(labels));

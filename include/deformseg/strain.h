@@ -9,6 +9,7 @@
 #include <deformseg/internal/strain_kernel.h>
 #include <deformseg/strain_measures.h>
 #include <deformseg/strain_normalization.h>
+#include <deformseg/threads.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/properties.h>
@@ -74,8 +75,9 @@ struct Strain_options {
   /// Default: 1e-12, so only triangles of zero area up to rounding. A larger value (1e-3, say)
   /// also sets the strain of sliver triangles to 0.
   double degenerate_tolerance = 1e-12;
-  /// @brief Threads to use: 0 (default) for OpenMP's default (all cores unless `OMP_NUM_THREADS`
-  /// says otherwise). Ignored without OpenMP. The result is bit-identical for any number.
+  /// @brief Threads to use: 0 (default) for `default_threads()` (all the hardware's threads
+  /// unless `DEFORMSEG_NUM_THREADS` or `OMP_NUM_THREADS` says otherwise), at most `max_threads`
+  /// (see threads.h). The result is bit-identical for any number.
   int threads = 0;
 };
 
@@ -210,8 +212,7 @@ void check_strain_options(const Strain_options<Measure, Normalization>& options,
   if (options.reference == Strain_reference::rest_pose && options.rest_frame >= frames)
     throw invalid_input("compute_strain: rest frame " + std::to_string(options.rest_frame) +
                         " out of range for an animation of " + std::to_string(frames) + " frames");
-  if (options.threads < 0)
-    throw invalid_input("compute_strain: threads must be 0 (all) or more, not " + std::to_string(options.threads));
+  thread_count(options.threads, "compute_strain");
   if (!(options.degenerate_tolerance >= 0 && options.degenerate_tolerance < 1))
     throw invalid_input("compute_strain: degenerate_tolerance must be in [0, 1), not " +
                         std::to_string(options.degenerate_tolerance));
@@ -327,7 +328,7 @@ std::vector<double> reference_positions(const Deforming_mesh<Graph, Coordinate>&
 /// @param options reference, measure, normalisation, directions, threads (see `Strain_options`).
 /// @return the `F x T` field, with sigma and the degenerate count.
 /// @pre `animation` has at least one frame and one triangle; `options.rest_frame` is one of its
-/// frames; `options.threads >= 0`; `options.degenerate_tolerance` in [0, 1).
+/// frames; `options.threads` from 0 to `max_threads`; `options.degenerate_tolerance` in [0, 1).
 /// @throws invalid_input naming the problem when a precondition fails, or the normalisation's
 /// parameters are invalid (a given sigma that is not finite and > 0).
 /// @par Complexity

@@ -10,13 +10,11 @@
 #include <deformseg/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/face_areas.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/strain.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <cmath>
@@ -53,7 +51,8 @@ struct Histogram_options {
   double min_strain = 0.05;
   /// @brief The upper edge of the last log-spaced bin, finite and > `min_strain`. Default: 1.
   double max_strain = 1.0;
-  /// @brief Threads (0: OpenMP's default). The result is bit-identical for any number.
+  /// @brief Threads (0: `default_threads()`), at most `max_threads`. The result is bit-identical
+  /// for any number.
   int threads = 0;
 };
 
@@ -65,8 +64,7 @@ inline void check_histogram_options(const Histogram_options& options) {
         options.max_strain > options.min_strain))
     throw invalid_input("strain_histograms: need 0 < min_strain < max_strain, both finite, not " +
                         std::to_string(options.min_strain) + " and " + std::to_string(options.max_strain));
-  if (options.threads < 0)
-    throw invalid_input("strain_histograms: threads must be 0 (all) or more, not " + std::to_string(options.threads));
+  thread_count(options.threads, "strain_histograms");
 }
 
 }  // namespace internal
@@ -167,7 +165,7 @@ std::size_t frame_histogram(std::span<const Value> strains, std::span<const doub
 /// @param options the bins and threads; see `Histogram_options` for the defaults.
 /// @return the `T x (B + 2)` histograms, each row summing to 1.
 /// @pre `weights.size() == F`, every weight finite and >= 0, their sum finite and > 0; no strain
-/// is NaN; `options` valid (`bins >= 1`, `0 < min_strain < max_strain` finite, `threads >= 0`).
+/// is NaN; `options` valid (`bins >= 1`, `0 < min_strain < max_strain` finite, `threads` from 0 to `max_threads`).
 /// @throws invalid_input naming the first broken precondition (the triangle, or the frame and
 /// triangle of the first NaN).
 /// @par Complexity O(T (F + B)) with a logarithm per triangle-frame; O(T B) memory. Measured
@@ -182,12 +180,10 @@ Strain_histograms strain_histograms(const Strain_field<Value>& field, std::span<
   const std::size_t frames = field.num_frames(), columns = options.bins + 2;
   Strain_histograms histograms(static_cast<Eigen::Index>(frames), static_cast<Eigen::Index>(columns));
   std::vector<std::size_t> nan_at(frames, 0);
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic) num_threads(options.threads > 0 ? options.threads : omp_get_max_threads())
-#endif
-  for (std::int64_t t = 0; t < std::int64_t(frames); ++t)
-    nan_at[std::size_t(t)] = internal::frame_histogram(field.frame(std::size_t(t)), weights, total, binning,
-                                                      histograms.row(Eigen::Index(t)).data(), columns);
+  internal::parallel_for(frames, options.threads, [&](std::size_t t) {
+    nan_at[t] = internal::frame_histogram(field.frame(t), weights, total, binning,
+                                          histograms.row(Eigen::Index(t)).data(), columns);
+  });
   for (std::size_t t = 0; t < frames; ++t)
     if (nan_at[t] != 0)
       throw invalid_input("strain_histograms: the strain of triangle " + std::to_string(nan_at[t] - 1) + " is NaN",

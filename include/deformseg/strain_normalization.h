@@ -5,11 +5,8 @@
 
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/strain_math.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/internal/strain_statistics.h>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -39,7 +36,7 @@ struct Raw_strain_field {
   /// frame of rest-pose strain, frame 0 of previous-pose strain), left out of `samples()`; none
   /// when the reference is a mesh of its own.
   std::optional<std::size_t> zero_frame{};
-  /// @brief Threads the normalisation may use (0: OpenMP's default); its result must not
+  /// @brief Threads the normalisation may use (0: `default_threads()`); its result must not
   /// depend on it.
   int threads = 0;
 
@@ -209,18 +206,14 @@ private:
     Value* values = field.values.data();
     const std::size_t n = field.values.size();
     const std::size_t blocks = (n + internal::statistics_block - 1) / internal::statistics_block;
-#ifdef _OPENMP
-    const int team = field.threads > 0 ? field.threads : omp_get_max_threads();
-#pragma omp parallel for schedule(static) num_threads(team)
-#endif
-    for (std::int64_t b = 0; b < std::int64_t(blocks); ++b) {
-      Value* first = values + std::size_t(b) * internal::statistics_block;
-      const std::size_t count = std::min(internal::statistics_block, n - std::size_t(b) * internal::statistics_block);
+    internal::parallel_for(blocks, field.threads, [&](std::size_t b) {
+      Value* first = values + b * internal::statistics_block;
+      const std::size_t count = std::min(internal::statistics_block, n - b * internal::statistics_block);
       for (std::size_t i = 0; i < count; ++i) {
         const Value scaled = first[i] * k;
         first[i] = internal::one_minus_exp_neg(scaled * scaled);
       }
-    }
+    });
   }
 };
 

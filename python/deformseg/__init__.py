@@ -4,8 +4,9 @@ A thin, typed layer over the C++ library's default types (``Surface_mesh_animati
 strains): the compiled functions come from ``deformseg._deformseg``; the evolving graph's classes,
 their networkx conversion and ``ged`` on graphs are pure Python (``deformseg._graphs``). Option
 names, defaults and errors are the C++ options' and the ``deformseg`` tool's; every long call
-releases the GIL. Every result pickles, and so do the functions (by name), so that both go to and
-come back from worker processes.
+releases the GIL and stops on Ctrl-C (``KeyboardInterrupt``), and no thread of the library lives
+between calls, so fork-based process pools work after any call. Every result pickles, and so do the
+functions (by name), so that both go to and come back from worker processes.
 """
 import copyreg as _copyreg
 

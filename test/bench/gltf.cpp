@@ -9,6 +9,7 @@
 //   $DEFORMSEG_DATA_DIR/characters), read whole: parsed, then every one of its 76 clips sampled
 //   at 30 fps. Skipped when the data is absent.
 #include <deformseg/io/gltf.h>
+#include <deformseg/threads.h>
 
 #include <tiny_gltf.h>
 
@@ -24,10 +25,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace fs = std::filesystem;
 
@@ -180,11 +177,7 @@ void skinning(benchmark::State& state, int threads) {
 
 void skinning_one_thread(benchmark::State& state) { skinning(state, 1); }
 void skinning_all_threads(benchmark::State& state) {
-#ifdef _OPENMP
-  skinning(state, omp_get_max_threads());
-#else
-  skinning(state, 1);
-#endif
+  skinning(state, deformseg::default_threads());
 }
 
 fs::path characters() {

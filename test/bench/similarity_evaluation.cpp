@@ -11,6 +11,7 @@
 // --baseline default evaluates today's Default_similarity instead (no cache); --cache keeps the self-dissimilarity matrices (which the options do not change) in a file
 // outside the repository, so that a sweep reads the clips once.
 #include <deformseg/io/gltf.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/motion_similarity.h>
 #include <deformseg/similarity/self_similarity_matching.h>
 
@@ -130,11 +131,11 @@ template <class Policy, class Description>
 Eigen::MatrixXd values(const std::vector<Description>& described, const Policy& policy) {
   const std::size_t n = described.size();
   Eigen::MatrixXd value = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
-#pragma omp parallel for schedule(dynamic)
-  for (std::size_t i = 0; i < n; ++i)
+  deformseg::internal::parallel_for(n, 0, [&](std::size_t i) {
     for (std::size_t j = i + 1; j < n; ++j)
       value(Eigen::Index(i), Eigen::Index(j)) = value(Eigen::Index(j), Eigen::Index(i)) =
           policy.compare(described[i], described[j]).value;
+  });
   return value;
 }
 

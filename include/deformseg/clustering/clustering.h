@@ -5,6 +5,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/parallel_for.h>
 
 #include <Eigen/Core>
 
@@ -126,14 +127,11 @@ inline void check_distance_matrix(const Eigen::MatrixXd& distances, std::string_
 
 namespace internal {
 
-// Runs body(i) for i in [0, n), in parallel when OpenMP is on; each i writes only its own
-// outputs, so the result does not depend on the number of threads.
+// Runs body(i) for i in [0, n), 16 at a time on the default threads when n > 64 (on this thread
+// below); each i writes only its own outputs, so the result does not depend on the threads.
 template <class Body>
 void parallel_for(std::size_t n, const Body& body) {
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 16) if (n > 64)
-#endif
-  for (std::int64_t i = 0; i < std::int64_t(n); ++i) body(std::size_t(i));
+  deformseg::internal::parallel_for(n, n > 64 ? 0 : 1, body, 16);
 }
 
 // Uniform in [0, 1) from the top 53 bits of one draw: the same on every standard library, unlike

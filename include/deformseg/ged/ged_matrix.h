@@ -6,12 +6,10 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/ged/exact_ged.h>
 #include <deformseg/ged/ged_result.h>
+#include <deformseg/internal/parallel_for.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <atomic>
@@ -21,6 +19,7 @@
 #include <exception>
 #include <functional>
 #include <limits>
+#include <mutex>
 #include <ranges>
 #include <string>
 #include <utility>
@@ -30,7 +29,8 @@ namespace deformseg::ged {
 
 /// @brief Options of ged_matrix and ged_matrix_results.
 struct Ged_matrix_options {
-  /// @brief Threads (0: OpenMP's default). The result is the same for any number, for a
+  /// @brief Threads (0: `default_threads()`), at most `max_threads`. The result is the same for
+  /// any number, for a
   /// deterministic policy (Exact_ged without `max_seconds`, Bipartite_ged,
   /// Assignment_lower_bound).
   int threads = 0;
@@ -109,7 +109,9 @@ inline Ged_result combined(Ged_result forward, Ged_result reverse, std::size_t n
 /// @param options threads, both directions, a progress and stop callback.
 /// @return k x k matrices and k (k - 1) / 2 pair results.
 /// @throws invalid_input or whatever the policy throws (the exception of the first failing pair
-/// in pair order, after the others are done).
+/// in pair order; the pairs after it are not started); invalid_input for `threads` out of [0,
+/// `max_threads`]; cancelled when the calling thread's `Interruption_check` stops the work
+/// (threads.h), unlike `on_pair`, which gives the partial result.
 /// @par Complexity k (k - 1) / 2 policy calls (twice that with both directions).
 template <std::ranges::random_access_range Graphs, class Policy = Exact_ged,
           class Costs = Unit_costs>
@@ -123,44 +125,23 @@ Ged_matrix_result ged_matrix_results(const Graphs& graphs, const Policy& policy 
   const double infinity = std::numeric_limits<double>::infinity();
   std::vector<Ged_result> pairs(todo.size(), Ged_result{.distance = infinity, .exact = false, .lower = 0,
                                                         .upper = infinity, .mapping = {}});
-  std::vector<std::exception_ptr> failures(todo.size());
   std::atomic<bool> stop{false};
+  std::mutex progress;
   std::size_t done = 0;
-  const auto total = static_cast<std::int64_t>(todo.size());
-#ifdef _OPENMP
-  const int team = options.threads > 0 ? options.threads : omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic, 1) num_threads(team)
-#endif
-  for (std::int64_t p = 0; p < total; ++p) {
-    if (stop.load()) continue;
-    const auto at = static_cast<std::size_t>(p);
+  deformseg::internal::parallel_for(todo.size(), thread_count(options.threads, "ged_matrix"), [&](std::size_t at) {
+    if (stop.load()) return;
     const auto [i, j] = todo[at];
-    try {
-      const auto& a = graphs[static_cast<std::ranges::range_difference_t<Graphs>>(i)];
-      const auto& b = graphs[static_cast<std::ranges::range_difference_t<Graphs>>(j)];
-      Ged_result forward = policy(a, b, costs);
-      pairs[at] = options.both_directions
-                      ? internal::combined(std::move(forward), policy(b, a, costs), boost::num_vertices(a))
-                      : std::move(forward);
-    } catch (...) {
-      failures[at] = std::current_exception();
-    }
+    const auto& a = graphs[static_cast<std::ranges::range_difference_t<Graphs>>(i)];
+    const auto& b = graphs[static_cast<std::ranges::range_difference_t<Graphs>>(j)];
+    Ged_result forward = policy(a, b, costs);
+    pairs[at] = options.both_directions
+                    ? internal::combined(std::move(forward), policy(b, a, costs), boost::num_vertices(a))
+                    : std::move(forward);
     if (options.on_pair) {
-#ifdef _OPENMP
-#pragma omp critical(deformseg_ged_matrix_progress)
-#endif
-      {
-        try {
-          if (!options.on_pair(++done, todo.size())) stop.store(true);
-        } catch (...) {
-          if (!failures[at]) failures[at] = std::current_exception();
-          stop.store(true);
-        }
-      }
+      const std::lock_guard lock(progress);
+      if (!options.on_pair(++done, todo.size())) stop.store(true);
     }
-  }
-  for (const std::exception_ptr& failure : failures)
-    if (failure) std::rethrow_exception(failure);
+  });
   Ged_matrix_result result{.distance = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
                            .lower = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
                            .upper = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),

@@ -22,12 +22,9 @@
 // strains included.
 #pragma once
 
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/internal/strain_math.h>
 #include <deformseg/strain_measures.h>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -393,16 +390,14 @@ void strains_against(const Coordinate* xyz, std::span<const Triangle_indices> tr
     strains_against<false>(xyz, triangles, bases, first, count, measure, out);
 }
 
-// Runs `work(item)` for item in [0, items) on `threads` threads (0: OpenMP's default), and gives
-// the sum of what the calls return (an integer sum, so the same for any number of threads).
+// Runs `work(item)` for item in [0, items) on `threads` threads (0: the default), and gives the
+// sum of what the calls return (an integer sum, so the same for any number of threads).
 template <class Work>
-std::size_t parallel_sum(std::size_t items, [[maybe_unused]] int threads, const Work& work) {
+std::size_t parallel_sum(std::size_t items, int threads, const Work& work) {
+  const auto sums = parallel_for_with_locals(items, threads, 1, [] { return std::size_t(0); },
+                                             [&](std::size_t& sum, std::size_t item) { sum += work(item); });
   std::size_t sum = 0;
-#ifdef _OPENMP
-  const int team = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic, 1) num_threads(team) reduction(+ : sum)
-#endif
-  for (std::int64_t item = 0; item < std::int64_t(items); ++item) sum += work(std::size_t(item));
+  for (const std::size_t s : sums) sum += s;
   return sum;
 }
 

@@ -3,11 +3,8 @@
 // are found exactly by radix selection on the values' bits, with integer histograms.
 #pragma once
 
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/internal/strain_math.h>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -37,20 +34,15 @@ inline constexpr std::size_t statistics_block = std::size_t(1) << 16;
 // Calls visit(block_values) for the fixed-size blocks of both runs, in parallel, and gives the
 // per-block results in block order.
 template <std::floating_point Value, class Result, class Visit>
-std::vector<Result> per_block(const Sample_runs<Value>& runs, [[maybe_unused]] int threads, const Visit& visit) {
+std::vector<Result> per_block(const Sample_runs<Value>& runs, int threads, const Visit& visit) {
   const std::size_t blocks0 = (runs[0].size() + statistics_block - 1) / statistics_block;
   const std::size_t blocks1 = (runs[1].size() + statistics_block - 1) / statistics_block;
   std::vector<Result> results(blocks0 + blocks1);
-#ifdef _OPENMP
-  const int team = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic, 1) num_threads(team)
-#endif
-  for (std::int64_t b = 0; b < std::int64_t(results.size()); ++b) {
-    const std::size_t i = std::size_t(b);
+  parallel_for(results.size(), threads, [&](std::size_t i) {
     const auto& run = i < blocks0 ? runs[0] : runs[1];
     const std::size_t first = (i < blocks0 ? i : i - blocks0) * statistics_block;
     results[i] = visit(run.subspan(first, std::min(statistics_block, run.size() - first)));
-  }
+  });
   return results;
 }
 
@@ -92,59 +84,56 @@ inline constexpr std::size_t selection_bins = std::size_t(1) << selection_digit_
 // thread counts into a histogram of its own; integer sums make the result the same for any
 // number of threads.
 template <std::floating_point Value, class Key>
-std::vector<std::size_t> digit_histogram(const Sample_runs<Value>& runs, [[maybe_unused]] int threads, const Key& key,
+std::vector<std::size_t> digit_histogram(const Sample_runs<Value>& runs, int threads, const Key& key,
                                          Float_bits<Value> prefix, int known_bits) {
   using Bits = Float_bits<Value>;
   constexpr int total_bits = 8 * sizeof(Value);
   const int shift = total_bits - known_bits - selection_digit_bits;
-  std::vector<std::size_t> histogram(selection_bins, 0);
   const std::size_t blocks0 = (runs[0].size() + statistics_block - 1) / statistics_block;
   const std::size_t blocks = blocks0 + (runs[1].size() + statistics_block - 1) / statistics_block;
-#ifdef _OPENMP
-  const int team = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel num_threads(team)
-#endif
-  {
-    std::vector<std::size_t> mine(selection_bins, 0);
-    std::vector<std::size_t> odd(known_bits == 0 ? selection_bins : 0, 0);
-#ifdef _OPENMP
-#pragma omp for schedule(dynamic, 1)
-#endif
-    for (std::int64_t b = 0; b < std::int64_t(blocks); ++b) {
-      const std::size_t i = std::size_t(b);
-      const auto& run = i < blocks0 ? runs[0] : runs[1];
-      const std::size_t first = (i < blocks0 ? i : i - blocks0) * statistics_block;
-      const std::size_t last = std::min(run.size(), first + statistics_block);
-      if (known_bits == 0) {
-        // Runs of equal keys (neighbouring triangles strain alike) would chain each increment to
-        // the one before through memory; two histograms, even and odd values, halve the chains.
-        std::size_t j = first;
-        for (; j + 1 < last; j += 2) {
-          ++mine[std::size_t(order_key(key(run[j])) >> shift)];
-          ++odd[std::size_t(order_key(key(run[j + 1])) >> shift)];
-        }
-        if (j < last) ++mine[std::size_t(order_key(key(run[j])) >> shift)];
-        continue;
+  struct Counts {
+    std::vector<std::size_t> mine, odd;
+  };
+  const auto make_counts = [&] {
+    return Counts{std::vector<std::size_t>(selection_bins, 0),
+                  std::vector<std::size_t>(known_bits == 0 ? selection_bins : 0, 0)};
+  };
+  const auto count_block = [&](Counts& counts, std::size_t i) {
+    std::vector<std::size_t>& mine = counts.mine;
+    std::vector<std::size_t>& odd = counts.odd;
+    const auto& run = i < blocks0 ? runs[0] : runs[1];
+    const std::size_t first = (i < blocks0 ? i : i - blocks0) * statistics_block;
+    const std::size_t last = std::min(run.size(), first + statistics_block);
+    if (known_bits == 0) {
+      // Runs of equal keys (neighbouring triangles strain alike) would chain each increment to
+      // the one before through memory; two histograms, even and odd values, halve the chains.
+      std::size_t j = first;
+      for (; j + 1 < last; j += 2) {
+        ++mine[std::size_t(order_key(key(run[j])) >> shift)];
+        ++odd[std::size_t(order_key(key(run[j + 1])) >> shift)];
       }
-      // Later passes: few values match the prefix, so count matches 64 at a time (a loop that
-      // vectorises) and only walk the groups that have some.
-      const int prefix_shift = shift + selection_digit_bits;
-      for (std::size_t group = first; group < last; group += 64) {
-        const std::size_t end = std::min(last, group + 64);
-        Bits matches = 0;
-        for (std::size_t j = group; j < end; ++j) matches += Bits(order_key(key(run[j])) >> prefix_shift) == prefix ? 1 : 0;
-        if (matches == 0) continue;
-        for (std::size_t j = group; j < end; ++j) {
-          const Bits k = order_key(key(run[j]));
-          if (Bits(k >> prefix_shift) == prefix) ++mine[std::size_t(k >> shift) & (selection_bins - 1)];
-        }
+      if (j < last) ++mine[std::size_t(order_key(key(run[j])) >> shift)];
+      return;
+    }
+    // Later passes: few values match the prefix, so count matches 64 at a time (a loop that
+    // vectorises) and only walk the groups that have some.
+    const int prefix_shift = shift + selection_digit_bits;
+    for (std::size_t group = first; group < last; group += 64) {
+      const std::size_t end = std::min(last, group + 64);
+      Bits matches = 0;
+      for (std::size_t j = group; j < end; ++j)
+        matches += Bits(order_key(key(run[j])) >> prefix_shift) == prefix ? 1 : 0;
+      if (matches == 0) continue;
+      for (std::size_t j = group; j < end; ++j) {
+        const Bits k = order_key(key(run[j]));
+        if (Bits(k >> prefix_shift) == prefix) ++mine[std::size_t(k >> shift) & (selection_bins - 1)];
       }
     }
-#ifdef _OPENMP
-#pragma omp critical(deformseg_strain_histogram)
-#endif
-    for (std::size_t i = 0; i < selection_bins; ++i) histogram[i] += mine[i] + (odd.empty() ? 0 : odd[i]);
-  }
+  };
+  std::vector<std::size_t> histogram(selection_bins, 0);
+  for (const Counts& counts : parallel_for_with_locals(blocks, threads, 1, make_counts, count_block))
+    for (std::size_t i = 0; i < selection_bins; ++i)
+      histogram[i] += counts.mine[i] + (counts.odd.empty() ? 0 : counts.odd[i]);
   return histogram;
 }
 

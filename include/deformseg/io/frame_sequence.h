@@ -6,14 +6,12 @@
 #include <deformseg/default_mesh.h>
 #include <deformseg/deforming_mesh.h>
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/internal/text_scanner.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/read_mesh.h>
 #include <deformseg/io/triangle_soup.h>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include <deformseg/threads.h>
 
 #include <algorithm>
 #include <atomic>
@@ -158,37 +156,15 @@ inline std::vector<std::filesystem::path> files_matching(const std::filesystem::
 /// skipped, frames below it are always read.
 template <std::floating_point T>
 void read_frame_positions(std::span<const std::filesystem::path> files, std::size_t first,
-                          std::span<T> positions, std::size_t block, [[maybe_unused]] int threads) {
-  const std::size_t count = files.size();
-  std::vector<std::exception_ptr> errors(count);
-  std::atomic<std::size_t> lowest_failed{count};
-  const auto record_failure = [&](std::size_t t) {
-    std::size_t seen = lowest_failed.load();
-    while (t < seen && !lowest_failed.compare_exchange_weak(seen, t)) {
-      // `seen` now holds the value another thread stored: retry while t is still lower
-    }
-  };
-  const auto read_one = [&](std::size_t t) {
-    if (t > lowest_failed.load(std::memory_order_relaxed)) return;
+                          std::span<T> positions, std::size_t block, int threads) {
+  parallel_for(files.size() - first, threads, [&](std::size_t k) {
+    const std::size_t t = first + k;
     try {
       io::read_mesh_points(files[t], positions.subspan(t * block, block));
     } catch (const invalid_input& e) {
-      errors[t] = std::make_exception_ptr(e.located({.frame = t}));
-    } catch (...) {
-      errors[t] = std::current_exception();
+      throw e.located({.frame = t});
     }
-    if (errors[t]) record_failure(t);
-  };
-#ifdef _OPENMP
-  const int team = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel for schedule(dynamic, 1) num_threads(team)
-  for (std::int64_t t = static_cast<std::int64_t>(first); t < static_cast<std::int64_t>(count); ++t)
-    read_one(static_cast<std::size_t>(t));
-#else
-  for (std::size_t t = first; t < count; ++t) read_one(t);
-#endif
-  for (const std::exception_ptr& error : errors)
-    if (error) std::rethrow_exception(error);
+  });
 }
 
 }  // namespace deformseg::internal
@@ -247,9 +223,9 @@ struct Frame_sequence_options {
   /// @brief Fan-triangulate polygons of the connectivity instead of rejecting them (see
   /// `Mesh_read_options`). Default: false.
   bool triangulate = false;
-  /// @brief Threads that read frames in parallel: 0 (default) uses OpenMP's default, all the
-  /// cores unless `OMP_NUM_THREADS` says otherwise. Ignored when deformseg is built without
-  /// OpenMP. The result does not depend on it.
+  /// @brief Threads that read frames in parallel: 0 (default) for `default_threads()`, all the
+  /// hardware's threads unless `DEFORMSEG_NUM_THREADS` or `OMP_NUM_THREADS` says otherwise; at
+  /// most `max_threads`. The result does not depend on it.
   int threads = 0;
   /// @brief How the connectivity is repaired (see `repair_triangles`): by default vertices are
   /// not welded (`weld` false: a frame file's vertices are its own) and degenerate, duplicate
@@ -265,8 +241,8 @@ struct Frame_sequence_options {
 ///
 /// The first frame's file (or `options.topology`) gives the triangles; each frame gives only its
 /// positions (`read_mesh_points`; the first frame's are those already read), parsed straight into
-/// its block of one contiguous array of `T x 3V` coordinates. The frames are read in parallel
-/// with OpenMP; the result, or the error thrown, is the same for any number of threads.
+/// its block of one contiguous array of `T x 3V` coordinates. The frames are read in parallel;
+/// the result, or the error thrown, is the same for any number of threads.
 /// `repair_triangles` repairs (or refuses) the triangles: before the frames are read, or after
 /// them when it welds (`options.repair.weld`), which compares every frame. Then
 /// `make_face_graph<Graph>` builds the connectivity; when the repair keeps every vertex (no
@@ -297,8 +273,7 @@ template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = doubl
 Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& directory_or_glob,
                                                       const Frame_sequence_options& options = {},
                                                       Repair_report* report = nullptr) {
-  if (options.threads < 0)
-    throw invalid_input(internal::join("threads must be 0 (all) or more, not ", std::to_string(options.threads)));
+  thread_count(options.threads);
   if (!(options.fps > 0) || !std::isfinite(options.fps))
     throw invalid_input("fps must be positive and finite, not " + std::to_string(options.fps));
   const std::vector<std::filesystem::path> files = list_frame_files(directory_or_glob);

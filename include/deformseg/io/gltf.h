@@ -20,13 +20,11 @@
 #include <deformseg/internal/gltf_animation.h>
 #include <deformseg/internal/gltf_mesh.h>
 #include <deformseg/internal/gltf_welding.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/mesh_repair.h>
+#include <deformseg/threads.h>
 
 #include <tiny_gltf.h>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <algorithm>
 #include <array>
@@ -58,8 +56,8 @@ struct Gltf_read_options {
   /// the same for every clip: see `Gltf_file::repair`). Default: welding on (glTF splits vertices
   /// along UV seams and hard edges), defects repaired.
   Repair_options repair{.weld = true};
-  /// @brief Threads that sample frames in parallel: 0 (default) uses OpenMP's default. The
-  /// result does not depend on it.
+  /// @brief Threads that sample frames in parallel: 0 (default) for `default_threads()`, at most
+  /// `max_threads`. The result does not depend on it.
   int threads = 0;
 };
 
@@ -211,49 +209,23 @@ inline std::optional<std::size_t> select_clip(const tinygltf::Model& model, cons
 inline void check_options(const io::Gltf_read_options& options) {
   if (!(options.fps > 0) || !std::isfinite(options.fps))
     throw invalid_input("fps must be positive and finite, not " + std::to_string(options.fps));
-  if (options.threads < 0)
-    throw invalid_input("threads must be 0 (all) or more, not " + std::to_string(options.threads));
+  thread_count(options.threads);
 }
 
 /// Samples every frame of `clip` (or the rest pose) into `positions`, in parallel; throws the
 /// error of the lowest frame with a non-finite coordinate, whatever the number of threads.
-inline void sample_frames(const Rig& rig, const Clip* clip, double fps, std::size_t frames,
-                          [[maybe_unused]] int threads, std::vector<double>& positions) {
+inline void sample_frames(const Rig& rig, const Clip* clip, double fps, std::size_t frames, int threads,
+                          std::vector<double>& positions) {
   const std::size_t block = 3 * rig.geometry.vertices;
-  std::atomic<std::size_t> first_bad{frames};
-  std::exception_ptr failure;
-  const auto sample_range = [&](std::size_t begin, std::size_t step) {
-    Pose_scratch scratch;
-    for (std::size_t t = begin; t < frames; t += step) {
-      double* out = positions.data() + t * block;
-      pose_at(rig, clip, clip ? frame_time(clip->start, clip->end, fps, t, frames) : 0.0, scratch, out);
-      if (!std::all_of(out, out + block, [](double x) { return std::isfinite(x); })) {
-        std::size_t seen = first_bad.load();
-        while (t < seen && !first_bad.compare_exchange_weak(seen, t)) {
-        }
-      }
-    }
+  const auto sample = [&](Pose_scratch& scratch, std::size_t t) {
+    double* out = positions.data() + t * block;
+    pose_at(rig, clip, clip ? frame_time(clip->start, clip->end, fps, t, frames) : 0.0, scratch, out);
+    const double* bad = std::find_if(out, out + block, [](double x) { return !std::isfinite(x); });
+    if (bad != out + block)
+      throw invalid_input("vertex " + std::to_string(std::size_t(bad - out) / 3) + " has a non-finite position",
+                          {.frame = t});
   };
-#ifdef _OPENMP
-  const int team = threads > 0 ? threads : omp_get_max_threads();
-#pragma omp parallel num_threads(team)
-  {
-    try {
-      sample_range(std::size_t(omp_get_thread_num()), std::size_t(omp_get_num_threads()));
-    } catch (...) {
-#pragma omp critical(deformseg_gltf_failure)
-      if (!failure) failure = std::current_exception();
-    }
-  }
-#else
-  sample_range(0, 1);
-#endif
-  if (failure) std::rethrow_exception(failure);
-  if (const std::size_t t = first_bad.load(); t < frames) {
-    const double* out = positions.data() + t * block;
-    const std::size_t i = std::size_t(std::find_if(out, out + block, [](double x) { return !std::isfinite(x); }) - out);
-    throw invalid_input("vertex " + std::to_string(i / 3) + " has a non-finite position", {.frame = t});
-  }
+  parallel_for_with_locals(frames, threads, 1, [] { return Pose_scratch{}; }, sample);
 }
 
 /// A parsed file and the scene's geometry, read once for any number of clips.
@@ -407,7 +379,7 @@ public:
   /// @param options `clip` (default: the first), `fps` (30), `threads` (0: all); `repair` is not
   /// used here.
   /// @return the positions (`T x 3V`), V, the triangles and the report (`repair` left empty).
-  /// @pre `options.fps > 0`, `options.threads >= 0`.
+  /// @pre `options.fps > 0`, `options.threads` from 0 to `max_threads`.
   /// @throws invalid_input naming the file (and the animation, channel, accessor or frame) for a
   /// clip that does not exist (the message lists the file's clips), a malformed sampler, a
   /// non-finite position, more than 10^6 frames or 2^29 coordinates.
@@ -520,7 +492,7 @@ inline void require_clip_choice(const Gltf_file& file, const std::string& clip) 
 /// used here.
 /// @return the positions (`T x 3V`, vertices in the file's order: see `Sampled_gltf`), V, the
 /// triangles and the report (`repair` left empty).
-/// @pre `options.fps > 0`, `options.threads >= 0`.
+/// @pre `options.fps > 0`, `options.threads` from 0 to `max_threads`.
 /// @throws invalid_input naming the file, as `Gltf_file` and `Gltf_file::sample`.
 /// @par Complexity O(file size + T (N + J + V I)): see `Gltf_file::sample`.
 /// @sa read_gltf, Gltf_file

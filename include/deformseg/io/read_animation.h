@@ -10,6 +10,7 @@
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/read_mesh.h>
+#include <deformseg/threads.h>
 
 // glTF is read when deformseg was configured with tinygltf (its CMake target then defines
 // DEFORMSEG_HAS_GLTF and links TinyGLTF::TinyGLTF).
@@ -38,7 +39,8 @@ struct Animation_read_options {
   std::optional<std::filesystem::path> topology{};
   /// @brief Fan-triangulate polygons instead of rejecting them. Default: false.
   bool triangulate = false;
-  /// @brief Threads that read frames in parallel; 0 (default) uses all.
+  /// @brief Threads that read frames in parallel: 0 (default) for `default_threads()`, at most
+  /// `max_threads`.
   int threads = 0;
   /// @brief How the connectivity is repaired (see `repair_triangles`). Default: the format's,
   /// that is degenerate, duplicate and non-manifold triangles repaired, and vertices welded for
@@ -143,6 +145,7 @@ namespace deformseg::io {
 template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
 Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input, const Animation_read_options& options = {},
                                                  Repair_report* report = nullptr) {
+  thread_count(options.threads);
   if (const auto [file, clip] = split_clip_suffix(input); clip) {
     if (!options.clip.empty())
       throw invalid_input("the clip is given twice: by the clip option and after '#'", {.file = input});

@@ -1,0 +1,187 @@
+/// @file threads.h
+/// @brief How the parallel algorithms run: the one rule for their number of threads
+/// (`thread_count`, `default_threads`, `max_threads`) and the one way to interrupt a long call
+/// from the thread that made it (`Interruption_scope`; the call then throws `cancelled`, of
+/// exceptions.h).
+///
+/// Every `threads` option of deformseg (and `--threads` of the tool, `threads=` in Python) means
+/// the same: 0, the default, for `default_threads()`, or a count from 1 to `max_threads`; any
+/// other is refused with `invalid_input` naming it. The threads are made for each call and joined
+/// before it returns (no pool lives between calls, so a process may `fork` after any call), and a
+/// parallel loop started on one of them runs on that thread alone, as nested OpenMP regions do by
+/// default. Results never depend on the number of threads.
+#pragma once
+
+#include <deformseg/exceptions.h>
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cstdlib>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <thread>
+#include <utility>
+
+namespace deformseg {
+
+/// @brief The most threads any call of deformseg takes; a larger count is refused. Far above the
+/// cores of today's machines, low enough that a mistyped count fails at once rather than making
+/// tens of thousands of threads.
+inline constexpr int max_threads = 1024;
+
+namespace internal {
+
+// The calling thread's default set by set_default_threads (0: none).
+inline thread_local int default_threads_of_thread = 0;
+
+// A whole number from 1 to max_threads, or nothing.
+inline std::optional<int> parse_thread_count(std::string_view text) {
+  int value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < 1 || value > max_threads)
+    return std::nullopt;
+  return value;
+}
+
+// DEFORMSEG_NUM_THREADS, deformseg's own setting: refused unless a valid count.
+inline std::optional<int> threads_of_deformseg_variable() {
+  const char* text = std::getenv("DEFORMSEG_NUM_THREADS");
+  if (!text || !*text) return std::nullopt;
+  if (const auto n = parse_thread_count(text)) return n;
+  throw invalid_input("DEFORMSEG_NUM_THREADS is '" + std::string(text) + "': expected a whole number from 1 to " +
+                      std::to_string(max_threads));
+}
+
+// OMP_NUM_THREADS, shared with other libraries: its first number (OpenMP allows a list, "4,2"),
+// at most max_threads; ignored when it is not a number of at least 1, as OpenMP ignores it.
+inline std::optional<int> threads_of_openmp_variable() {
+  const char* text = std::getenv("OMP_NUM_THREADS");
+  if (!text) return std::nullopt;
+  const std::string_view all(text);
+  const std::string_view first = all.substr(0, all.find(','));
+  long value = 0;
+  const auto [end, error] = std::from_chars(first.data(), first.data() + first.size(), value);
+  if (error == std::errc::result_out_of_range) return max_threads;
+  if (error != std::errc() || end != first.data() + first.size() || value < 1) return std::nullopt;
+  return int(std::min<long>(value, max_threads));
+}
+
+}  // namespace internal
+
+/// @brief What a `threads` option of 0 (the default everywhere) stands for, on the calling
+/// thread: the count given to `set_default_threads` there, if any; else the environment variable
+/// `DEFORMSEG_NUM_THREADS`; else `OMP_NUM_THREADS` (its first number, at most `max_threads`,
+/// ignored when not a number of at least 1), which schedulers such as SLURM set and which
+/// deformseg followed when it used OpenMP; else the hardware's threads
+/// (`std::thread::hardware_concurrency()`, at least 1, at most `max_threads`).
+/// @throws invalid_input when `DEFORMSEG_NUM_THREADS` is set but not a whole number from 1 to
+/// `max_threads`, naming its value.
+/// @par Complexity O(1): reads the environment at each call.
+inline int default_threads() {
+  if (internal::default_threads_of_thread > 0) return internal::default_threads_of_thread;
+  if (const auto n = internal::threads_of_deformseg_variable()) return *n;
+  if (const auto n = internal::threads_of_openmp_variable()) return *n;
+  return int(std::clamp(std::thread::hardware_concurrency(), 1u, unsigned(max_threads)));
+}
+
+/// @brief The count a `threads` option gives: `default_threads()` for 0, `requested` itself from
+/// 1 to `max_threads`.
+/// @param requested the option's value.
+/// @param context what takes the option, put before the message (e.g. "compute_strain"); may be
+/// empty.
+/// @return a count from 1 to `max_threads`.
+/// @throws invalid_input for a negative count or one above `max_threads`, naming it, e.g.
+/// "compute_strain: threads must be 0 (the default) to 1024, not 70000"; as `default_threads`.
+inline int thread_count(int requested, const std::string& context = {}) {
+  if (requested < 0 || requested > max_threads)
+    throw invalid_input((context.empty() ? "" : context + ": ") + "threads must be 0 (the default) to " +
+                        std::to_string(max_threads) + ", not " + std::to_string(requested));
+  return requested == 0 ? default_threads() : requested;
+}
+
+/// @brief Sets what `threads` = 0 stands for in the calls made on the calling thread (as
+/// `omp_set_num_threads` did), for calls that take no `threads` option, such as
+/// `similarity_matrix`; 0 restores the rule of `default_threads`.
+/// @param threads 0, or a count from 1 to `max_threads`.
+/// @throws invalid_input for any other count, naming it.
+inline void set_default_threads(int threads) {
+  if (threads != 0) thread_count(threads, "set_default_threads");
+  internal::default_threads_of_thread = threads;
+}
+
+/// @brief A check that a long call makes on the thread that made it, about every
+/// `interruption_interval` while it runs: returning true lets it go on, false stops it (it then
+/// throws `cancelled`); an exception it throws stops the call too and comes out of it.
+using Interruption_check = std::function<bool()>;
+
+/// @brief How often a long call makes its `Interruption_check`: about every 20 ms of its work
+/// (more when one step of the work, a frame or a pair, takes longer: a step is never broken off).
+inline constexpr std::chrono::milliseconds interruption_interval{20};
+
+namespace internal {
+
+struct Interruption_state {
+  const Interruption_check* check = nullptr;
+  std::chrono::steady_clock::time_point last{};
+};
+
+// The calling thread's check, installed by an Interruption_scope; none on the loops' workers.
+inline thread_local Interruption_state interruption_state{};
+
+}  // namespace internal
+
+/// @brief Installs an `Interruption_check` for the calls made on the calling thread while it
+/// lives (the one installed before, if any, is back after it), so that they can be stopped:
+/// every parallel loop of deformseg, while its threads work, and the long serial loops call
+/// `check` on this thread, at least every `interruption_interval` plus the time of the step in
+/// progress. The Python module installs one around each call that makes
+/// Ctrl-C raise `KeyboardInterrupt`.
+///
+/// When `check` returns false the loop stops taking work, waits for the steps in progress and
+/// throws `cancelled`. Without a scope (the default) nothing is checked. Only the calling thread
+/// calls `check`, never the loops' worker threads, so it may use what belongs to that thread.
+///
+/// @code
+/// std::atomic<bool> stop_requested{false};  // set by a GUI's Cancel button
+/// deformseg::Interruption_scope scope([&] { return !stop_requested.load(); });
+/// try { auto m = deformseg::similarity_matrix(animations); } catch (const deformseg::cancelled&) {}
+/// @endcode
+class Interruption_scope {
+public:
+  /// @brief Installs `check` (an empty function checks nothing).
+  explicit Interruption_scope(Interruption_check check)
+      : check_(std::move(check)), previous_(internal::interruption_state) {
+    internal::interruption_state = {check_ ? &check_ : nullptr, std::chrono::steady_clock::now()};
+  }
+  /// @brief Restores the check installed before.
+  ~Interruption_scope() { internal::interruption_state = previous_; }
+  Interruption_scope(const Interruption_scope&) = delete;
+  Interruption_scope& operator=(const Interruption_scope&) = delete;
+
+private:
+  Interruption_check check_;
+  internal::Interruption_state previous_;
+};
+
+/// @brief Whether an `Interruption_check` is installed on the calling thread.
+inline bool interruption_check_installed() noexcept { return internal::interruption_state.check != nullptr; }
+
+/// @brief Calls the calling thread's `Interruption_check`, if any, and throws `cancelled` when it
+/// returns false. Long serial loops call it after each step; it costs a clock read when less than
+/// `interruption_interval` has passed since the check was last called.
+/// @throws cancelled when the check returns false; what the check throws.
+inline void interruption_point() {
+  internal::Interruption_state& state = internal::interruption_state;
+  if (!state.check) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (now - state.last < interruption_interval) return;
+  state.last = now;
+  if (!(*state.check)()) throw cancelled();
+}
+
+}  // namespace deformseg
