@@ -51,7 +51,7 @@ TEST_CASE("K_means: far-apart blobs are recovered exactly", "[clustering][k_mean
   }
 }
 
-TEST_CASE("K_means: same seed, same labels; each run ends at a fixed point of Lloyd", "[clustering][k_means]") {
+TEST_CASE("K_means: same seed, same labels / each run ends at a fixed point of Lloyd", "[clustering][k_means]") {
   std::mt19937 random(9);
   int differ = 0;
   for (int trial = 0; trial < 30; ++trial) {

@@ -122,7 +122,7 @@ TEST_CASE("K_medoids: a local optimum never worse than BUILD, mostly the brute-f
   CHECK(with_swaps > 0);  // SWAP was exercised
 }
 
-TEST_CASE("K_medoids: same seed, same labels; the iteration bound is reported", "[clustering][k_medoids]") {
+TEST_CASE("K_medoids: same seed, same labels / the iteration bound is reported", "[clustering][k_medoids]") {
   std::mt19937 random(5);
   for (int trial = 0; trial < 20; ++trial) {
     const Eigen::MatrixXd d = random_distances(60, random, 8);  // many ties

@@ -121,7 +121,7 @@ TEST_CASE("Exact_ged: a limit that is hit gives bounds, not a false exact answer
   CHECK(gap == stopped);
 }
 
-TEST_CASE("Exact_ged: a time limit stops the search; bad options and costs throw", "[ged][exact][limit]") {
+TEST_CASE("Exact_ged: a time limit stops the search / bad options and costs throw", "[ged][exact][limit]") {
   std::mt19937 rng(51);
   // Dense 30-node pairs are far beyond any search (the bounds differ by a factor of 5 after
   // 100,000 expansions), so the 50 ms limit always bites.

@@ -104,7 +104,7 @@ TEST_CASE("ged_matrix: both directions give the tighter bounds", "[ged][matrix]"
   CHECK(better > 0);
 }
 
-TEST_CASE("ged_matrix: the callback sees every pair and can stop the work; errors propagate", "[ged][matrix]") {
+TEST_CASE("ged_matrix: the callback sees every pair and can stop the work / errors propagate", "[ged][matrix]") {
   const auto graphs = random_graphs(74, 8);
   std::size_t calls = 0, last = 0;
   const auto all = ged_matrix_results(graphs, Bipartite_ged{}, Unit_costs{},

@@ -223,7 +223,7 @@ TEST_CASE("gltf: two-bone skinned strip, the skinned mesh node's own scale ignor
   }
 }
 
-TEST_CASE("gltf: 8 influences with normalised byte weights; no weight at all stays with the mesh node", "[gltf]") {
+TEST_CASE("gltf: 8 influences with normalised byte weights / no weight at all stays with the mesh node", "[gltf]") {
   Gltf_writer w;
   const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
   const auto ubytes = [&w](const std::vector<std::uint8_t>& v, bool normalized) {
@@ -581,7 +581,7 @@ TEST_CASE("gltf: welded by what the file fixes, so that every clip has one mesh"
   }
 }
 
-TEST_CASE("read_animation: FILE.glb#CLIP names the clip; a file of several clips needs one", "[gltf][io]") {
+TEST_CASE("read_animation: FILE.glb#CLIP names the clip / a file of several clips needs one", "[gltf][io]") {
   const std::string path = write(seam_scene(), "seam_clips.glb").string();
   deformseg::io::Repair_report report;
   const auto bend = deformseg::io::read_animation(path + "#bend", {}, &report);
@@ -841,7 +841,7 @@ TEST_CASE("gltf: the Fox, a triangle soup, is welded to 290 vertices", "[gltf][d
   CHECK(fox.num_faces() == 576);
 }
 
-TEST_CASE("gltf: unwelded, the file's vertices in order; written as OBJ frames they read back the same",
+TEST_CASE("gltf: unwelded, the file's vertices in order / written as OBJ frames they read back the same",
           "[gltf][data][repair]") {
   const fs::path fox = characters() / "Fox.glb";
   const Sampled_gltf sampled = sample_gltf(fox, {.clip = "Walk"});

@@ -402,7 +402,7 @@ TEST_CASE("repair_triangles: random soups against brute force", "[io][repair][we
   CHECK(unrepairable == 0);  // CGAL's pass alone makes every one a manifold
 }
 
-TEST_CASE("weld_vertices: many vertices on one trajectory are one vertex; 0 and -0 alike", "[io][repair][weld]") {
+TEST_CASE("weld_vertices: many vertices on one trajectory are one vertex / 0 and -0 alike", "[io][repair][weld]") {
   // 60,000 vertices in 2 frames, all at the origin but vertex 1 (-0 for 0) and vertex 2, which
   // leaves it in frame 1 by more than the tolerance, and vertex 3 by less. Compared pair by pair,
   // the one group would take 1.8e9 comparisons (what a glTF accessor of zeros once cost).

@@ -90,7 +90,7 @@ TEST_CASE("evaluate_retrieval: a 5-item case computed by hand", "[evaluation]") 
   check_query(3, 2, .9, 1, 1);
 }
 
-TEST_CASE("evaluate_retrieval: the same clip on the same rig is no candidate; queries without relevant one",
+TEST_CASE("evaluate_retrieval: the same clip on the same rig is no candidate / queries without relevant one",
           "[evaluation]") {
   const std::vector<Labelled_item> items{item("walk", "A", "k", "Walk"), item("walk", "B", "k", "Walk"),
                                          item("walk", "B", "k", "Walk2"), item("run", "C", "", "Walk")};
@@ -120,7 +120,7 @@ TEST_CASE("evaluate_retrieval: the same clip on the same rig is no candidate; qu
   CHECK(*r.per_query[2].average_precision == 0.5);
 }
 
-TEST_CASE("evaluate_retrieval: distractors are never queried; no candidate, no figure", "[evaluation]") {
+TEST_CASE("evaluate_retrieval: distractors are never queried / no candidate, no figure", "[evaluation]") {
   const std::vector<Labelled_item> only_distractors{item("-", "A"), item("-", "B")};
   const Retrieval_scores none = evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), only_distractors);
   CHECK(none.queries == 0);

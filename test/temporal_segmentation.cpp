@@ -154,7 +154,7 @@ TEST_CASE("temporal segmentation: a lower threshold never gives fewer segments (
   CHECK(split_before >= 9);  // down to small thresholds, the transitions are cut frame by frame
 }
 
-TEST_CASE("temporal segmentation: results cover the frames; segment_of; bad parameters", "[temporal]") {
+TEST_CASE("temporal segmentation: results cover the frames / segment_of / bad parameters", "[temporal]") {
   const auto field = compute_strain(three_poses().animation);
   const auto result = temporal_segmentation(field, Thesis_greedy{.threshold = {0.1}});
   CHECK(result.frames == 66);
