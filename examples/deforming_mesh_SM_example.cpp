@@ -1,7 +1,7 @@
 // Builds an animation from a reference mesh and per-frame position arrays, with CGAL::Surface_mesh
 // connectivity, and reads it back three ways: raw coordinates, an Eigen matrix, a point map.
-#include <deformseg/default_mesh.h>
-#include <deformseg/deforming_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 
 #include <array>
 #include <iostream>
@@ -12,7 +12,7 @@ int main() {
   // The reference mesh: a square made of two triangles, counter-clockwise seen from +z.
   const std::vector<std::array<double, 3>> points{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {0, 2, 3}};
-  const Surface_mesh reference = make_face_graph<Surface_mesh>(points, triangles);
+  const mesh::Surface_mesh reference = mesh::make_face_graph<mesh::Surface_mesh>(points, triangles);
 
   // Three frames, one block of 3 x V coordinates each: the square, the square stretched along x,
   // the square lifted along z.
@@ -21,7 +21,7 @@ int main() {
   for (const auto& [stretch, lift] : stretch_and_lift)
     for (const auto& p : points) positions.insert(positions.end(), {stretch * p[0], p[1], p[2] + lift});
 
-  Surface_mesh_animation animation(reference, positions);
+  mesh::Surface_mesh_animation animation(reference, positions);
   // Frames can also be appended one at a time, here from the reference mesh's own points.
   animation.add_frame_from(get(CGAL::vertex_point, reference));
 

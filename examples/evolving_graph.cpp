@@ -1,7 +1,7 @@
 // The evolving graph of a tube that bends once at constant speed: rigid, then rigid - deformed -
 // rigid while it bends, then rigid again; each key frame's graph walked with Boost.Graph.
-#include <deformseg/evolving_graph.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <boost/graph/adjacency_list.hpp>
 
@@ -10,20 +10,20 @@
 
 int main() {
   using namespace deformseg;
-  Bending_tube spec;
-  spec.schedule = {{10, {0.0}}, {10, {std::numbers::pi / 2}, Easing::linear}, {10, {}}};  // rest, bend, hold
-  const auto animation = make_bending_tube(spec).animation;
+  mesh::Bending_tube spec;
+  spec.schedule = {{10, {0.0}}, {10, {std::numbers::pi / 2}, mesh::Easing::linear}, {10, {}}};  // rest, bend, hold
+  const auto animation = mesh::make_bending_tube(spec).animation;
 
   // Previous-pose strain (the default); a low threshold, so that the whole blend zone counts as
   // deformed while the joint moves, its neutral axis too.
-  const Evolving_graph graph = evolving_graph(animation, {.threshold = 0.01});
+  const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(animation, {.threshold = 0.01});
   std::cout << graph.size() << " key frames over " << graph.num_frames() << " frames, " << graph.num_segments()
             << " deformed segment(s)\n";
-  for (const Key_frame& key : graph) {
+  for (const spatiotemporal::Key_frame& key : graph) {
     std::cout << "frames " << key.first_frame << "-" << key.last_frame << ":";
     for (auto v : boost::make_iterator_range(boost::vertices(key.graph))) {
-      const Segment_node& node = key.graph[v];
-      std::cout << ' ' << node_label(node) << " ("
+      const spatiotemporal::Segment_node& node = key.graph[v];
+      std::cout << ' ' << spatiotemporal::node_label(node) << " ("
                 << node.triangles << " triangles, " << node.area * 100 << " % of the area)";
     }
     std::cout << ", " << boost::num_edges(key.graph) << " edge(s)\n";

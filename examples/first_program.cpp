@@ -2,10 +2,10 @@
 // prints the strain of the first, its temporal segments and how alike the two move.
 //   first_program A B     A and B: glTF clips as FILE.glb#CLIP (a file of one clip: FILE.glb), frame folders, globs
 #include <deformseg/io/read_animation.h>
-#include <deformseg/motion_similarity.h>
-#include <deformseg/strain.h>
-#include <deformseg/synthetic.h>
-#include <deformseg/temporal_segmentation.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/strain/strain.h>
+#include <deformseg/mesh/synthetic.h>
+#include <deformseg/temporal/temporal_segmentation.h>
 
 #include <exception>
 #include <iostream>
@@ -14,30 +14,30 @@
 using namespace deformseg;
 
 // A tube bending at its middle joint: rest, bend, hold, unbend; `speed` bends faster.
-Surface_mesh_animation bending_tube(std::size_t speed) {
-  Bending_tube spec;
+mesh::Surface_mesh_animation bending_tube(std::size_t speed) {
+  mesh::Bending_tube spec;
   spec.schedule = {{5, {0.0}}, {20 / speed, {std::numbers::pi / 2}}, {10, {}}, {20 / speed, {0.0}}};
-  return make_bending_tube(spec).animation;
+  return mesh::make_bending_tube(spec).animation;
 }
 
 int main(int argc, char** argv) try {
   const bool given = argc == 3;
-  const Surface_mesh_animation a = given ? io::read_animation(argv[1]) : bending_tube(1);
-  const Surface_mesh_animation b = given ? io::read_animation(argv[2]) : bending_tube(2);
+  const mesh::Surface_mesh_animation a = given ? io::read_animation(argv[1]) : bending_tube(1);
+  const mesh::Surface_mesh_animation b = given ? io::read_animation(argv[2]) : bending_tube(2);
   std::cout << "A: " << a.num_frames() << " frames of " << a.num_faces() << " triangles\n";
 
   // The normalised strain of every triangle of A at every frame, against frame 0.
-  const Strain_field<float> strain = compute_strain(a);
+  const strain::Strain_field<float> strain = strain::compute_strain(a);
   std::cout << "strain of triangle 0 at the last frame: " << strain(0, a.num_frames() - 1) << '\n';
 
   // Intervals of similar poses of A.
-  const Temporal_segmentation poses = temporal_segmentation(a);
-  for (const Temporal_segment& segment : poses.segments)
+  const temporal::Temporal_segmentation poses = temporal::temporal_segmentation(a);
+  for (const temporal::Temporal_segment& segment : poses.segments)
     std::cout << "segment: frames " << segment.first << " to " << segment.last << '\n';
 
   // How alike A and B move: 1 for the same motion, whatever the shape, size or frame rate; a faster
   // motion (as B's quicker bend) is another motion.
-  const Similarity similarity = motion_similarity(a, b);
+  const similarity::Similarity similarity = similarity::motion_similarity(a, b);
   std::cout << "similarity of A and B: " << similarity.value << '\n';
 } catch (const std::exception& error) {  // deformseg::invalid_input names the file, line or frame
   std::cerr << "error: " << error.what() << '\n';

@@ -1,6 +1,6 @@
 // A synthetic tube bending at two joints one after the other, with its ground truth: which
 // triangles each joint deforms, and the frames of each phase of the schedule.
-#include <deformseg/synthetic.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <iostream>
 #include <numbers>
@@ -9,7 +9,7 @@ int main() {
   using namespace deformseg;
   const double right = std::numbers::pi / 2;
   // [spec]
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.shape = {.radius = 0.1, .length = 1.0, .sectors = 12, .rings = 40, .caps = true};
   spec.joints = {{.position = 0.3, .blend_width = 0.1}, {.position = 0.7, .blend_width = 0.1}};
   // rest 5 frames; bend the lower joint; hold; bend the upper one; straighten both.
@@ -19,7 +19,7 @@ int main() {
                     .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitX())),
                     .translation = Eigen::Vector3d(1, 2, 3)};
 
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
   // [spec]
   std::cout << tube.animation.num_frames() << " frames, " << tube.animation.num_vertices()
             << " vertices, " << tube.animation.num_faces() << " triangles\n";

@@ -4,10 +4,10 @@
 // With no argument, a tube bending and unbending is compared with the same motion on another,
 // moved and scaled tube, and with other motions; each value is printed with its z-score against
 // frame-shuffled copies (similarity_significance).
-#include <deformseg/motion_signatures.h>
+#include <deformseg/signatures/motion_signatures.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/similarity/significance.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <cstdio>
 #include <numbers>
@@ -18,26 +18,26 @@ using namespace deformseg;
 
 namespace {
 
-Surface_mesh_animation tube(const std::vector<Tube_phase>& schedule, const Tube_shape& shape = {},
-                            const Placement& placement = {}) {
-  Bending_tube spec;
+mesh::Surface_mesh_animation tube(const std::vector<mesh::Tube_phase>& schedule, const mesh::Tube_shape& shape = {},
+                            const mesh::Placement& placement = {}) {
+  mesh::Bending_tube spec;
   spec.shape = shape;
   spec.schedule = schedule;
   spec.placement = placement;
-  return make_bending_tube(spec).animation;
+  return mesh::make_bending_tube(spec).animation;
 }
 
 }  // namespace
 
 int main() {
   constexpr double right = std::numbers::pi / 2;
-  const std::vector<Tube_phase> bend_hold_unbend{{5, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {5, {}}};
-  const Tube_shape thick{.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false};
-  const Placement moved{.scale = 3, .translation = Eigen::Vector3d(1, 2, 3)};
+  const std::vector<mesh::Tube_phase> bend_hold_unbend{{5, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {5, {}}};
+  const mesh::Tube_shape thick{.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false};
+  const mesh::Placement moved{.scale = 3, .translation = Eigen::Vector3d(1, 2, 3)};
 
   // The signature of one frame in the middle of the bend, 8 quantiles per lag: the speeds, as log
   // RMS radii per second (30 fps); then the rates up (+Y), as asinh(rate / 9e-3), weighted by sqrt(0.2).
-  const Eigen::MatrixXd signatures = motion_signatures(tube(bend_hold_unbend));
+  const Eigen::MatrixXd signatures = signatures::motion_signatures(tube(bend_hold_unbend));
   std::printf("frame 10 of %zu, lag 1, speeds:     ", std::size_t(signatures.rows()));
   for (Eigen::Index q = 0; q < 8; ++q) std::printf(" %5.2f", signatures(10, q));
   std::printf("\nframe 10 of %zu, lag 1, rates up:   ", std::size_t(signatures.rows()));
@@ -45,11 +45,11 @@ int main() {
   for (Eigen::Index q = rates_up; q < rates_up + 8; ++q) std::printf(" %5.2f", signatures(10, q));
   std::printf("\n\n");
 
-  const Motion_signature_similarity<> policy;  // lags 1, 4, 16, 128 / 30 s; 8 quantiles; up +Y; scale 1.77; DTW
+  const similarity::Motion_signature_similarity<> policy;  // lags 1, 4, 16, 128 / 30 s; 8 quantiles; up +Y; scale 1.77; DTW
   const auto query = policy.describe(tube(bend_hold_unbend));
   struct Candidate {
     const char* name;
-    Surface_mesh_animation animation;
+    mesh::Surface_mesh_animation animation;
   };
   const Candidate candidates[] = {
       {"the same motion, another tube, moved and scaled", tube(bend_hold_unbend, thick, moved)},
@@ -60,8 +60,8 @@ int main() {
   std::mt19937 random(1);  // for the z-scores against 20 frame-shuffled copies
   for (const Candidate& c : candidates) {
     const auto described = policy.describe(c.animation);
-    const Similarity s = policy.compare(query, described);
+    const similarity::Similarity s = policy.compare(query, described);
     std::printf("%-48s %.3f  (z-score %5.1f, %zu frame pairs)\n", c.name, s.value,
-                similarity_significance(policy, query, described, 20, random), s.alignment.size());
+                similarity::similarity_significance(policy, query, described, 20, random), s.alignment.size());
   }
 }

@@ -1,9 +1,9 @@
 // A similarity policy of one's own: each frame described by the fraction of its area that
 // deforms (normalised previous-pose strain above 0.5), frames aligned by Smith-Waterman on the
 // difference of those fractions.
-#include <deformseg/face_areas.h>
-#include <deformseg/motion_similarity.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/mesh/face_areas.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <cmath>
 #include <iostream>
@@ -13,10 +13,10 @@
 struct Deformed_area_similarity {
   using Description = std::vector<double>;  // per frame, the share of the area that deforms
 
-  template <deformseg::DeformingMesh Mesh>
+  template <deformseg::mesh::DeformingMesh Mesh>
   Description describe(const Mesh& animation) const {
-    const auto strain = deformseg::compute_strain(animation, {.reference = deformseg::Strain_reference::previous_pose});
-    const std::vector<double> areas = deformseg::face_areas(animation, 0);
+    const auto strain = deformseg::strain::compute_strain(animation, {.reference = deformseg::strain::Strain_reference::previous_pose});
+    const std::vector<double> areas = deformseg::mesh::face_areas(animation, 0);
     double total = 0;
     for (double a : areas) total += a;
     Description shares;
@@ -28,12 +28,12 @@ struct Deformed_area_similarity {
     return shares;
   }
 
-  deformseg::Similarity compare(const Description& a, const Description& b) const {
+  deformseg::similarity::Similarity compare(const Description& a, const Description& b) const {
     const deformseg::alignment::Smith_waterman sw;
     const auto d = [&](std::size_t i, std::size_t j) { return std::min(1.0, 10 * std::abs(a[i] - b[j])); };
     deformseg::alignment::Alignment aligned = sw.align(a.size(), b.size(), d);
-    deformseg::Similarity s;
-    s.value = deformseg::Best_score_normalization{}(sw, aligned, a.size(), b.size());
+    deformseg::similarity::Similarity s;
+    s.value = deformseg::similarity::Best_score_normalization{}(sw, aligned, a.size(), b.size());
     s.score = aligned.score;
     s.alignment = std::move(aligned.pairs);
     s.compared = "the deformed share of the area, frame by frame";
@@ -41,15 +41,15 @@ struct Deformed_area_similarity {
   }
 };
 
-static_assert(deformseg::SimilarityPolicy<Deformed_area_similarity, deformseg::Surface_mesh_animation>);
+static_assert(deformseg::similarity::SimilarityPolicy<Deformed_area_similarity, deformseg::mesh::Surface_mesh_animation>);
 
 int main() {
   using namespace deformseg;
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{5, {0.0}}, {10, {std::numbers::pi / 2}}, {8, {}}, {10, {0.0}}, {5, {}}};
-  const auto a = make_bending_tube(spec).animation;
+  const auto a = mesh::make_bending_tube(spec).animation;
   spec.shape.radius = 0.2;
-  const auto b = make_bending_tube(spec).animation;
-  std::cout << "own policy, thin against thick tube: " << motion_similarity(a, b, Deformed_area_similarity{}).value
+  const auto b = mesh::make_bending_tube(spec).animation;
+  std::cout << "own policy, thin against thick tube: " << similarity::motion_similarity(a, b, Deformed_area_similarity{}).value
             << '\n';
 }

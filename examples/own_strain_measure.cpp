@@ -1,8 +1,8 @@
 // A strain measure and a normalisation of one's own: stretching only (compression counts 0), and
 // every strain divided by the largest one of the animation, so that the most stretched triangle
 // gets 1. Any types that model StrainMeasure and StrainNormalization plug into Strain_options.
-#include <deformseg/strain.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/strain/strain.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <algorithm>
 #include <iostream>
@@ -12,16 +12,16 @@
 // The stretch of the most stretched direction, l1 - 1, or 0 where the triangle only shrinks.
 struct Stretch_only {
   template <std::floating_point T>
-  T operator()(const deformseg::Principal_stretches<T>& p) const {
+  T operator()(const deformseg::strain::Principal_stretches<T>& p) const {
     return std::max(p.strain1, T(0));
   }
 };
-static_assert(deformseg::StrainMeasure<Stretch_only>);
+static_assert(deformseg::strain::StrainMeasure<Stretch_only>);
 
 // Every strain over the largest one (left as it is when all are 0); the largest is the parameter.
 struct Divide_by_largest {
   template <std::floating_point T>
-  std::optional<double> normalize(const deformseg::Raw_strain_field<T>& field) const {
+  std::optional<double> normalize(const deformseg::strain::Raw_strain_field<T>& field) const {
     T largest = 0;
     for (const auto& run : field.samples())
       for (const T s : run) largest = std::max(largest, s);
@@ -30,15 +30,15 @@ struct Divide_by_largest {
     return double(largest);
   }
 };
-static_assert(deformseg::StrainNormalization<Divide_by_largest>);
+static_assert(deformseg::strain::StrainNormalization<Divide_by_largest>);
 
 int main() {
   using namespace deformseg;
-  Bending_tube spec;  // rests, bends by 90 degrees, holds, straightens: 31 frames
+  mesh::Bending_tube spec;  // rests, bends by 90 degrees, holds, straightens: 31 frames
   spec.schedule = {{5, {0.0}}, {10, {std::numbers::pi / 2}}, {5, {}}, {10, {0.0}}};
-  const auto animation = make_bending_tube(spec).animation;
-  const Strain_options<Stretch_only, Divide_by_largest> options{};
-  const Strain_field<float> stretch = compute_strain(animation, options);
+  const auto animation = mesh::make_bending_tube(spec).animation;
+  const strain::Strain_options<Stretch_only, Divide_by_largest> options{};
+  const strain::Strain_field<float> stretch = strain::compute_strain(animation, options);
   const auto bent = stretch.frame(20);
   const auto stretched = std::count_if(bent.begin(), bent.end(), [](float s) { return s > 0.01f; });
   std::cout << "largest stretch " << *stretch.sigma() << "; frame 20: largest "

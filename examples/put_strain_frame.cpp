@@ -1,29 +1,29 @@
 // One frame of strain, and its principal directions, written into face property maps of a
 // CGAL::Surface_mesh, as a CGAL algorithm downstream would read them.
-#include <deformseg/strain.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/strain/strain.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <iostream>
 #include <numbers>
 
 int main() {
   using namespace deformseg;
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{8, {std::numbers::pi / 3}}};
-  const auto tube = make_bending_tube(spec);
-  const auto field = compute_strain(tube.animation, {.principal_directions = true});
+  const auto tube = mesh::make_bending_tube(spec);
+  const auto field = strain::compute_strain(tube.animation, {.principal_directions = true});
 
   // A copy of the connectivity, with two face properties.
   // [property_maps]
-  Surface_mesh mesh = tube.animation.face_graph();
-  auto strain = mesh.add_property_map<Surface_mesh::Face_index, float>("f:strain", 0.0f).first;
-  auto direction = mesh.add_property_map<Surface_mesh::Face_index, Kernel::Vector_3>("f:stretch_direction").first;
-  put_strain_frame(field, 8, mesh, strain);
-  put_principal_directions(field, 8, mesh, direction);
+  mesh::Surface_mesh mesh = tube.animation.face_graph();
+  auto strain = mesh.add_property_map<mesh::Surface_mesh::Face_index, float>("f:strain", 0.0f).first;
+  auto direction = mesh.add_property_map<mesh::Surface_mesh::Face_index, mesh::Kernel::Vector_3>("f:stretch_direction").first;
+  strain::put_strain_frame(field, 8, mesh, strain);
+  strain::put_principal_directions(field, 8, mesh, direction);
   // [property_maps]
 
   std::size_t strained = 0;
-  Surface_mesh::Face_index most = *faces(mesh).begin();
+  mesh::Surface_mesh::Face_index most = *faces(mesh).begin();
   for (auto f : faces(mesh)) {
     if (strain[f] > 0.1f) ++strained;
     if (strain[f] > strain[most]) most = f;

@@ -5,16 +5,16 @@
 //   read_animation [INPUT [TOPOLOGY]]   INPUT: a folder or "glob" of frames, or a .pc2/.mdd cache
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/io/write_obj.h>
-#include <deformseg/io/write_sequence.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/io/obj.h>
+#include <deformseg/io/frame_sequence.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <iostream>
 #include <numbers>
 
 using namespace deformseg;
 
-void describe(const std::string& input, const Surface_mesh_animation& animation) {
+void describe(const std::string& input, const mesh::Surface_mesh_animation& animation) {
   std::cout << input << " (" << io::animation_format(input) << "): " << animation.num_frames()
             << " frames, " << animation.num_vertices() << " vertices, " << animation.num_faces()
             << " triangles\n";
@@ -29,17 +29,17 @@ int main(int argc, char** argv) {
   }
 
   // A tube that bends by 90 degrees at its middle joint: rest, bend, hold, unbend.
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{10, {0.0}}, {10, {std::numbers::pi / 2}}, {10, {}}, {10, {0.0}}};
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
 
   // As a folder of OBJ frames, and as a point cache with its topology mesh.
   io::write_sequence(tube.animation, "tube_frames", {.format = io::Mesh_format::obj});
   io::write_obj(tube.animation, 0, "tube_topology.obj");
   io::write_pc2(tube.animation, "tube.pc2");
 
-  const Surface_mesh_animation frames = io::read_animation("tube_frames");
-  const Surface_mesh_animation cached = io::read_animation("tube.pc2", {.topology = "tube_topology.obj"});
+  const mesh::Surface_mesh_animation frames = io::read_animation("tube_frames");
+  const mesh::Surface_mesh_animation cached = io::read_animation("tube.pc2", {.topology = "tube_topology.obj"});
   describe("tube_frames", frames);
   describe("tube.pc2", cached);
   std::cout << "frame 20, vertex 7: " << frames.frame_matrix(20).col(7).transpose() << '\n';

@@ -1,6 +1,6 @@
 // Reading a user's labelled graph (Graphviz DOT or GraphML, nodes with a `label` attribute).
 #include <deformseg/ged/exact_ged.h>
-#include <deformseg/io/read_graph.h>
+#include <deformseg/io/graphviz.h>
 
 #include <filesystem>
 #include <fstream>

@@ -2,13 +2,13 @@
 // Triangle_soup to make_face_graph to build a CGAL mesh.
 //
 //   read_obj_off_ply [FILE.obj|.off|.ply]
-#include <deformseg/default_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
 #include <deformseg/io/obj.h>
 #include <deformseg/io/off.h>
 #include <deformseg/io/ply.h>
-#include <deformseg/io/write_obj.h>
-#include <deformseg/io/write_ply.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/io/obj.h>
+#include <deformseg/io/ply.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <fstream>
 #include <iostream>
@@ -16,7 +16,7 @@
 using namespace deformseg;
 
 void build_and_print(const std::string& name, const io::Triangle_soup& soup) {
-  const Surface_mesh mesh = make_face_graph<Surface_mesh>(io::points_of(soup), soup.triangles);
+  const mesh::Surface_mesh mesh = mesh::make_face_graph<mesh::Surface_mesh>(io::points_of(soup), soup.triangles);
   std::cout << name << ": " << soup.num_vertices() << " vertices, " << soup.triangles.size()
             << " triangles; as a Surface_mesh, " << mesh.number_of_edges() << " edges, closed: "
             << std::boolalpha << CGAL::is_closed(mesh) << '\n';
@@ -30,9 +30,9 @@ int main(int argc, char** argv) {
     return 0;
   }
   // One frame of a small tube in each format.
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.shape = {.radius = 0.1, .length = 1.0, .sectors = 8, .rings = 6, .caps = true};
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
   io::write_obj(tube.animation, 0, "tube.obj");
   io::write_ply(tube.animation, 0, "tube.ply");
   {

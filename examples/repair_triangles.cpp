@@ -4,7 +4,7 @@
 // same soup refused, with the defect named.
 //
 //   repair_triangles
-#include <deformseg/default_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/mesh_repair.h>
 

@@ -1,8 +1,8 @@
 // The similarity matrix of four animations: two schedules, each on two tubes. Each animation is
 // described once; the pairs run in parallel. Then a pose of one frame among them, which the
 // matrix refuses, naming it.
-#include <deformseg/motion_similarity.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <iostream>
 #include <numbers>
@@ -11,20 +11,20 @@
 int main() {
   using namespace deformseg;
   const double right = std::numbers::pi / 2;
-  const std::vector<std::vector<Tube_phase>> schedules{
+  const std::vector<std::vector<mesh::Tube_phase>> schedules{
       {{5, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {5, {}}},
       {{5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {}}}};
-  const std::vector<Tube_shape> shapes{{}, {.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false}};
-  std::vector<Surface_mesh_animation> animations;
+  const std::vector<mesh::Tube_shape> shapes{{}, {.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false}};
+  std::vector<mesh::Surface_mesh_animation> animations;
   for (const auto& schedule : schedules)
     for (const auto& shape : shapes) {
-      Bending_tube spec;
+      mesh::Bending_tube spec;
       spec.shape = shape;
       spec.schedule = schedule;
-      animations.push_back(make_bending_tube(spec).animation);
+      animations.push_back(mesh::make_bending_tube(spec).animation);
     }
   // [matrix]
-  const Eigen::MatrixXd m = similarity_matrix(animations);
+  const Eigen::MatrixXd m = similarity::similarity_matrix(animations);
   // [matrix]
   std::cout << "one bend (thin, thick), two bends (thin, thick):\n" << m << '\n';
 
@@ -33,8 +33,8 @@ int main() {
   const auto first = animations[0].frame_positions(0);
   animations.emplace_back(animations[0].face_graph(), std::vector<double>(first.begin(), first.end()));
   try {
-    similarity_matrix(animations);
-  } catch (const animation_not_described& e) {
+    similarity::similarity_matrix(animations);
+  } catch (const similarity::animation_not_described& e) {
     std::cout << "animation " << e.index() << " not described: " << e.reason() << '\n';
   }
   // [pose]

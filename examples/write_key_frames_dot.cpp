@@ -1,11 +1,11 @@
 // Writes the evolving graph of a tube bending at two joints in turn as Graphviz DOT files (one per
 // key frame), and every frame as a PLY mesh coloured by segment.
-#include <deformseg/evolving_graph.h>
-#include <deformseg/face_areas.h>
-#include <deformseg/io/write_evolving_graph.h>
-#include <deformseg/io/write_sequence.h>
-#include <deformseg/segment_colors.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
+#include <deformseg/mesh/face_areas.h>
+#include <deformseg/io/graphviz.h>
+#include <deformseg/io/frame_sequence.h>
+#include <deformseg/color/segment_colors.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <iostream>
 #include <numbers>
@@ -13,14 +13,14 @@
 int main() {
   using namespace deformseg;
   const double right = std::numbers::pi / 2;
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.joints = {{.position = 0.3}, {.position = 0.7}};
-  spec.schedule = {{5, {0.0, 0.0}}, {10, {right, 0.0}, Easing::linear}, {10, {right, right}, Easing::linear}};
-  const auto animation = make_bending_tube(spec).animation;
+  spec.schedule = {{5, {0.0, 0.0}}, {10, {right, 0.0}, mesh::Easing::linear}, {10, {right, right}, mesh::Easing::linear}};
+  const auto animation = mesh::make_bending_tube(spec).animation;
   // [dot]
-  const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(animation, {.threshold = 0.01});
-  const Frame_segments frames(segmentation, animation.triangles(), face_areas(animation, 0));
-  const Evolving_graph graph = evolving_graph(frames);
+  const spatiotemporal::Spatiotemporal_segmentation segmentation = spatiotemporal::spatiotemporal_segmentation(animation, {.threshold = 0.01});
+  const spatiotemporal::Frame_segments frames(segmentation, animation.triangles(), mesh::face_areas(animation, 0));
+  const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(frames);
 
   for (const auto& file : io::write_key_frames_dot(graph, "two_joints_dot")) std::cout << file.string() << '\n';
   // [dot]
@@ -30,7 +30,7 @@ int main() {
   // Segment 0 has the same colour in every frame; rigid triangles are grey.
   // [colors]
   const auto files = io::write_sequence(animation, "two_joints_segments",
-                                        {.face_colors = [&](std::size_t t) { return segment_face_colors(frames, t); }});
+                                        {.face_colors = [&](std::size_t t) { return color::segment_face_colors(frames, t); }});
   // [colors]
   std::cout << files.size() << " coloured meshes in two_joints_segments/\n";
 }

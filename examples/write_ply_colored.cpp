@@ -1,9 +1,9 @@
 // Writes one frame of an animation as a PLY file with a colour per face, which MeshLab and
 // ParaView show, in binary and in text; and the same frame as an OBJ file.
-#include <deformseg/color.h>
-#include <deformseg/io/write_obj.h>
-#include <deformseg/io/write_ply.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/color/color.h>
+#include <deformseg/io/obj.h>
+#include <deformseg/io/ply.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <iostream>
 #include <numbers>
@@ -12,15 +12,15 @@
 int main() {
   using namespace deformseg;
   // A tube bending at two joints; the generator says which joint moves each triangle.
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.joints = {{.position = 0.3, .blend_width = 0.1}, {.position = 0.7, .blend_width = 0.1}};
   spec.schedule = {{10, {std::numbers::pi / 2, std::numbers::pi / 3}}};
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
   const auto& animation = tube.animation;
 
   // Grey for rigid triangles, red and blue for those of each joint.
-  const std::vector<Rgb> palette{{200, 200, 200}, {220, 40, 40}, {40, 80, 220}};
-  std::vector<Rgb> face_colors;
+  const std::vector<color::Rgb> palette{{200, 200, 200}, {220, 40, 40}, {40, 80, 220}};
+  std::vector<color::Rgb> face_colors;
   for (const int joint : tube.face_joint) face_colors.push_back(palette[std::size_t(joint + 1)]);
 
   const std::size_t last = animation.num_frames() - 1;

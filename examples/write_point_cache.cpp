@@ -1,7 +1,7 @@
 // Writes an animation as a Blender/Maya PC2 and a LightWave/Blender MDD point cache, reads their
 // headers, and reads both back with the animation's connectivity.
 #include <deformseg/io/point_cache.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <algorithm>
 #include <iostream>
@@ -11,10 +11,10 @@ int main() {
   using namespace deformseg;
   // A tube bending its middle joint by a right angle over 12 frames, in float: a point cache
   // stores float32, so a float animation comes back exactly.
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{12, {std::numbers::pi / 2}}};
-  const auto tube = make_bending_tube(spec);
-  const auto animation = make_deforming_mesh<float>(tube.animation);
+  const auto tube = mesh::make_bending_tube(spec);
+  const auto animation = mesh::make_deforming_mesh<float>(tube.animation);
 
   // [caches]
   io::write_pc2(animation, "tube.pc2", {.start_frame = 1});  // Blender's first frame is 1
@@ -28,8 +28,8 @@ int main() {
             << mdd.frame_times.back() << " s\n";
 
   // The caches hold no connectivity: vertex i of the cache is vertex index i of the topology.
-  const auto from_pc2 = io::read_pc2<Surface_mesh, float>("tube.pc2", animation.face_graph());
-  const auto from_mdd = io::read_mdd<Surface_mesh, float>("tube.mdd", animation.face_graph());
+  const auto from_pc2 = io::read_pc2<mesh::Surface_mesh, float>("tube.pc2", animation.face_graph());
+  const auto from_mdd = io::read_mdd<mesh::Surface_mesh, float>("tube.mdd", animation.face_graph());
   // [caches]
   const bool same = std::ranges::equal(from_pc2.all_positions(), animation.all_positions()) &&
                     std::ranges::equal(from_mdd.all_positions(), animation.all_positions());

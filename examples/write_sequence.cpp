@@ -1,8 +1,8 @@
 // Writes every frame of an animation into a folder, one file per frame with zero-padded names:
 // PLY files coloured per frame by how far each triangle has moved, and OBJ files.
-#include <deformseg/color.h>
-#include <deformseg/io/write_sequence.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/color/color.h>
+#include <deformseg/io/frame_sequence.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -12,15 +12,15 @@
 
 int main() {
   using namespace deformseg;
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{15, {std::numbers::pi / 2}}};
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
   const auto& animation = tube.animation;
 
   // A face's colour at frame t: from white (still) to red (moved by a fifth of the tube's length
   // or more), by how far its first vertex has moved since frame 0.
   const auto moved = [&](std::size_t t) {
-    std::vector<Rgb> colors;
+    std::vector<color::Rgb> colors;
     for (const auto& triangle : animation.triangles()) {
       const double distance = (animation.frame_matrix(t).col(triangle[0]) - animation.frame_matrix(0).col(triangle[0])).norm();
       const auto fade = static_cast<std::uint8_t>(255 * (1 - std::min(distance / 0.2, 1.0)));

@@ -1,7 +1,7 @@
 // A strain field saved for other programs: as CSV for a spreadsheet, and as a JSON header line
 // plus raw little-endian float32 values for NumPy and large data.
-#include <deformseg/io/write_strain_field.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/io/strain_field.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <filesystem>
 #include <fstream>
@@ -11,9 +11,9 @@
 
 int main() {
   using namespace deformseg;
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{10, {std::numbers::pi / 2}}, {5, {}}};
-  const auto field = compute_strain(make_bending_tube(spec).animation);
+  const auto field = strain::compute_strain(mesh::make_bending_tube(spec).animation);
 
   const auto folder = std::filesystem::temp_directory_path() / "deformseg-write-strain-field";
   std::filesystem::create_directories(folder);

@@ -9,26 +9,26 @@
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/alignment/subsequence_dtw.h>
-#include <deformseg/default_mesh.h>
-#include <deformseg/evolving_graph.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/face_areas.h>
-#include <deformseg/find_motion.h>
-#include <deformseg/frame_distances.h>
+#include <deformseg/mesh/face_areas.h>
+#include <deformseg/similarity/find_motion.h>
+#include <deformseg/strain/frame_distances.h>
 #include <deformseg/ged/bipartite_ged.h>
 #include <deformseg/ged/exact_ged.h>
 #include <deformseg/ged/lower_bound.h>
 #include <deformseg/io/motion_labels.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/io/read_graph.h>
+#include <deformseg/io/graphviz.h>
 #include <deformseg/io/read_mesh.h>
-#include <deformseg/motion_similarity.h>
-#include <deformseg/retrieval_evaluation.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/evaluation/retrieval_evaluation.h>
 #include <deformseg/similarity/policy_choice.h>
 #include <deformseg/similarity/self_similarity_matching.h>
 #include <deformseg/similarity/significance.h>
-#include <deformseg/strain.h>
-#include <deformseg/temporal_segmentation.h>
+#include <deformseg/strain/strain.h>
+#include <deformseg/temporal/temporal_segmentation.h>
 #include <deformseg/threads.h>
 
 #include <pybind11/numpy.h>
@@ -74,7 +74,7 @@ struct Interruptible_call {
 
 // An animation as Python holds it: the library's default model, and what the reader repaired.
 struct Animation {
-  Surface_mesh_animation mesh;
+  mesh::Surface_mesh_animation mesh;
   std::optional<io::Repair_report> repair{};
 };
 
@@ -151,8 +151,8 @@ Animation animation_of_arrays(const py::object& faces_like, const py::object& fr
   Interruptible_call call;
   std::vector<std::array<double, 3>> rest(vertices);
   std::copy_n(positions.data(), 3 * vertices, rest.front().data());
-  Surface_mesh graph = make_face_graph<Surface_mesh>(rest, triangles);
-  Surface_mesh_animation mesh(std::move(graph), std::move(positions));
+  mesh::Surface_mesh graph = mesh::make_face_graph<mesh::Surface_mesh>(rest, triangles);
+  mesh::Surface_mesh_animation mesh(std::move(graph), std::move(positions));
   mesh.set_frames_per_second(fps);
   return {std::move(mesh), std::nullopt};
 }
@@ -206,15 +206,15 @@ Animation read_input(const std::filesystem::path& path, std::optional<std::strin
                                      .repair = repair, .clip = clip.value_or(""), .fps = fps};
   Interruptible_call call;
   io::Repair_report report;
-  Surface_mesh_animation mesh = io::read_animation(input, options, &report);
+  mesh::Surface_mesh_animation mesh = io::read_animation(input, options, &report);
   return {std::move(mesh), report};
 }
 
 // ---- Strain, temporal segmentation, evolving graph ---------------------------------------------
 
-Strain_reference reference_of(const std::string& name) {
-  if (name == "rest") return Strain_reference::rest_pose;
-  if (name == "previous") return Strain_reference::previous_pose;
+strain::Strain_reference reference_of(const std::string& name) {
+  if (name == "rest") return strain::Strain_reference::rest_pose;
+  if (name == "previous") return strain::Strain_reference::previous_pose;
   refuse("reference must be 'rest' or 'previous', got '" + name + "'");
 }
 
@@ -222,23 +222,23 @@ Strain_reference reference_of(const std::string& name) {
 // cat-reference.obj), read from a mesh file, with the connectivity of the animation as read.
 struct Reference_mesh {
   std::string path;
-  Surface_mesh graph;
+  mesh::Surface_mesh graph;
 };
 
 std::optional<Reference_mesh> reference_mesh_of(const std::optional<std::filesystem::path>& path) {
   if (!path) return std::nullopt;
   const io::Triangle_soup soup = io::read_mesh(*path);
-  return Reference_mesh{path->string(), make_face_graph<Surface_mesh>(io::points_of(soup), soup.triangles)};
+  return Reference_mesh{path->string(), mesh::make_face_graph<mesh::Surface_mesh>(io::points_of(soup), soup.triangles)};
 }
 
 // The strain field of `a` with `options`, against `reference` when there is one; its errors then
 // name the reference mesh's file, as the tool's do: a mismatch of connectivity is that file's.
 template <class Options>
-Strain_field<float> field_of(const Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference,
+strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference,
                              const Options& options) {
-  if (!reference) return compute_strain(a, options);
+  if (!reference) return strain::compute_strain(a, options);
   try {
-    return compute_strain(a, reference->graph, options);
+    return strain::compute_strain(a, reference->graph, options);
   } catch (const invalid_input& error) {
     throw invalid_input(std::string(error.what()) + " (the reference mesh must have the connectivity of the "
                         "animation as read: its num_vertices and num_faces)", {.file = reference->path});
@@ -246,54 +246,54 @@ Strain_field<float> field_of(const Surface_mesh_animation& a, const std::optiona
 }
 
 template <class Measure>
-Strain_field<float> strain_with(const Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference_mesh,
-                                Strain_reference reference, std::size_t rest_frame, Measure measure, bool gaussian,
+strain::Strain_field<float> strain_with(const mesh::Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference_mesh,
+                                strain::Strain_reference reference, std::size_t rest_frame, Measure measure, bool gaussian,
                                 std::optional<double> sigma, double tolerance, int threads) {
   if (!gaussian)
     return field_of(a, reference_mesh,
-                    Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
-                                   .normalization = No_normalization{}, .degenerate_tolerance = tolerance,
+                    strain::Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
+                                   .normalization = strain::No_normalization{}, .degenerate_tolerance = tolerance,
                                    .threads = threads});
   return field_of(a, reference_mesh,
-                  Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
-                                 .normalization = Gaussian_normalization{.sigma = sigma},
+                  strain::Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
+                                 .normalization = strain::Gaussian_normalization{.sigma = sigma},
                                  .degenerate_tolerance = tolerance, .threads = threads});
 }
 
 py::array strain(const Animation& a, const std::string& reference, std::size_t rest_frame,
                  const std::optional<std::filesystem::path>& reference_mesh, const std::string& measure,
                  const std::string& normalize, std::optional<double> sigma, double degenerate_tolerance, int threads) {
-  const Strain_reference ref = reference_of(reference);
+  const strain::Strain_reference ref = reference_of(reference);
   if (normalize != "gaussian" && normalize != "none")
     refuse("normalize must be 'gaussian' or 'none', got '" + normalize + "'");
   const bool gaussian = normalize == "gaussian";
   if (sigma && !gaussian) refuse("sigma asks for normalize='gaussian'");
   if (sigma && !(*sigma > 0)) refuse("sigma must be positive");
-  if (ref == Strain_reference::previous_pose && rest_frame != 0) refuse("rest_frame asks for reference='rest'");
-  if (reference_mesh && (ref == Strain_reference::previous_pose || rest_frame != 0))
+  if (ref == strain::Strain_reference::previous_pose && rest_frame != 0) refuse("rest_frame asks for reference='rest'");
+  if (reference_mesh && (ref == strain::Strain_reference::previous_pose || rest_frame != 0))
     refuse("reference_mesh takes the place of the rest frame: it excludes reference='previous' and rest_frame");
   if (measure != "max-principal" && measure != "green-lagrange" && measure != "frobenius" && measure != "area-ratio")
     refuse("measure must be 'max-principal', 'green-lagrange', 'frobenius' or 'area-ratio', got '" + measure + "'");
-  Strain_field<float> field;
+  strain::Strain_field<float> field;
   {
     Interruptible_call call;
     const std::optional<Reference_mesh> rest = reference_mesh_of(reference_mesh);
     const auto run = [&](auto m) {
       return strain_with(a.mesh, rest, ref, rest_frame, m, gaussian, sigma, degenerate_tolerance, threads);
     };
-    if (measure == "max-principal") field = run(Max_principal_strain{});
-    else if (measure == "green-lagrange") field = run(Green_lagrange_strain{});
-    else if (measure == "frobenius") field = run(Frobenius_strain{});
-    else field = run(Area_ratio_strain{});
+    if (measure == "max-principal") field = run(strain::Max_principal_strain{});
+    else if (measure == "green-lagrange") field = run(strain::Green_lagrange_strain{});
+    else if (measure == "frobenius") field = run(strain::Frobenius_strain{});
+    else field = run(strain::Area_ratio_strain{});
   }
   const auto shape = std::vector<py::ssize_t>{py::ssize_t(field.num_frames()), py::ssize_t(field.num_faces())};
-  return owning(std::move(field), +[](const Strain_field<float>& f) { return f.values().data(); }, shape);
+  return owning(std::move(field), +[](const strain::Strain_field<float>& f) { return f.values().data(); }, shape);
 }
 
-Frame_metric metric_of(const std::string& name) {
-  if (name == "euclidean") return Frame_metric::euclidean;
-  if (name == "l1") return Frame_metric::l1;
-  if (name == "cosine") return Frame_metric::cosine;
+strain::Frame_metric metric_of(const std::string& name) {
+  if (name == "euclidean") return strain::Frame_metric::euclidean;
+  if (name == "l1") return strain::Frame_metric::l1;
+  if (name == "cosine") return strain::Frame_metric::cosine;
   refuse("metric must be 'euclidean', 'l1' or 'cosine', got '" + name + "'");
 }
 
@@ -304,16 +304,16 @@ void check_rest(const std::optional<std::filesystem::path>& reference_mesh, std:
 
 // The frame distances of the temporal segmentation: the default strain against `rest_frame`, or
 // against the reference mesh.
-Eigen::MatrixXf distances_of(const Surface_mesh_animation& a, Frame_metric metric, std::size_t rest_frame,
+Eigen::MatrixXf distances_of(const mesh::Surface_mesh_animation& a, strain::Frame_metric metric, std::size_t rest_frame,
                              const std::optional<std::filesystem::path>& reference_mesh, int threads) {
-  const Strain_field<float> field =
-      field_of(a, reference_mesh_of(reference_mesh), Strain_options{.rest_frame = rest_frame, .threads = threads});
+  const strain::Strain_field<float> field =
+      field_of(a, reference_mesh_of(reference_mesh), strain::Strain_options{.rest_frame = rest_frame, .threads = threads});
   return frame_distances(field, {.metric = metric, .threads = threads});
 }
 
 py::array distances(const Animation& a, const std::string& metric, std::size_t rest_frame,
                     const std::optional<std::filesystem::path>& reference_mesh, int threads) {
-  const Frame_metric m = metric_of(metric);
+  const strain::Frame_metric m = metric_of(metric);
   check_rest(reference_mesh, rest_frame);
   Eigen::MatrixXf d;
   {
@@ -333,32 +333,32 @@ std::vector<std::pair<std::size_t, std::size_t>> temporal(const Animation& a, co
                                                           int threads) {
   if (method != "optimal" && method != "binary-split" && method != "greedy" && method != "barbic")
     refuse("method must be 'optimal', 'binary-split', 'greedy' or 'barbic', got '" + method + "'");
-  const Frame_metric m = metric_of(metric);
+  const strain::Frame_metric m = metric_of(metric);
   if (segments && method != "optimal") refuse("segments asks for method='optimal'");
   check_rest(reference_mesh, rest_frame);
   if (segments && *segments == 0) refuse("segments must be at least 1");
   if (min_length == 0) refuse("min_length must be at least 1");
   if (threshold && !(*threshold >= 0)) refuse("threshold must be non-negative");
-  const auto threshold_or = [&](Segmentation_threshold fallback) {
-    return threshold ? Segmentation_threshold{.value = *threshold, .relative = !absolute} : fallback;
+  const auto threshold_or = [&](temporal::Segmentation_threshold fallback) {
+    return threshold ? temporal::Segmentation_threshold{.value = *threshold, .relative = !absolute} : fallback;
   };
-  Temporal_segmentation result;
+  temporal::Temporal_segmentation result;
   {
     Interruptible_call call;
-    const Segment_cost cost(distances_of(a.mesh, m, rest_frame, reference_mesh, threads));
+    const temporal::Segment_cost cost(distances_of(a.mesh, m, rest_frame, reference_mesh, threads));
     if (method == "binary-split")
-      result = segment_frames(
-          cost, Binary_split{.threshold = threshold_or(Binary_split{}.threshold), .min_length = min_length});
+      result = temporal::segment_frames(
+          cost, temporal::Binary_split{.threshold = threshold_or(temporal::Binary_split{}.threshold), .min_length = min_length});
     else if (method == "greedy")
-      result = segment_frames(cost, Thesis_greedy{.threshold = threshold_or(Thesis_greedy{}.threshold)});
+      result = temporal::segment_frames(cost, temporal::Thesis_greedy{.threshold = threshold_or(temporal::Thesis_greedy{}.threshold)});
     else if (method == "barbic")
-      result = segment_frames(cost, Barbic_pca{});
+      result = temporal::segment_frames(cost, temporal::Barbic_pca{});
     else
-      result = segment_frames(cost, Optimal_partition{.penalty = threshold_or(Optimal_partition{}.penalty),
+      result = temporal::segment_frames(cost, temporal::Optimal_partition{.penalty = threshold_or(temporal::Optimal_partition{}.penalty),
                                                       .segments = segments, .min_length = min_length});
   }
   std::vector<std::pair<std::size_t, std::size_t>> out;
-  for (const Temporal_segment& s : result.segments) out.emplace_back(s.first, s.last);
+  for (const temporal::Temporal_segment& s : result.segments) out.emplace_back(s.first, s.last);
   return out;
 }
 
@@ -371,23 +371,23 @@ py::tuple evolving(const Animation& a, double threshold, const std::optional<std
   if (!(threshold >= 0 && threshold <= 1)) refuse("threshold must be in [0, 1]");
   if (reference_mesh && reference == "previous")
     refuse("reference_mesh is a rest pose: it excludes reference='previous'");
-  const Spatiotemporal_options options{.reference = reference_of(reference.value_or(reference_mesh ? "rest" : "previous")),
+  const spatiotemporal::Spatiotemporal_options options{.reference = reference_of(reference.value_or(reference_mesh ? "rest" : "previous")),
                                        .threshold = threshold, .min_triangles = min_triangles,
                                        .min_frames = min_frames, .max_island = max_island};
-  const Evolving_graph graph = [&] {
+  const spatiotemporal::Evolving_graph graph = [&] {
     Interruptible_call call;
-    if (!reference_mesh) return evolving_graph(a.mesh, options);
-    const Strain_field<float> field = field_of(a.mesh, reference_mesh_of(reference_mesh), Strain_options{});
-    const std::vector<double> areas = face_areas(a.mesh, 0);
-    const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(field, a.mesh.triangles(), options);
-    return evolving_graph(Frame_segments(segmentation, a.mesh.triangles(), areas));
+    if (!reference_mesh) return spatiotemporal::evolving_graph(a.mesh, options);
+    const strain::Strain_field<float> field = field_of(a.mesh, reference_mesh_of(reference_mesh), strain::Strain_options{});
+    const std::vector<double> areas = mesh::face_areas(a.mesh, 0);
+    const spatiotemporal::Spatiotemporal_segmentation segmentation = spatiotemporal::spatiotemporal_segmentation(field, a.mesh.triangles(), options);
+    return spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segmentation, a.mesh.triangles(), areas));
   }();
   py::list key_frames;
-  for (const Key_frame& k : graph) {
-    const Segment_graph& g = k.graph;
+  for (const spatiotemporal::Key_frame& k : graph) {
+    const spatiotemporal::Segment_graph& g = k.graph;
     py::list nodes, edges;
     for (std::size_t v = 0; v < boost::num_vertices(g); ++v) {
-      const bool rigid = g[v].kind == Segment_kind::rigid;
+      const bool rigid = g[v].kind == spatiotemporal::Segment_kind::rigid;
       nodes.append(py::make_tuple(rigid ? "rigid" : "deformed", rigid ? py::object(py::none()) : py::int_(g[v].segment),
                                   g[v].triangles, g[v].area));
     }
@@ -402,18 +402,18 @@ py::tuple evolving(const Animation& a, double threshold, const std::optional<std
 // ---- Similarity ----------------------------------------------------------------------------------
 
 struct Similarity_result {
-  Similarity similarity;
+  similarity::Similarity similarity;
   std::optional<double> z_score;
   std::size_t shuffled_copies = 0;
 };
 
 // The keywords policy, alignment, threshold and up, as the library's Policy_choice.
-Policy_choice policy_choice(const std::string& policy, const std::optional<std::string>& alignment,
+similarity::Policy_choice policy_choice(const std::string& policy, const std::optional<std::string>& alignment,
                             std::optional<double> threshold, const std::optional<std::string>& up) {
   return {.policy = policy, .alignment = alignment.value_or(""), .threshold = threshold, .up = up.value_or("")};
 }
 
-void require_motion(const Surface_mesh_animation& a, const char* which) {
+void require_motion(const mesh::Surface_mesh_animation& a, const char* which) {
   if (a.num_frames() < 2)
     throw invalid_input(std::string(which) + ": an animation of " + std::to_string(a.num_frames()) +
                         " frame: a motion needs at least 2");
@@ -423,22 +423,22 @@ Similarity_result similarity(const Animation& a, const Animation& b, const std::
                              const std::optional<std::string>& alignment, std::optional<double> threshold,
                              const std::optional<std::string>& up, std::optional<std::size_t> significance,
                              unsigned seed) {
-  const Policy_choice choice = policy_choice(policy, alignment, threshold, up);
-  check_policy_choice(choice);
+  const similarity::Policy_choice choice = policy_choice(policy, alignment, threshold, up);
+  similarity::check_policy_choice(choice);
   if (significance == 1) refuse("significance needs 0 (none) or at least 2 shuffled copies");
   if (significance.value_or(0) >= 2 && policy == "graph")
     refuse("significance does not apply to the graph policy, whose frames are key-frame labels");
   const std::size_t copies = significance.value_or(policy == "graph" ? 0 : 20);
   require_motion(a.mesh, "a");
   require_motion(b.mesh, "b");
-  return with_policy_choice(choice, [&](const auto& p) {
+  return similarity::with_policy_choice(choice, [&](const auto& p) {
     Interruptible_call call;
     const auto da = p.describe(a.mesh), db = p.describe(b.mesh);
     Similarity_result out{p.compare(da, db), std::nullopt, 0};
     if constexpr (requires { frame_count(db); reordered_frames(db, std::span<const std::size_t>()); }) {
       if (copies >= 2) {
         std::mt19937 random(seed);
-        out.z_score = similarity_significance(p, da, db, copies, random);
+        out.z_score = similarity::similarity_significance(p, da, db, copies, random);
         out.shuffled_copies = copies;
       }
     }
@@ -450,7 +450,7 @@ Similarity_result similarity(const Animation& a, const Animation& b, const std::
 // Python objects stay referenced in `held` while the GIL is released.
 struct Animation_list {
   std::vector<py::object> held;
-  std::vector<const Surface_mesh_animation*> meshes;
+  std::vector<const mesh::Surface_mesh_animation*> meshes;
 
   Animation_list(const py::sequence& animations, const char* what) {
     for (std::size_t i = 0; i < animations.size(); ++i) {
@@ -458,7 +458,7 @@ struct Animation_list {
       if (!py::isinstance<Animation>(item))
         throw py::type_error(std::string(what) + "[" + std::to_string(i) + "]: expected an Animation, got " +
                              py::str(py::type::of(item).attr("__name__")).cast<std::string>());
-      const Surface_mesh_animation& mesh = item.cast<const Animation&>().mesh;
+      const mesh::Surface_mesh_animation& mesh = item.cast<const Animation&>().mesh;
       require_motion(mesh, (std::string(what) + "[" + std::to_string(i) + "]").c_str());
       meshes.push_back(&mesh);
       held.push_back(std::move(item));
@@ -466,40 +466,40 @@ struct Animation_list {
   }
   auto range() const {
     return meshes |
-           std::views::transform([](const Surface_mesh_animation* m) -> const Surface_mesh_animation& { return *m; });
+           std::views::transform([](const mesh::Surface_mesh_animation* m) -> const mesh::Surface_mesh_animation& { return *m; });
   }
 };
 
 py::array matrix(const py::sequence& animations, const std::optional<py::sequence>& database, const std::string& policy,
                  const std::optional<std::string>& alignment, std::optional<double> threshold,
                  const std::optional<std::string>& up, const std::optional<py::function>& progress) {
-  const Policy_choice choice = policy_choice(policy, alignment, threshold, up);
-  check_policy_choice(choice);
+  const similarity::Policy_choice choice = policy_choice(policy, alignment, threshold, up);
+  similarity::check_policy_choice(choice);
   const Animation_list rows(animations, "animations");
   const std::optional<Animation_list> columns =
       database ? std::optional<Animation_list>(std::in_place, *database, "database") : std::nullopt;
-  Similarity_progress report;
+  similarity::Similarity_progress report;
   if (progress)
     report = [&progress](std::size_t done, std::size_t total) {
       py::gil_scoped_acquire acquire;
       const py::object go = (*progress)(done, total);
       return go.is_none() || go.cast<bool>();
     };
-  Eigen::MatrixXd m = with_policy_choice(choice, [&](const auto& p) {
+  Eigen::MatrixXd m = similarity::with_policy_choice(choice, [&](const auto& p) {
     Interruptible_call call;
-    return columns ? similarity_matrix(rows.range(), columns->range(), p, report)
-                   : similarity_matrix(rows.range(), p, report);
+    return columns ? similarity::similarity_matrix(rows.range(), columns->range(), p, report)
+                   : similarity::similarity_matrix(rows.range(), p, report);
   });
   const auto r = py::ssize_t(m.rows()), c = py::ssize_t(m.cols()), item = py::ssize_t(sizeof(double));
   return owning(std::move(m), +[](const Eigen::MatrixXd& x) { return x.data(); }, {r, c}, {item, r * item});
 }
 
-std::vector<Motion_match> find(const Animation& query, const Animation& long_animation, std::size_t count,
+std::vector<similarity::Motion_match> find(const Animation& query, const Animation& long_animation, std::size_t count,
                                double shortest) {
   if (count == 0) refuse("count must be at least 1");
   if (!(shortest > 0 && shortest <= 1)) refuse("shortest must be in (0, 1]");
   Interruptible_call call;
-  return find_motion(query.mesh, long_animation.mesh, {.count = count, .shortest = shortest});
+  return similarity::find_motion(query.mesh, long_animation.mesh, {.count = count, .shortest = shortest});
 }
 
 // ---- Retrieval evaluation ------------------------------------------------------------------------
@@ -516,9 +516,9 @@ std::string field_of(const py::handle& item, const char* name) {
 // Item `index` of evaluate's labels: a motion name, or a dict or an object with `motion` and
 // optionally `body`, `rig`, `clip` (and `file`). The body defaults to the file, as in a labels
 // file, else to the item alone: then every other item is a candidate of its query.
-Labelled_item labelled_item(const py::handle& item, std::size_t index) {
+evaluation::Labelled_item labelled_item(const py::handle& item, std::size_t index) {
   const std::string where = "labels[" + std::to_string(index) + "]";
-  Labelled_item l;
+  evaluation::Labelled_item l;
   if (py::isinstance<py::str>(item)) {
     l.motion = item.cast<std::string>();
   } else if (py::isinstance<py::dict>(item) || py::hasattr(item, "motion")) {
@@ -534,13 +534,13 @@ Labelled_item labelled_item(const py::handle& item, std::size_t index) {
   return l;
 }
 
-Retrieval_scores evaluate(const py::array_t<double, py::array::forcecast>& similarity, const py::sequence& labels) {
+evaluation::Retrieval_scores evaluate(const py::array_t<double, py::array::forcecast>& similarity, const py::sequence& labels) {
   if (similarity.ndim() != 2 || similarity.shape(0) != similarity.shape(1))
     throw py::value_error("similarity: expected a square (N, N) array, got " + shape_of(similarity));
   if (std::size_t(similarity.shape(0)) != labels.size())
     throw py::value_error("similarity is " + shape_of(similarity) + " but there are " + std::to_string(labels.size()) +
                           " labels");
-  std::vector<Labelled_item> items;
+  std::vector<evaluation::Labelled_item> items;
   for (std::size_t i = 0; i < labels.size(); ++i) items.push_back(labelled_item(labels[i], i));
   const auto n = Eigen::Index(similarity.shape(0));
   Eigen::MatrixXd m(n, n);
@@ -548,7 +548,7 @@ Retrieval_scores evaluate(const py::array_t<double, py::array::forcecast>& simil
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) m(i, j) = read(i, j);
   Interruptible_call call;
-  return evaluate_retrieval(m, items);
+  return evaluation::evaluate_retrieval(m, items);
 }
 
 py::list motion_labels(const std::filesystem::path& path) {
@@ -682,7 +682,7 @@ Animation animation_of_state(const py::object& state) {
 
 // Similarity: (1, value, score, alignment, labels_a, labels_b, compared, z_score, shuffled_copies).
 py::object similarity_state(const Similarity_result& r) {
-  const Similarity& s = r.similarity;
+  const similarity::Similarity& s = r.similarity;
   return py::make_tuple(pickle_version, s.value, s.score, s.alignment, s.labels_a, s.labels_b, s.compared, r.z_score,
                         r.shuffled_copies);
 }
@@ -704,17 +704,17 @@ Similarity_result similarity_of_state(const py::object& state) {
 }
 
 // MotionMatch: (1, first, last, value, alignment).
-py::object motion_match_state(const Motion_match& m) {
+py::object motion_match_state(const similarity::Motion_match& m) {
   return py::make_tuple(pickle_version, m.first, m.last, m.value, m.alignment);
 }
 
-Motion_match motion_match_of_state(const py::object& state) {
+similarity::Motion_match motion_match_of_state(const py::object& state) {
   constexpr const char* type = "MotionMatch";
   const py::tuple f = state_fields(state, type, 4, "(1, first, last, value, alignment)");
   return {.first = state_field<std::size_t>(f, 0, type, "first"),
           .last = state_field<std::size_t>(f, 1, type, "last"),
           .value = state_field<double>(f, 2, type, "value"),
-          .alignment = state_field<decltype(Motion_match::alignment)>(f, 3, type, "alignment")};
+          .alignment = state_field<decltype(similarity::Motion_match::alignment)>(f, 3, type, "alignment")};
 }
 
 // RetrievalScores: (1, queries, queries_without_relevant, queries_without_candidate, nn_accuracy,
@@ -725,11 +725,11 @@ constexpr const char* retrieval_layout =
     "(1, queries, queries_without_relevant, queries_without_candidate, nn_accuracy, mean_average_precision, "
     "roc_auc, median_same, median_different, same_pairs, different_pairs, labels, confusion, per_motion, per_query)";
 
-py::object retrieval_state(const Retrieval_scores& s) {
+py::object retrieval_state(const evaluation::Retrieval_scores& s) {
   py::list per_motion, per_query;
-  for (const Motion_retrieval& m : s.per_motion)
+  for (const evaluation::Motion_retrieval& m : s.per_motion)
     per_motion.append(py::make_tuple(m.motion, m.queries, m.correct, m.nn_accuracy));
-  for (const Query_retrieval& q : s.per_query)
+  for (const evaluation::Query_retrieval& q : s.per_query)
     per_query.append(
         py::make_tuple(q.query, q.nearest, q.nearest_similarity, q.first_relevant_rank, q.average_precision));
   return py::make_tuple(pickle_version, s.queries, s.queries_without_relevant, s.queries_without_candidate,
@@ -737,13 +737,13 @@ py::object retrieval_state(const Retrieval_scores& s) {
                         s.same_pairs, s.different_pairs, s.labels, s.confusion, per_motion, per_query);
 }
 
-Retrieval_scores retrieval_of_state(const py::object& state) {
+evaluation::Retrieval_scores retrieval_of_state(const py::object& state) {
   constexpr const char* type = "RetrievalScores";
   const py::tuple f = state_fields(state, type, 14, retrieval_layout);
   using Motion_tuple = std::tuple<std::string, std::size_t, std::size_t, double>;
   using Query_tuple =
       std::tuple<std::size_t, std::size_t, double, std::optional<std::size_t>, std::optional<double>>;
-  Retrieval_scores s;
+  evaluation::Retrieval_scores s;
   s.queries = state_field<std::size_t>(f, 0, type, "queries");
   s.queries_without_relevant = state_field<std::size_t>(f, 1, type, "queries_without_relevant");
   s.queries_without_candidate = state_field<std::size_t>(f, 2, type, "queries_without_candidate");
@@ -790,7 +790,7 @@ PYBIND11_MODULE(_deformseg, m) {
   invalid.doc() = "Input that breaks a documented precondition (deformseg::invalid_input). A ValueError whose "
                   "message reads 'FILE:LINE: frame K: MESSAGE' (unknown parts left out); `file` (str or None), "
                   "`line` (int or None, from 1) and `frame` (int or None, from 0) give the parts.";
-  static py::exception<similarity_stopped> stopped(m, "SimilarityStopped", PyExc_RuntimeError);
+  static py::exception<similarity::similarity_stopped> stopped(m, "SimilarityStopped", PyExc_RuntimeError);
   stopped.doc() = "similarity_matrix was stopped: its progress callback returned False.";
   py::register_exception_translator([](std::exception_ptr error) {
     if (!error) return;
@@ -804,7 +804,7 @@ PYBIND11_MODULE(_deformseg, m) {
       instance.attr("frame") = w.frame ? py::object(py::int_(*w.frame)) : py::object(py::none());
       instance.attr("message") = e.message();
       PyErr_SetObject(invalid.ptr(), instance.ptr());
-    } catch (const similarity_stopped& e) {
+    } catch (const similarity::similarity_stopped& e) {
       stopped(e.what());
     }
   });
@@ -828,7 +828,7 @@ Complexity O(T V + F).)doc")
       .def_property_readonly(
           "frames",
           [](const py::object& self) {
-            const Surface_mesh_animation& a = self.cast<const Animation&>().mesh;
+            const mesh::Surface_mesh_animation& a = self.cast<const Animation&>().mesh;
             return view(a.all_positions().data(),
                         {py::ssize_t(a.num_frames()), py::ssize_t(a.num_vertices()), py::ssize_t(3)}, self);
           },
@@ -837,8 +837,8 @@ Complexity O(T V + F).)doc")
       .def_property_readonly(
           "faces",
           [](const py::object& self) {
-            const Surface_mesh_animation& a = self.cast<const Animation&>().mesh;
-            static_assert(sizeof(Surface_mesh_animation::Triangle) == 3 * sizeof(std::uint32_t));
+            const mesh::Surface_mesh_animation& a = self.cast<const Animation&>().mesh;
+            static_assert(sizeof(mesh::Surface_mesh_animation::Triangle) == 3 * sizeof(std::uint32_t));
             const auto* indices = reinterpret_cast<const std::uint32_t*>(a.triangles().data());
             return view(indices, {py::ssize_t(a.num_faces()), py::ssize_t(3)}, self);
           },
@@ -980,16 +980,16 @@ calling thread (with the GIL) as the work advances, N + N (N + 1) / 2 steps (Q +
 database); returning False stops the work and raises SimilarityStopped. The animations are not
 copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc");
 
-  py::class_<Motion_match>(m, "MotionMatch", "A window of a long animation that matches a query (find_motion).")
+  py::class_<similarity::Motion_match>(m, "MotionMatch", "A window of a long animation that matches a query (find_motion).")
       .def(py::pickle(&motion_match_state, &motion_match_of_state))
-      .def_readonly("first", &Motion_match::first, "The window's first frame in the long animation.")
-      .def_readonly("last", &Motion_match::last, "Its last frame (inclusive).")
-      .def_readonly("value", &Motion_match::value,
+      .def_readonly("first", &similarity::Motion_match::first, "The window's first frame in the long animation.")
+      .def_readonly("last", &similarity::Motion_match::last, "Its last frame (inclusive).")
+      .def_readonly("value", &similarity::Motion_match::value,
                     "The similarity of the query to the window's frames cut out as an animation of their own, "
                     "in [0, 1]: 1 for an exact, moved or scaled copy.")
-      .def_readonly("alignment", &Motion_match::alignment,
+      .def_readonly("alignment", &similarity::Motion_match::alignment,
                     "The warping path: (frame of the query, frame of the long animation).")
-      .def("__repr__", [](const Motion_match& x) {
+      .def("__repr__", [](const similarity::Motion_match& x) {
         return "<deformseg.MotionMatch frames " + std::to_string(x.first) + "-" + std::to_string(x.last) +
                " value=" + std::to_string(x.value) + ">";
       });
@@ -1004,25 +1004,25 @@ window lasts from `shortest` to 1 / `shortest` times the query's duration. Compl
 descriptions, O(count Tq Tl / shortest^2), then a few descriptions of candidate windows per match.
 Releases the GIL.)doc");
 
-  py::class_<Retrieval_scores>(m, "RetrievalScores", "The figures of `evaluate` (evaluate_retrieval).")
+  py::class_<evaluation::Retrieval_scores>(m, "RetrievalScores", "The figures of `evaluate` (evaluate_retrieval).")
       .def(py::pickle(&retrieval_state, &retrieval_of_state))
-      .def_readonly("queries", &Retrieval_scores::queries, "Queries evaluated.")
-      .def_readonly("queries_without_relevant", &Retrieval_scores::queries_without_relevant,
+      .def_readonly("queries", &evaluation::Retrieval_scores::queries, "Queries evaluated.")
+      .def_readonly("queries_without_relevant", &evaluation::Retrieval_scores::queries_without_relevant,
                     "Queries with no candidate of their motion.")
-      .def_readonly("queries_without_candidate", &Retrieval_scores::queries_without_candidate,
+      .def_readonly("queries_without_candidate", &evaluation::Retrieval_scores::queries_without_candidate,
                     "Items left out for having no candidate at all.")
-      .def_readonly("nn_accuracy", &Retrieval_scores::nn_accuracy, "Fraction of queries whose nearest candidate has their motion, or None.")
-      .def_readonly("mean_average_precision", &Retrieval_scores::mean_average_precision, "mAP, or None.")
-      .def_readonly("roc_auc", &Retrieval_scores::roc_auc, "ROC-AUC over same- vs different-motion pairs, or None.")
-      .def_readonly("median_same", &Retrieval_scores::median_same, "Median similarity of same-motion pairs, or None.")
-      .def_readonly("median_different", &Retrieval_scores::median_different, "Median of different-motion pairs, or None.")
-      .def_readonly("same_pairs", &Retrieval_scores::same_pairs, "Number of same-motion pairs.")
-      .def_readonly("different_pairs", &Retrieval_scores::different_pairs, "Number of different-motion pairs.")
-      .def_readonly("labels", &Retrieval_scores::labels, "Every motion, sorted: the rows and columns of confusion.")
-      .def_readonly("confusion", &Retrieval_scores::confusion, "confusion[r][c]: queries of labels[r] whose nearest has labels[c].")
+      .def_readonly("nn_accuracy", &evaluation::Retrieval_scores::nn_accuracy, "Fraction of queries whose nearest candidate has their motion, or None.")
+      .def_readonly("mean_average_precision", &evaluation::Retrieval_scores::mean_average_precision, "mAP, or None.")
+      .def_readonly("roc_auc", &evaluation::Retrieval_scores::roc_auc, "ROC-AUC over same- vs different-motion pairs, or None.")
+      .def_readonly("median_same", &evaluation::Retrieval_scores::median_same, "Median similarity of same-motion pairs, or None.")
+      .def_readonly("median_different", &evaluation::Retrieval_scores::median_different, "Median of different-motion pairs, or None.")
+      .def_readonly("same_pairs", &evaluation::Retrieval_scores::same_pairs, "Number of same-motion pairs.")
+      .def_readonly("different_pairs", &evaluation::Retrieval_scores::different_pairs, "Number of different-motion pairs.")
+      .def_readonly("labels", &evaluation::Retrieval_scores::labels, "Every motion, sorted: the rows and columns of confusion.")
+      .def_readonly("confusion", &evaluation::Retrieval_scores::confusion, "confusion[r][c]: queries of labels[r] whose nearest has labels[c].")
       .def_property_readonly(
           "per_motion",
-          [](const Retrieval_scores& s) {
+          [](const evaluation::Retrieval_scores& s) {
             py::list out;
             for (const auto& x : s.per_motion)
               out.append(py::dict("motion"_a = x.motion, "queries"_a = x.queries, "correct"_a = x.correct,
@@ -1032,7 +1032,7 @@ Releases the GIL.)doc");
           "Per query motion: dicts of motion, queries, correct, nn_accuracy.")
       .def_property_readonly(
           "per_query",
-          [](const Retrieval_scores& s) {
+          [](const evaluation::Retrieval_scores& s) {
             py::list out;
             for (const auto& x : s.per_query)
               out.append(py::dict("query"_a = x.query, "nearest"_a = x.nearest,

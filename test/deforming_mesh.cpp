@@ -1,8 +1,8 @@
 // Tests of deforming_mesh.h: the DeformingMesh concept, Deforming_mesh, make_face_graph.
 #include "tetrahedron.h"
 
-#include <deformseg/default_mesh.h>
-#include <deformseg/deforming_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 
 #include <CGAL/Polyhedron_3.h>
 
@@ -15,7 +15,7 @@ using namespace deformseg;
 
 namespace {
 
-using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+using Polyhedron = CGAL::Polyhedron_3<mesh::Kernel>;
 
 using deformseg::test::tetra_points;
 using deformseg::test::tetra_triangles;
@@ -31,23 +31,23 @@ std::vector<double> translated_frames(std::size_t frames) {
 
 // A type with every member but the frame point map: not a DeformingMesh.
 struct Without_point_map {
-  using Face_graph = Surface_mesh;
-  const Surface_mesh& face_graph() const;
+  using Face_graph = mesh::Surface_mesh;
+  const mesh::Surface_mesh& face_graph() const;
   std::size_t num_frames() const;
 };
 
 }  // namespace
 
-static_assert(FaceGraph<Surface_mesh>);
-static_assert(FaceGraph<Polyhedron>);
-static_assert(DeformingMesh<Deforming_mesh<Surface_mesh>>);
-static_assert(DeformingMesh<Deforming_mesh<Polyhedron, float>>);
-static_assert(!DeformingMesh<Without_point_map>);
-static_assert(!DeformingMesh<Surface_mesh>);
+static_assert(mesh::FaceGraph<mesh::Surface_mesh>);
+static_assert(mesh::FaceGraph<Polyhedron>);
+static_assert(mesh::DeformingMesh<mesh::Deforming_mesh<mesh::Surface_mesh>>);
+static_assert(mesh::DeformingMesh<mesh::Deforming_mesh<Polyhedron, float>>);
+static_assert(!mesh::DeformingMesh<Without_point_map>);
+static_assert(!mesh::DeformingMesh<mesh::Surface_mesh>);
 
 TEMPLATE_TEST_CASE("Deforming_mesh: frames in, the same positions out", "[deforming_mesh]",
-                   Surface_mesh, Polyhedron) {
-  Deforming_mesh<TestType> animation(make_face_graph<TestType>(tetra_points, tetra_triangles),
+                   mesh::Surface_mesh, Polyhedron) {
+  mesh::Deforming_mesh<TestType> animation(mesh::make_face_graph<TestType>(tetra_points, tetra_triangles),
                                      translated_frames(3));
   REQUIRE(animation.num_frames() == 3);
   REQUIRE(animation.num_vertices() == 4);
@@ -75,8 +75,8 @@ TEMPLATE_TEST_CASE("Deforming_mesh: frames in, the same positions out", "[deform
 }
 
 TEST_CASE("Deforming_mesh: frames added one by one, or from a point map", "[deforming_mesh]") {
-  const auto graph = make_face_graph<Surface_mesh>(tetra_points, tetra_triangles);
-  Deforming_mesh<Surface_mesh, float> animation(graph);
+  const auto graph = mesh::make_face_graph<mesh::Surface_mesh>(tetra_points, tetra_triangles);
+  mesh::Deforming_mesh<mesh::Surface_mesh, float> animation(graph);
   CHECK(animation.num_frames() == 0);
   animation.add_frame_from(get(CGAL::vertex_point, graph));
   const auto xyz = translated_frames(2);
@@ -95,9 +95,9 @@ TEST_CASE("Deforming_mesh: frames added one by one, or from a point map", "[defo
 
 TEST_CASE("make_deforming_mesh copies any model, Polyhedron_3 handles included",
           "[deforming_mesh]") {
-  Deforming_mesh<Polyhedron> original(make_face_graph<Polyhedron>(tetra_points, tetra_triangles),
+  mesh::Deforming_mesh<Polyhedron> original(mesh::make_face_graph<Polyhedron>(tetra_points, tetra_triangles),
                                       translated_frames(2));
-  const auto copy = make_deforming_mesh<float>(original);
+  const auto copy = mesh::make_deforming_mesh<float>(original);
   REQUIRE(copy.num_frames() == 2);
   for (std::size_t i = 0; i < 3 * 4 * 2; ++i)
     CHECK(copy.all_positions()[i] == float(original.all_positions()[i]));
@@ -105,63 +105,63 @@ TEST_CASE("make_deforming_mesh copies any model, Polyhedron_3 handles included",
 }
 
 TEST_CASE("Deforming_mesh rejects bad input with a clear message", "[deforming_mesh][errors]") {
-  const auto graph = make_face_graph<Surface_mesh>(tetra_points, tetra_triangles);
+  const auto graph = mesh::make_face_graph<mesh::Surface_mesh>(tetra_points, tetra_triangles);
 
   SECTION("a coordinate count that is not a multiple of 3 V") {
-    CHECK_THROWS_WITH(Surface_mesh_animation(graph, std::vector<double>(13, 0.0)),
+    CHECK_THROWS_WITH(mesh::Surface_mesh_animation(graph, std::vector<double>(13, 0.0)),
                       "expected a multiple of 3 x 4 coordinates, got 13");
   }
   SECTION("a NaN coordinate names its frame and vertex") {
     auto xyz = translated_frames(3);
     xyz[2 * 12 + 3 * 1 + 2] = std::numeric_limits<double>::quiet_NaN();
-    CHECK_THROWS_WITH(Surface_mesh_animation(graph, xyz),
+    CHECK_THROWS_WITH(mesh::Surface_mesh_animation(graph, xyz),
                       "frame 2: vertex 1 has a non-finite coordinate");
   }
   SECTION("an infinite coordinate in an added frame") {
-    Surface_mesh_animation animation(graph, translated_frames(1));
+    mesh::Surface_mesh_animation animation(graph, translated_frames(1));
     std::vector<double> xyz(12, 0.0);
     xyz[0] = std::numeric_limits<double>::infinity();
     CHECK_THROWS_WITH(animation.add_frame(std::span<const double>(xyz)),
                       "frame 1: vertex 0 has a non-finite coordinate");
   }
   SECTION("a frame with another vertex count") {
-    Surface_mesh_animation animation(graph);
+    mesh::Surface_mesh_animation animation(graph);
     std::vector<double> xyz(9, 0.0);
     CHECK_THROWS_WITH(animation.add_frame(std::span<const double>(xyz)),
                       "frame 0: frame has 3 vertices, the mesh 4");
   }
   SECTION("a frame out of range") {
-    Surface_mesh_animation animation(graph, translated_frames(2));
+    mesh::Surface_mesh_animation animation(graph, translated_frames(2));
     CHECK_THROWS_WITH(animation.frame_positions(2), "frame 2 asked of an animation of 2 frames");
   }
   SECTION("a quad face") {
-    Surface_mesh quad;
-    std::vector<Surface_mesh::Vertex_index> v;
-    for (int i = 0; i < 4; ++i) v.push_back(quad.add_vertex(Kernel::Point_3(i % 2, i / 2, 0)));
+    mesh::Surface_mesh quad;
+    std::vector<mesh::Surface_mesh::Vertex_index> v;
+    for (int i = 0; i < 4; ++i) v.push_back(quad.add_vertex(mesh::Kernel::Point_3(i % 2, i / 2, 0)));
     quad.add_face(v[0], v[1], v[3], v[2]);
-    CHECK_THROWS_WITH(Surface_mesh_animation(quad), "face 0 has 4 vertices; deformseg needs triangles");
+    CHECK_THROWS_WITH(mesh::Surface_mesh_animation(quad), "face 0 has 4 vertices; deformseg needs triangles");
   }
   SECTION("a Surface_mesh with removed vertices") {
-    Surface_mesh mesh = graph;
+    mesh::Surface_mesh mesh = graph;
     mesh.remove_vertex(*mesh.vertices().begin());
-    CHECK_THROWS_WITH(Surface_mesh_animation(mesh), Catch::Contains("collect_garbage()"));
+    CHECK_THROWS_WITH(mesh::Surface_mesh_animation(mesh), Catch::Contains("collect_garbage()"));
   }
 }
 
 TEST_CASE("make_face_graph names the triangle that cannot be added", "[deforming_mesh][errors]") {
   SECTION("index out of range") {
     const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {0, 1, 4}};
-    CHECK_THROWS_WITH(make_face_graph<Surface_mesh>(tetra_points, triangles),
+    CHECK_THROWS_WITH(mesh::make_face_graph<mesh::Surface_mesh>(tetra_points, triangles),
                       "triangle 1 has vertex index 4 out of range [0, 4)");
   }
   SECTION("a non-manifold edge") {
     const std::vector<std::array<int, 3>> triangles{{0, 1, 2}, {0, 1, 3}};
-    CHECK_THROWS_WITH(make_face_graph<Surface_mesh>(tetra_points, triangles),
+    CHECK_THROWS_WITH(mesh::make_face_graph<mesh::Surface_mesh>(tetra_points, triangles),
                       Catch::StartsWith("triangle 1 cannot be added"));
   }
   SECTION("a degenerate triangle repeating a vertex") {
     const std::vector<std::array<int, 3>> triangles{{0, 0, 2}};
-    CHECK_THROWS_WITH(make_face_graph<Polyhedron>(tetra_points, triangles),
+    CHECK_THROWS_WITH(mesh::make_face_graph<Polyhedron>(tetra_points, triangles),
                       Catch::StartsWith("triangle 0 cannot be added"));
   }
 }

@@ -2,10 +2,10 @@
 // random label volumes, the key frames of bending tubes written out by hand, invariance, real data.
 #include "test_support.h"
 
-#include <deformseg/evolving_graph.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
 #include <deformseg/io/frame_sequence.h>
-#include <deformseg/io/write_evolving_graph.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/io/graphviz.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <Eigen/Geometry>
@@ -29,10 +29,10 @@ bool share_edge(const Triangles& triangles, std::size_t f, std::size_t g) {
 }
 
 // A graph as text: its nodes in order (R, or D and the segment id), then its edges.
-std::string shape(const Segment_graph& g) {
+std::string shape(const spatiotemporal::Segment_graph& g) {
   std::ostringstream text;
   for (std::size_t v = 0; v < boost::num_vertices(g); ++v)
-    text << (v ? " " : "") << node_label(g[v]);
+    text << (v ? " " : "") << spatiotemporal::node_label(g[v]);
   std::set<std::pair<std::size_t, std::size_t>> edges;
   for (auto e : boost::make_iterator_range(boost::edges(g)))
     edges.emplace(std::min(boost::source(e, g), boost::target(e, g)), std::max(boost::source(e, g), boost::target(e, g)));
@@ -42,21 +42,21 @@ std::string shape(const Segment_graph& g) {
 }
 
 // The key frames as "first-last: shape".
-std::vector<std::string> key_frames(const Evolving_graph& graph) {
+std::vector<std::string> key_frames(const spatiotemporal::Evolving_graph& graph) {
   std::vector<std::string> out;
-  for (const Key_frame& k : graph)
+  for (const spatiotemporal::Key_frame& k : graph)
     out.push_back(std::to_string(k.first_frame) + "-" + std::to_string(k.last_frame) + ": " + shape(k.graph));
   return out;
 }
 
 using deformseg::test::right_angle;
-constexpr auto linear = Easing::linear;
+constexpr auto linear = mesh::Easing::linear;
 // A low threshold: linear blend skinning strains the bend's neutral axis about ten times less
 // than its outside, and the deformed band closes into a ring only when those cells count too.
-const Spatiotemporal_options tube_options{.threshold = 0.01};
+const spatiotemporal::Spatiotemporal_options tube_options{.threshold = 0.01};
 
-Bending_tube two_joints() {
-  Bending_tube spec;
+mesh::Bending_tube two_joints() {
+  mesh::Bending_tube spec;
   spec.joints = {{.position = 0.3}, {.position = 0.7}};
   return spec;
 }
@@ -71,15 +71,15 @@ TEST_CASE("frame segments: each frame's graph equals a brute force on random lab
     std::bernoulli_distribution coin(0.25 + 0.1 * double(trial % 4));
       std::vector<std::uint8_t> deformed(faces * frames);
     for (auto& d : deformed) d = coin(random);
-    Strain_field<float>::Storage values(deformed.size());
+    strain::Strain_field<float>::Storage values(deformed.size());
     for (std::size_t i = 0; i < values.size(); ++i) values[i] = deformed[i] ? 1.0f : 0.0f;
-    const Strain_field<float> field(faces, frames, std::move(values), {}, std::nullopt, 0);
-    const auto s = spatiotemporal_segmentation(field, triangles, {.min_triangles = 1, .min_frames = 1, .max_island = 0});
+    const strain::Strain_field<float> field(faces, frames, std::move(values), {}, std::nullopt, 0);
+    const auto s = spatiotemporal::spatiotemporal_segmentation(field, triangles, {.min_triangles = 1, .min_frames = 1, .max_island = 0});
     std::vector<double> areas(faces);
     for (std::size_t f = 0; f < faces; ++f) areas[f] = 1.0 + double(f % 3);
-    const Frame_segments segments(s, triangles, areas);
+    const spatiotemporal::Frame_segments segments(s, triangles, areas);
     for (std::size_t t = 0; t < frames; ++t) {
-      const Segment_graph g = segments.graph(t);
+      const spatiotemporal::Segment_graph g = segments.graph(t);
       const std::vector<std::uint32_t> node = segments.face_nodes(t);
       // Same node if and only if the same deformed segment, or both rigid and joined by a path
       // of rigid triangles (found here by repeated relaxation, the slow way).
@@ -102,9 +102,9 @@ TEST_CASE("frame segments: each frame's graph equals a brute force on random lab
       std::vector<double> area_of(boost::num_vertices(g), 0.0);
       for (std::size_t f = 0; f < faces; ++f) {
         area_of[node[f]] += areas[f] / total_area;
-        const Segment_node& n = g[node[f]];
+        const spatiotemporal::Segment_node& n = g[node[f]];
         CHECK(n.segment == s.label(f, t));
-        CHECK((n.kind == Segment_kind::rigid) == (s.label(f, t) == -1));
+        CHECK((n.kind == spatiotemporal::Segment_kind::rigid) == (s.label(f, t) == -1));
         for (std::size_t h = 0; h < faces; ++h) {
           const bool same = s.label(f, t) == -1 ? s.label(h, t) == -1 && region[f] == region[h]
                                                 : s.label(h, t) == s.label(f, t);
@@ -123,8 +123,8 @@ TEST_CASE("frame segments: each frame's graph equals a brute force on random lab
       }
       // Canonical order: deformed nodes by segment id, then rigid ones.
       for (std::size_t v = 1; v < boost::num_vertices(g); ++v) {
-        const bool both_deformed = g[v - 1].kind == Segment_kind::deformed && g[v].kind == Segment_kind::deformed;
-        CHECK(!(g[v - 1].kind == Segment_kind::rigid && g[v].kind == Segment_kind::deformed));
+        const bool both_deformed = g[v - 1].kind == spatiotemporal::Segment_kind::deformed && g[v].kind == spatiotemporal::Segment_kind::deformed;
+        CHECK(!(g[v - 1].kind == spatiotemporal::Segment_kind::rigid && g[v].kind == spatiotemporal::Segment_kind::deformed));
         if (both_deformed) CHECK(g[v - 1].segment < g[v].segment);
       }
     }
@@ -137,9 +137,9 @@ TEST_CASE("frame segments: a band across a grid cuts its rigid part in two", "[e
   const Triangles triangles = grid(4);
   std::vector<std::int32_t> labels(32, -1);
   for (std::size_t f = 8; f < 16; ++f) labels[f] = 0;
-  const Spatiotemporal_segmentation s(32, 1, labels);
-  const Frame_segments segments(s, triangles);
-  const Segment_graph g = segments.graph(0);
+  const spatiotemporal::Spatiotemporal_segmentation s(32, 1, labels);
+  const spatiotemporal::Frame_segments segments(s, triangles);
+  const spatiotemporal::Segment_graph g = segments.graph(0);
   CHECK(shape(g) == "D0 R R | 0-1 0-2");
   CHECK(g[0].triangles == 8);
   CHECK(g[1].triangles == 8);   // row 0
@@ -150,16 +150,16 @@ TEST_CASE("frame segments: a band across a grid cuts its rigid part in two", "[e
   CHECK(node[31] == 2);
   CHECK(node[9] == 0);
   CHECK_THROWS_WITH(segments.graph(1), Catch::Contains("frame 1"));
-  CHECK_THROWS_WITH(Frame_segments(s, grid(3)), Catch::Contains("18 triangles"));
-  CHECK_THROWS_WITH(Frame_segments(s, triangles, std::vector<double>(32, 0.0)), Catch::Contains("sum to 0"));
-  CHECK_THROWS_WITH(Frame_segments(s, triangles, std::vector<double>(3, 1.0)), Catch::Contains("3 face areas"));
+  CHECK_THROWS_WITH(spatiotemporal::Frame_segments(s, grid(3)), Catch::Contains("18 triangles"));
+  CHECK_THROWS_WITH(spatiotemporal::Frame_segments(s, triangles, std::vector<double>(32, 0.0)), Catch::Contains("sum to 0"));
+  CHECK_THROWS_WITH(spatiotemporal::Frame_segments(s, triangles, std::vector<double>(3, 1.0)), Catch::Contains("3 face areas"));
 }
 
 TEST_CASE("evolving graph: a tube bending once gives R, then R - D - R, then R", "[evolving_graph]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{10, {0.0}}, {10, {right_angle}, linear}, {10, {}}};
-  const auto tube = make_bending_tube(spec);
-  const Evolving_graph graph = evolving_graph(tube.animation, tube_options);
+  const auto tube = mesh::make_bending_tube(spec);
+  const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(tube.animation, tube_options);
   // Previous-pose strain: deformed exactly while the joint moves (frames 11-20).
   CHECK(key_frames(graph) == std::vector<std::string>{"0-10: R |", "11-20: D0 R R | 0-1 0-2", "21-30: R |"});
   CHECK(graph.num_frames() == 31);
@@ -170,14 +170,14 @@ TEST_CASE("evolving graph: a tube bending once gives R, then R - D - R, then R",
   CHECK_THROWS_WITH(graph.key_frame_of(31), Catch::Contains("frame 31"));
   // The band lies in the blend zone, 15 % of the length, 13.6 % of the area with the caps (17.4 %
   // with the rings on its edges); the two rigid ends hold the rest, alike.
-  const Segment_graph& bent = graph[1].graph;
+  const spatiotemporal::Segment_graph& bent = graph[1].graph;
   CHECK(bent[0].area > 0.136 / 2);
   CHECK(bent[0].area < 0.174);
   CHECK(bent[0].area + bent[1].area + bent[2].area == Approx(1.0));
   CHECK(bent[1].area == Approx(bent[2].area).epsilon(0.05));
   CHECK(graph[0].graph[0].triangles == tube.animation.num_faces());
   // Rest-pose strain measures the pose: the tube stays deformed while it is bent, hold included.
-  const Evolving_graph rest = evolving_graph(tube.animation, {.reference = Strain_reference::rest_pose, .threshold = 0.01});
+  const spatiotemporal::Evolving_graph rest = spatiotemporal::evolving_graph(tube.animation, {.reference = strain::Strain_reference::rest_pose, .threshold = 0.01});
   REQUIRE(rest.size() >= 2);
   CHECK(shape(rest[0].graph) == "R |");
   CHECK(shape(rest[rest.size() - 1].graph) == "D0 R R | 0-1 0-2");
@@ -185,30 +185,30 @@ TEST_CASE("evolving graph: a tube bending once gives R, then R - D - R, then R",
 }
 
 TEST_CASE("evolving graph: two joints bending one after the other, and overlapping", "[evolving_graph]") {
-  Bending_tube spec = two_joints();
+  mesh::Bending_tube spec = two_joints();
   spec.schedule = {{5, {0.0, 0.0}}, {10, {right_angle, 0.0}, linear}, {5, {}},
                    {10, {right_angle, right_angle}, linear}, {5, {}}};
-  CHECK(key_frames(evolving_graph(make_bending_tube(spec).animation, tube_options)) ==
+  CHECK(key_frames(spatiotemporal::evolving_graph(mesh::make_bending_tube(spec).animation, tube_options)) ==
         std::vector<std::string>{"0-5: R |", "6-15: D0 R R | 0-1 0-2", "16-20: R |", "21-30: D1 R R | 0-1 0-2",
                                  "31-35: R |"});
   // The upper joint starts while the lower one is half way: for six frames both bend, and the
   // middle of the tube is a rigid region between the two bands (it touches segments 0 and 1).
   spec.schedule = {{5, {0.0, 0.0}}, {6, {right_angle / 2, 0.0}, linear}, {6, {right_angle, right_angle / 2}, linear},
                    {6, {right_angle, right_angle}, linear}, {5, {}}};
-  CHECK(key_frames(evolving_graph(make_bending_tube(spec).animation, tube_options)) ==
+  CHECK(key_frames(spatiotemporal::evolving_graph(mesh::make_bending_tube(spec).animation, tube_options)) ==
         std::vector<std::string>{"0-5: R |", "6-11: D0 R R | 0-1 0-2", "12-17: D0 D1 R R R | 0-2 0-3 1-3 1-4",
                                  "18-23: D1 R R | 0-1 0-2", "24-28: R |"});
 }
 
 TEST_CASE("evolving graph: a moved, turned and scaled tube gives the same evolving graph", "[evolving_graph]") {
-  Bending_tube spec = two_joints();
+  mesh::Bending_tube spec = two_joints();
   spec.schedule = {{4, {0.0, 0.0}}, {8, {right_angle, 0.0}}, {8, {right_angle, -right_angle}, linear},
                    {4, {0.0, 0.0}}};
-  const Evolving_graph a = evolving_graph(make_bending_tube(spec).animation, tube_options);
+  const spatiotemporal::Evolving_graph a = spatiotemporal::evolving_graph(mesh::make_bending_tube(spec).animation, tube_options);
   spec.placement = {.scale = 0.02,
                     .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, -2, 3).normalized())),
                     .translation = Eigen::Vector3d(-7, 300, 12)};
-  const Evolving_graph b = evolving_graph(make_bending_tube(spec).animation, tube_options);
+  const spatiotemporal::Evolving_graph b = spatiotemporal::evolving_graph(mesh::make_bending_tube(spec).animation, tube_options);
   REQUIRE(key_frames(a) == key_frames(b));
   CHECK(a.size() > 3);
   for (std::size_t k = 0; k < a.size(); ++k)
@@ -219,23 +219,23 @@ TEST_CASE("evolving graph: a moved, turned and scaled tube gives the same evolvi
 }
 
 TEST_CASE("evolving graph: key frames must cover the frames in order", "[evolving_graph]") {
-  std::vector<Key_frame> gap;
-  gap.push_back({0, 3, Segment_graph(1)});
-  gap.push_back({5, 6, Segment_graph(1)});
-  CHECK_THROWS_WITH(Evolving_graph(7, 0, gap), Catch::Contains("frames 5-6") && Catch::Contains("frame 4"));
-  CHECK_THROWS_WITH(Evolving_graph(9, 0, {{0, 8, Segment_graph(1)}, {9, 9, Segment_graph(1)}}),
+  std::vector<spatiotemporal::Key_frame> gap;
+  gap.push_back({0, 3, spatiotemporal::Segment_graph(1)});
+  gap.push_back({5, 6, spatiotemporal::Segment_graph(1)});
+  CHECK_THROWS_WITH(spatiotemporal::Evolving_graph(7, 0, gap), Catch::Contains("frames 5-6") && Catch::Contains("frame 4"));
+  CHECK_THROWS_WITH(spatiotemporal::Evolving_graph(9, 0, {{0, 8, spatiotemporal::Segment_graph(1)}, {9, 9, spatiotemporal::Segment_graph(1)}}),
                     Catch::Contains("cover 10 of 9"));
-  CHECK(Evolving_graph(0, 0, {}).empty());
+  CHECK(spatiotemporal::Evolving_graph(0, 0, {}).empty());
 }
 
 TEST_CASE("evolving graph: the horse gallop and the samba, deterministic", "[evolving_graph][data]") {
   for (const char* name : {"horse-gallop", "samba"}) {
     const auto folder = test::unpacked(std::string(name) + "/" + name + ".tar.xz") / name;
     const auto animation = io::read_frame_sequence(folder.string());
-    const Evolving_graph a = evolving_graph(animation);
-    const Evolving_graph b = evolving_graph(animation);
+    const spatiotemporal::Evolving_graph a = spatiotemporal::evolving_graph(animation);
+    const spatiotemporal::Evolving_graph b = spatiotemporal::evolving_graph(animation);
     std::size_t largest = 0, nodes = 0;
-    for (const Key_frame& k : a) {
+    for (const spatiotemporal::Key_frame& k : a) {
       largest = std::max(largest, boost::num_vertices(k.graph));
       nodes += boost::num_vertices(k.graph);
     }
@@ -256,7 +256,7 @@ TEST_CASE("evolving graph: Graphviz draws every key frame of the horse", "[evolv
   // unquoted: every attribute is quoted, and `dot` accepts every file.
   REQUIRE(std::system("dot -V > /dev/null 2>&1") == 0);  // Graphviz, which scripts/install-deps installs
   const auto folder = test::unpacked("horse-gallop/horse-gallop.tar.xz") / "horse-gallop";
-  const Evolving_graph graph = evolving_graph(io::read_frame_sequence(folder.string()));
+  const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(io::read_frame_sequence(folder.string()));
   const auto dir = test::fresh_dir("horse_key_frames_dot");
   const auto files = io::write_key_frames_dot(graph, dir);
   REQUIRE(files.size() == graph.size());
@@ -272,9 +272,9 @@ TEST_CASE("evolving graph: Graphviz draws every key frame of the horse", "[evolv
 
 TEST_CASE("evolving graph: a rigid node has no segment attribute in DOT, as it has null in JSON",
           "[evolving_graph]") {
-  Segment_graph graph;
-  boost::add_vertex(Segment_node{.kind = Segment_kind::rigid, .triangles = 30, .area = 0.75}, graph);
-  boost::add_vertex(Segment_node{.kind = Segment_kind::deformed, .segment = 4, .triangles = 10, .area = 0.25}, graph);
+  spatiotemporal::Segment_graph graph;
+  boost::add_vertex(spatiotemporal::Segment_node{.kind = spatiotemporal::Segment_kind::rigid, .triangles = 30, .area = 0.75}, graph);
+  boost::add_vertex(spatiotemporal::Segment_node{.kind = spatiotemporal::Segment_kind::deformed, .segment = 4, .triangles = 10, .area = 0.25}, graph);
   boost::add_edge(0, 1, graph);
   std::ostringstream text;
   io::write_segment_graph_dot(text, graph);

@@ -3,7 +3,7 @@
 // matrix against the pairwise calls, and bad input.
 #include <catch2/catch.hpp>
 
-#include <deformseg/histogram_distance.h>
+#include <deformseg/strain/histogram_distance.h>
 
 #include <Eigen/Core>
 
@@ -16,7 +16,7 @@ using namespace deformseg;
 
 namespace {
 
-constexpr Histogram_metric metrics[] = {Histogram_metric::total_variation, Histogram_metric::earth_movers};
+constexpr strain::Histogram_metric metrics[] = {strain::Histogram_metric::total_variation, strain::Histogram_metric::earth_movers};
 
 Eigen::MatrixXd random_histograms(std::mt19937& rng, Eigen::Index count, Eigen::Index bins) {
   std::uniform_real_distribution<double> mass(0, 1);
@@ -56,15 +56,15 @@ Eigen::RowVectorXd one_hot(Eigen::Index bins, Eigen::Index at) {
 
 TEST_CASE("histogram_distance: hand values", "[histogram_distance]") {
   const Eigen::RowVector4d a(0.5, 0.5, 0, 0), b(0, 0.5, 0.5, 0), c(0, 0, 0, 1);
-  CHECK(histogram_distance(a, b, Histogram_metric::total_variation) == Approx(0.5));
-  CHECK(histogram_distance(a, b, Histogram_metric::earth_movers) == Approx(1.0 / 3));  // half the mass, one bin
-  CHECK(histogram_distance(a, c, Histogram_metric::total_variation) == Approx(1.0));
-  CHECK(histogram_distance(a, c, Histogram_metric::earth_movers) == Approx((0.5 * 3 + 0.5 * 2) / 3));
-  CHECK(histogram_distance(a, b) == histogram_distance(a, b, Histogram_metric::earth_movers));  // the default
+  CHECK(strain::histogram_distance(a, b, strain::Histogram_metric::total_variation) == Approx(0.5));
+  CHECK(strain::histogram_distance(a, b, strain::Histogram_metric::earth_movers) == Approx(1.0 / 3));  // half the mass, one bin
+  CHECK(strain::histogram_distance(a, c, strain::Histogram_metric::total_variation) == Approx(1.0));
+  CHECK(strain::histogram_distance(a, c, strain::Histogram_metric::earth_movers) == Approx((0.5 * 3 + 0.5 * 2) / 3));
+  CHECK(strain::histogram_distance(a, b) == strain::histogram_distance(a, b, strain::Histogram_metric::earth_movers));  // the default
   // Column vectors and float work alike; one bin is always at distance 0.
-  CHECK(histogram_distance(Eigen::Vector4f(0.5f, 0.5f, 0, 0), Eigen::Vector4f(0, 0.5f, 0.5f, 0)) ==
+  CHECK(strain::histogram_distance(Eigen::Vector4f(0.5f, 0.5f, 0, 0), Eigen::Vector4f(0, 0.5f, 0.5f, 0)) ==
         Approx(1.0 / 3));
-  for (auto metric : metrics) CHECK(histogram_distance(Eigen::VectorXd::Ones(1), Eigen::VectorXd::Ones(1), metric) == 0);
+  for (auto metric : metrics) CHECK(strain::histogram_distance(Eigen::VectorXd::Ones(1), Eigen::VectorXd::Ones(1), metric) == 0);
 }
 
 TEST_CASE("histogram_distance: earth mover's of shifted one-hot histograms is proportional to the shift",
@@ -72,9 +72,9 @@ TEST_CASE("histogram_distance: earth mover's of shifted one-hot histograms is pr
   const Eigen::Index bins = 18;
   for (Eigen::Index i = 0; i < bins; ++i)
     for (Eigen::Index j = 0; j < bins; ++j) {
-      CHECK(histogram_distance(one_hot(bins, i), one_hot(bins, j)) ==
+      CHECK(strain::histogram_distance(one_hot(bins, i), one_hot(bins, j)) ==
             Approx(double(std::abs(i - j)) / double(bins - 1)).margin(1e-15));
-      CHECK(histogram_distance(one_hot(bins, i), one_hot(bins, j), Histogram_metric::total_variation) ==
+      CHECK(strain::histogram_distance(one_hot(bins, i), one_hot(bins, j), strain::Histogram_metric::total_variation) ==
             (i == j ? 0.0 : 1.0));
     }
 }
@@ -85,7 +85,7 @@ TEST_CASE("histogram_distance: earth mover's agrees with a greedy transport on r
   for (Eigen::Index bins : {2, 3, 7, 18}) {
     const Eigen::MatrixXd h = random_histograms(rng, 30, bins);
     for (Eigen::Index i = 0; i + 1 < h.rows(); ++i)
-      CHECK(histogram_distance(h.row(i), h.row(i + 1)) == Approx(transported(h.row(i), h.row(i + 1))).margin(1e-12));
+      CHECK(strain::histogram_distance(h.row(i), h.row(i + 1)) == Approx(transported(h.row(i), h.row(i + 1))).margin(1e-12));
   }
 }
 
@@ -94,7 +94,7 @@ TEST_CASE("histogram_distances: symmetric, zero on the diagonal, in [0, 1], tria
   std::mt19937 rng(5);
   const Eigen::MatrixXd h = random_histograms(rng, 40, 18);
   for (auto metric : metrics) {
-    const Eigen::MatrixXd d = histogram_distances(h, h, metric);
+    const Eigen::MatrixXd d = strain::histogram_distances(h, h, metric);
     REQUIRE(d.rows() == 40);
     REQUIRE(d.cols() == 40);
     CHECK(d == d.transpose());
@@ -111,30 +111,30 @@ TEST_CASE("histogram_distances: each entry is the pairwise distance, for any thr
   std::mt19937 rng(3);
   const Eigen::MatrixXd a = random_histograms(rng, 23, 9), b = random_histograms(rng, 31, 9);
   for (auto metric : metrics) {
-    const Eigen::MatrixXd d = histogram_distances(a, b, metric);
+    const Eigen::MatrixXd d = strain::histogram_distances(a, b, metric);
     REQUIRE(d.rows() == 23);
     REQUIRE(d.cols() == 31);
     for (Eigen::Index i = 0; i < d.rows(); ++i)
-      for (Eigen::Index j = 0; j < d.cols(); ++j) REQUIRE(d(i, j) == histogram_distance(a.row(i), b.row(j), metric));
-    CHECK(histogram_distances(a, b, metric, 1) == d);
-    CHECK(histogram_distances(a, b, metric, 2) == d);
+      for (Eigen::Index j = 0; j < d.cols(); ++j) REQUIRE(d(i, j) == strain::histogram_distance(a.row(i), b.row(j), metric));
+    CHECK(strain::histogram_distances(a, b, metric, 1) == d);
+    CHECK(strain::histogram_distances(a, b, metric, 2) == d);
   }
-  CHECK(histogram_distances(a.topRows(0), b).size() == 0);
+  CHECK(strain::histogram_distances(a.topRows(0), b).size() == 0);
 }
 
 TEST_CASE("histogram_distance: bad input is rejected, naming the problem", "[histogram_distance]") {
   const Eigen::RowVector3d good(0.2, 0.3, 0.5);
-  CHECK_THROWS_WITH(histogram_distance(good, Eigen::RowVector2d(0.5, 0.5)), Catch::Contains("same size"));
-  CHECK_THROWS_WITH(histogram_distance(good, Eigen::RowVector3d(0.2, 0.3, 0.6)), Catch::Contains("sums to"));
-  CHECK_THROWS_WITH(histogram_distance(good, Eigen::RowVector3d(-0.2, 0.7, 0.5)), Catch::Contains("bin 0"));
-  CHECK_THROWS_AS(histogram_distance(good, Eigen::RowVector3d(std::numeric_limits<double>::quiet_NaN(), 0.5, 0.5)),
+  CHECK_THROWS_WITH(strain::histogram_distance(good, Eigen::RowVector2d(0.5, 0.5)), Catch::Contains("same size"));
+  CHECK_THROWS_WITH(strain::histogram_distance(good, Eigen::RowVector3d(0.2, 0.3, 0.6)), Catch::Contains("sums to"));
+  CHECK_THROWS_WITH(strain::histogram_distance(good, Eigen::RowVector3d(-0.2, 0.7, 0.5)), Catch::Contains("bin 0"));
+  CHECK_THROWS_AS(strain::histogram_distance(good, Eigen::RowVector3d(std::numeric_limits<double>::quiet_NaN(), 0.5, 0.5)),
                   invalid_input);
-  CHECK_THROWS_AS(histogram_distance(Eigen::RowVectorXd(0), Eigen::RowVectorXd(0)), invalid_input);
-  CHECK_THROWS_AS(histogram_distance(Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity()), invalid_input);
+  CHECK_THROWS_AS(strain::histogram_distance(Eigen::RowVectorXd(0), Eigen::RowVectorXd(0)), invalid_input);
+  CHECK_THROWS_AS(strain::histogram_distance(Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity()), invalid_input);
   const Eigen::MatrixXd a = good.replicate(3, 1);
   Eigen::MatrixXd broken = a;
   broken(2, 1) = 0.9;
-  CHECK_THROWS_WITH(histogram_distances(a, broken), Catch::Contains("second argument: histogram 2"));
-  CHECK_THROWS_WITH(histogram_distances(a, Eigen::MatrixXd::Ones(3, 1)), Catch::Contains("3 and 1 bins"));
-  CHECK_THROWS_AS(histogram_distances(a, a, Histogram_metric::earth_movers, -1), invalid_input);
+  CHECK_THROWS_WITH(strain::histogram_distances(a, broken), Catch::Contains("second argument: histogram 2"));
+  CHECK_THROWS_WITH(strain::histogram_distances(a, Eigen::MatrixXd::Ones(3, 1)), Catch::Contains("3 and 1 bins"));
+  CHECK_THROWS_AS(strain::histogram_distances(a, a, strain::Histogram_metric::earth_movers, -1), invalid_input);
 }

@@ -3,7 +3,7 @@
 // frame, threads, errors), on small sequences made here and, tagged [data], on the shared ones.
 #include "test_support.h"
 
-#include <deformseg/default_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/obj.h>
@@ -123,9 +123,9 @@ TEST_CASE("read_frame_sequence: connectivity of the first frame, positions of al
       const auto again = read_frame_sequence(folder.string(), {.threads = threads});
       CHECK(std::ranges::equal(again.all_positions(), animation.all_positions()));
     }
-    const auto as_float = read_frame_sequence<deformseg::Surface_mesh, float>(folder.string(), {.threads = 2});
+    const auto as_float = read_frame_sequence<deformseg::mesh::Surface_mesh, float>(folder.string(), {.threads = 2});
     CHECK(std::ranges::equal(as_float.all_positions(), animation.all_positions()));
-    using Polyhedron = CGAL::Polyhedron_3<deformseg::Kernel>;
+    using Polyhedron = CGAL::Polyhedron_3<deformseg::mesh::Kernel>;
     const auto polyhedron = read_frame_sequence<Polyhedron>((folder / "frame_*.obj").string());
     CHECK(std::ranges::equal(polyhedron.all_positions(), animation.all_positions()));
     CHECK(polyhedron.num_faces() == 4);

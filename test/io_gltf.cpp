@@ -5,8 +5,8 @@
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/io/write_sequence.h>
-#include <deformseg/strain.h>
+#include <deformseg/io/frame_sequence.h>
+#include <deformseg/strain/strain.h>
 
 #include <tiny_gltf.h>
 
@@ -528,7 +528,7 @@ Gltf_writer seam_scene() {
 }
 
 // The positions of output vertex `v` in every frame.
-std::vector<double> trajectory(const deformseg::Surface_mesh_animation& a, std::size_t v) {
+std::vector<double> trajectory(const deformseg::mesh::Surface_mesh_animation& a, std::size_t v) {
   std::vector<double> xyz;
   for (std::size_t t = 0; t < a.num_frames(); ++t)
     for (std::size_t k = 0; k < 3; ++k) xyz.push_back(a.frame_positions(t)[3 * v + k]);
@@ -798,8 +798,8 @@ TEST_CASE("gltf: a rotated, moved, scaled copy of the Fox gives the same strain"
   REQUIRE(copy.num_faces() == original.num_faces());
   // The copy's positions really moved.
   CHECK(std::abs(copy.all_positions()[0] - original.all_positions()[0]) > 1e-3);
-  const auto a = deformseg::compute_strain(original);
-  const auto b = deformseg::compute_strain(copy);
+  const auto a = deformseg::strain::compute_strain(original);
+  const auto b = deformseg::strain::compute_strain(copy);
   double largest = 0;
   for (std::size_t t = 0; t < a.num_frames(); ++t)
     for (std::size_t f = 0; f < a.num_faces(); ++f) {

@@ -3,13 +3,13 @@
 // force on random soups; the repair through read_frame_sequence and read_animation.
 #include "test_support.h"
 
-#include <deformseg/default_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/strain.h>
+#include <deformseg/strain/strain.h>
 
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
@@ -26,8 +26,8 @@
 #include <vector>
 
 using deformseg::invalid_input;
-using deformseg::make_face_graph;
-using deformseg::Surface_mesh;
+using deformseg::mesh::make_face_graph;
+using deformseg::mesh::Surface_mesh;
 using deformseg::io::Defect_policy;
 using deformseg::io::make_repaired_animation;
 using deformseg::io::Repair_options;
@@ -152,7 +152,7 @@ TEST_CASE("repair_triangles: a repeated vertex, a non-manifold edge and vertex, 
   for (std::uint32_t i = 0; i < 18; ++i) CHECK(result.source_vertex[i] == i);
   std::multiset<std::uint32_t> copied(result.source_vertex.begin() + 18, result.source_vertex.end());
   CHECK(copied == std::multiset<std::uint32_t>{4, 4, 5, 5, 9});
-  CHECK_NOTHROW(make_face_graph<Surface_mesh>(std::vector<std::array<double, 3>>(23), result.triangles));
+  CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(std::vector<std::array<double, 3>>(23), result.triangles));
 
   Repair_report report;
   const auto animation = make_repaired_animation(std::span<const double>(soup.points), 18, std::span(soup.triangles), {},
@@ -351,8 +351,8 @@ TEST_CASE("repair_triangles: random soups against brute force", "[io][repair][we
 
     // A halfedge mesh accepts it, of both graph types.
     std::vector<std::array<double, 3>> points(out);
-    CHECK_NOTHROW(make_face_graph<Surface_mesh>(points, result.triangles));
-    CHECK_NOTHROW(make_face_graph<CGAL::Polyhedron_3<CGAL::Simple_cartesian<double>>>(points, result.triangles));
+    CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(points, result.triangles));
+    CHECK_NOTHROW(mesh::make_face_graph<CGAL::Polyhedron_3<CGAL::Simple_cartesian<double>>>(points, result.triangles));
 
     // The welding is brute force's, numbered in the order of the smallest vertex of each group.
     const std::vector<std::uint32_t> group =
@@ -412,7 +412,7 @@ TEST_CASE("weld_vertices: many vertices on one trajectory are one vertex / 0 and
   positions[3 * n + 3 * 2] = 1.0;   // x only: the diagonal is 1, the welding distance 1e-3
   positions[3 * n + 3 * 3] = 5e-4;  // within it of the origin, not of vertex 2
   const std::vector<std::uint32_t> welded =
-      deformseg::internal::weld_vertices(std::span<const double>(positions), n, 1e-3);
+      deformseg::io::internal::weld_vertices(std::span<const double>(positions), n, 1e-3);
   REQUIRE(welded.size() == n);
   CHECK(welded[0] == 0);
   CHECK(welded[1] == 0);
@@ -442,7 +442,7 @@ TEST_CASE("repair_triangles: parts that cannot be oriented, a Moebius strip and 
     }
   const auto result = repaired(strip);
   std::vector<std::array<double, 3>> points(result.source_vertex.size());
-  CHECK_NOTHROW(make_face_graph<Surface_mesh>(points, result.triangles));
+  CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(points, result.triangles));
   // CGAL cuts it along a seam of 4 copied vertices, every triangle kept.
   CHECK(result.report.non_manifold_vertices == 4);
   CHECK(result.report.duplicated_vertices == 4);
@@ -457,14 +457,14 @@ TEST_CASE("repair_triangles: parts that cannot be oriented, a Moebius strip and 
   plane.points.assign(18, 0.0);
   plane.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}, {0, 1, 5}, {1, 2, 4}, {1, 3, 4}, {1, 3, 5}, {2, 3, 5}, {2, 4, 5}};
   const auto cut = repaired(plane);
-  CHECK_NOTHROW(make_face_graph<Surface_mesh>(std::vector<std::array<double, 3>>(cut.source_vertex.size()), cut.triangles));
+  CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(std::vector<std::array<double, 3>>(cut.source_vertex.size()), cut.triangles));
   CHECK(cut.report.duplicated_vertices == 4);
   CHECK(cut.report.triangles == 10);
 }
 
 TEST_CASE("repair_triangles: the check that skips CGAL's pass on an oriented manifold", "[io][repair]") {
-  using deformseg::internal::is_oriented_manifold;
-  using Soup_triangles = std::vector<deformseg::internal::Soup_triangle>;
+  using deformseg::io::internal::is_oriented_manifold;
+  using Soup_triangles = std::vector<deformseg::io::internal::Soup_triangle>;
   Soup cube = unwelded_cube();
   const auto welded = repaired(Soup{two_frames(cube.points), cube.triangles}, {.weld = true});
   CHECK(is_oriented_manifold(Soup_triangles(welded.triangles.begin(), welded.triangles.end()), 8));
@@ -481,14 +481,14 @@ TEST_CASE("repair_triangles: the check that skips CGAL's pass on an oriented man
 }
 
 TEST_CASE("repair_triangles: the guard after CGAL finds triangles along an edge in the same direction", "[io][repair]") {
-  const std::vector<deformseg::internal::Soup_triangle> triangles = {{0, 1, 2}, {0, 1, 3}, {1, 0, 4}, {4, 0, 1}};
-  CHECK(deformseg::internal::misoriented_triangles(triangles) == std::vector<bool>{false, true, false, true});
-  deformseg::internal::Oriented_soup soup;
+  const std::vector<deformseg::io::internal::Soup_triangle> triangles = {{0, 1, 2}, {0, 1, 3}, {1, 0, 4}, {4, 0, 1}};
+  CHECK(deformseg::io::internal::misoriented_triangles(triangles) == std::vector<bool>{false, true, false, true});
+  deformseg::io::internal::Oriented_soup soup;
   soup.triangles = triangles;
   soup.source_triangle = {0, 1, 2, 3};
   soup.reversed = {false, true, false, false};
-  deformseg::internal::drop_triangles(soup, {false, true, false, true});
-  CHECK(soup.triangles == std::vector<deformseg::internal::Soup_triangle>{{0, 1, 2}, {1, 0, 4}});
+  deformseg::io::internal::drop_triangles(soup, {false, true, false, true});
+  CHECK(soup.triangles == std::vector<deformseg::io::internal::Soup_triangle>{{0, 1, 2}, {1, 0, 4}});
   CHECK(soup.source_triangle == std::vector<std::uint32_t>{0, 2});
   CHECK(soup.reversed == std::vector<bool>{false, false});
   CHECK(soup.unrepairable_triangles == 2);
@@ -517,8 +517,8 @@ TEST_CASE("repair_triangles: vertices of no triangle are kept and do not change 
   for (std::size_t t = 0; t < 2; ++t) square.insert(square.end(), positions.begin() + 15 * t, positions.begin() + 15 * t + 12);
   const auto reference =
       make_repaired_animation(std::span<const double>(square), 4, std::span<const std::array<std::uint32_t, 3>>(clean));
-  const auto strain = deformseg::compute_strain(animation);
-  const auto expected = deformseg::compute_strain(reference);
+  const auto strain = deformseg::strain::compute_strain(animation);
+  const auto expected = deformseg::strain::compute_strain(reference);
   REQUIRE(strain.num_faces() == 2);
   for (std::size_t f = 0; f < 2; ++f)
     for (std::size_t t = 0; t < 2; ++t) CHECK(strain(f, t) == expected(f, t));

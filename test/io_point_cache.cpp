@@ -3,12 +3,12 @@
 // and every error with its message.
 #include "tetrahedron.h"
 
-#include <deformseg/default_mesh.h>
-#include <deformseg/deforming_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/io/write_off.h>
+#include <deformseg/io/off.h>
 
 #include <CGAL/Polyhedron_3.h>
 
@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+using Polyhedron = CGAL::Polyhedron_3<mesh::Kernel>;
 
 // The tetrahedron: V = 4, so a frame is 48 bytes.
 using deformseg::test::graph_name;
@@ -47,8 +47,8 @@ std::vector<Coordinate> moving_positions(std::size_t frames) {
 }
 
 template <class Graph, class Coordinate>
-Deforming_mesh<Graph, Coordinate> moving_tetrahedron(std::size_t frames) {
-  return Deforming_mesh<Graph, Coordinate>(tetrahedron<Graph>(), moving_positions<Coordinate>(frames));
+mesh::Deforming_mesh<Graph, Coordinate> moving_tetrahedron(std::size_t frames) {
+  return mesh::Deforming_mesh<Graph, Coordinate>(tetrahedron<Graph>(), moving_positions<Coordinate>(frames));
 }
 
 // A file built byte by byte, in either byte order, written by the test's own code.
@@ -106,7 +106,7 @@ fs::path scratch(const std::string& name) {
 
 }  // namespace
 
-TEMPLATE_TEST_CASE("write_pc2 then read_pc2: float coordinates come back exactly", "[io][pc2]", Surface_mesh,
+TEMPLATE_TEST_CASE("write_pc2 then read_pc2: float coordinates come back exactly", "[io][pc2]", mesh::Surface_mesh,
                    Polyhedron) {
   const auto animation = moving_tetrahedron<TestType, float>(3);
   const fs::path cache = scratch("tetra_" + graph_name<TestType>() + ".pc2");
@@ -117,7 +117,7 @@ TEMPLATE_TEST_CASE("write_pc2 then read_pc2: float coordinates come back exactly
   CHECK(std::ranges::equal(read.all_positions(), animation.all_positions()));
 }
 
-TEMPLATE_TEST_CASE("write_mdd then read_mdd: float coordinates come back exactly", "[io][mdd]", Surface_mesh,
+TEMPLATE_TEST_CASE("write_mdd then read_mdd: float coordinates come back exactly", "[io][mdd]", mesh::Surface_mesh,
                    Polyhedron) {
   const auto animation = moving_tetrahedron<TestType, float>(3);
   const fs::path cache = scratch("tetra_" + graph_name<TestType>() + ".mdd");
@@ -128,13 +128,13 @@ TEMPLATE_TEST_CASE("write_mdd then read_mdd: float coordinates come back exactly
 }
 
 TEST_CASE("read_pc2, read_mdd and read_animation: the frame rate is an input, 30 by default", "[io][pc2][mdd]") {
-  const auto animation = moving_tetrahedron<Surface_mesh, float>(3);
+  const auto animation = moving_tetrahedron<mesh::Surface_mesh, float>(3);
   const fs::path pc2 = scratch("tetra_rate.pc2"), mdd = scratch("tetra_rate.mdd");
   io::write_pc2(animation, pc2);
   io::write_mdd(animation, mdd);
-  CHECK(io::read_pc2(pc2, tetrahedron<Surface_mesh>()).frames_per_second() == 30);
-  CHECK(io::read_pc2(pc2, tetrahedron<Surface_mesh>(), 24).frames_per_second() == 24);
-  CHECK(io::read_mdd(mdd, tetrahedron<Surface_mesh>(), 60).frames_per_second() == 60);
+  CHECK(io::read_pc2(pc2, tetrahedron<mesh::Surface_mesh>()).frames_per_second() == 30);
+  CHECK(io::read_pc2(pc2, tetrahedron<mesh::Surface_mesh>(), 24).frames_per_second() == 24);
+  CHECK(io::read_mdd(mdd, tetrahedron<mesh::Surface_mesh>(), 60).frames_per_second() == 60);
   const fs::path topology = scratch("tetra_rate.off");
   io::write_off(animation, 0, topology);
   CHECK(io::read_animation(pc2.string(), {.topology = topology, .fps = 15}).frames_per_second() == 15);
@@ -143,7 +143,7 @@ TEST_CASE("read_pc2, read_mdd and read_animation: the frame rate is an input, 30
 }
 
 TEST_CASE("point caches of a double animation hold its coordinates rounded to float", "[io][pc2][mdd]") {
-  const auto animation = moving_tetrahedron<Surface_mesh, double>(2);
+  const auto animation = moving_tetrahedron<mesh::Surface_mesh, double>(2);
   for (const char* name : {"double.pc2", "double.mdd"}) {
     const fs::path cache = scratch(name);
     const bool pc2 = std::string_view(name).ends_with(".pc2");
@@ -151,7 +151,7 @@ TEST_CASE("point caches of a double animation hold its coordinates rounded to fl
       io::write_pc2(animation, cache);
     else
       io::write_mdd(animation, cache);
-    const auto read = pc2 ? io::read_pc2(cache, tetrahedron<Surface_mesh>()) : io::read_mdd(cache, tetrahedron<Surface_mesh>());
+    const auto read = pc2 ? io::read_pc2(cache, tetrahedron<mesh::Surface_mesh>()) : io::read_mdd(cache, tetrahedron<mesh::Surface_mesh>());
     REQUIRE(read.all_positions().size() == 24);
     for (std::size_t i = 0; i < 24; ++i)
       CHECK(read.all_positions()[i] == double(static_cast<float>(animation.all_positions()[i])));
@@ -160,7 +160,7 @@ TEST_CASE("point caches of a double animation hold its coordinates rounded to fl
 }
 
 TEST_CASE("write_pc2: the bytes of the format, and the header read back", "[io][pc2]") {
-  const auto animation = moving_tetrahedron<Surface_mesh, float>(3);
+  const auto animation = moving_tetrahedron<mesh::Surface_mesh, float>(3);
   const fs::path cache = scratch("header.pc2");
   io::write_pc2(animation, cache, {.start_frame = 10, .sample_rate = 0.5});
 
@@ -186,7 +186,7 @@ TEST_CASE("write_pc2: the bytes of the format, and the header read back", "[io][
 }
 
 TEST_CASE("write_mdd: the bytes of the format, and the frame times read back", "[io][mdd]") {
-  const auto animation = moving_tetrahedron<Surface_mesh, float>(3);
+  const auto animation = moving_tetrahedron<mesh::Surface_mesh, float>(3);
   const fs::path cache = scratch("header.MDD");
   io::write_mdd(animation, cache, 4.0);
 
@@ -214,7 +214,7 @@ TEST_CASE("read_pc2 and read_mdd decode files made byte by byte", "[io][pc2][mdd
   pc2.floats(12, -1.5f).floats(12, -0.5f);
   Bytes mdd = mdd_header(2, 4);
   mdd.floats(12, -1.5f).floats(12, -0.5f);
-  const auto from_pc2 = io::read_pc2(pc2.save("by_hand.pc2"), tetrahedron<Surface_mesh>());
+  const auto from_pc2 = io::read_pc2(pc2.save("by_hand.pc2"), tetrahedron<mesh::Surface_mesh>());
   const auto from_mdd = io::read_mdd<Polyhedron, float>(mdd.save("by_hand.mdd"), tetrahedron<Polyhedron>());
   REQUIRE(from_pc2.num_frames() == 2);
   REQUIRE(from_mdd.num_frames() == 2);
@@ -226,7 +226,7 @@ TEST_CASE("read_pc2 and read_mdd decode files made byte by byte", "[io][pc2][mdd
 }
 
 TEST_CASE("read_pc2 rejects a bad file with a message naming the problem", "[io][pc2][errors]") {
-  const auto read = [](const fs::path& path) { return io::read_pc2(path, tetrahedron<Surface_mesh>()); };
+  const auto read = [](const fs::path& path) { return io::read_pc2(path, tetrahedron<mesh::Surface_mesh>()); };
 
   SECTION("a missing file") {
     const fs::path path = test::scratch_dir() / "io_point_cache" / "missing.pc2";
@@ -311,7 +311,7 @@ TEST_CASE("read_pc2 rejects a bad file with a message naming the problem", "[io]
 }
 
 TEST_CASE("read_mdd rejects a bad file with a message naming the problem", "[io][mdd][errors]") {
-  const auto read = [](const fs::path& path) { return io::read_mdd(path, tetrahedron<Surface_mesh>()); };
+  const auto read = [](const fs::path& path) { return io::read_mdd(path, tetrahedron<mesh::Surface_mesh>()); };
 
   SECTION("a missing file") {
     const fs::path path = test::scratch_dir() / "io_point_cache" / "missing.mdd";
@@ -376,26 +376,26 @@ TEST_CASE("write_pc2 and write_mdd reject what a point cache cannot hold", "[io]
   const fs::path mdd = scratch("unwritten.mdd");
 
   SECTION("an animation without frames") {
-    const Deforming_mesh<Surface_mesh> empty(tetrahedron<Surface_mesh>());
+    const mesh::Deforming_mesh<mesh::Surface_mesh> empty(tetrahedron<mesh::Surface_mesh>());
     CHECK_THROWS_MATCHES(io::write_pc2(empty, pc2), invalid_input, Message(in_file(pc2, "the animation has no frame: a point cache needs at least one")));
     CHECK_THROWS_MATCHES(io::write_mdd(empty, mdd), invalid_input, Message(in_file(mdd, "the animation has no frame: a point cache needs at least one")));
   }
   SECTION("a coordinate beyond the range of float") {
     auto xyz = moving_positions<double>(2);
     xyz[12 + 3 * 2 + 1] = -1e300;
-    const Deforming_mesh<Surface_mesh> huge(tetrahedron<Surface_mesh>(), xyz);
+    const mesh::Deforming_mesh<mesh::Surface_mesh> huge(tetrahedron<mesh::Surface_mesh>(), xyz);
     CHECK_THROWS_MATCHES(io::write_pc2(huge, pc2), invalid_input, Message(in_frame(pc2, 1, "vertex 2 has the coordinate -1e+300, beyond the range of a float32")));
     CHECK_THROWS_MATCHES(io::write_mdd(huge, mdd), invalid_input, Message(in_frame(mdd, 1, "vertex 2 has the coordinate -1e+300, beyond the range of a float32")));
     CHECK_FALSE(fs::exists(pc2));
   }
   SECTION("timing that is not finite or not positive") {
-    const auto animation = moving_tetrahedron<Surface_mesh, double>(1);
+    const auto animation = moving_tetrahedron<mesh::Surface_mesh, double>(1);
     CHECK_THROWS_MATCHES(io::write_pc2(animation, pc2, {.sample_rate = 0}), invalid_input, Message(in_file(pc2, "sample_rate must be a positive finite float32, not 0")));
     CHECK_THROWS_MATCHES(io::write_pc2(animation, pc2, {.start_frame = std::numeric_limits<double>::infinity()}), invalid_input, Message(in_file(pc2, "start_frame must be a finite float32, not inf")));
     CHECK_THROWS_MATCHES(io::write_mdd(animation, mdd, -25.0), invalid_input, Message(in_file(mdd, "frames_per_second must be finite and positive, not -25")));
   }
   SECTION("a folder that does not exist") {
     const fs::path nowhere = test::scratch_dir() / "io_point_cache" / "no_such_folder" / "a.pc2";
-    CHECK_THROWS_MATCHES(io::write_pc2(moving_tetrahedron<Surface_mesh, double>(1), nowhere), invalid_input, Message(in_file(nowhere, "cannot write: " + std::generic_category().message(ENOENT))));
+    CHECK_THROWS_MATCHES(io::write_pc2(moving_tetrahedron<mesh::Surface_mesh, double>(1), nowhere), invalid_input, Message(in_file(nowhere, "cannot write: " + std::generic_category().message(ENOENT))));
   }
 }

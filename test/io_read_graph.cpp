@@ -1,6 +1,6 @@
 // The readers of graphs and labels first: no io header after them may lose deformseg::internal.
 #include <deformseg/io/motion_labels.h>
-#include <deformseg/io/read_graph.h>
+#include <deformseg/io/graphviz.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/io/gltf.h>
 

@@ -3,16 +3,16 @@
 // the errors.
 #include "tetrahedron.h"
 
-#include <deformseg/color.h>
-#include <deformseg/default_mesh.h>
-#include <deformseg/deforming_mesh.h>
+#include <deformseg/color/color.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/off.h>
-#include <deformseg/io/write_obj.h>
-#include <deformseg/io/write_off.h>
-#include <deformseg/io/write_ply.h>
-#include <deformseg/io/write_sequence.h>
+#include <deformseg/io/obj.h>
+#include <deformseg/io/off.h>
+#include <deformseg/io/ply.h>
+#include <deformseg/io/frame_sequence.h>
 
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -38,7 +38,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+using Polyhedron = CGAL::Polyhedron_3<mesh::Kernel>;
 using Point = CGAL::Simple_cartesian<double>::Point_3;
 using Polygons = std::vector<std::vector<std::size_t>>;
 
@@ -62,8 +62,8 @@ std::vector<Coordinate> drifting_positions(std::size_t frames) {
 }
 
 template <class Graph, class Coordinate = double>
-Deforming_mesh<Graph, Coordinate> drifting_tetrahedron(std::size_t frames) {
-  return Deforming_mesh<Graph, Coordinate>(tetrahedron<Graph>(), drifting_positions<Coordinate>(frames));
+mesh::Deforming_mesh<Graph, Coordinate> drifting_tetrahedron(std::size_t frames) {
+  return mesh::Deforming_mesh<Graph, Coordinate>(tetrahedron<Graph>(), drifting_positions<Coordinate>(frames));
 }
 
 // A path for a file a test writes, in a folder of its own, emptied first.
@@ -120,7 +120,7 @@ bool read_ply_colored(const fs::path& file, std::vector<Point>& points, Polygons
                                 .vertex_color_output_iterator(std::back_inserter(vertex_colors)));
 }
 
-const std::vector<Rgb> four_colors{{255, 0, 0}, {0, 128, 0}, {0, 0, 255}, {12, 34, 56}};
+const std::vector<color::Rgb> four_colors{{255, 0, 0}, {0, 128, 0}, {0, 0, 255}, {12, 34, 56}};
 
 }  // namespace
 
@@ -129,7 +129,7 @@ TEST_CASE("write_obj: the vertices as their shortest exact text, the triangles 1
   std::vector<double> xyz(12, 0.0);
   const std::vector<double> frame1{0.1, 1.0 / 3, -2.5, 1e-300, 123456789.125, -0.0, 2.0 / 3, 1e21, 5e-324, 0, 0, 1};
   xyz.insert(xyz.end(), frame1.begin(), frame1.end());
-  const Deforming_mesh<Surface_mesh> animation(tetrahedron<Surface_mesh>(), xyz);
+  const mesh::Deforming_mesh<mesh::Surface_mesh> animation(tetrahedron<mesh::Surface_mesh>(), xyz);
   const fs::path file = output("obj_text", "frame1.obj");
   io::write_obj(animation, 1, file);
 
@@ -160,7 +160,7 @@ TEST_CASE("write_off: the counts, the vertices as their shortest exact text, the
   std::vector<double> xyz(12, 0.0);
   const std::vector<double> frame1{0.1, 1.0 / 3, -2.5, 1e-300, 123456789.125, -0.0, 2.0 / 3, 1e21, 5e-324, 0, 0, 1};
   xyz.insert(xyz.end(), frame1.begin(), frame1.end());
-  const Deforming_mesh<Surface_mesh> animation(tetrahedron<Surface_mesh>(), xyz);
+  const mesh::Deforming_mesh<mesh::Surface_mesh> animation(tetrahedron<mesh::Surface_mesh>(), xyz);
   const fs::path file = output("off_text", "frame1.off");
   io::write_off(animation, 1, file);
   CHECK(file_text(file) == "OFF\n# deformseg: frame 1 of 2\n4 4 0\n"
@@ -176,14 +176,14 @@ TEST_CASE("write_off: the counts, the vertices as their shortest exact text, the
 }
 
 TEST_CASE("write_obj: a float animation is written in float's shortest form", "[io][writers][obj]") {
-  const auto animation = drifting_tetrahedron<Surface_mesh, float>(2);
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh, float>(2);
   const fs::path file = output("obj_float", "frame1.obj");
   io::write_obj(animation, 1, file);
   // Vertex 0 of frame 1 is (0.1f, 1/3.f, 0): shorter than the double these floats are.
   CHECK(file_text(file).starts_with("# deformseg: frame 1 of 2\nv 0.1 0.33333334 0\n"));
 }
 
-TEMPLATE_TEST_CASE("write_obj: CGAL reads back the same points and triangles", "[io][writers][obj]", Surface_mesh,
+TEMPLATE_TEST_CASE("write_obj: CGAL reads back the same points and triangles", "[io][writers][obj]", mesh::Surface_mesh,
                    Polyhedron) {
   const auto animation = drifting_tetrahedron<TestType>(3);
   const fs::path file = output("obj_cgal_" + graph_name<TestType>(), "frame2.obj");
@@ -196,7 +196,7 @@ TEMPLATE_TEST_CASE("write_obj: CGAL reads back the same points and triangles", "
 }
 
 TEST_CASE("write_ply: text PLY, with face colours, exactly", "[io][writers][ply]") {
-  const auto animation = drifting_tetrahedron<Surface_mesh>(2);
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh>(2);
   const fs::path file = output("ply_ascii", "frame1.ply");
   io::write_ply(animation, 1, file, four_colors, {.encoding = io::Ply_encoding::ascii});
   const std::string expected = "ply\n"
@@ -219,7 +219,7 @@ TEST_CASE("write_ply: text PLY, with face colours, exactly", "[io][writers][ply]
   CHECK(file_text(file) == expected + face_lines(animation, "3", 0, {" 255 0 0", " 0 128 0", " 0 0 255", " 12 34 56"}));
 }
 
-TEMPLATE_TEST_CASE("write_ply: binary PLY with face colours, read back by CGAL", "[io][writers][ply]", Surface_mesh,
+TEMPLATE_TEST_CASE("write_ply: binary PLY with face colours, read back by CGAL", "[io][writers][ply]", mesh::Surface_mesh,
                    Polyhedron) {
   const auto animation = drifting_tetrahedron<TestType>(3);
   const fs::path file = output("ply_binary_" + graph_name<TestType>(), "frame2.ply");
@@ -257,7 +257,7 @@ TEMPLATE_TEST_CASE("write_ply: binary PLY with face colours, read back by CGAL",
 }
 
 TEST_CASE("write_ply: a float animation, without colours, as float properties", "[io][writers][ply]") {
-  const auto animation = drifting_tetrahedron<Surface_mesh, float>(2);
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh, float>(2);
   const fs::path file = output("ply_float", "frame1.ply");
   io::write_ply(animation, 1, file);
   const std::string bytes = file_text(file);
@@ -275,7 +275,7 @@ TEST_CASE("write_ply: a float animation, without colours, as float properties", 
 }
 
 TEST_CASE("write_obj and write_ply reject bad arguments, naming the file", "[io][writers][errors]") {
-  const auto animation = drifting_tetrahedron<Surface_mesh>(3);
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh>(3);
   const fs::path folder = test::fresh_dir("io_writers/errors");
 
   SECTION("a frame out of range") {
@@ -289,7 +289,7 @@ TEST_CASE("write_obj and write_ply reject bad arguments, naming the file", "[io]
   }
   SECTION("a colour count other than the face count") {
     const fs::path ply = folder / "colors.ply";
-    const std::vector<Rgb> three(3);
+    const std::vector<color::Rgb> three(3);
     CHECK_THROWS_MATCHES(io::write_ply(animation, 0, ply, three), invalid_input,
                          Message(ply.string() + ": 3 face colours for 4 faces"));
   }
@@ -319,7 +319,7 @@ TEST_CASE("sequence_file_name: zero-padded to the width of the last frame", "[io
 }
 
 TEST_CASE("write_sequence: names that sort the same plainly and naturally", "[io][writers][sequence]") {
-  const auto animation = drifting_tetrahedron<Surface_mesh>(12);
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh>(12);
   const fs::path folder = test::fresh_dir("io_writers/names") / "new" / "folder";
   const auto files = io::write_sequence(animation, folder, {.min_digits = 1});
   REQUIRE(files.size() == 12);
@@ -334,15 +334,15 @@ TEST_CASE("write_sequence: names that sort the same plainly and naturally", "[io
 
 TEMPLATE_TEST_CASE("write_sequence then read_frame_sequence: the same positions", "[io][writers][sequence]", float,
                    double) {
-  const auto animation = drifting_tetrahedron<Surface_mesh, TestType>(5);
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh, TestType>(5);
   for (const auto format : {io::Mesh_format::obj, io::Mesh_format::off, io::Mesh_format::ply}) {
-    const std::string extension = internal::file_extension(format);
+    const std::string extension = deformseg::io::internal::file_extension(format);
     const fs::path folder = test::fresh_dir(std::string("io_writers/round_trip_") +
                                             (sizeof(TestType) == 4 ? "float" : "double") + extension);
     const auto files = io::write_sequence(animation, folder, {.format = format});
     REQUIRE(files.size() == 5);
     CHECK(files[4].filename() == "frame_0004" + extension);
-    const auto read = io::read_frame_sequence<Surface_mesh, TestType>(folder.string());
+    const auto read = io::read_frame_sequence<mesh::Surface_mesh, TestType>(folder.string());
     REQUIRE(read.num_frames() == 5);
     CHECK(std::ranges::equal(read.all_positions(), animation.all_positions()));
   }
@@ -351,7 +351,7 @@ TEMPLATE_TEST_CASE("write_sequence then read_frame_sequence: the same positions"
 TEST_CASE("write_sequence: per-frame face colours through a callback", "[io][writers][sequence]") {
   const auto animation = drifting_tetrahedron<Polyhedron>(3);
   const auto colors_of = [](std::size_t t) {
-    std::vector<Rgb> colors;
+    std::vector<color::Rgb> colors;
     for (std::uint8_t j = 0; j < 4; ++j) colors.push_back({std::uint8_t(10 * t), std::uint8_t(50 * j), std::uint8_t(255 - j)});
     return colors;
   };
@@ -366,25 +366,25 @@ TEST_CASE("write_sequence: per-frame face colours through a callback", "[io][wri
     check_points(points, animation, t);
     REQUIRE(colors.size() == 4);
     for (std::size_t j = 0; j < 4; ++j) {
-      const Rgb expected = colors_of(t)[j];
+      const color::Rgb expected = colors_of(t)[j];
       CHECK(colors[j] == CGAL::IO::Color(expected.r, expected.g, expected.b));
     }
   }
 }
 
 TEST_CASE("write_sequence rejects bad options, naming the folder or the file", "[io][writers][sequence][errors]") {
-  const auto animation = drifting_tetrahedron<Surface_mesh>(3);
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh>(3);
   const fs::path folder = test::fresh_dir("io_writers/sequence_errors");
 
   SECTION("colours asked of OBJ") {
-    const auto none = [](std::size_t) { return std::vector<Rgb>{}; };
+    const auto none = [](std::size_t) { return std::vector<color::Rgb>{}; };
     CHECK_THROWS_MATCHES(io::write_sequence(animation, folder, {.format = io::Mesh_format::obj, .face_colors = none}),
                          invalid_input,
                          Message(folder.string() + ": face colours need the PLY format: OBJ and OFF files have none"));
   }
   SECTION("a frame with a wrong number of colours") {
     const auto colors = [](std::size_t t) {
-      return t == 1 ? std::vector<Rgb>(four_colors.begin(), four_colors.begin() + 2) : four_colors;
+      return t == 1 ? std::vector<color::Rgb>(four_colors.begin(), four_colors.begin() + 2) : four_colors;
     };
     const fs::path second = folder / "frame_0001.ply";
     CHECK_THROWS_MATCHES(io::write_sequence(animation, folder, {.face_colors = colors}), invalid_input,
@@ -405,7 +405,7 @@ TEST_CASE("write_sequence rejects bad options, naming the folder or the file", "
                                  std::generic_category().message(ENOTDIR)));
   }
   SECTION("an animation without frames writes nothing") {
-    const Deforming_mesh<Surface_mesh> empty(tetrahedron<Surface_mesh>());
+    const mesh::Deforming_mesh<mesh::Surface_mesh> empty(tetrahedron<mesh::Surface_mesh>());
     CHECK(io::write_sequence(empty, folder / "empty").empty());
     CHECK(fs::is_empty(folder / "empty"));
   }

@@ -6,14 +6,14 @@
 #include "test_support.h"
 
 #include <deformseg/alignment/subsequence_dtw.h>
-#include <deformseg/find_motion.h>
+#include <deformseg/similarity/find_motion.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/motion_similarity.h>
-#include <deformseg/motion_signatures.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/signatures/motion_signatures.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/similarity/significance.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/mesh/synthetic.h>
 #include <deformseg/threads.h>
 
 #include <Eigen/Geometry>
@@ -45,7 +45,7 @@ TEST_CASE("weighted_quantiles: the smallest value whose cumulative weight reache
     for (auto& item : items) item.second /= total;
     const auto brute = items;
     std::vector<double> out(k);
-    internal::weighted_quantiles(items, k, out.data());
+    deformseg::signatures::internal::weighted_quantiles(items, k, out.data());
     for (std::size_t q = 0; q < k; ++q) {
       const double level = (double(q) + 0.5) / double(k);
       // Brute force: the smallest value v with (weight of the values <= v) >= level, up to rounding.
@@ -78,7 +78,7 @@ TEST_CASE("motion_signatures: a uniform translation has the exact rate everywher
       positions.insert(positions.end(), {q.x(), q.y(), q.z()});
     }
   const std::vector<double> weights(4, 0.25);
-  const Eigen::MatrixXd s = motion_signatures(std::span<const double>(positions), weights);
+  const Eigen::MatrixXd s = signatures::motion_signatures(std::span<const double>(positions), weights);
   REQUIRE(s.rows() == 40);
   REQUIRE(s.cols() == 64);
   // Speeds first (4 lags x 8 quantiles), then the rates along up, +Y: 0.8 of the speed, rising.
@@ -95,7 +95,7 @@ TEST_CASE("motion_signatures: a uniform translation has the exact rate everywher
       CHECK(s(t, 32 + c) == Approx(rising(0.6)).epsilon(1e-12));
     }
   // Without an up direction, the speeds alone.
-  const Eigen::MatrixXd speeds = motion_signatures(std::span<const double>(positions), weights, {.up = std::nullopt});
+  const Eigen::MatrixXd speeds = signatures::motion_signatures(std::span<const double>(positions), weights, {.up = std::nullopt});
   REQUIRE(speeds.cols() == 32);
   CHECK(speeds == s.leftCols(32));
   // Frame 0 at lag 16: from frame 0 to frame 16, over 32 frames: half the rate; frame 39 at lag 4:
@@ -104,14 +104,14 @@ TEST_CASE("motion_signatures: a uniform translation has the exact rate everywher
   CHECK(s(39, 8) == Approx(std::log(0.3)).epsilon(1e-12));
   CHECK(s(1, 0) == Approx(std::log(0.6)).epsilon(1e-12));
   // Lags of whole frames read the frames themselves; spans are cut at the ends.
-  CHECK(internal::frame_at(20.0 / 30 - 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(16, 0.0));
-  CHECK(internal::frame_at(1.0 / 30 - 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(0, 0.0));
-  CHECK(internal::frame_at(38.0 / 30 + 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(39, 0.0));
-  CHECK(internal::frame_at(0.25, 10, 40) == std::pair<std::size_t, double>(2, 0.5));
+  CHECK(deformseg::signatures::internal::frame_at(20.0 / 30 - 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(16, 0.0));
+  CHECK(deformseg::signatures::internal::frame_at(1.0 / 30 - 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(0, 0.0));
+  CHECK(deformseg::signatures::internal::frame_at(38.0 / 30 + 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(39, 0.0));
+  CHECK(deformseg::signatures::internal::frame_at(0.25, 10, 40) == std::pair<std::size_t, double>(2, 0.5));
   // Standing still gives the floor.
   std::vector<double> still(positions.begin(), positions.begin() + 12);
   still.insert(still.end(), positions.begin(), positions.begin() + 12);
-  const Eigen::MatrixXd standing = motion_signatures(std::span<const double>(still), weights);
+  const Eigen::MatrixXd standing = signatures::motion_signatures(std::span<const double>(still), weights);
   CHECK(standing.leftCols(32).maxCoeff() == Approx(std::log(3e-3)));
   CHECK(standing.rightCols(32).cwiseAbs().maxCoeff() == 0.0);
 }
@@ -122,7 +122,7 @@ TEST_CASE("motion_signatures: rigid parts moving on a joint are seen", "[motion_
   const std::vector<double> positions = jointed_points(9, points);
   const std::vector<double> weights(points, 1.0 / points);
   const Eigen::MatrixXd s =
-      motion_signatures(std::span<const double>(positions), weights, {.lags = {1.0 / 30}, .quantiles = 4});
+      signatures::motion_signatures(std::span<const double>(positions), weights, {.lags = {1.0 / 30}, .quantiles = 4});
   // The lower half (the first quantiles) stands still, the upper half moves.
   CHECK(s(4, 0) == Approx(std::log(3e-3)));
   CHECK(s(4, 3) > std::log(0.3));
@@ -130,11 +130,11 @@ TEST_CASE("motion_signatures: rigid parts moving on a joint are seen", "[motion_
 
 TEST_CASE("motion_signature_similarity: an animation against itself and a moved, scaled copy turned about up is 1",
           "[motion_signature]") {
-  const Motion_signature_similarity<> policy;
+  const similarity::Motion_signature_similarity<> policy;
   const auto [a, b] = check_moved_copy_is_one(policy, Eigen::Vector3d::UnitY());
   CHECK((policy.describe(a).signatures - policy.describe(b).signatures).cwiseAbs().maxCoeff() < 1e-9);
   // Without an up direction, turned about any axis.
-  Motion_signature_similarity<> directionless;
+  similarity::Motion_signature_similarity<> directionless;
   directionless.signatures.up = std::nullopt;
   check_moved_copy_is_one(directionless);
 }
@@ -143,17 +143,17 @@ TEST_CASE("motion_signatures: the up direction turns with the animation", "[moti
   const Eigen::AngleAxisd turn(0.7, Eigen::Vector3d(1, 2, 3).normalized());
   const auto a = tube(bend_hold_unbend);
   const auto b = tube(bend_hold_unbend, {}, {.scale = 2.5, .rotation = Eigen::Quaterniond(turn)});
-  const Eigen::MatrixXd turned = motion_signatures(b, {.up = turn * Eigen::Vector3d(0, 3, 0)});  // any length
-  CHECK((motion_signatures(a) - turned).cwiseAbs().maxCoeff() < 1e-9);
+  const Eigen::MatrixXd turned = signatures::motion_signatures(b, {.up = turn * Eigen::Vector3d(0, 3, 0)});  // any length
+  CHECK((signatures::motion_signatures(a) - turned).cwiseAbs().maxCoeff() < 1e-9);
   // Another up sees other rises and falls.
-  CHECK((motion_signatures(a) - motion_signatures(b)).cwiseAbs().maxCoeff() > 0.1);
+  CHECK((signatures::motion_signatures(a) - signatures::motion_signatures(b)).cwiseAbs().maxCoeff() > 0.1);
 }
 
 TEST_CASE("motion_signature_similarity: rising and falling at one speed are told apart by the up direction",
           "[motion_signature]") {
   // A bending tube lifted, then lowered, against its mirror image lowered, then lifted: the same
   // speeds, opposite rises.
-  const auto moved = make_deforming_mesh<double>(tube(bend_hold_unbend));
+  const auto moved = mesh::make_deforming_mesh<double>(tube(bend_hold_unbend));
   const std::size_t frames = moved.num_frames(), vertices = moved.num_vertices();
   const auto lifted = [&](double mirror) {
     std::vector<double> positions(moved.all_positions().begin(), moved.all_positions().end());
@@ -165,14 +165,14 @@ TEST_CASE("motion_signature_similarity: rising and falling at one speed are told
     return positions;
   };
   const std::vector<double> up_then_down = lifted(1.0), down_then_up = lifted(-1.0);
-  const std::vector<double> weights = internal::vertex_area_weights(
+  const std::vector<double> weights = deformseg::signatures::vertex_area_weights(
       std::span<const double>(up_then_down.data(), 3 * vertices), moved.triangles(), vertices);
-  const Motion_signature_similarity<> policy;
+  const similarity::Motion_signature_similarity<> policy;
   const auto describe = [&](const std::vector<double>& p) {
     return policy.describe_positions(std::span<const double>(p), std::span<const double>(weights));
   };
   const double told = policy.compare(describe(up_then_down), describe(down_then_up)).value;
-  Motion_signature_similarity<> directionless;
+  similarity::Motion_signature_similarity<> directionless;
   directionless.signatures.up = std::nullopt;
   const auto speeds = [&](const std::vector<double>& p) {
     return directionless.describe_positions(std::span<const double>(p), std::span<const double>(weights));
@@ -186,18 +186,18 @@ TEST_CASE("motion_signature_similarity: rising and falling at one speed are told
 TEST_CASE("motion_signatures: the same whatever the number of threads", "[motion_signature]") {
   const auto a = tube(bend_hold_unbend);
   set_default_threads(1);
-  const Eigen::MatrixXd one = motion_signatures(a);
+  const Eigen::MatrixXd one = signatures::motion_signatures(a);
   set_default_threads(7);
-  const Eigen::MatrixXd seven = motion_signatures(a);
+  const Eigen::MatrixXd seven = signatures::motion_signatures(a);
   set_default_threads(0);
   CHECK(one == seven);
 }
 
 TEST_CASE("motion_signature_similarity: a time-shifted cyclic motion scores near 1", "[motion_signature]") {
-  const Motion_signature_similarity<alignment::Subsequence_dtw> policy;
+  const similarity::Motion_signature_similarity<alignment::Subsequence_dtw> policy;
   const auto a = cycles(16, 48, 0), shifted = cycles(16, 64, 5);
-  const double value = motion_similarity(a, shifted, policy).value;
-  const double other = motion_similarity(a, tube(other_timing), policy).value;
+  const double value = similarity::motion_similarity(a, shifted, policy).value;
+  const double other = similarity::motion_similarity(a, tube(other_timing), policy).value;
   WARN("cycles against themselves shifted by 5 of 16 frames " << value << ", against another motion " << other);
   // Measured 0.931 and 0.688: not 1, as each animation's first and last 16 frames see its ends
   // (the spans are cut there, as if the tube stood still before and after), and its lag of 128
@@ -208,14 +208,14 @@ TEST_CASE("motion_signature_similarity: a time-shifted cyclic motion scores near
 }
 
 TEST_CASE("motion_signature_similarity: a motion inside a longer one is found at its frames", "[motion_signature]") {
-  const Motion_signature_similarity<alignment::Subsequence_dtw> policy;
+  const similarity::Motion_signature_similarity<alignment::Subsequence_dtw> policy;
   const auto longer = tube({{6, {right_angle / 2}}, {6, {0.0}}, {10, {right_angle}}, {8, {}}, {10, {0.0}},
                             {6, {right_angle / 2}}, {7, {0.0}}});
   // Its frames 12 to 40 (the bend, the hold and the unbend), cut out.
   std::vector<std::size_t> cut;
   for (std::size_t t = 12; t <= 40; ++t) cut.push_back(t);
   const auto motion = frames_of(longer, cut);
-  const Similarity found = motion_similarity(motion, longer, policy);
+  const similarity::Similarity found = similarity::motion_similarity(motion, longer, policy);
   WARN("a motion inside a longer one: " << found.value);
   // Inside, away from the cut's ends (where the lags see past them), the signatures are those of
   // the longer animation's frames: measured 0.933.
@@ -228,11 +228,11 @@ TEST_CASE("motion_signature_similarity: a motion inside a longer one is found at
 
 TEST_CASE("motion_signature_similarity: the same motion on another tube ranks above other motions",
           "[motion_signature]") {
-  const Motion_signature_similarity<> policy;
+  const similarity::Motion_signature_similarity<> policy;
   const auto a = tube(bend_hold_unbend);
-  const double same = motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
-  const double timing = motion_similarity(a, tube(other_timing, other_tube), policy).value;
-  const double small_bend = motion_similarity(
+  const double same = similarity::motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
+  const double timing = similarity::motion_similarity(a, tube(other_timing, other_tube), policy).value;
+  const double small_bend = similarity::motion_similarity(
       a, tube({{5, {0.0}}, {10, {right_angle / 3}}, {8, {}}, {10, {0.0}}, {5, {}}}, other_tube), policy).value;
   WARN("same motion on another tube " << same << ", other timing " << timing << ", a third of the bend "
                                       << small_bend);
@@ -245,19 +245,19 @@ TEST_CASE("motion_signature_similarity: the same motion on another tube ranks ab
 
 TEST_CASE("motion_signature_similarity: bad input is refused with a reason", "[motion_signature]") {
   const auto a = tube(bend_hold_unbend);
-  CHECK_THROWS_WITH(motion_signatures(frames_of(a, {3})), Catch::Contains("at least 2"));
-  CHECK_THROWS_WITH(motion_signatures(a, {.lags = {1, 0}}), Catch::Contains("lag of 0"));
-  CHECK_THROWS_WITH(motion_signatures(a, {.quantiles = 0}), Catch::Contains("0 quantiles"));
-  CHECK_THROWS_WITH(motion_signatures(a, {.floor = 0}), Catch::Contains("floor"));
-  CHECK_THROWS_WITH(motion_signatures(a, {.up = Eigen::Vector3d::Zero()}), Catch::Contains("up direction"));
-  CHECK_THROWS_WITH(motion_signatures(a, {.vertical_unit = 0}), Catch::Contains("vertical unit"));
-  CHECK_THROWS_WITH(motion_signatures(a, {.vertical_weight = -1}), Catch::Contains("vertical weight"));
-  CHECK_NOTHROW(motion_signatures(a, {.up = std::nullopt, .vertical_unit = 0}));  // unused without up
+  CHECK_THROWS_WITH(signatures::motion_signatures(frames_of(a, {3})), Catch::Contains("at least 2"));
+  CHECK_THROWS_WITH(signatures::motion_signatures(a, {.lags = {1, 0}}), Catch::Contains("lag of 0"));
+  CHECK_THROWS_WITH(signatures::motion_signatures(a, {.quantiles = 0}), Catch::Contains("0 quantiles"));
+  CHECK_THROWS_WITH(signatures::motion_signatures(a, {.floor = 0}), Catch::Contains("floor"));
+  CHECK_THROWS_WITH(signatures::motion_signatures(a, {.up = Eigen::Vector3d::Zero()}), Catch::Contains("up direction"));
+  CHECK_THROWS_WITH(signatures::motion_signatures(a, {.vertical_unit = 0}), Catch::Contains("vertical unit"));
+  CHECK_THROWS_WITH(signatures::motion_signatures(a, {.vertical_weight = -1}), Catch::Contains("vertical weight"));
+  CHECK_NOTHROW(signatures::motion_signatures(a, {.up = std::nullopt, .vertical_unit = 0}));  // unused without up
   const std::vector<double> points(24, 1.0), weights(4, 0.25);
-  CHECK_THROWS_WITH(motion_signatures(std::span<const double>(points), weights), Catch::Contains("no extent"));
-  Motion_signature_similarity<> coarse;
+  CHECK_THROWS_WITH(signatures::motion_signatures(std::span<const double>(points), weights), Catch::Contains("no extent"));
+  similarity::Motion_signature_similarity<> coarse;
   coarse.signatures.quantiles = 4;
-  const Motion_signature_similarity<> policy;
+  const similarity::Motion_signature_similarity<> policy;
   CHECK_THROWS_AS(policy.compare(policy.describe(a), coarse.describe(a)), invalid_input);
 }
 
@@ -266,7 +266,7 @@ TEST_CASE("find_motion: a motion embedded twice in a longer one is found at its 
   // 80-118), a hold: the two windows are found, best first, each within 4 frames of where it is
   // (measured: 15-49 and 83-117; the motion starts standing still for 5 frames, and which of the
   // still frames after the half bends match them best depends on how far the lags see).
-  std::vector<Tube_phase> schedule{{6, {right_angle / 2}}, {6, {0.0}}};
+  std::vector<mesh::Tube_phase> schedule{{6, {right_angle / 2}}, {6, {0.0}}};
   schedule.insert(schedule.end(), bend_hold_unbend.begin(), bend_hold_unbend.end());
   schedule.insert(schedule.end(), {{18, {}}, {6, {right_angle / 2}}, {6, {0.0}}});
   schedule.insert(schedule.end(), bend_hold_unbend.begin(), bend_hold_unbend.end());
@@ -274,7 +274,7 @@ TEST_CASE("find_motion: a motion embedded twice in a longer one is found at its 
   const auto longer = tube(schedule);
   const auto motion = tube(bend_hold_unbend, other_tube);
   REQUIRE(motion.num_frames() == 39);
-  const auto found = find_motion(motion, longer, {.count = 3});
+  const auto found = similarity::find_motion(motion, longer, {.count = 3});
   REQUIRE(found.size() >= 2);
   std::vector<std::size_t> firsts{found[0].first, found[1].first};
   std::sort(firsts.begin(), firsts.end());
@@ -296,20 +296,20 @@ TEST_CASE("find_motion: a motion embedded twice in a longer one is found at its 
   for (std::size_t x = 0; x < found.size(); ++x)
     for (std::size_t y = x + 1; y < found.size(); ++y)
       CHECK((found[x].last < found[y].first || found[y].last < found[x].first));
-  CHECK_THROWS_AS(find_motion(motion, longer, {.shortest = 0}), invalid_input);
+  CHECK_THROWS_AS(similarity::find_motion(motion, longer, {.shortest = 0}), invalid_input);
 }
 
 TEST_CASE("similarity_significance: ordered frames stand out from shuffled ones", "[motion_signature]") {
-  const Motion_signature_similarity<> policy;
+  const similarity::Motion_signature_similarity<> policy;
   const auto a = policy.describe(tube(bend_hold_unbend));
   const auto same = policy.describe(tube(bend_hold_unbend, other_tube));
   std::mt19937 random(7);
-  const double z_same = similarity_significance(policy, a, same, 20, random);
+  const double z_same = similarity::similarity_significance(policy, a, same, 20, random);
   WARN("z-score of the same motion on another tube against shuffled copies: " << z_same);
   CHECK(z_same > 3);
   std::mt19937 again(7);
-  CHECK(similarity_significance(policy, a, same, 20, again) == z_same);
-  CHECK_THROWS_AS(similarity_significance(policy, a, same, 1, again), invalid_input);
+  CHECK(similarity::similarity_significance(policy, a, same, 20, again) == z_same);
+  CHECK_THROWS_AS(similarity::similarity_significance(policy, a, same, 1, again), invalid_input);
   // A description in another order: row t is row order[t].
   const std::vector<std::size_t> order{2, 0, 1};
   const Eigen::MatrixXd three = a.signatures.topRows(3);
@@ -324,18 +324,18 @@ TEST_CASE("similarity_significance: ordered frames stand out from shuffled ones"
 namespace {
 
 /// Frames `first` to `last` of `a` (inclusive), as `frames_of`.
-Surface_mesh_animation frame_range(const Surface_mesh_animation& a, std::size_t first, std::size_t last) {
+mesh::Surface_mesh_animation frame_range(const mesh::Surface_mesh_animation& a, std::size_t first, std::size_t last) {
   std::vector<std::size_t> frames;
   for (std::size_t t = first; t <= last; ++t) frames.push_back(t);
   return frames_of(a, frames);
 }
 
 /// The frames of the animations one after the other (all of one mesh), at the first one's rate.
-Surface_mesh_animation joined(const std::vector<const Surface_mesh_animation*>& parts) {
+mesh::Surface_mesh_animation joined(const std::vector<const mesh::Surface_mesh_animation*>& parts) {
   std::vector<double> positions;
   for (const auto* part : parts)
     positions.insert(positions.end(), part->all_positions().begin(), part->all_positions().end());
-  Surface_mesh_animation out(parts.front()->face_graph(), std::move(positions));
+  mesh::Surface_mesh_animation out(parts.front()->face_graph(), std::move(positions));
   out.set_frames_per_second(parts.front()->frames_per_second());
   return out;
 }
@@ -343,9 +343,9 @@ Surface_mesh_animation joined(const std::vector<const Surface_mesh_animation*>& 
 /// Checks that `query` is found first in `long_animation` at `first` (within one frame), as long
 /// as it is (within one frame), with a value of at least 0.95, and that no window is shorter than
 /// `shortest` times the query.
-void check_found(const Surface_mesh_animation& query, const Surface_mesh_animation& long_animation, std::size_t first,
+void check_found(const mesh::Surface_mesh_animation& query, const mesh::Surface_mesh_animation& long_animation, std::size_t first,
                  double shortest = 0.5) {
-  const auto found = find_motion(query, long_animation, {.count = 3, .shortest = shortest});
+  const auto found = similarity::find_motion(query, long_animation, {.count = 3, .shortest = shortest});
   REQUIRE(!found.empty());
   const std::size_t n = query.num_frames(), last = first + n - 1;
   WARN("copy at " << first << "-" << last << " found at " << found[0].first << "-" << found[0].last << " ("
@@ -376,15 +376,15 @@ TEST_CASE("motion_signature_similarity: a tube's motion sampled at 15, 30 or 60 
   for (std::size_t t = 0; t < at_30.num_frames(); t += 2) even.push_back(t);
   auto at_15 = frames_of(at_30, even);
   at_15.set_frames_per_second(15);
-  std::vector<Tube_phase> doubled = bend_hold_unbend;
+  std::vector<mesh::Tube_phase> doubled = bend_hold_unbend;
   for (auto& phase : doubled) phase.frames *= 2;
   auto at_60 = tube(doubled, other_tube);
   at_60.set_frames_per_second(60);
   auto faster = at_30;
   faster.set_frames_per_second(60);
-  const Motion_signature_similarity<> policy;
-  const Similarity slow = motion_similarity(at_15, at_30, policy), fine = motion_similarity(at_60, at_30, policy);
-  const double played_faster = motion_similarity(faster, at_30, policy).value;
+  const similarity::Motion_signature_similarity<> policy;
+  const similarity::Similarity slow = similarity::motion_similarity(at_15, at_30, policy), fine = similarity::motion_similarity(at_60, at_30, policy);
+  const double played_faster = similarity::motion_similarity(faster, at_30, policy).value;
   WARN("15 fps against 30: " << slow.value << ", 60 fps (another tube) against 30: " << fine.value
                              << ", played twice as fast: " << played_faster);
   CHECK(slow.value >= 0.95);
@@ -401,7 +401,7 @@ TEST_CASE("motion_signature_similarity: a tube's motion sampled at 15, 30 or 60 
   CHECK(policy.describe(at_15).signatures.rows() == Eigen::Index(at_30.num_frames()));
   CHECK(policy.describe(at_60).signatures.rows() == Eigen::Index(at_60.num_frames()));
   // At 30 fps the signatures are those of the frames themselves.
-  CHECK(policy.describe(at_30).signatures == motion_signatures(at_30));
+  CHECK(policy.describe(at_30).signatures == signatures::motion_signatures(at_30));
   CHECK_THROWS_WITH(at_15.set_frames_per_second(0), Catch::Contains("frame rate"));
 }
 
@@ -414,7 +414,7 @@ TEST_CASE("motion_signature_similarity: a shared clip read at 15, 24, 30 or 60 f
     CHECK(a.frames_per_second() == fps);
     return a;
   };
-  const Motion_signature_similarity<> policy;
+  const similarity::Motion_signature_similarity<> policy;
   double lowest_self = 1;
   for (const auto& [file, clip] : std::vector<std::pair<std::string, std::string>>{
            {"Knight.glb", "Walking_A"}, {"Knight.glb", "Running_A"}, {"RobotExpressive.glb", "Running"},
@@ -427,7 +427,7 @@ TEST_CASE("motion_signature_similarity: a shared clip read at 15, 24, 30 or 60 f
       if (file == "Knight.glb") lowest_self = std::min(lowest_self, value);
     }
   }
-  const double walk_run = motion_similarity(read("Knight.glb", "Walking_A", 30), read("Knight.glb", "Running_A", 15),
+  const double walk_run = similarity::motion_similarity(read("Knight.glb", "Walking_A", 30), read("Knight.glb", "Running_A", 15),
                                             policy).value;
   WARN("Knight Walking_A against Running_A at 15 fps: " << walk_run);
   CHECK(walk_run < lowest_self - 0.3);
@@ -447,13 +447,13 @@ TEST_CASE("find_motion: a copy of the query at the start, middle or end of a lon
   const auto moved = tube(bend_hold_unbend, {}, {.scale = 1.7, .translation = Eigen::Vector3d(2, -1, 3)});
   check_found(moved, joined({&before, &query, &after}), b);
   // The query is the whole long animation: exactly 1, every frame.
-  const auto whole = find_motion(query, query);
+  const auto whole = similarity::find_motion(query, query);
   REQUIRE(whole.size() == 1);
   CHECK(whole[0].value == 1.0);
   CHECK(whole[0].first == 0);
   CHECK(whole[0].last == n - 1);
   // With shortest 1 every window is as long as the query.
-  for (const auto& m : find_motion(query, joined({&before, &query, &after}), {.count = 3, .shortest = 1.0}))
+  for (const auto& m : similarity::find_motion(query, joined({&before, &query, &after}), {.count = 3, .shortest = 1.0}))
     CHECK(m.last - m.first + 1 == n);
 }
 

@@ -8,9 +8,9 @@
 
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/io/frame_sequence.h>
-#include <deformseg/motion_similarity.h>
+#include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/policy_choice.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <Eigen/Geometry>
 
@@ -33,10 +33,10 @@ std::vector<std::size_t> reversed_frames(std::size_t count) {
 template <class Policy>
 void check_tubes(const Policy& policy, const char* name) {
   const auto a = tube(bend_hold_unbend);
-  const double same_motion_other_tube = motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
+  const double same_motion_other_tube = similarity::motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
   const double other_timing =
-      motion_similarity(a, tube({{5, {0.0}}, {3, {right_angle}}, {22, {}}, {3, {0.0}}, {5, {}}}), policy).value;
-  const double two_bends = motion_similarity(
+      similarity::motion_similarity(a, tube({{5, {0.0}}, {3, {right_angle}}, {22, {}}, {3, {0.0}}, {5, {}}}), policy).value;
+  const double two_bends = similarity::motion_similarity(
       a, tube({{5, {0.0}}, {5, {right_angle}}, {4, {}}, {5, {0.0}}, {5, {right_angle}}, {4, {}}, {5, {0.0}}, {5, {}}}),
       policy).value;
   WARN(name << ": same schedule on another tube " << same_motion_other_tube << ", other timing " << other_timing
@@ -47,7 +47,7 @@ void check_tubes(const Policy& policy, const char* name) {
   // A fast bend and a slow unbend, against the same played backwards (a slow bend and a fast
   // unbend): not the same motion, so below 1, yet nearer than a motion of other timing.
   const auto fast_slow = tube({{5, {0.0}}, {3, {right_angle}}, {6, {}}, {15, {0.0}}, {5, {}}});
-  const double reversal = motion_similarity(fast_slow, frames_of(fast_slow, reversed_frames(fast_slow.num_frames())), policy).value;
+  const double reversal = similarity::motion_similarity(fast_slow, frames_of(fast_slow, reversed_frames(fast_slow.num_frames())), policy).value;
   WARN(name << ": a schedule against its time reversal " << reversal);
   CHECK(reversal < 0.999);
 }
@@ -56,7 +56,7 @@ void check_tubes(const Policy& policy, const char* name) {
 // tell; the value is printed either way.
 template <class Policy>
 double which_joint_first(const Policy& policy) {
-  const std::vector<Tube_joint> joints{{.position = 0.3}, {.position = 0.7}};
+  const std::vector<mesh::Tube_joint> joints{{.position = 0.3}, {.position = 0.7}};
   const auto lower_first =
       tube({{5, {0.0, 0.0}}, {8, {right_angle, 0.0}}, {8, {right_angle, right_angle}}, {5, {}}}, {}, {}, joints);
   const auto upper_first =
@@ -64,14 +64,14 @@ double which_joint_first(const Policy& policy) {
   const auto other_tube_lower_first =
       tube({{5, {0.0, 0.0}}, {8, {right_angle, 0.0}}, {8, {right_angle, right_angle}}, {5, {}}}, other_tube, {},
            joints);
-  const double swapped = motion_similarity(lower_first, upper_first, policy).value;
-  const double same = motion_similarity(lower_first, other_tube_lower_first, policy).value;
+  const double swapped = similarity::motion_similarity(lower_first, upper_first, policy).value;
+  const double same = similarity::motion_similarity(lower_first, other_tube_lower_first, policy).value;
   WARN("which joint first: swapped " << swapped << ", same order on another tube " << same);
   return swapped - same;
 }
 
 struct Cat_lion {
-  Surface_mesh_animation cat, lion, cat_reordered, samba;
+  mesh::Surface_mesh_animation cat, lion, cat_reordered, samba;
 };
 
 // The nine poses of the cat and of the lion (their reference pose left out), the cat's in
@@ -94,9 +94,9 @@ void check_cat_lion(const Policy& policy, const char* name) {
   const Cat_lion& d = cat_lion();
   REQUIRE(d.cat.num_frames() == 9);
   REQUIRE(d.lion.num_frames() == 9);
-  const double lion = motion_similarity(d.cat, d.lion, policy).value;
-  const double reordered = motion_similarity(d.cat, d.cat_reordered, policy).value;
-  const double samba = motion_similarity(d.cat, d.samba, policy).value;
+  const double lion = similarity::motion_similarity(d.cat, d.lion, policy).value;
+  const double reordered = similarity::motion_similarity(d.cat, d.cat_reordered, policy).value;
+  const double samba = similarity::motion_similarity(d.cat, d.samba, policy).value;
   WARN(name << ": cat poses against the lion's " << lion << ", against themselves reordered " << reordered
             << ", against the samba " << samba);
   CHECK(lion > reordered);
@@ -106,60 +106,60 @@ void check_cat_lion(const Policy& policy, const char* name) {
 template <class Policy>
 void check_self_and_copy(const Policy& policy, const Eigen::Vector3d& turn_axis = Eigen::Vector3d(1, 1, -2)) {
   const auto a = tube(bend_hold_unbend);
-  Bending_tube placed;
+  mesh::Bending_tube placed;
   placed.schedule = bend_hold_unbend;
   placed.placement = {.scale = 7.5,
                       .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(2.5, turn_axis.normalized())),
                       .translation = Eigen::Vector3d(40, -3, 9)};
-  const Similarity self = motion_similarity(a, a, policy);
+  const similarity::Similarity self = similarity::motion_similarity(a, a, policy);
   CHECK(self.value == Approx(1.0));
   CHECK(self.alignment.size() == a.num_frames());
-  CHECK(motion_similarity(a, make_bending_tube(placed).animation, policy).value == Approx(1.0).margin(1e-9));
+  CHECK(similarity::motion_similarity(a, mesh::make_bending_tube(placed).animation, policy).value == Approx(1.0).margin(1e-9));
   CHECK(!self.compared.empty());
 }
 
 }  // namespace
 
 TEST_CASE("motion similarity: an animation and itself, or a moved, turned, scaled copy, give 1", "[similarity]") {
-  check_self_and_copy(Motion_signature_similarity<>{}, Eigen::Vector3d::UnitY());  // turned about its up only
-  Motion_signature_similarity<> directionless;
+  check_self_and_copy(similarity::Motion_signature_similarity<>{}, Eigen::Vector3d::UnitY());  // turned about its up only
+  similarity::Motion_signature_similarity<> directionless;
   directionless.signatures.up = std::nullopt;
   check_self_and_copy(directionless);
-  check_self_and_copy(Strain_distribution_similarity<>{});
-  check_self_and_copy(Evolving_graph_similarity<>{});
-  const Similarity s = motion_similarity(tube(bend_hold_unbend), tube(bend_hold_unbend));
+  check_self_and_copy(similarity::Strain_distribution_similarity<>{});
+  check_self_and_copy(similarity::Evolving_graph_similarity<>{});
+  const similarity::Similarity s = similarity::motion_similarity(tube(bend_hold_unbend), tube(bend_hold_unbend));
   CHECK(s.value == Approx(1.0));
   CHECK(s.labels_a.empty());
-  const Similarity g = motion_similarity(tube(bend_hold_unbend), tube(bend_hold_unbend), Evolving_graph_similarity<>{});
+  const similarity::Similarity g = similarity::motion_similarity(tube(bend_hold_unbend), tube(bend_hold_unbend), similarity::Evolving_graph_similarity<>{});
   CHECK(g.labels_a == g.labels_b);
   CHECK(g.labels_a.size() == tube(bend_hold_unbend).num_frames());
 }
 
 TEST_CASE("motion similarity: tubes, the same schedule on another tube is nearer than other schedules", "[similarity]") {
-  check_tubes(Motion_signature_similarity<>{}, "motion signatures");
-  check_tubes(Strain_distribution_similarity<>{}, "strain distribution");
-  check_tubes(Strain_distribution_similarity<alignment::Dtw>{}, "strain distribution, DTW");
+  check_tubes(similarity::Motion_signature_similarity<>{}, "motion signatures");
+  check_tubes(similarity::Strain_distribution_similarity<>{}, "strain distribution");
+  check_tubes(similarity::Strain_distribution_similarity<alignment::Dtw>{}, "strain distribution, DTW");
 }
 
 TEST_CASE("motion similarity: tubes, with the thesis' evolving graph policy", "[similarity]") {
-  check_tubes(Evolving_graph_similarity<>{}, "evolving graph");
+  check_tubes(similarity::Evolving_graph_similarity<>{}, "evolving graph");
 }
 
 TEST_CASE("motion similarity: which joint bends first, a known limitation of the strain distribution", "[similarity]") {
   // Alike joints on one tube strain alike: the histograms of the two orders are the same.
-  CHECK(which_joint_first(Strain_distribution_similarity<>{}) > -1e-9);
+  CHECK(which_joint_first(similarity::Strain_distribution_similarity<>{}) > -1e-9);
   // The evolving graph sees two segments one after the other either way, at the same area shares:
   // it cannot tell them apart either. (It also rates the same order on the other tube far lower,
   // 0.30 here: that tube's graphs have other shapes.)
-  CHECK(which_joint_first(Evolving_graph_similarity<>{}) > -1e-9);
+  CHECK(which_joint_first(similarity::Evolving_graph_similarity<>{}) > -1e-9);
   // The motion signatures see it: bending the joint at 0.3 moves 70 % of the tube, the one at 0.7
   // moves 30 %, so the orders' rate distributions differ.
-  CHECK(which_joint_first(Motion_signature_similarity<>{}) < -0.1);
+  CHECK(which_joint_first(similarity::Motion_signature_similarity<>{}) < -0.1);
 }
 
 TEST_CASE("motion similarity: the cat's poses are nearest the lion's same poses", "[similarity][data]") {
-  check_cat_lion(Motion_signature_similarity<>{}, "motion signatures (the default)");
-  check_cat_lion(Strain_distribution_similarity<>{}, "strain distribution");
+  check_cat_lion(similarity::Motion_signature_similarity<>{}, "motion signatures (the default)");
+  check_cat_lion(similarity::Strain_distribution_similarity<>{}, "strain distribution");
 }
 
 TEST_CASE("motion similarity: the gallop's two cycles are nearer each other than any samba window",
@@ -169,12 +169,12 @@ TEST_CASE("motion similarity: the gallop's two cycles are nearer each other than
   const auto horse = io::read_frame_sequence((test::unpacked("horse-gallop/horse-gallop.tar.xz") / "horse-gallop").string());
   const auto samba = io::read_frame_sequence((test::unpacked("samba/samba.tar.xz") / "samba").string());
   REQUIRE(horse.num_frames() == 48);
-  const auto window = [](const Surface_mesh_animation& a, std::size_t first) {
+  const auto window = [](const mesh::Surface_mesh_animation& a, std::size_t first) {
     std::vector<std::size_t> frames(24);
     for (std::size_t t = 0; t < 24; ++t) frames[t] = first + t;
     return frames_of(a, frames);
   };
-  const Default_similarity policy;
+  const similarity::Default_similarity policy;
   const auto first = policy.describe(window(horse, 0)), second = policy.describe(window(horse, 24));
   const double cycles = policy.compare(first, second).value;
   double nearest_samba = 0;
@@ -189,27 +189,27 @@ TEST_CASE("motion similarity: the gallop's two cycles are nearer each other than
 
 TEST_CASE("motion similarity: the cat and the lion with the thesis' evolving graph policy",
           "[similarity][data]") {
-  check_cat_lion(Evolving_graph_similarity<>{}, "evolving graph");
+  check_cat_lion(similarity::Evolving_graph_similarity<>{}, "evolving graph");
 }
 
 TEST_CASE("similarity matrix: symmetric, ones on the diagonal, equal to the pairwise calls", "[similarity]") {
-  const std::vector<Surface_mesh_animation> animations{
+  const std::vector<mesh::Surface_mesh_animation> animations{
       tube(bend_hold_unbend), tube(bend_hold_unbend, other_tube),
       tube({{5, {0.0}}, {3, {right_angle}}, {22, {}}, {3, {0.0}}, {5, {}}})};
   const auto check = [&](const auto& policy) {
-    const Eigen::MatrixXd m = similarity_matrix(animations, policy);
+    const Eigen::MatrixXd m = similarity::similarity_matrix(animations, policy);
     REQUIRE(m.rows() == 3);
     CHECK(m.isApprox(m.transpose(), 0.0));
     for (Eigen::Index i = 0; i < 3; ++i) {
       CHECK(m(i, i) == Approx(1.0));
       for (Eigen::Index j = i + 1; j < 3; ++j)
-        CHECK(m(i, j) == motion_similarity(animations[std::size_t(i)], animations[std::size_t(j)], policy).value);
+        CHECK(m(i, j) == similarity::motion_similarity(animations[std::size_t(i)], animations[std::size_t(j)], policy).value);
     }
   };
-  check(Motion_signature_similarity<>{});
-  check(Strain_distribution_similarity<>{});
-  check(Evolving_graph_similarity<>{});
-  CHECK(similarity_matrix(std::vector<Surface_mesh_animation>{}).size() == 0);
+  check(similarity::Motion_signature_similarity<>{});
+  check(similarity::Strain_distribution_similarity<>{});
+  check(similarity::Evolving_graph_similarity<>{});
+  CHECK(similarity::similarity_matrix(std::vector<mesh::Surface_mesh_animation>{}).size() == 0);
 }
 
 TEST_CASE("motion similarity: a motion found whole inside a longer one, by the shorter or the longer", "[similarity]") {
@@ -217,48 +217,48 @@ TEST_CASE("motion similarity: a motion found whole inside a longer one, by the s
   const auto still = tube({{5, {}}});
   const auto bends = tube({{5, {}}, {10, {right_angle}}, {10, {}}});
   const auto check = [&](auto policy, const char* name) {
-    const double by_shorter = motion_similarity(still, bends, policy).value;
-    policy.normalization.length = Normalize_by::longer;
-    const double by_longer = motion_similarity(still, bends, policy).value;
+    const double by_shorter = similarity::motion_similarity(still, bends, policy).value;
+    policy.normalization.length = similarity::Normalize_by::longer;
+    const double by_longer = similarity::motion_similarity(still, bends, policy).value;
     WARN(name << ": still against bending, by the shorter " << by_shorter << ", by the longer " << by_longer);
     CHECK(by_shorter == Approx(1.0).margin(1e-6));
     CHECK(by_longer < 0.5);
-    CHECK(motion_similarity(bends, bends, policy).value == Approx(1.0));
+    CHECK(similarity::motion_similarity(bends, bends, policy).value == Approx(1.0));
   };
-  check(Strain_distribution_similarity<>{}, "strain distribution");
-  check(Evolving_graph_similarity<>{}, "evolving graph");
+  check(similarity::Strain_distribution_similarity<>{}, "strain distribution");
+  check(similarity::Evolving_graph_similarity<>{}, "evolving graph");
 }
 
 TEST_CASE("with_policy_choice: each name gives its policy and alignment, and bad choices are refused", "[similarity]") {
   const auto a = tube(bend_hold_unbend), b = tube(other_timing, other_tube);
-  const auto value = [&](const Policy_choice& choice) {
-    return with_policy_choice(choice, [&](const auto& policy) { return motion_similarity(a, b, policy).value; });
+  const auto value = [&](const similarity::Policy_choice& choice) {
+    return similarity::with_policy_choice(choice, [&](const auto& policy) { return similarity::motion_similarity(a, b, policy).value; });
   };
-  CHECK(value({}) == motion_similarity(a, b).value);
+  CHECK(value({}) == similarity::motion_similarity(a, b).value);
   CHECK(value({.policy = "histogram", .alignment = "dtw"}) ==
-        motion_similarity(a, b, Strain_distribution_similarity<alignment::Dtw>{}).value);
-  CHECK(value({.policy = "self-similarity"}) == motion_similarity(a, b, Self_similarity_matching<>{}).value);
-  Evolving_graph_similarity<> graphs;
+        similarity::motion_similarity(a, b, similarity::Strain_distribution_similarity<alignment::Dtw>{}).value);
+  CHECK(value({.policy = "self-similarity"}) == similarity::motion_similarity(a, b, similarity::Self_similarity_matching<>{}).value);
+  similarity::Evolving_graph_similarity<> graphs;
   graphs.segmentation.threshold = 0.2;
-  CHECK(value({.policy = "graph", .threshold = 0.2}) == motion_similarity(a, b, graphs).value);
-  Motion_signature_similarity<alignment::Smith_waterman> speeds;
+  CHECK(value({.policy = "graph", .threshold = 0.2}) == similarity::motion_similarity(a, b, graphs).value);
+  similarity::Motion_signature_similarity<alignment::Smith_waterman> speeds;
   speeds.signatures.up = std::nullopt;
-  CHECK(value({.alignment = "smith-waterman", .up = "none"}) == motion_similarity(a, b, speeds).value);
-  CHECK(alignment_name({.policy = "graph"}) == "smith-waterman");
-  CHECK(alignment_name({}) == "dtw");
+  CHECK(value({.alignment = "smith-waterman", .up = "none"}) == similarity::motion_similarity(a, b, speeds).value);
+  CHECK(similarity::alignment_name({.policy = "graph"}) == "smith-waterman");
+  CHECK(similarity::alignment_name({}) == "dtw");
 
-  CHECK(up_direction("") == Eigen::Vector3d::UnitY());
-  CHECK(up_direction("-z") == -Eigen::Vector3d::UnitZ());
-  CHECK(up_direction("+x") == Eigen::Vector3d::UnitX());
-  CHECK(!up_direction("none"));
-  CHECK_THROWS_WITH(up_direction("z"), Catch::Contains("unknown up direction 'z'"));
-  CHECK_THROWS_WITH(check_policy_choice({.policy = "signatures"}), Catch::Contains("unknown policy 'signatures'"));
-  CHECK_THROWS_WITH(check_policy_choice({.alignment = "lcss"}), Catch::Contains("unknown alignment 'lcss'"));
-  CHECK_THROWS_WITH(check_policy_choice({.threshold = 0.3}), Catch::Contains("graph policy only"));
-  CHECK_THROWS_WITH(check_policy_choice({.policy = "graph", .threshold = 1.5}), Catch::Contains("[0, 1]"));
-  CHECK_THROWS_WITH(check_policy_choice({.policy = "histogram", .up = "+z"}),
+  CHECK(similarity::up_direction("") == Eigen::Vector3d::UnitY());
+  CHECK(similarity::up_direction("-z") == -Eigen::Vector3d::UnitZ());
+  CHECK(similarity::up_direction("+x") == Eigen::Vector3d::UnitX());
+  CHECK(!similarity::up_direction("none"));
+  CHECK_THROWS_WITH(similarity::up_direction("z"), Catch::Contains("unknown up direction 'z'"));
+  CHECK_THROWS_WITH(similarity::check_policy_choice({.policy = "signatures"}), Catch::Contains("unknown policy 'signatures'"));
+  CHECK_THROWS_WITH(similarity::check_policy_choice({.alignment = "lcss"}), Catch::Contains("unknown alignment 'lcss'"));
+  CHECK_THROWS_WITH(similarity::check_policy_choice({.threshold = 0.3}), Catch::Contains("graph policy only"));
+  CHECK_THROWS_WITH(similarity::check_policy_choice({.policy = "graph", .threshold = 1.5}), Catch::Contains("[0, 1]"));
+  CHECK_THROWS_WITH(similarity::check_policy_choice({.policy = "histogram", .up = "+z"}),
                     Catch::Contains("motion-signature policy only"));
   bool ran = false;
-  CHECK_THROWS_AS(with_policy_choice({.policy = "nope"}, [&](const auto&) { return ran = true; }), invalid_input);
+  CHECK_THROWS_AS(similarity::with_policy_choice({.policy = "nope"}, [&](const auto&) { return ran = true; }), invalid_input);
   CHECK(!ran);
 }

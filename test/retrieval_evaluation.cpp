@@ -5,9 +5,9 @@
 #include "test_support.h"
 
 #include <deformseg/io/motion_labels.h>
-#include <deformseg/motion_similarity.h>
-#include <deformseg/retrieval_evaluation.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/evaluation/retrieval_evaluation.h>
+#include <deformseg/mesh/synthetic.h>
 #include <deformseg/threads.h>
 
 #include <random>
@@ -17,7 +17,7 @@ using namespace deformseg;
 
 namespace {
 
-Labelled_item item(std::string motion, std::string body, std::string rig = "", std::string clip = "") {
+evaluation::Labelled_item item(std::string motion, std::string body, std::string rig = "", std::string clip = "") {
   return {.motion = std::move(motion), .body = std::move(body), .rig = std::move(rig), .clip = std::move(clip)};
 }
 
@@ -36,7 +36,7 @@ Eigen::MatrixXd matrix(std::initializer_list<std::initializer_list<double>> rows
 
 TEST_CASE("evaluate_retrieval: a 5-item case computed by hand", "[evaluation]") {
   // 0 a/X, 1 a/Y, 2 b/Y, 3 b/Z, 4 distractor/Z; no rig.
-  const std::vector<Labelled_item> items{item("a", "X"), item("a", "Y"), item("b", "Y"), item("b", "Z"),
+  const std::vector<evaluation::Labelled_item> items{item("a", "X"), item("a", "Y"), item("b", "Y"), item("b", "Z"),
                                          item("-", "Z")};
   // Row 0: candidates 1-4 ranked 2 (.8 b), 1 (.6 a), 4 (.5 -), 3 (.4 b): NN b, wrong; AP 1/2.
   // Row 1: candidates 0, 3, 4 (2 is body Y, its .9 unseen): 0 and 3 tie at .7, the lower index 0
@@ -50,7 +50,7 @@ TEST_CASE("evaluate_retrieval: a 5-item case computed by hand", "[evaluation]") 
                                     {.3, .95, 1, .3, .6},
                                     {.5, .4, .9, 1, .99},
                                     {.9, .9, .9, .9, 1}});
-  const Retrieval_scores r = evaluate_retrieval(s, items);
+  const evaluation::Retrieval_scores r = evaluation::evaluate_retrieval(s, items);
   CHECK(r.queries == 4);
   CHECK(r.queries_without_relevant == 0);
   CHECK(r.queries_without_candidate == 0);
@@ -77,7 +77,7 @@ TEST_CASE("evaluate_retrieval: a 5-item case computed by hand", "[evaluation]") 
   REQUIRE(r.per_query.size() == 4);
   const auto check_query = [&](std::size_t i, std::size_t nearest, double value, std::size_t first, double ap) {
     CAPTURE(i);
-    const Query_retrieval& found = r.per_query[i];
+    const evaluation::Query_retrieval& found = r.per_query[i];
     CHECK(found.query == i);
     CHECK(found.nearest == nearest);
     CHECK(found.nearest_similarity == value);
@@ -92,7 +92,7 @@ TEST_CASE("evaluate_retrieval: a 5-item case computed by hand", "[evaluation]") 
 
 TEST_CASE("evaluate_retrieval: the same clip on the same rig is no candidate / queries without relevant one",
           "[evaluation]") {
-  const std::vector<Labelled_item> items{item("walk", "A", "k", "Walk"), item("walk", "B", "k", "Walk"),
+  const std::vector<evaluation::Labelled_item> items{item("walk", "A", "k", "Walk"), item("walk", "B", "k", "Walk"),
                                          item("walk", "B", "k", "Walk2"), item("run", "C", "", "Walk")};
   // Query 0: candidates 2 (.1, walk) and 3 (.5, run; rig empty, so its clip name does not matter);
   //          1 is clip Walk on rig k, left out although .99: NN run, AP 1/2.
@@ -100,7 +100,7 @@ TEST_CASE("evaluate_retrieval: the same clip on the same rig is no candidate / q
   // Query 2: candidates 0 (.2, another clip) and 3 (.3): NN run, AP 1/2.
   // Query 3: candidates 0, 1, 2 (an empty rig excludes no clip), all walk: NN 2, not relevant.
   const Eigen::MatrixXd s = matrix({{1, .99, .1, .5}, {.9, 1, .9, .4}, {.2, 0, 1, .3}, {.1, .2, .3, 1}});
-  const Retrieval_scores r = evaluate_retrieval(s, items);
+  const evaluation::Retrieval_scores r = evaluation::evaluate_retrieval(s, items);
   CHECK(r.queries == 4);
   CHECK(*r.nn_accuracy == 0);
   CHECK(r.queries_without_relevant == 2);
@@ -121,8 +121,8 @@ TEST_CASE("evaluate_retrieval: the same clip on the same rig is no candidate / q
 }
 
 TEST_CASE("evaluate_retrieval: distractors are never queried / no candidate, no figure", "[evaluation]") {
-  const std::vector<Labelled_item> only_distractors{item("-", "A"), item("-", "B")};
-  const Retrieval_scores none = evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), only_distractors);
+  const std::vector<evaluation::Labelled_item> only_distractors{item("-", "A"), item("-", "B")};
+  const evaluation::Retrieval_scores none = evaluation::evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), only_distractors);
   CHECK(none.queries == 0);
   CHECK_FALSE(none.nn_accuracy);
   CHECK_FALSE(none.mean_average_precision);
@@ -132,16 +132,16 @@ TEST_CASE("evaluate_retrieval: distractors are never queried / no candidate, no 
   CHECK(none.per_query.empty());
 
   // One body: no query has a candidate.
-  const std::vector<Labelled_item> one_body{item("walk", "A"), item("walk", "A"), item("-", "A")};
-  const Retrieval_scores alone = evaluate_retrieval(Eigen::MatrixXd::Ones(3, 3), one_body);
+  const std::vector<evaluation::Labelled_item> one_body{item("walk", "A"), item("walk", "A"), item("-", "A")};
+  const evaluation::Retrieval_scores alone = evaluation::evaluate_retrieval(Eigen::MatrixXd::Ones(3, 3), one_body);
   CHECK(alone.queries == 0);
   CHECK(alone.queries_without_candidate == 2);
   CHECK_FALSE(alone.nn_accuracy);
   CHECK(alone.per_query.empty());  // queries without candidate are not listed
 
   // A walk against a distractor only: a query, no relevant candidate, no same-motion pair.
-  const std::vector<Labelled_item> against_distractor{item("walk", "A"), item("-", "B")};
-  const Retrieval_scores d = evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), against_distractor);
+  const std::vector<evaluation::Labelled_item> against_distractor{item("walk", "A"), item("-", "B")};
+  const evaluation::Retrieval_scores d = evaluation::evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), against_distractor);
   CHECK(d.queries == 1);
   CHECK(d.queries_without_relevant == 1);
   CHECK(*d.nn_accuracy == 0);
@@ -151,10 +151,10 @@ TEST_CASE("evaluate_retrieval: distractors are never queried / no candidate, no 
 }
 
 TEST_CASE("evaluate_retrieval: ties go to the lower index, and count 1/2 in ROC-AUC", "[evaluation]") {
-  const std::vector<Labelled_item> items{item("a", "Q"), item("b", "X"), item("a", "Y")};
+  const std::vector<evaluation::Labelled_item> items{item("a", "Q"), item("b", "X"), item("a", "Y")};
   // Query 0: 1 (b) and 2 (a) tie: 1 first, NN wrong, AP 1/2; AUC over same .5, different .5: 1/2.
   Eigen::MatrixXd s = matrix({{1, .5, .5}, {0, 1, 0}, {0, 0, 1}});
-  const Retrieval_scores r = evaluate_retrieval(s, items);
+  const evaluation::Retrieval_scores r = evaluation::evaluate_retrieval(s, items);
   // Query 1 (b): candidates 0 and 2, both a; query 2 (a): 0 (0, a) before 1 (0, b): right.
   CHECK(r.confusion == std::vector<std::vector<std::size_t>>{{1, 1}, {1, 0}});  // labels a, b
   CHECK(r.per_motion[0].correct == 1);
@@ -171,7 +171,7 @@ TEST_CASE("evaluate_retrieval: ROC-AUC equals the count over all (same, differen
       rigs{"", "k"};
   for (int trial = 0; trial < 20; ++trial) {
     const std::size_t n = 6 + std::size_t(trial);
-    std::vector<Labelled_item> items;
+    std::vector<evaluation::Labelled_item> items;
     for (std::size_t i = 0; i < n; ++i)
       items.push_back(item(motions[random() % 4], bodies[random() % 3], rigs[random() % 2], clips[random() % 2]));
     Eigen::MatrixXd s = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
@@ -188,7 +188,7 @@ TEST_CASE("evaluate_retrieval: ROC-AUC equals the count over all (same, differen
     double wins = 0;
     for (const double x : same)
       for (const double y : different) wins += x > y ? 1 : x == y ? 0.5 : 0;
-    const Retrieval_scores r = evaluate_retrieval(s, items);
+    const evaluation::Retrieval_scores r = evaluation::evaluate_retrieval(s, items);
     CHECK(r.same_pairs == same.size());
     CHECK(r.different_pairs == different.size());
     if (same.empty() || different.empty()) CHECK_FALSE(r.roc_auc);
@@ -197,13 +197,13 @@ TEST_CASE("evaluate_retrieval: ROC-AUC equals the count over all (same, differen
 }
 
 TEST_CASE("evaluate_retrieval: a matrix of the wrong shape or with NaN is refused", "[evaluation]") {
-  const std::vector<Labelled_item> items{item("a", "X"), item("a", "Y")};
-  CHECK_THROWS_WITH(evaluate_retrieval(Eigen::MatrixXd::Ones(2, 3), items),
+  const std::vector<evaluation::Labelled_item> items{item("a", "X"), item("a", "Y")};
+  CHECK_THROWS_WITH(evaluation::evaluate_retrieval(Eigen::MatrixXd::Ones(2, 3), items),
                     "evaluate_retrieval: the similarity matrix is 2 x 3 for 2 items");
-  CHECK_THROWS_AS(evaluate_retrieval(Eigen::MatrixXd::Ones(3, 3), items), invalid_input);
+  CHECK_THROWS_AS(evaluation::evaluate_retrieval(Eigen::MatrixXd::Ones(3, 3), items), invalid_input);
   Eigen::MatrixXd s = Eigen::MatrixXd::Ones(2, 2);
   s(1, 0) = std::numeric_limits<double>::quiet_NaN();
-  CHECK_THROWS_WITH(evaluate_retrieval(s, items),
+  CHECK_THROWS_WITH(evaluation::evaluate_retrieval(s, items),
                     "evaluate_retrieval: entry (1, 0) of the similarity matrix is not finite");
 }
 
@@ -268,7 +268,7 @@ TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]
 
 namespace {
 
-std::vector<Surface_mesh_animation> some_tubes() {
+std::vector<mesh::Surface_mesh_animation> some_tubes() {
   using test::right_angle, test::tube;
   return {tube({{5, {0.0}}, {10, {right_angle}}, {8, {}}}),
           tube({{5, {0.0}}, {10, {right_angle}}, {8, {}}}, {.radius = 0.15}),
@@ -280,25 +280,25 @@ std::vector<Surface_mesh_animation> some_tubes() {
 TEST_CASE("similarity_matrix: queries x database equals the pairwise calls, whatever the threads",
           "[evaluation][similarity]") {
   const auto tubes = some_tubes();
-  const std::vector<Surface_mesh_animation> queries{tubes[0], tubes[3]}, database{tubes[1], tubes[2], tubes[0]};
-  const Strain_distribution_similarity<> policy;
-  const Eigen::MatrixXd m = similarity_matrix(queries, database, policy);
+  const std::vector<mesh::Surface_mesh_animation> queries{tubes[0], tubes[3]}, database{tubes[1], tubes[2], tubes[0]};
+  const similarity::Strain_distribution_similarity<> policy;
+  const Eigen::MatrixXd m = similarity::similarity_matrix(queries, database, policy);
   REQUIRE(m.rows() == 2);
   REQUIRE(m.cols() == 3);
   for (Eigen::Index q = 0; q < 2; ++q)
     for (Eigen::Index d = 0; d < 3; ++d)
-      CHECK(m(q, d) == motion_similarity(queries[std::size_t(q)], database[std::size_t(d)], policy).value);
+      CHECK(m(q, d) == similarity::motion_similarity(queries[std::size_t(q)], database[std::size_t(d)], policy).value);
   CHECK(m(0, 2) == Approx(1.0));  // tube 0 against itself
   set_default_threads(1);
-  const Eigen::MatrixXd one_thread = similarity_matrix(queries, database, policy);
-  const Eigen::MatrixXd all_one_thread = similarity_matrix(tubes, policy);
+  const Eigen::MatrixXd one_thread = similarity::similarity_matrix(queries, database, policy);
+  const Eigen::MatrixXd all_one_thread = similarity::similarity_matrix(tubes, policy);
   for (const int threads : {2, 7}) {
     set_default_threads(threads);
-    CHECK(one_thread == similarity_matrix(queries, database, policy));
-    CHECK(all_one_thread == similarity_matrix(tubes, policy));
+    CHECK(one_thread == similarity::similarity_matrix(queries, database, policy));
+    CHECK(all_one_thread == similarity::similarity_matrix(tubes, policy));
   }
   set_default_threads(0);
-  CHECK(similarity_matrix(std::vector<Surface_mesh_animation>{}, database, policy).size() == 0);
+  CHECK(similarity::similarity_matrix(std::vector<mesh::Surface_mesh_animation>{}, database, policy).size() == 0);
 }
 
 TEST_CASE("similarity_matrix: progress reports every step and can stop", "[evaluation][similarity]") {
@@ -309,17 +309,17 @@ TEST_CASE("similarity_matrix: progress reports every step and can stop", "[evalu
     return true;
   };
   // 4 descriptions and 10 pairs (i <= j): one batch each (batches hold at least 16 steps).
-  const Eigen::MatrixXd all = similarity_matrix(tubes, Strain_distribution_similarity<>{}, record);
+  const Eigen::MatrixXd all = similarity::similarity_matrix(tubes, similarity::Strain_distribution_similarity<>{}, record);
   CHECK(calls == std::vector<std::pair<std::size_t, std::size_t>>{{4, 14}, {14, 14}});
-  CHECK(all == similarity_matrix(tubes, Strain_distribution_similarity<>{}));
+  CHECK(all == similarity::similarity_matrix(tubes, similarity::Strain_distribution_similarity<>{}));
   calls.clear();
   // 2 + 4 descriptions and 8 pairs: the queries', the database's, the pairs' batches.
-  similarity_matrix(std::span(tubes).first(2), tubes, Strain_distribution_similarity<>{}, record);
+  similarity::similarity_matrix(std::span(tubes).first(2), tubes, similarity::Strain_distribution_similarity<>{}, record);
   CHECK(calls == std::vector<std::pair<std::size_t, std::size_t>>{{2, 14}, {6, 14}, {14, 14}});
   std::size_t calls_before_stop = 0;
-  CHECK_THROWS_AS(similarity_matrix(tubes, Strain_distribution_similarity<>{},
+  CHECK_THROWS_AS(similarity::similarity_matrix(tubes, similarity::Strain_distribution_similarity<>{},
                                     [&](std::size_t, std::size_t) { return ++calls_before_stop < 1; }),
-                  similarity_stopped);
+                  similarity::similarity_stopped);
   CHECK(calls_before_stop == 1);  // stopped after the descriptions, no pair compared
 }
 
@@ -333,7 +333,7 @@ TEST_CASE("similarity_matrix: an animation the policy cannot describe is named, 
     try {
       compute();
       FAIL("no animation_not_described");
-    } catch (const animation_not_described& e) {
+    } catch (const similarity::animation_not_described& e) {
       CHECK(e.index() == index);
       CHECK(e.in_database() == in_database);
       CHECK(std::string(e.what()) == (in_database ? "database animation " : "animation ") + std::to_string(index) +
@@ -341,10 +341,10 @@ TEST_CASE("similarity_matrix: an animation the policy cannot describe is named, 
       CHECK_THAT(e.reason(), Catch::Contains("a motion needs at least 2"));
     }
   };
-  refused([&] { similarity_matrix(tubes); }, 2, false);
-  refused([&] { similarity_matrix(std::span(tubes).first(2), tubes); }, 2, true);
-  refused([&] { similarity_matrix(std::span(tubes).last(2), tubes); }, 1, false);  // queries first
+  refused([&] { similarity::similarity_matrix(tubes); }, 2, false);
+  refused([&] { similarity::similarity_matrix(std::span(tubes).first(2), tubes); }, 2, true);
+  refused([&] { similarity::similarity_matrix(std::span(tubes).last(2), tubes); }, 1, false);  // queries first
   tubes.erase(tubes.begin() + 2);
   tubes.pop_back();
-  CHECK_NOTHROW(similarity_matrix(tubes));
+  CHECK_NOTHROW(similarity::similarity_matrix(tubes));
 }

@@ -6,9 +6,9 @@
 #include "test_support.h"
 
 #include <deformseg/io/gltf.h>
-#include <deformseg/motion_similarity.h>
+#include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/self_similarity_matching.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <Eigen/Geometry>
 
@@ -26,7 +26,7 @@ using namespace deformseg::test;
 
 TEST_CASE("self_similarity_matching: an animation against itself and a moved, rotated, scaled copy is 1",
           "[self_similarity]") {
-  const Self_similarity_matching<> policy;
+  const similarity::Self_similarity_matching<> policy;
   const auto [a, b] = check_moved_copy_is_one(policy);
   // The description itself is invariant: the Procrustes distances agree to rounding (the square
   // root of the Gram formula's rounding, 1e-8 between frames of one held pose).
@@ -47,8 +47,8 @@ TEST_CASE("self_similarity_matching: a rigid motion has a zero self-dissimilarit
       positions.insert(positions.end(), {q.x(), q.y(), q.z()});
     }
   }
-  const Surface_mesh_animation moving(still.face_graph(), std::move(positions));
-  CHECK(Self_similarity_matching<>{}.describe(moving).distances.cwiseAbs().maxCoeff() < 1e-6);
+  const mesh::Surface_mesh_animation moving(still.face_graph(), std::move(positions));
+  CHECK(similarity::Self_similarity_matching<>{}.describe(moving).distances.cwiseAbs().maxCoeff() < 1e-6);
 }
 
 TEST_CASE("self_similarity_matching: rigid parts moving on a joint are seen", "[self_similarity]") {
@@ -56,33 +56,33 @@ TEST_CASE("self_similarity_matching: rigid parts moving on a joint are seen", "[
   const std::size_t frames = 5, points = 20;
   const std::vector<double> positions = jointed_points(frames, points);
   const std::vector<double> weights(points, 1.0 / points);
-  const auto d = Self_similarity_matching<>{}.describe_positions(positions, weights);
+  const auto d = similarity::Self_similarity_matching<>{}.describe_positions(positions, weights);
   CHECK(d.distances(0, frames - 1) > 0.3);
   for (std::size_t t = 1; t < frames; ++t) CHECK(d.distances(0, Eigen::Index(t)) > d.distances(0, Eigen::Index(t - 1)));
 }
 
 TEST_CASE("self_similarity_matching: a time-shifted cyclic motion scores near 1", "[self_similarity]") {
-  const Self_similarity_matching<> policy;
+  const similarity::Self_similarity_matching<> policy;
   const auto a = cycles(16, 64, 0), shifted = cycles(16, 64, 5);
-  const double value = motion_similarity(a, shifted, policy).value;
-  const double other = motion_similarity(a, tube(other_timing), policy).value;
+  const double value = similarity::motion_similarity(a, shifted, policy).value;
+  const double other = similarity::motion_similarity(a, tube(other_timing), policy).value;
   WARN("cycles against themselves shifted by 5 of 16 frames " << value << ", against another motion " << other);
   CHECK(value > 0.8);
   CHECK(value > other + 0.3);
 }
 
 TEST_CASE("self_similarity_matching: a motion inside a longer one is found", "[self_similarity]") {
-  Self_similarity_matching<> policy;
+  similarity::Self_similarity_matching<> policy;
   const auto motion = tube(bend_hold_unbend);
   // 12 frames of another motion (a half bend and back), then the motion, then 12 more.
-  std::vector<Tube_phase> longer{{6, {right_angle / 2}}, {6, {0.0}}};
+  std::vector<mesh::Tube_phase> longer{{6, {right_angle / 2}}, {6, {0.0}}};
   longer.insert(longer.end(), bend_hold_unbend.begin() + 1, bend_hold_unbend.end());
   longer.insert(longer.end(), {{6, {right_angle / 2}}, {7, {0.0}}});
   const auto inside = tube(longer);
   const std::size_t before = 12 - 5;  // the longer one has 12 frames first, the motion's 5-frame hold none
-  const Similarity by_longer = motion_similarity(motion, inside, policy);
-  policy.normalization.length = Normalize_by::shorter;
-  const Similarity by_shorter = motion_similarity(motion, inside, policy);
+  const similarity::Similarity by_longer = similarity::motion_similarity(motion, inside, policy);
+  policy.normalization.length = similarity::Normalize_by::shorter;
+  const similarity::Similarity by_shorter = similarity::motion_similarity(motion, inside, policy);
   WARN("a motion inside a longer one: " << by_shorter.value << " by the shorter's self-score, " << by_longer.value
                                         << " by the longer's");
   CHECK(by_shorter.value > 0.75);
@@ -96,16 +96,16 @@ TEST_CASE("self_similarity_matching: a motion inside a longer one is found", "[s
 
 TEST_CASE("self_similarity_matching: the same motion on another tube ranks above other motions",
           "[self_similarity]") {
-  const Self_similarity_matching<> policy;
+  const similarity::Self_similarity_matching<> policy;
   const auto a = tube(bend_hold_unbend);
-  const double same = motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
-  const double timing = motion_similarity(a, tube(other_timing, other_tube), policy).value;
-  const double two_bends = motion_similarity(
+  const double same = similarity::motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
+  const double timing = similarity::motion_similarity(a, tube(other_timing, other_tube), policy).value;
+  const double two_bends = similarity::motion_similarity(
       a,
       tube({{5, {0.0}}, {5, {right_angle}}, {4, {}}, {5, {0.0}}, {5, {right_angle}}, {4, {}}, {5, {0.0}}, {5, {}}},
            other_tube),
       policy).value;
-  const double small_bend = motion_similarity(
+  const double small_bend = similarity::motion_similarity(
       a, tube({{5, {0.0}}, {10, {right_angle / 3}}, {8, {}}, {10, {0.0}}, {5, {}}}, other_tube), policy).value;
   WARN("same motion on another tube " << same << ", other timing " << timing << ", two bends " << two_bends
                                       << ", a third of the bend " << small_bend);
@@ -116,26 +116,26 @@ TEST_CASE("self_similarity_matching: the same motion on another tube ranks above
 }
 
 TEST_CASE("self_similarity_significance: ordered frames stand out from shuffled ones", "[self_similarity]") {
-  const Self_similarity_matching<> policy;
+  const similarity::Self_similarity_matching<> policy;
   const auto a = policy.describe(tube(bend_hold_unbend));
   const auto same = policy.describe(tube(bend_hold_unbend, other_tube));
   const auto still = policy.describe(tube({{38, {0.0}}}, other_tube));
   std::mt19937 random(7);
-  const double z_same = self_similarity_significance(policy, a, same, 20, random);
-  const double z_still = self_similarity_significance(policy, a, still, 20, random);
+  const double z_same = similarity::self_similarity_significance(policy, a, same, 20, random);
+  const double z_still = similarity::self_similarity_significance(policy, a, still, 20, random);
   WARN("z-scores: same motion on another tube " << z_same << ", standing still " << z_still);
   CHECK(z_same > 3);
   CHECK(std::abs(z_still) < 2);  // a still tube's shuffled copies are itself, up to rounding
   std::mt19937 again(7);
-  CHECK(self_similarity_significance(policy, a, same, 20, again) == z_same);
-  CHECK_THROWS_AS(self_similarity_significance(policy, a, same, 1, again), invalid_input);
+  CHECK(similarity::self_similarity_significance(policy, a, same, 20, again) == z_same);
+  CHECK_THROWS_AS(similarity::self_similarity_significance(policy, a, same, 1, again), invalid_input);
 }
 
 TEST_CASE("self_similarity_matching: descriptions of other quantile counts are refused", "[self_similarity]") {
-  Self_similarity_matching<> coarse;
+  similarity::Self_similarity_matching<> coarse;
   coarse.options.quantiles = 4;
   const auto a = tube(bend_hold_unbend);
-  CHECK_THROWS_AS(Self_similarity_matching<>{}.compare(Self_similarity_matching<>{}.describe(a), coarse.describe(a)),
+  CHECK_THROWS_AS(similarity::Self_similarity_matching<>{}.compare(similarity::Self_similarity_matching<>{}.describe(a), coarse.describe(a)),
                   invalid_input);
 }
 
@@ -143,7 +143,7 @@ namespace {
 
 struct Character_clip {
   std::string file, clip, motion;
-  Self_similarity_description description;
+  similarity::Self_similarity_description description;
 };
 
 // The labelled clips of `files` (motions.csv), described from their raw samples.
@@ -159,7 +159,7 @@ std::vector<Character_clip> character_clips(const std::vector<std::string>& file
     if (std::find(files.begin(), files.end(), file) != files.end())
       wanted[file].push_back({line.substr(a + 1, b - a - 1), line.substr(b + 1, c - b - 1)});
   }
-  const Self_similarity_matching<> policy;
+  const similarity::Self_similarity_matching<> policy;
   std::vector<Character_clip> clips;
   for (const std::string& file : files) {
     io::Gltf_file gltf((dir / file).string());
@@ -167,7 +167,7 @@ std::vector<Character_clip> character_clips(const std::vector<std::string>& file
       const io::Sampled_gltf s = gltf.sample(io::Gltf_read_options{.clip = clip, .fps = 30});
       const std::span<const double> first(s.positions.data(), 3 * s.num_vertices);
       clips.push_back({file, clip, motion,
-                       policy.describe_positions(s.positions, internal::vertex_area_weights(
+                       policy.describe_positions(s.positions, deformseg::signatures::vertex_area_weights(
                                                                   first, std::span(s.triangles), s.num_vertices))});
     }
   }
@@ -180,7 +180,7 @@ TEST_CASE("self_similarity_matching: Knight queries against the Barbarian's clip
   // A subset of motions.csv (two of the five KayKit bodies, 69 clips each) to stay fast; the
   // whole set is test/bench/similarity_evaluation. Same-name clips are left out (identical data).
   const auto clips = character_clips({"Knight.glb", "Barbarian.glb"});
-  const Self_similarity_matching<> policy;
+  const similarity::Self_similarity_matching<> policy;
   std::vector<const Character_clip*> knight, barbarian;
   for (const auto& c : clips) (c.file == "Knight.glb" ? knight : barbarian).push_back(&c);
   REQUIRE(knight.size() == 69);

@@ -3,8 +3,8 @@
 #include "test_support.h"
 
 #include <deformseg/io/frame_sequence.h>
-#include <deformseg/spatiotemporal_segments.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/spatiotemporal/spatiotemporal_segments.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <Eigen/Geometry>
 
@@ -20,10 +20,10 @@ using test::grid;
 using test::Triangles;
 
 // A "strain field" of 0 and 1 from labels: deformed where `deformed` says.
-Strain_field<float> field_of(const std::vector<std::uint8_t>& deformed, std::size_t faces) {
-  Strain_field<float>::Storage values(deformed.size());
+strain::Strain_field<float> field_of(const std::vector<std::uint8_t>& deformed, std::size_t faces) {
+  strain::Strain_field<float>::Storage values(deformed.size());
   for (std::size_t i = 0; i < values.size(); ++i) values[i] = deformed[i] ? 1.0f : 0.0f;
-  return Strain_field<float>(faces, deformed.size() / faces, std::move(values), {}, std::nullopt, 0);
+  return strain::Strain_field<float>(faces, deformed.size() / faces, std::move(values), {}, std::nullopt, 0);
 }
 
 // Components of deformed cells by breadth-first flood fill over (shared edge, same frame) and
@@ -56,14 +56,14 @@ std::vector<std::int32_t> flood_fill(const std::vector<std::uint8_t>& deformed, 
   return labels;
 }
 
-std::vector<std::int32_t> labels_of(const Spatiotemporal_segmentation& s) {
+std::vector<std::int32_t> labels_of(const spatiotemporal::Spatiotemporal_segmentation& s) {
   std::vector<std::int32_t> labels;
   for (std::size_t t = 0; t < s.num_frames(); ++t)
     for (std::int32_t k : s.frame_labels(t)) labels.push_back(k);
   return labels;
 }
 
-const Spatiotemporal_options no_clean_up{.min_triangles = 1, .min_frames = 1, .max_island = 0};
+const spatiotemporal::Spatiotemporal_options no_clean_up{.min_triangles = 1, .min_frames = 1, .max_island = 0};
 
 }  // namespace
 
@@ -76,7 +76,7 @@ TEST_CASE("spatio-temporal segments: the union-find equals a flood fill on rando
     std::bernoulli_distribution coin(density);
     std::vector<std::uint8_t> deformed(triangles.size() * frames);
     for (auto& d : deformed) d = coin(random);
-    const auto s = spatiotemporal_segmentation(field_of(deformed, triangles.size()), triangles, no_clean_up);
+    const auto s = spatiotemporal::spatiotemporal_segmentation(field_of(deformed, triangles.size()), triangles, no_clean_up);
     CHECK(labels_of(s) == flood_fill(deformed, triangles));
   }
 }
@@ -90,7 +90,7 @@ TEST_CASE("spatio-temporal segments: extents, and small or short segments become
     for (std::size_t f : {0, 1, 2, 3}) deformed[t * 32 + f] = 1;
   deformed[3 * 32 + 20] = 1;
   const auto field = field_of(deformed, 32);
-  const auto all = spatiotemporal_segmentation(field, triangles, no_clean_up);
+  const auto all = spatiotemporal::spatiotemporal_segmentation(field, triangles, no_clean_up);
   REQUIRE(all.num_segments() == 2);
   CHECK(all.extent(0).first_frame == 0);
   CHECK(all.extent(0).last_frame == 2);
@@ -98,17 +98,17 @@ TEST_CASE("spatio-temporal segments: extents, and small or short segments become
   CHECK(all.extent(0).largest_slice == 4);
   CHECK(all.extent(1).first_frame == 3);
   CHECK(all.label(20, 3) == 1);
-  CHECK(all.label(20, 2) == Spatiotemporal_segmentation::rigid);
+  CHECK(all.label(20, 2) == spatiotemporal::Spatiotemporal_segmentation::rigid);
 
   auto options = no_clean_up;
   options.min_frames = 2;
-  CHECK(spatiotemporal_segmentation(field, triangles, options).num_segments() == 1);
+  CHECK(spatiotemporal::spatiotemporal_segmentation(field, triangles, options).num_segments() == 1);
   options.min_frames = 4;
-  CHECK(spatiotemporal_segmentation(field, triangles, options).num_segments() == 0);
+  CHECK(spatiotemporal::spatiotemporal_segmentation(field, triangles, options).num_segments() == 0);
   options.min_frames = 1, options.min_triangles = 2;
-  const auto large = spatiotemporal_segmentation(field, triangles, options);
+  const auto large = spatiotemporal::spatiotemporal_segmentation(field, triangles, options);
   CHECK(large.num_segments() == 1);
-  CHECK(large.label(20, 3) == Spatiotemporal_segmentation::rigid);
+  CHECK(large.label(20, 3) == spatiotemporal::Spatiotemporal_segmentation::rigid);
 }
 
 TEST_CASE("spatio-temporal segments: rigid islands enclosed by one segment are absorbed", "[spatiotemporal]") {
@@ -124,27 +124,27 @@ TEST_CASE("spatio-temporal segments: rigid islands enclosed by one segment are a
     for (std::size_t f : square(i, 1)) deformed[f] = 0;
   const auto field = field_of(deformed, 72);
   auto options = no_clean_up;
-  REQUIRE(spatiotemporal_segmentation(field, triangles, options).num_segments() == 2);
+  REQUIRE(spatiotemporal::spatiotemporal_segmentation(field, triangles, options).num_segments() == 2);
 
   options.max_island = 2;  // the 2-triangle island only
-  const auto small = spatiotemporal_segmentation(field, triangles, options);
+  const auto small = spatiotemporal::spatiotemporal_segmentation(field, triangles, options);
   CHECK(small.label(square(4, 3)[0], 0) == small.label(square(2, 5)[0], 0));
-  CHECK(small.label(square(1, 3)[0], 0) == Spatiotemporal_segmentation::rigid);
+  CHECK(small.label(square(1, 3)[0], 0) == spatiotemporal::Spatiotemporal_segmentation::rigid);
   options.max_island = 4;
-  const auto both = spatiotemporal_segmentation(field, triangles, options);
+  const auto both = spatiotemporal::spatiotemporal_segmentation(field, triangles, options);
   CHECK(both.label(square(1, 4)[1], 0) == both.label(square(2, 5)[0], 0));
   // Column 1 (12 triangles) touches both segments: it stays rigid, however large the limit.
   options.max_island = 100;
-  const auto column = spatiotemporal_segmentation(field, triangles, options);
-  CHECK(column.label(square(0, 1)[0], 0) == Spatiotemporal_segmentation::rigid);
+  const auto column = spatiotemporal::spatiotemporal_segmentation(field, triangles, options);
+  CHECK(column.label(square(0, 1)[0], 0) == spatiotemporal::Spatiotemporal_segmentation::rigid);
   CHECK(column.num_segments() == 2);
 }
 
 TEST_CASE("spatio-temporal segments: a tube bending once deforms in its blend zone while it moves", "[spatiotemporal]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{10, {}}, {10, {std::numbers::pi / 2}}, {10, {}}, {10, {0.0}}};
-  const auto tube = make_bending_tube(spec);
-  const auto s = spatiotemporal_segmentation(tube.animation);
+  const auto tube = mesh::make_bending_tube(spec);
+  const auto s = spatiotemporal::spatiotemporal_segmentation(tube.animation);
   // Previous-pose strain: the bend (frames 11-20) and the unbend (31-40) are two segments.
   REQUIRE(s.num_segments() == 2);
   CHECK(s.extent(0).first_frame >= 11);
@@ -152,32 +152,32 @@ TEST_CASE("spatio-temporal segments: a tube bending once deforms in its blend zo
   CHECK(s.extent(1).first_frame >= 31);
   for (std::size_t t = 0; t < s.num_frames(); ++t)
     for (std::size_t f = 0; f < s.num_faces(); ++f)
-      if (s.label(f, t) != Spatiotemporal_segmentation::rigid) CHECK(tube.face_joint[f] == 0);
+      if (s.label(f, t) != spatiotemporal::Spatiotemporal_segmentation::rigid) CHECK(tube.face_joint[f] == 0);
 
   // Moved, turned and scaled, the same labels; and the same twice.
-  Bending_tube placed = spec;
+  mesh::Bending_tube placed = spec;
   placed.placement = {.scale = 4.0,
                       .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(2.0, Eigen::Vector3d(3, 1, -1).normalized())),
                       .translation = Eigen::Vector3d(50, 20, -30)};
-  CHECK(labels_of(spatiotemporal_segmentation(make_bending_tube(placed).animation)) == labels_of(s));
-  CHECK(labels_of(spatiotemporal_segmentation(tube.animation)) == labels_of(s));
+  CHECK(labels_of(spatiotemporal::spatiotemporal_segmentation(mesh::make_bending_tube(placed).animation)) == labels_of(s));
+  CHECK(labels_of(spatiotemporal::spatiotemporal_segmentation(tube.animation)) == labels_of(s));
 }
 
 TEST_CASE("spatio-temporal segments: bad input is named", "[spatiotemporal]") {
   const Triangles triangles = grid(2);
   const auto field = field_of(std::vector<std::uint8_t>(8, 0), 8);
-  CHECK_THROWS_WITH(spatiotemporal_segmentation(field, Triangles(grid(3))), Catch::Contains("18 triangles"));
-  CHECK_THROWS_WITH(spatiotemporal_segmentation(field, triangles, {.threshold = std::nan("")}),
+  CHECK_THROWS_WITH(spatiotemporal::spatiotemporal_segmentation(field, Triangles(grid(3))), Catch::Contains("18 triangles"));
+  CHECK_THROWS_WITH(spatiotemporal::spatiotemporal_segmentation(field, triangles, {.threshold = std::nan("")}),
                     Catch::Contains("threshold"));
-  CHECK_THROWS_WITH(Spatiotemporal_segmentation(2, 1, {1, 0}), Catch::Contains("label 1"));
+  CHECK_THROWS_WITH(spatiotemporal::Spatiotemporal_segmentation(2, 1, {1, 0}), Catch::Contains("label 1"));
 }
 
 TEST_CASE("spatio-temporal segments: the horse gallop and the samba, deterministic", "[spatiotemporal][data]") {
   for (const char* name : {"horse-gallop", "samba"}) {
     const auto folder = test::unpacked(std::string(name) + "/" + name + ".tar.xz") / name;
     const auto animation = io::read_frame_sequence(folder.string());
-    const auto a = spatiotemporal_segmentation(animation);
-    const auto b = spatiotemporal_segmentation(animation);
+    const auto a = spatiotemporal::spatiotemporal_segmentation(animation);
+    const auto b = spatiotemporal::spatiotemporal_segmentation(animation);
     INFO(name << ": " << a.num_segments() << " segments");
     CHECK(labels_of(a) == labels_of(b));
     CHECK(a.num_segments() > 10);

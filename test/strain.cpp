@@ -4,10 +4,10 @@
 #include "test_support.h"
 #include "deforming_mesh_view.h"
 
-#include <deformseg/default_mesh.h>
-#include <deformseg/internal/strain_math.h>
-#include <deformseg/strain.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/strain/internal/strain_math.h>
+#include <deformseg/strain/strain.h>
+#include <deformseg/mesh/synthetic.h>
 #include <deformseg/threads.h>
 
 #include <CGAL/Polyhedron_3.h>
@@ -28,7 +28,7 @@ using namespace deformseg;
 
 namespace {
 
-using Polyhedron = CGAL::Polyhedron_3<Kernel>;
+using Polyhedron = CGAL::Polyhedron_3<mesh::Kernel>;
 using Vector3 = Eigen::Vector3d;
 using Map = std::function<Vector3(const Vector3&)>;
 using deformseg::test::right_angle;
@@ -54,8 +54,8 @@ Grid flat_grid(int n) {
 
 // The rest shape of the default bending tube, as a grid-like point set.
 Grid tube_shape() {
-  Bending_tube spec;
-  const auto tube = make_bending_tube(spec);
+  mesh::Bending_tube spec;
+  const auto tube = mesh::make_bending_tube(spec);
   Grid g;
   const auto frame = tube.animation.frame_matrix(0);
   for (Eigen::Index i = 0; i < frame.cols(); ++i) g.points.emplace_back(frame.col(i));
@@ -64,8 +64,8 @@ Grid tube_shape() {
 }
 
 // An animation of `shape` with one frame per map, each frame the map applied to every point.
-template <class Graph = Surface_mesh>
-Deforming_mesh<Graph> animate(const Grid& shape, const std::vector<Map>& frames) {
+template <class Graph = mesh::Surface_mesh>
+mesh::Deforming_mesh<Graph> animate(const Grid& shape, const std::vector<Map>& frames) {
   std::vector<std::array<double, 3>> points;
   for (const auto& p : shape.points) points.push_back({p.x(), p.y(), p.z()});
   std::vector<double> positions;
@@ -74,7 +74,7 @@ Deforming_mesh<Graph> animate(const Grid& shape, const std::vector<Map>& frames)
       const Vector3 q = map(p);
       positions.insert(positions.end(), {q.x(), q.y(), q.z()});
     }
-  return Deforming_mesh<Graph>(make_face_graph<Graph>(points, shape.triangles), std::move(positions));
+  return mesh::Deforming_mesh<Graph>(mesh::make_face_graph<Graph>(points, shape.triangles), std::move(positions));
 }
 
 Map identity() {
@@ -92,16 +92,16 @@ Map linear_map(const Eigen::Matrix3d& m, const Map& then = identity()) {
   return [m, then](const Vector3& p) { return then(m * p); };
 }
 
-Strain_options<Max_principal_strain, No_normalization> raw() { return {}; }
+strain::Strain_options<strain::Max_principal_strain, strain::No_normalization> raw() { return {}; }
 
 template <class Measure>
-Strain_options<Measure, No_normalization> raw_with(Measure) {
+strain::Strain_options<Measure, strain::No_normalization> raw_with(Measure) {
   return {};
 }
 
 // The largest strain magnitude of a field over all triangles and frames.
 template <class Value>
-double largest(const Strain_field<Value>& field) {
+double largest(const strain::Strain_field<Value>& field) {
   double m = 0;
   for (Value v : field.values()) m = std::max(m, double(std::abs(v)));
   return m;
@@ -110,7 +110,7 @@ double largest(const Strain_field<Value>& field) {
 // The largest |a - b| / max(|b|, floor) over two fields: their relative difference, where strains
 // below `floor` (the rounding of rigid triangles) count as that large.
 template <class A, class B>
-double largest_relative_difference(const Strain_field<A>& a, const Strain_field<B>& b, double floor = 1e-9) {
+double largest_relative_difference(const strain::Strain_field<A>& a, const strain::Strain_field<B>& b, double floor = 1e-9) {
   double m = 0;
   for (std::size_t t = 0; t < a.num_frames(); ++t)
     for (std::size_t j = 0; j < a.num_faces(); ++j)
@@ -145,34 +145,34 @@ std::array<Real, 2> principal_stretches(const std::array<Vector3r, 3>& x, const 
 
 }  // namespace
 
-static_assert(StrainMeasure<Max_principal_strain>);
-static_assert(StrainMeasure<Green_lagrange_strain>);
-static_assert(StrainMeasure<Frobenius_strain>);
-static_assert(StrainMeasure<Area_ratio_strain>);
-static_assert(!StrainMeasure<int>);
-static_assert(StrainNormalization<Gaussian_normalization>);
-static_assert(StrainNormalization<No_normalization>);
-static_assert(!StrainNormalization<Max_principal_strain>);
+static_assert(strain::StrainMeasure<strain::Max_principal_strain>);
+static_assert(strain::StrainMeasure<strain::Green_lagrange_strain>);
+static_assert(strain::StrainMeasure<strain::Frobenius_strain>);
+static_assert(strain::StrainMeasure<strain::Area_ratio_strain>);
+static_assert(!strain::StrainMeasure<int>);
+static_assert(strain::StrainNormalization<strain::Gaussian_normalization>);
+static_assert(strain::StrainNormalization<strain::No_normalization>);
+static_assert(!strain::StrainNormalization<strain::Max_principal_strain>);
 
 namespace {
 // A measure that answers in double for float stretches does not model StrainMeasure.
 struct Double_only_measure {
   template <class T>
-  double operator()(const Principal_stretches<T>&) const {
+  double operator()(const strain::Principal_stretches<T>&) const {
     return 0;
   }
 };
 // A user's measure: the signed largest stretch.
 struct Largest_stretch {
   template <std::floating_point T>
-  T operator()(const Principal_stretches<T>& p) const {
+  T operator()(const strain::Principal_stretches<T>& p) const {
     return p.strain1;
   }
 };
 // A user's normalisation: divide by the largest sample.
 struct Divide_by_largest {
   template <std::floating_point Value>
-  std::optional<double> normalize(const Raw_strain_field<Value>& field) const {
+  std::optional<double> normalize(const strain::Raw_strain_field<Value>& field) const {
     double largest = 0;
     for (const auto& run : field.samples())
       for (Value v : run) largest = std::max(largest, double(v));
@@ -182,9 +182,9 @@ struct Divide_by_largest {
 };
 }  // namespace
 
-static_assert(!StrainMeasure<Double_only_measure>);
-static_assert(StrainMeasure<Largest_stretch>);
-static_assert(StrainNormalization<Divide_by_largest>);
+static_assert(!strain::StrainMeasure<Double_only_measure>);
+static_assert(strain::StrainMeasure<Largest_stretch>);
+static_assert(strain::StrainNormalization<Divide_by_largest>);
 
 TEST_CASE("strain math: vectorisable sqrt and 1 - exp(-y) within 2 ulp", "[strain][math]") {
   const auto ulps = [](auto value, auto exact) {
@@ -195,27 +195,27 @@ TEST_CASE("strain math: vectorisable sqrt and 1 - exp(-y) within 2 ulp", "[strai
   double worst_sqrt = 0, worst_exp = 0;
   for (std::uint32_t bits = 0x00800000u; bits < 0x7f800000u; bits += 4099) {
     const float x = std::bit_cast<float>(bits);
-    worst_sqrt = std::max(worst_sqrt, ulps(internal::sqrt_nonnegative(x), std::sqrt(x)));
+    worst_sqrt = std::max(worst_sqrt, ulps(deformseg::strain::internal::sqrt_nonnegative(x), std::sqrt(x)));
   }
   for (std::uint32_t bits = 0; bits < std::bit_cast<std::uint32_t>(100.0f); bits += 4099) {
     const float y = std::bit_cast<float>(bits);
-    worst_exp = std::max(worst_exp, ulps(internal::one_minus_exp_neg(y), float(-std::expm1(-double(y)))));
+    worst_exp = std::max(worst_exp, ulps(deformseg::strain::internal::one_minus_exp_neg(y), float(-std::expm1(-double(y)))));
   }
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> mantissa(1, 2);
   for (int i = 0; i < 200000; ++i) {
     const double x = std::ldexp(mantissa(random), int(random() % 1200) - 600);
-    worst_sqrt = std::max(worst_sqrt, ulps(internal::sqrt_nonnegative(x), std::sqrt(x)));
+    worst_sqrt = std::max(worst_sqrt, ulps(deformseg::strain::internal::sqrt_nonnegative(x), std::sqrt(x)));
     const double y = std::ldexp(mantissa(random), int(random() % 70) - 62);
-    worst_exp = std::max(worst_exp, ulps(internal::one_minus_exp_neg(y), -std::expm1(-y)));
+    worst_exp = std::max(worst_exp, ulps(deformseg::strain::internal::one_minus_exp_neg(y), -std::expm1(-y)));
   }
   CHECK(worst_sqrt <= 1);
   CHECK(worst_exp <= 2);
-  CHECK(internal::sqrt_nonnegative(0.0f) == 0.0f);
-  CHECK(internal::sqrt_nonnegative(0.0) == 0.0);
-  CHECK(internal::one_minus_exp_neg(0.0f) == 0.0f);
-  CHECK(internal::one_minus_exp_neg(1e30f) == 1.0f);
-  CHECK(internal::one_minus_exp_neg(std::numeric_limits<double>::infinity()) == 1.0);
+  CHECK(deformseg::strain::internal::sqrt_nonnegative(0.0f) == 0.0f);
+  CHECK(deformseg::strain::internal::sqrt_nonnegative(0.0) == 0.0);
+  CHECK(deformseg::strain::internal::one_minus_exp_neg(0.0f) == 0.0f);
+  CHECK(deformseg::strain::internal::one_minus_exp_neg(1e30f) == 1.0f);
+  CHECK(deformseg::strain::internal::one_minus_exp_neg(std::numeric_limits<double>::infinity()) == 1.0);
 }
 
 TEST_CASE("strain: a rigid motion of every frame gives 0 for every measure", "[strain]") {
@@ -225,28 +225,28 @@ TEST_CASE("strain: a rigid motion of every frame gives 0 for every measure", "[s
                                          rigid(-1.2, {0, 1, 0}, {1e-3, 0, 5})});
   // Rounding of the rotated positions (1e-16 of coordinates up to 3000) over edges of 0.01.
   constexpr double tolerance = 1e-9;
-  CHECK(largest(compute_strain(animation, raw())) < tolerance);
-  CHECK(largest(compute_strain(animation, raw_with(Green_lagrange_strain{}))) < tolerance);
-  CHECK(largest(compute_strain(animation, raw_with(Frobenius_strain{}))) < tolerance);
-  CHECK(largest(compute_strain(animation, raw_with(Area_ratio_strain{}))) < tolerance);
-  CHECK(largest(compute_strain<double>(animation, raw())) < tolerance);
-  CHECK(largest(compute_strain(animation, {.reference = Strain_reference::previous_pose,
+  CHECK(largest(strain::compute_strain(animation, raw())) < tolerance);
+  CHECK(largest(strain::compute_strain(animation, raw_with(strain::Green_lagrange_strain{}))) < tolerance);
+  CHECK(largest(strain::compute_strain(animation, raw_with(strain::Frobenius_strain{}))) < tolerance);
+  CHECK(largest(strain::compute_strain(animation, raw_with(strain::Area_ratio_strain{}))) < tolerance);
+  CHECK(largest(strain::compute_strain<double>(animation, raw())) < tolerance);
+  CHECK(largest(strain::compute_strain(animation, {.reference = strain::Strain_reference::previous_pose,
                                            .normalization = {.sigma = 0.1}})) < 1e-12);
 }
 
 TEST_CASE("strain: a uniform scale of the whole sequence gives the same field", "[strain]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{6, {right_angle}}, {6, {-0.4}}};
-  const auto plain = make_bending_tube(spec);
+  const auto plain = mesh::make_bending_tube(spec);
   spec.placement.scale = 37.5;
-  const auto scaled = make_bending_tube(spec);
-  for (auto reference : {Strain_reference::rest_pose, Strain_reference::previous_pose}) {
-    const auto a = compute_strain(plain.animation, {.reference = reference});
-    const auto b = compute_strain(scaled.animation, {.reference = reference});
+  const auto scaled = mesh::make_bending_tube(spec);
+  for (auto reference : {strain::Strain_reference::rest_pose, strain::Strain_reference::previous_pose}) {
+    const auto a = strain::compute_strain(plain.animation, {.reference = reference});
+    const auto b = strain::compute_strain(scaled.animation, {.reference = reference});
     CHECK(*a.sigma() == Approx(*b.sigma()).epsilon(1e-6));
     CHECK(largest_relative_difference(a, b) < 1e-5);
-    const auto c = compute_strain(plain.animation, Strain_options{.reference = reference, .measure = Area_ratio_strain{}});
-    const auto d = compute_strain(scaled.animation, Strain_options{.reference = reference, .measure = Area_ratio_strain{}});
+    const auto c = strain::compute_strain(plain.animation, strain::Strain_options{.reference = reference, .measure = strain::Area_ratio_strain{}});
+    const auto d = strain::compute_strain(scaled.animation, strain::Strain_options{.reference = reference, .measure = strain::Area_ratio_strain{}});
     CHECK(largest_relative_difference(c, d) < 1e-5);
   }
 }
@@ -260,11 +260,11 @@ TEST_CASE("strain: a uniform stretch by a gives |a - 1|, and each measure its fo
   // direction) and a flat grid in a tilted plane.
   for (const Grid& shape : {tube_shape(), flat_grid(6)}) {
     const auto animation = animate(shape, frames);
-    const auto max_principal = compute_strain(animation, raw());
-    const auto green = compute_strain(animation, raw_with(Green_lagrange_strain{}));
-    const auto frobenius = compute_strain(animation, raw_with(Frobenius_strain{}));
-    const auto area = compute_strain(animation, raw_with(Area_ratio_strain{}));
-    const auto exact = compute_strain<double>(animation, raw());
+    const auto max_principal = strain::compute_strain(animation, raw());
+    const auto green = strain::compute_strain(animation, raw_with(strain::Green_lagrange_strain{}));
+    const auto frobenius = strain::compute_strain(animation, raw_with(strain::Frobenius_strain{}));
+    const auto area = strain::compute_strain(animation, raw_with(strain::Area_ratio_strain{}));
+    const auto exact = strain::compute_strain<double>(animation, raw());
     for (std::size_t t = 1; t < animation.num_frames(); ++t) {
       const double a = factors[t - 1];
       for (std::size_t j = 0; j < animation.num_faces(); ++j) {
@@ -292,10 +292,10 @@ TEST_CASE("strain: shears give their known principal stretches", "[strain]") {
 
   const double s1 = std::sqrt(1 + g * g / 4) + g / 2, s2 = std::sqrt(1 + g * g / 4) - g / 2;
   const std::array<std::array<double, 2>, 2> stretches{{{s1, s2}, {k, 1 / k}}};
-  const auto max_principal = compute_strain(animation, raw());
-  const auto green = compute_strain(animation, raw_with(Green_lagrange_strain{}));
-  const auto frobenius = compute_strain(animation, raw_with(Frobenius_strain{}));
-  const auto area = compute_strain(animation, raw_with(Area_ratio_strain{}));
+  const auto max_principal = strain::compute_strain(animation, raw());
+  const auto green = strain::compute_strain(animation, raw_with(strain::Green_lagrange_strain{}));
+  const auto frobenius = strain::compute_strain(animation, raw_with(strain::Frobenius_strain{}));
+  const auto area = strain::compute_strain(animation, raw_with(strain::Area_ratio_strain{}));
   for (std::size_t t = 1; t <= 2; ++t) {
     const auto [l1, l2] = stretches[t - 1];
     for (std::size_t j = 0; j < animation.num_faces(); ++j) {
@@ -332,8 +332,8 @@ TEST_CASE("strain: float strains are relatively exact against long double, slive
     frames.push_back(linear_map(m, rigid(unit(random) * 3, {1, 2, 3}, {100, -200, 50})));
   }
   const auto animation = animate(shape, frames);
-  const auto field = compute_strain(animation, raw());
-  const auto exact = compute_strain<double>(animation, raw());
+  const auto field = strain::compute_strain(animation, raw());
+  const auto exact = strain::compute_strain<double>(animation, raw());
   double worst = 0, worst_exact = 0;
   for (std::size_t t = 1; t < animation.num_frames(); ++t)
     for (std::size_t j = 0; j < animation.num_faces(); ++j) {
@@ -363,7 +363,7 @@ TEST_CASE("strain: principal directions follow the stretch, in the deformed plan
   const Map place = [turn](const Vector3& p) { return Vector3(turn * p + Vector3(4, 5, 6)); };
   const Grid grid = flat_grid(4);
   const auto animation = animate(grid, {identity(), linear_map(stretch, place), place});
-  const auto field = compute_strain(animation, {.principal_directions = true});
+  const auto field = strain::compute_strain(animation, {.principal_directions = true});
   REQUIRE(field.has_principal_directions());
   const auto stretched = field.principal_directions(1);
   const auto rigid_frame = field.principal_directions(2);
@@ -381,18 +381,18 @@ TEST_CASE("strain: principal directions follow the stretch, in the deformed plan
     CHECK((rest_frame.row(row).cast<double>().transpose() - rest_edge).norm() < 1e-6);
   }
   // Directions do not change the strains.
-  const auto without = compute_strain(animation);
+  const auto without = strain::compute_strain(animation);
   CHECK(std::equal(without.values().begin(), without.values().end(), field.values().begin()));
 }
 
 TEST_CASE("strain: on the bending tube, exactly the blend-zone triangles deform", "[strain]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{10, {0.0}}, {10, {right_angle}}, {10, {}}, {10, {0.0}}};
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
   const auto& a = tube.animation;
-  const auto rest = compute_strain(a, raw());
-  const auto normalised = compute_strain(a);
-  const auto motion = compute_strain(a, {.reference = Strain_reference::previous_pose});
+  const auto rest = strain::compute_strain(a, raw());
+  const auto normalised = strain::compute_strain(a);
+  const auto motion = strain::compute_strain(a, {.reference = strain::Strain_reference::previous_pose});
   const auto frame = a.frame_matrix(0);
   std::size_t middle_of_zone = 0;
   for (std::size_t j = 0; j < a.num_faces(); ++j) {
@@ -415,20 +415,20 @@ TEST_CASE("strain: on the bending tube, exactly the blend-zone triangles deform"
 }
 
 TEST_CASE("strain: Surface_mesh, Polyhedron_3 and any DeformingMesh give the same field", "[strain]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{4, {right_angle}}, {4, {0.2}}};
-  const auto on_surface_mesh = make_bending_tube<Surface_mesh>(spec);
-  const auto on_polyhedron = make_bending_tube<Polyhedron>(spec);
+  const auto on_surface_mesh = mesh::make_bending_tube<mesh::Surface_mesh>(spec);
+  const auto on_polyhedron = mesh::make_bending_tube<Polyhedron>(spec);
 
   using View = test::Deforming_mesh_view<Polyhedron>;
-  static_assert(DeformingMesh<View>);
+  static_assert(mesh::DeformingMesh<View>);
   const View view{&on_polyhedron.animation};
 
-  for (auto reference : {Strain_reference::rest_pose, Strain_reference::previous_pose}) {
-    const Strain_options options{.reference = reference, .principal_directions = true};
-    const auto a = compute_strain(on_surface_mesh.animation, options);
-    const auto b = compute_strain(on_polyhedron.animation, options);
-    const auto c = compute_strain(view, options);
+  for (auto reference : {strain::Strain_reference::rest_pose, strain::Strain_reference::previous_pose}) {
+    const strain::Strain_options options{.reference = reference, .principal_directions = true};
+    const auto a = strain::compute_strain(on_surface_mesh.animation, options);
+    const auto b = strain::compute_strain(on_polyhedron.animation, options);
+    const auto c = strain::compute_strain(view, options);
     CHECK(std::equal(a.values().begin(), a.values().end(), b.values().begin(), b.values().end()));
     CHECK(std::equal(a.values().begin(), a.values().end(), c.values().begin(), c.values().end()));
     CHECK(a.sigma() == b.sigma());
@@ -440,55 +440,55 @@ TEST_CASE("strain: Surface_mesh, Polyhedron_3 and any DeformingMesh give the sam
 }
 
 TEST_CASE("strain: one thread and all threads give bit-identical fields", "[strain][threads]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.shape = {.radius = 0.1, .length = 1.0, .sectors = 40, .rings = 120, .caps = true};
   spec.joints = {{.position = 0.3, .blend_width = 0.2}, {.position = 0.7, .blend_width = 0.1}};
   spec.schedule = {{9, {right_angle, 0.0}}, {9, {0.3, -right_angle}}, {5, {}}};
-  const auto tube = make_bending_tube(spec);
-  REQUIRE(tube.animation.num_faces() > 3 * internal::strain_chunk);
-  REQUIRE(tube.animation.num_faces() * tube.animation.num_frames() > 3 * internal::statistics_block);
+  const auto tube = mesh::make_bending_tube(spec);
+  REQUIRE(tube.animation.num_faces() > 3 * deformseg::strain::internal::strain_chunk);
+  REQUIRE(tube.animation.num_faces() * tube.animation.num_frames() > 3 * deformseg::strain::internal::statistics_block);
 
   const auto same = [](const auto& a, const auto& b) {
     return a.values().size() == b.values().size() &&
            std::memcmp(a.values().data(), b.values().data(), a.values().size_bytes()) == 0 &&
            a.sigma() == b.sigma() && a.degenerate_count() == b.degenerate_count();
   };
-  for (auto reference : {Strain_reference::rest_pose, Strain_reference::previous_pose})
-    for (auto statistic : {Sigma_statistic::percentile, Sigma_statistic::standard_deviation, Sigma_statistic::scaled_mad}) {
-      const auto one = compute_strain(tube.animation, {.reference = reference,
+  for (auto reference : {strain::Strain_reference::rest_pose, strain::Strain_reference::previous_pose})
+    for (auto statistic : {strain::Sigma_statistic::percentile, strain::Sigma_statistic::standard_deviation, strain::Sigma_statistic::scaled_mad}) {
+      const auto one = strain::compute_strain(tube.animation, {.reference = reference,
                                                         .normalization = {.statistic = statistic},
                                                         .principal_directions = true,
                                                         .threads = 1});
       for (int threads : {2, 3, 0}) {
-        const auto many = compute_strain(tube.animation, {.reference = reference,
+        const auto many = strain::compute_strain(tube.animation, {.reference = reference,
                                                            .normalization = {.statistic = statistic},
                                                            .principal_directions = true,
                                                            .threads = threads});
         CHECK(same(one, many));
         for (std::size_t t = 0; t < one.num_frames(); t += 7) CHECK(one.principal_directions(t) == many.principal_directions(t));
       }
-      const auto exact_one = compute_strain<double>(tube.animation, {.reference = reference, .threads = 1});
-      const auto exact_two = compute_strain<double>(tube.animation, {.reference = reference, .threads = 2});
+      const auto exact_one = strain::compute_strain<double>(tube.animation, {.reference = reference, .threads = 1});
+      const auto exact_two = strain::compute_strain<double>(tube.animation, {.reference = reference, .threads = 2});
       CHECK(same(exact_one, exact_two));
     }
   // The default follows set_default_threads.
   set_default_threads(1);
-  const auto serial = compute_strain(tube.animation);
+  const auto serial = strain::compute_strain(tube.animation);
   set_default_threads(7);
-  const auto parallel = compute_strain(tube.animation);
+  const auto parallel = strain::compute_strain(tube.animation);
   set_default_threads(0);
   CHECK(same(serial, parallel));
 }
 
 TEST_CASE("strain: previous-pose strain of a sequence that holds still is 0", "[strain]") {
   const auto animation = animate(tube_shape(), std::vector<Map>(5, rigid(0.3, {1, 0, 0}, {10, 20, 30})));
-  const auto raw_field = compute_strain(animation, Strain_options{.reference = Strain_reference::previous_pose,
-                                                                  .normalization = No_normalization{}});
+  const auto raw_field = strain::compute_strain(animation, strain::Strain_options{.reference = strain::Strain_reference::previous_pose,
+                                                                  .normalization = strain::No_normalization{}});
   CHECK(largest(raw_field) < 1e-12);
-  const auto field = compute_strain(animation, {.reference = Strain_reference::previous_pose});
+  const auto field = strain::compute_strain(animation, {.reference = strain::Strain_reference::previous_pose});
   CHECK(largest(field) < 1e-12);
   // No sample above the noise level: sigma is the noise level.
-  CHECK(field.sigma() == Gaussian_normalization{}.noise_level);
+  CHECK(field.sigma() == strain::Gaussian_normalization{}.noise_level);
   for (float v : field.frame(0)) CHECK(v == 0.0f);
 }
 
@@ -501,8 +501,8 @@ TEST_CASE("strain: a degenerate reference triangle gives 0, never NaN, and is co
   const auto animation = animate(shape, {identity(),
                                          [](const Vector3& p) { return Vector3(p + Vector3(0, p.x() == 2 ? -1.5 : 0, 0)); },
                                          [](const Vector3& p) { return Vector3(2 * p); }});
-  for (const auto& field : {compute_strain(animation, {.principal_directions = true}),
-                            compute_strain(animation, Strain_options{.measure = Area_ratio_strain{},
+  for (const auto& field : {strain::compute_strain(animation, {.principal_directions = true}),
+                            strain::compute_strain(animation, strain::Strain_options{.measure = strain::Area_ratio_strain{},
                                                                      .principal_directions = true})}) {
     CHECK(field.degenerate_count() == 2);  // triangle 1 in frames 1 and 2 (frame 0 is the rest)
     for (std::size_t t = 0; t < 3; ++t) {
@@ -513,12 +513,12 @@ TEST_CASE("strain: a degenerate reference triangle gives 0, never NaN, and is co
     CHECK(field(0, 2) > 0.1f);  // the other triangle is measured
   }
   // Against the previous pose, triangle 1 is degenerate only as a reference, in frame 0 -> 1.
-  const auto motion = compute_strain(animation, {.reference = Strain_reference::previous_pose});
+  const auto motion = strain::compute_strain(animation, {.reference = strain::Strain_reference::previous_pose});
   CHECK(motion.degenerate_count() == 1);
   CHECK(motion(1, 1) == 0.0f);
   CHECK(motion(1, 2) > 0.1f);
   // A tolerance of 0.9 makes every triangle degenerate.
-  const auto all = compute_strain(animation, {.degenerate_tolerance = 0.9});
+  const auto all = strain::compute_strain(animation, {.degenerate_tolerance = 0.9});
   CHECK(all.degenerate_count() == 2 * 2);
   CHECK(largest(all) == 0);
 }
@@ -531,11 +531,11 @@ TEST_CASE("strain: a triangle collapsed onto a segment or a point has l2 = 0", "
   shape.triangles = {{0, 1, 2}};
   const auto animation = animate(shape, {identity(), [](const Vector3& p) { return Vector3(p.x(), 0, 0); },
                                          [](const Vector3&) { return Vector3(5, 6, 7); }});
-  const auto max_principal = compute_strain(animation, Strain_options{.normalization = No_normalization{},
+  const auto max_principal = strain::compute_strain(animation, strain::Strain_options{.normalization = strain::No_normalization{},
                                                                       .principal_directions = true});
-  const auto green = compute_strain(animation, raw_with(Green_lagrange_strain{}));
-  const auto frobenius = compute_strain<double>(animation, raw_with(Frobenius_strain{}));
-  const auto area = compute_strain(animation, raw_with(Area_ratio_strain{}));
+  const auto green = strain::compute_strain(animation, raw_with(strain::Green_lagrange_strain{}));
+  const auto frobenius = strain::compute_strain<double>(animation, raw_with(strain::Frobenius_strain{}));
+  const auto area = strain::compute_strain(animation, raw_with(strain::Area_ratio_strain{}));
   for (std::size_t t : {1, 2}) {
     CHECK(max_principal(0, t) == Approx(1).epsilon(1e-6));  // max(l1 - 1, 1 - 0)
     CHECK(green(0, t) == Approx(0.5).epsilon(1e-6));         // (1 - 0^2) / 2
@@ -556,11 +556,11 @@ TEST_CASE("strain: absurd coordinates saturate, never NaN or inf", "[strain]") {
                                          [](const Vector3& p) { return Vector3(p + Vector3(1e300, -1e300, 0) * (p.x() > 0 ? 1.0 : 0.0)); }});
   for (bool directions : {false, true}) {
     const auto field =
-        compute_strain(animation, Strain_options{.normalization = No_normalization{}, .principal_directions = directions});
+        strain::compute_strain(animation, strain::Strain_options{.normalization = strain::No_normalization{}, .principal_directions = directions});
     for (float v : field.values()) CHECK(std::isfinite(v));
-    const auto normalised = compute_strain(animation, {.principal_directions = directions});
+    const auto normalised = strain::compute_strain(animation, {.principal_directions = directions});
     for (float v : normalised.values()) CHECK((v >= 0 && v <= 1));
-    const auto exact = compute_strain<double>(animation, {.reference = Strain_reference::previous_pose,
+    const auto exact = strain::compute_strain<double>(animation, {.reference = strain::Strain_reference::previous_pose,
                                                           .principal_directions = directions});
     for (double v : exact.values()) CHECK((v >= 0 && v <= 1));
     if (directions)
@@ -569,10 +569,10 @@ TEST_CASE("strain: absurd coordinates saturate, never NaN or inf", "[strain]") {
 }
 
 TEST_CASE("strain: the Gaussian normalisation and its sigma statistics", "[strain][normalization]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{5, {right_angle}}, {5, {-0.5}}};
-  const auto tube = make_bending_tube(spec);
-  const auto raw_field = compute_strain(tube.animation, raw());
+  const auto tube = mesh::make_bending_tube(spec);
+  const auto raw_field = strain::compute_strain(tube.animation, raw());
   std::vector<float> samples;  // every frame but the rest frame, above the noise level
   for (std::size_t t = 1; t < raw_field.num_frames(); ++t)
     for (float v : raw_field.frame(t))
@@ -583,10 +583,10 @@ TEST_CASE("strain: the Gaussian normalisation and its sigma statistics", "[strai
   };
 
   SECTION("default: the 95th percentile, nearest rank") {
-    const auto field = compute_strain(tube.animation);
+    const auto field = strain::compute_strain(tube.animation);
     CHECK(*field.sigma() == nearest_rank(95));
-    CHECK(*compute_strain(tube.animation, {.normalization = {.percentile = 50}}).sigma() == nearest_rank(50));
-    CHECK(*compute_strain(tube.animation, {.normalization = {.percentile = 100}}).sigma() == samples.back());
+    CHECK(*strain::compute_strain(tube.animation, {.normalization = {.percentile = 50}}).sigma() == nearest_rank(50));
+    CHECK(*strain::compute_strain(tube.animation, {.normalization = {.percentile = 100}}).sigma() == samples.back());
     const double sigma = *field.sigma();
     for (std::size_t t = 0; t < field.num_frames(); ++t)
       for (std::size_t j = 0; j < field.num_faces(); ++j) {
@@ -599,24 +599,24 @@ TEST_CASE("strain: the Gaussian normalisation and its sigma statistics", "[strai
     for (float v : samples) mean += v;
     mean /= double(samples.size());
     for (float v : samples) square += (v - mean) * (v - mean);
-    const auto std_field = compute_strain(tube.animation, {.normalization = {.statistic = Sigma_statistic::standard_deviation}});
+    const auto std_field = strain::compute_strain(tube.animation, {.normalization = {.statistic = strain::Sigma_statistic::standard_deviation}});
     CHECK(*std_field.sigma() == Approx(std::sqrt(square / double(samples.size()))).epsilon(1e-12));
     const double median = nearest_rank(50);
     std::vector<double> deviations;
     for (float v : samples) deviations.push_back(std::abs(double(v) - median));
     std::sort(deviations.begin(), deviations.end());
-    const auto mad_field = compute_strain(tube.animation, {.normalization = {.statistic = Sigma_statistic::scaled_mad}});
+    const auto mad_field = strain::compute_strain(tube.animation, {.normalization = {.statistic = strain::Sigma_statistic::scaled_mad}});
     CHECK(*mad_field.sigma() == Approx(1.4826 * deviations[(deviations.size() + 1) / 2 - 1]).epsilon(1e-6));
   }
   SECTION("a given sigma, and none") {
-    const auto given = compute_strain(tube.animation, {.normalization = {.sigma = 0.05}});
+    const auto given = strain::compute_strain(tube.animation, {.normalization = {.sigma = 0.05}});
     CHECK(*given.sigma() == 0.05);
     CHECK(given(100, 8) == Approx(-std::expm1(-double(raw_field(100, 8)) * raw_field(100, 8) / (2 * 0.05 * 0.05))).epsilon(1e-6));
-    const auto none = compute_strain(tube.animation, raw());
+    const auto none = strain::compute_strain(tube.animation, raw());
     CHECK(!none.sigma());
   }
   SECTION("a user's measure and normalisation") {
-    const auto field = compute_strain(tube.animation, Strain_options{.measure = Largest_stretch{},
+    const auto field = strain::compute_strain(tube.animation, strain::Strain_options{.measure = Largest_stretch{},
                                                                      .normalization = Divide_by_largest{}});
     CHECK(*field.sigma() > 0.1);
     CHECK(largest(field) == Approx(1));
@@ -625,52 +625,52 @@ TEST_CASE("strain: the Gaussian normalisation and its sigma statistics", "[strai
     // Frame 1 is the zero frame and is left out; so are the values at or below the noise level.
     std::vector<double> values{0.3, 0.0, 1e-7, 0.1, 9.0, 9.0, 9.0, 9.0, 0.2, 0.5, -0.4, 0.6};
     std::vector<float> floats(values.begin(), values.end());
-    const Raw_strain_field<double> exact{values, 4, 1, 0};
-    const Raw_strain_field<float> single{floats, 4, 1, 0};
+    const strain::Raw_strain_field<double> exact{values, 4, 1, 0};
+    const strain::Raw_strain_field<float> single{floats, 4, 1, 0};
     // Samples: 0.3 0.1 0.2 0.5 0.4 0.6 (magnitudes), sorted 0.1 0.2 0.3 0.4 0.5 0.6.
-    CHECK(Gaussian_normalization{.percentile = 50}.sigma_of(exact) == 0.3);
-    CHECK(Gaussian_normalization{.percentile = 51}.sigma_of(exact) == 0.4);
-    CHECK(Gaussian_normalization{}.sigma_of(exact) == 0.6);
-    CHECK(Gaussian_normalization{.percentile = 50}.sigma_of(single) == 0.3f);
-    CHECK(Gaussian_normalization{.statistic = Sigma_statistic::scaled_mad}.sigma_of(exact) ==
+    CHECK(strain::Gaussian_normalization{.percentile = 50}.sigma_of(exact) == 0.3);
+    CHECK(strain::Gaussian_normalization{.percentile = 51}.sigma_of(exact) == 0.4);
+    CHECK(strain::Gaussian_normalization{}.sigma_of(exact) == 0.6);
+    CHECK(strain::Gaussian_normalization{.percentile = 50}.sigma_of(single) == 0.3f);
+    CHECK(strain::Gaussian_normalization{.statistic = strain::Sigma_statistic::scaled_mad}.sigma_of(exact) ==
           Approx(1.4826 * 0.1));
-    CHECK(Gaussian_normalization{.statistic = Sigma_statistic::standard_deviation}.sigma_of(exact) ==
+    CHECK(strain::Gaussian_normalization{.statistic = strain::Sigma_statistic::standard_deviation}.sigma_of(exact) ==
           Approx(std::sqrt(17.5 / 600)));
   }
 }
 
 TEST_CASE("strain: a reference mesh of its own", "[strain]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{4, {right_angle}}};
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
   const auto& a = tube.animation;
   // The rest frame as a mesh of its own gives the rest-pose field, every frame a sample.
-  const Surface_mesh rest = a.face_graph();
+  const mesh::Surface_mesh rest = a.face_graph();
   // Frame 0 is then measured (rounding, ~1e-16) rather than 0 by definition.
-  const auto with_mesh = compute_strain(a, rest, {.normalization = {.sigma = 0.1}});
-  const auto with_frame = compute_strain(a, {.normalization = {.sigma = 0.1}});
+  const auto with_mesh = strain::compute_strain(a, rest, {.normalization = {.sigma = 0.1}});
+  const auto with_frame = strain::compute_strain(a, {.normalization = {.sigma = 0.1}});
   const auto after_frame_0 = [](const auto& field) { return field.values().subspan(field.num_faces()); };
   CHECK(std::ranges::equal(after_frame_0(with_mesh), after_frame_0(with_frame)));
   CHECK(largest(with_mesh) == largest(with_frame));
   // A Polyhedron_3 reference for a Surface_mesh animation.
   std::vector<std::array<double, 3>> points;
   for (std::size_t i = 0; i < a.num_vertices(); ++i) points.push_back({a.frame_positions(0)[3 * i], a.frame_positions(0)[3 * i + 1], a.frame_positions(0)[3 * i + 2]});
-  const auto polyhedron = make_face_graph<Polyhedron>(points, a.triangles());
-  const auto with_polyhedron = compute_strain(a, polyhedron, {.normalization = {.sigma = 0.1}});
+  const auto polyhedron = mesh::make_face_graph<Polyhedron>(points, a.triangles());
+  const auto with_polyhedron = strain::compute_strain(a, polyhedron, {.normalization = {.sigma = 0.1}});
   CHECK(std::ranges::equal(with_polyhedron.values(), with_mesh.values()));
 }
 
 TEST_CASE("strain: one frame into face property maps", "[strain]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{4, {right_angle}}};
-  const auto tube = make_bending_tube(spec);
-  const auto field = compute_strain(tube.animation, {.principal_directions = true});
+  const auto tube = mesh::make_bending_tube(spec);
+  const auto field = strain::compute_strain(tube.animation, {.principal_directions = true});
 
-  Surface_mesh mesh = tube.animation.face_graph();
-  auto strain = mesh.add_property_map<Surface_mesh::Face_index, float>("f:strain", -1.0f).first;
-  auto direction = mesh.add_property_map<Surface_mesh::Face_index, Kernel::Vector_3>("f:direction").first;
-  put_strain_frame(field, 4, mesh, strain);
-  put_principal_directions(field, 4, mesh, direction);
+  mesh::Surface_mesh mesh = tube.animation.face_graph();
+  auto strain = mesh.add_property_map<mesh::Surface_mesh::Face_index, float>("f:strain", -1.0f).first;
+  auto direction = mesh.add_property_map<mesh::Surface_mesh::Face_index, mesh::Kernel::Vector_3>("f:direction").first;
+  strain::put_strain_frame(field, 4, mesh, strain);
+  strain::put_principal_directions(field, 4, mesh, direction);
   for (std::size_t j = 0; j < field.num_faces(); ++j) {
     const auto f = tube.animation.face_descriptors()[j];
     CHECK(strain[f] == field(j, 4));
@@ -678,36 +678,36 @@ TEST_CASE("strain: one frame into face property maps", "[strain]") {
     CHECK(direction[f].z() == double(field.principal_directions(4)(Eigen::Index(j), 2)));
   }
 
-  const auto polyhedron_tube = make_bending_tube<Polyhedron>(spec);
+  const auto polyhedron_tube = mesh::make_bending_tube<Polyhedron>(spec);
   using Face = boost::graph_traits<Polyhedron>::face_descriptor;
   std::map<Face, double> values;
-  put_strain_frame(field, 3, polyhedron_tube.animation.face_graph(), boost::make_assoc_property_map(values));
+  strain::put_strain_frame(field, 3, polyhedron_tube.animation.face_graph(), boost::make_assoc_property_map(values));
   REQUIRE(values.size() == field.num_faces());
   for (std::size_t j = 0; j < field.num_faces(); ++j)
     CHECK(values.at(polyhedron_tube.animation.face_descriptors()[j]) == double(field(j, 3)));
 }
 
 TEST_CASE("strain: bad input throws invalid_input with a clear message", "[strain][errors]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{3, {right_angle}}};
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
   const auto& a = tube.animation;
   using Catch::Contains;
 
-  CHECK_THROWS_WITH(compute_strain(Deforming_mesh<Surface_mesh>(a.face_graph())), Contains("has no frame"));
-  CHECK_THROWS_WITH(compute_strain(a, {.rest_frame = 4}), Contains("rest frame 4 out of range") && Contains("4 frames"));
-  CHECK_THROWS_WITH(compute_strain(a, {.threads = -1}), Contains("threads must be"));
-  CHECK_THROWS_WITH(compute_strain(a, {.degenerate_tolerance = 1.5}), Contains("degenerate_tolerance"));
-  CHECK_THROWS_WITH(compute_strain(a, {.normalization = {.sigma = 0.0}}), Contains("sigma must be finite and > 0"));
-  CHECK_THROWS_WITH(compute_strain(a, {.normalization = {.sigma = std::nan("")}}), Contains("sigma must be"));
-  CHECK_THROWS_WITH(compute_strain(a, {.normalization = {.percentile = 0}}), Contains("percentile must be in (0, 100]"));
-  CHECK_THROWS_WITH(compute_strain(a, {.normalization = {.noise_level = -1}}), Contains("noise_level"));
+  CHECK_THROWS_WITH(strain::compute_strain(mesh::Deforming_mesh<mesh::Surface_mesh>(a.face_graph())), Contains("has no frame"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.rest_frame = 4}), Contains("rest frame 4 out of range") && Contains("4 frames"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.threads = -1}), Contains("threads must be"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.degenerate_tolerance = 1.5}), Contains("degenerate_tolerance"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = {.sigma = 0.0}}), Contains("sigma must be finite and > 0"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = {.sigma = std::nan("")}}), Contains("sigma must be"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = {.percentile = 0}}), Contains("percentile must be in (0, 100]"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = {.noise_level = -1}}), Contains("noise_level"));
 
   SECTION("a reference mesh that does not match") {
-    Bending_tube other = spec;
+    mesh::Bending_tube other = spec;
     other.shape.sectors = 12;
-    const auto smaller = make_bending_tube(other);
-    CHECK_THROWS_WITH(compute_strain(a, smaller.animation.face_graph()),
+    const auto smaller = mesh::make_bending_tube(other);
+    CHECK_THROWS_WITH(strain::compute_strain(a, smaller.animation.face_graph()),
                       Contains("the reference mesh has 590 vertices and 1176 faces, the animation 786 and 1568"));
     // The same counts, other triangles: the first face turned around.
     auto triangles = std::vector<std::array<std::uint32_t, 3>>(a.triangles().begin(), a.triangles().end());
@@ -715,20 +715,20 @@ TEST_CASE("strain: bad input throws invalid_input with a clear message", "[strai
     for (std::size_t i = 0; i < points.size(); ++i)
       points[i] = {a.frame_positions(0)[3 * i], a.frame_positions(0)[3 * i + 1], a.frame_positions(0)[3 * i + 2]};
     std::swap(triangles[0], triangles[1]);
-    CHECK_THROWS_WITH(compute_strain(a, make_face_graph<Surface_mesh>(points, triangles)),
+    CHECK_THROWS_WITH(strain::compute_strain(a, mesh::make_face_graph<mesh::Surface_mesh>(points, triangles)),
                       Contains("face 0 of the reference mesh has vertices"));
-    CHECK_THROWS_WITH(compute_strain(a, a.face_graph(), {.reference = Strain_reference::previous_pose}),
+    CHECK_THROWS_WITH(strain::compute_strain(a, a.face_graph(), {.reference = strain::Strain_reference::previous_pose}),
                       Contains("a reference mesh takes the place of the rest pose"));
   }
   SECTION("a field asked for what it does not have") {
-    const auto field = compute_strain(a);
+    const auto field = strain::compute_strain(a);
     CHECK_THROWS_WITH(field.frame(4), "strain of frame 4 asked of a field of 4 frames");
     CHECK_THROWS_WITH(field.principal_directions(0), Contains("principal directions were not computed"));
-    Surface_mesh smaller = a.face_graph();
+    mesh::Surface_mesh smaller = a.face_graph();
     CGAL::Euler::remove_face(halfedge(*faces(smaller).begin(), smaller), smaller);
     smaller.collect_garbage();
-    auto map = smaller.add_property_map<Surface_mesh::Face_index, float>("f:strain").first;
-    CHECK_THROWS_WITH(put_strain_frame(field, 0, smaller, map), Contains("the graph has 1567 faces, the strain field 1568"));
-    CHECK_THROWS_AS(Strain_field<float>(3, 2, Strain_field<float>::Storage(5), {}, {}, 0), invalid_input);
+    auto map = smaller.add_property_map<mesh::Surface_mesh::Face_index, float>("f:strain").first;
+    CHECK_THROWS_WITH(strain::put_strain_frame(field, 0, smaller, map), Contains("the graph has 1567 faces, the strain field 1568"));
+    CHECK_THROWS_AS(strain::Strain_field<float>(3, 2, strain::Strain_field<float>::Storage(5), {}, {}, 0), invalid_input);
   }
 }

@@ -5,7 +5,7 @@
 
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/read_mesh.h>
-#include <deformseg/strain.h>
+#include <deformseg/strain/strain.h>
 
 #include <Eigen/Geometry>
 
@@ -18,23 +18,23 @@ using namespace deformseg;
 
 namespace {
 
-Surface_mesh_animation horse_gallop() {
+mesh::Surface_mesh_animation horse_gallop() {
   return io::read_frame_sequence((test::unpacked("horse-gallop/horse-gallop.tar.xz") / "horse-gallop").string());
 }
 
 // The same animation scaled, turned and moved far from the origin, every frame in double.
-Surface_mesh_animation placed(const Surface_mesh_animation& a, double scale, const Eigen::Vector3d& translation) {
+mesh::Surface_mesh_animation placed(const mesh::Surface_mesh_animation& a, double scale, const Eigen::Vector3d& translation) {
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(2.2, Eigen::Vector3d(1, -3, 2).normalized()).toRotationMatrix();
   std::vector<double> positions(a.all_positions().begin(), a.all_positions().end());
   for (std::size_t i = 0; i < positions.size(); i += 3) {
     const Eigen::Vector3d p = scale * (turn * Eigen::Vector3d(positions[i], positions[i + 1], positions[i + 2])) + translation;
     for (int k = 0; k < 3; ++k) positions[i + std::size_t(k)] = p[k];
   }
-  return Surface_mesh_animation(a.face_graph(), std::move(positions));
+  return mesh::Surface_mesh_animation(a.face_graph(), std::move(positions));
 }
 
 // The frame distance matrix: Euclidean distances between the frames' strain vectors.
-std::vector<double> distance_matrix(const Strain_field<float>& field, std::size_t frames) {
+std::vector<double> distance_matrix(const strain::Strain_field<float>& field, std::size_t frames) {
   std::vector<double> d(frames * frames);
   for (std::size_t i = 0; i < frames; ++i)
     for (std::size_t j = 0; j < frames; ++j) {
@@ -79,9 +79,9 @@ TEST_CASE("strain data: the horse gallop scaled, turned and moved far away keeps
   REQUIRE(horse.num_frames() == 48);
   const auto moved = placed(horse, 2.5, {120, -80, 100});
 
-  const auto raw = Strain_options{.normalization = No_normalization{}};
-  const auto a = compute_strain(horse, raw);
-  const auto b = compute_strain(moved, raw);
+  const auto raw = strain::Strain_options{.normalization = strain::No_normalization{}};
+  const auto a = strain::compute_strain(horse, raw);
+  const auto b = strain::compute_strain(moved, raw);
   CHECK(a.degenerate_count() == 0);
   // Relative differences, strains below 1e-9 counting as 1e-9: 2 % of the triangle-frames are
   // rigid in the data, with strains of 1e-16 that are rounding on both sides.
@@ -100,8 +100,8 @@ TEST_CASE("strain data: the horse gallop scaled, turned and moved far away keeps
   CHECK(worst < 0.01);  // slivers included
 
   // Normalised, the same: sigma is a statistic of the same strains.
-  const auto c = compute_strain(horse);
-  const auto d = compute_strain(moved);
+  const auto c = strain::compute_strain(horse);
+  const auto d = strain::compute_strain(moved);
   CHECK(*c.sigma() == Approx(*d.sigma()).epsilon(1e-5));
   double largest_difference = 0;
   for (std::size_t i = 0; i < c.values().size(); ++i)
@@ -111,7 +111,7 @@ TEST_CASE("strain data: the horse gallop scaled, turned and moved far away keeps
 
 TEST_CASE("strain data: the default sigma is robust to the horse's sliver triangles", "[strain][data]") {
   const auto horse = horse_gallop();
-  const auto field = compute_strain(horse, Strain_options{.normalization = No_normalization{}});
+  const auto field = strain::compute_strain(horse, strain::Strain_options{.normalization = strain::No_normalization{}});
   // The triangles by shape: smallest height over longest edge at rest.
   std::vector<std::pair<double, std::size_t>> shape;
   const auto rest = horse.frame_matrix(0);
@@ -123,20 +123,20 @@ TEST_CASE("strain data: the default sigma is robust to the horse's sliver triang
   }
   std::sort(shape.begin(), shape.end());
   // sigma of the strains of all triangles, and of all but the worst-shaped 17 (0.1 %).
-  const auto sigma_without_worst = [&](std::size_t dropped, Sigma_statistic statistic) {
+  const auto sigma_without_worst = [&](std::size_t dropped, strain::Sigma_statistic statistic) {
     std::vector<bool> keep(horse.num_faces(), true);
     for (std::size_t i = 0; i < dropped; ++i) keep[shape[i].second] = false;
     std::vector<float> values;
     for (std::size_t t = 0; t < field.num_frames(); ++t)
       for (std::size_t f = 0; f < field.num_faces(); ++f)
         if (keep[f]) values.push_back(field(f, t));
-    const Raw_strain_field<float> samples{values, values.size() / field.num_frames(), 0, 0};
-    return Gaussian_normalization{.statistic = statistic}.sigma_of(samples);
+    const strain::Raw_strain_field<float> samples{values, values.size() / field.num_frames(), 0, 0};
+    return strain::Gaussian_normalization{.statistic = statistic}.sigma_of(samples);
   };
-  const double percentile_all = sigma_without_worst(0, Sigma_statistic::percentile);
-  const double percentile_kept = sigma_without_worst(17, Sigma_statistic::percentile);
-  const double deviation_all = sigma_without_worst(0, Sigma_statistic::standard_deviation);
-  const double deviation_kept = sigma_without_worst(17, Sigma_statistic::standard_deviation);
+  const double percentile_all = sigma_without_worst(0, strain::Sigma_statistic::percentile);
+  const double percentile_kept = sigma_without_worst(17, strain::Sigma_statistic::percentile);
+  const double deviation_all = sigma_without_worst(0, strain::Sigma_statistic::standard_deviation);
+  const double deviation_kept = sigma_without_worst(17, strain::Sigma_statistic::standard_deviation);
   INFO("95th percentile " << percentile_all << " -> " << percentile_kept << ", standard deviation "
                           << deviation_all << " -> " << deviation_kept);
   CHECK(std::abs(percentile_all - percentile_kept) < 0.01 * percentile_all);
@@ -159,15 +159,15 @@ TEST_CASE("strain data: the same poses on a cat and a lion give alike frame dist
 
   // 10 x 10 with the reference as rest frame 9 (its row: each pose's distance to rest).
   const auto correlation = [&](const auto& options, std::size_t frames) {
-    const auto a = compute_strain(cat, options);
-    const auto b = compute_strain(lion, options);
+    const auto a = strain::compute_strain(cat, options);
+    const auto b = strain::compute_strain(lion, options);
     return upper_triangle_correlation(distance_matrix(a, frames), distance_matrix(b, frames), frames);
   };
-  const double normalised = correlation(Strain_options{.rest_frame = 9}, 10);
-  const double poses_only = correlation(Strain_options{.rest_frame = 9}, 9);
-  const double raw = correlation(Strain_options{.rest_frame = 9, .normalization = No_normalization{}}, 10);
+  const double normalised = correlation(strain::Strain_options{.rest_frame = 9}, 10);
+  const double poses_only = correlation(strain::Strain_options{.rest_frame = 9}, 9);
+  const double raw = correlation(strain::Strain_options{.rest_frame = 9, .normalization = strain::No_normalization{}}, 10);
   const double deviation = correlation(
-      Strain_options{.rest_frame = 9, .normalization = {.statistic = Sigma_statistic::standard_deviation}}, 10);
+      strain::Strain_options{.rest_frame = 9, .normalization = {.statistic = strain::Sigma_statistic::standard_deviation}}, 10);
   INFO("correlation: default " << normalised << " (9 x 9: " << poses_only << "), no normalisation " << raw
                                << ", sigma = standard deviation " << deviation);
   CHECK(normalised >= 0.95);
@@ -177,10 +177,10 @@ TEST_CASE("strain data: the same poses on a cat and a lion give alike frame dist
 
   // The reference given as a mesh of its own gives the same fields for the poses.
   const auto reference = io::read_mesh(cat_dir / "cat-reference.obj");
-  const auto reference_mesh = make_face_graph<Surface_mesh>(io::points_of(reference), reference.triangles);
+  const auto reference_mesh = mesh::make_face_graph<mesh::Surface_mesh>(io::points_of(reference), reference.triangles);
   const auto poses = io::read_frame_sequence((cat_dir / "cat-0?.obj").string());
-  const auto with_mesh = compute_strain(poses, reference_mesh);
-  const auto with_frame = compute_strain(cat, {.rest_frame = 9});
+  const auto with_mesh = strain::compute_strain(poses, reference_mesh);
+  const auto with_frame = strain::compute_strain(cat, {.rest_frame = 9});
   CHECK(with_mesh.sigma() == with_frame.sigma());
   CHECK(std::ranges::equal(with_mesh.values(), with_frame.values().first(9 * cat.num_faces())));
 }

@@ -1,7 +1,7 @@
 // Tests of synthetic.h: the bending tube and its ground truth.
 #include "test_support.h"
 
-#include <deformseg/synthetic.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -14,18 +14,18 @@ namespace {
 
 using deformseg::test::right_angle;
 
-Eigen::Vector3d vertex(const Deforming_mesh<Surface_mesh>& a, std::size_t t, std::size_t i) {
+Eigen::Vector3d vertex(const mesh::Deforming_mesh<mesh::Surface_mesh>& a, std::size_t t, std::size_t i) {
   return a.frame_matrix(t).col(Eigen::Index(i));
 }
 
-double edge_length(const Deforming_mesh<Surface_mesh>& a, std::size_t t, std::size_t f, int k) {
+double edge_length(const mesh::Deforming_mesh<mesh::Surface_mesh>& a, std::size_t t, std::size_t f, int k) {
   const auto& tri = a.triangles()[f];
   return (vertex(a, t, tri[k]) - vertex(a, t, tri[(k + 1) % 3])).norm();
 }
 
 // Signed volume enclosed by the frame's triangles (divergence theorem): positive when they are
 // oriented outwards.
-double enclosed_volume(const Deforming_mesh<Surface_mesh>& a, std::size_t t) {
+double enclosed_volume(const mesh::Deforming_mesh<mesh::Surface_mesh>& a, std::size_t t) {
   double six_volume = 0;
   for (const auto& tri : a.triangles())
     six_volume += vertex(a, t, tri[0]).dot(vertex(a, t, tri[1]).cross(vertex(a, t, tri[2])));
@@ -33,8 +33,8 @@ double enclosed_volume(const Deforming_mesh<Surface_mesh>& a, std::size_t t) {
 }
 
 // Rest, bend by 90 degrees, hold, unbend: 10 frames each.
-Bending_tube bend_once() {
-  Bending_tube spec;
+mesh::Bending_tube bend_once() {
+  mesh::Bending_tube spec;
   spec.schedule = {{10, {0.0}}, {10, {right_angle}}, {10, {}}, {10, {0.0}}};
   return spec;
 }
@@ -42,7 +42,7 @@ Bending_tube bend_once() {
 }  // namespace
 
 TEST_CASE("bending tube: sizes, schedule and closed outward surface", "[synthetic]") {
-  const auto tube = make_bending_tube(bend_once());
+  const auto tube = mesh::make_bending_tube(bend_once());
   const auto& a = tube.animation;
   CHECK(a.num_frames() == 41);
   CHECK(a.num_vertices() == 49 * 16 + 2);
@@ -62,7 +62,7 @@ TEST_CASE("bending tube: sizes, schedule and closed outward surface", "[syntheti
 }
 
 TEST_CASE("bending tube: the top turns about the joint by the scheduled angle", "[synthetic]") {
-  const auto tube = make_bending_tube(bend_once());
+  const auto tube = mesh::make_bending_tube(bend_once());
   const std::size_t top = tube.animation.num_vertices() - 1;  // the top cap's centre
   CHECK((vertex(tube.animation, 0, top) - Eigen::Vector3d(0, 0, 1)).norm() < 1e-15);
   CHECK((vertex(tube.animation, 25, top) - Eigen::Vector3d(0.5, 0, 0.5)).norm() < 1e-15);
@@ -70,10 +70,10 @@ TEST_CASE("bending tube: the top turns about the joint by the scheduled angle", 
 }
 
 TEST_CASE("bending tube: only the triangles of a blend zone change shape", "[synthetic]") {
-  Bending_tube spec = bend_once();
+  mesh::Bending_tube spec = bend_once();
   spec.joints = {{.position = 0.31, .blend_width = 0.1}, {.position = 0.7, .blend_width = 0.2}};
   spec.schedule = {{5, {right_angle, 0.0}}, {5, {0.0, -right_angle}}};
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
   const auto& a = tube.animation;
 
   std::array<std::size_t, 3> count{};  // rigid, joint 0, joint 1
@@ -97,12 +97,12 @@ TEST_CASE("bending tube: only the triangles of a blend zone change shape", "[syn
 }
 
 TEST_CASE("bending tube: placement is a similarity of every frame", "[synthetic]") {
-  Bending_tube spec = bend_once();
-  const auto plain = make_bending_tube(spec);
+  mesh::Bending_tube spec = bend_once();
+  const auto plain = mesh::make_bending_tube(spec);
   spec.placement = {.scale = 3.5,
                     .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, 2, 3).normalized())),
                     .translation = Eigen::Vector3d(10, -20, 30)};
-  const auto placed = make_bending_tube(spec);
+  const auto placed = mesh::make_bending_tube(spec);
   const Eigen::Matrix3d rotation = spec.placement.rotation.toRotationMatrix();
   for (std::size_t t : {0, 17, 40})
     for (std::size_t i = 0; i < plain.animation.num_vertices(); i += 37) {
@@ -113,9 +113,9 @@ TEST_CASE("bending tube: placement is a similarity of every frame", "[synthetic]
 }
 
 TEST_CASE("bending tube: other shapes, same schedule and ground truth layout", "[synthetic]") {
-  Bending_tube spec = bend_once();
+  mesh::Bending_tube spec = bend_once();
   spec.shape = {.radius = 0.25, .length = 2.0, .sectors = 7, .rings = 20, .caps = false};
-  const auto tube = make_bending_tube<CGAL::Polyhedron_3<Kernel>>(spec);
+  const auto tube = mesh::make_bending_tube<CGAL::Polyhedron_3<mesh::Kernel>>(spec);
   CHECK(tube.animation.num_frames() == 41);
   CHECK(tube.animation.num_vertices() == 21 * 7);
   CHECK(tube.animation.num_faces() == 2 * 20 * 7);
@@ -126,49 +126,49 @@ TEST_CASE("bending tube: other shapes, same schedule and ground truth layout", "
 
 TEST_CASE("bending tube: a zone narrower than a ring still marks the triangles it splits",
           "[synthetic]") {
-  Bending_tube spec = bend_once();
+  mesh::Bending_tube spec = bend_once();
   spec.shape.rings = 4;
   spec.joints = {{.position = 0.6, .blend_width = 0.01}};
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
   // The zone lies strictly between rings 2 and 3 (heights 0.5 and 0.75): no vertex is inside it,
   // yet the triangles between those rings have vertices on both bones.
   CHECK(std::count(tube.face_joint.begin(), tube.face_joint.end(), 0) == 2 * 16);
 }
 
 TEST_CASE("bending tube: rings on the edges of a zone follow one bone exactly", "[synthetic]") {
-  Bending_tube spec = bend_once();
+  mesh::Bending_tube spec = bend_once();
   spec.shape.rings = 40;
   // Zones 0.25..0.35 and 0.65..0.75: edges on rings 10, 14, 26 and 30, however the subtraction
   // rounds. Each zone deforms the 4 segments between its edge rings, and those edge rings stay
   // rigid with their bone.
   spec.joints = {{.position = 0.3, .blend_width = 0.1}, {.position = 0.7, .blend_width = 0.1}};
   spec.schedule = {{4, {right_angle, right_angle}}};
-  const auto tube = make_bending_tube(spec);
+  const auto tube = mesh::make_bending_tube(spec);
   CHECK(std::count(tube.face_joint.begin(), tube.face_joint.end(), 0) == 2 * 16 * 4);
   CHECK(std::count(tube.face_joint.begin(), tube.face_joint.end(), 1) == 2 * 16 * 4);
 }
 
 TEST_CASE("bending tube: invalid specifications are rejected", "[synthetic][errors]") {
-  Bending_tube spec = bend_once();
+  mesh::Bending_tube spec = bend_once();
   SECTION("overlapping joints") {
     spec.joints = {{.position = 0.4, .blend_width = 0.2}, {.position = 0.5, .blend_width = 0.2}};
     spec.schedule = {};
-    CHECK_THROWS_WITH(make_bending_tube(spec), Catch::StartsWith("joint 1: blend zones"));
+    CHECK_THROWS_WITH(mesh::make_bending_tube(spec), Catch::StartsWith("joint 1: blend zones"));
   }
   SECTION("a phase with the wrong number of angles") {
     spec.schedule = {{3, {0.1, 0.2}}};
-    CHECK_THROWS_WITH(make_bending_tube(spec), Catch::StartsWith("phase 0: needs"));
+    CHECK_THROWS_WITH(mesh::make_bending_tube(spec), Catch::StartsWith("phase 0: needs"));
   }
   SECTION("a phase of no frame") {
     spec.schedule = {{3, {0.1}}, {0, {}}};
-    CHECK_THROWS_AS(make_bending_tube(spec), invalid_input);
+    CHECK_THROWS_AS(mesh::make_bending_tube(spec), invalid_input);
   }
   SECTION("a flat tube") {
     spec.shape.radius = 0;
-    CHECK_THROWS_AS(make_bending_tube(spec), invalid_input);
+    CHECK_THROWS_AS(mesh::make_bending_tube(spec), invalid_input);
   }
   SECTION("a zero scale") {
     spec.placement.scale = 0;
-    CHECK_THROWS_WITH(make_bending_tube(spec), "placement scale must be > 0");
+    CHECK_THROWS_WITH(mesh::make_bending_tube(spec), "placement scale must be > 0");
   }
 }

@@ -4,8 +4,8 @@
 
 #include "test_support.h"
 
-#include <deformseg/deforming_mesh.h>
-#include <deformseg/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
 
 #include <array>
 #include <concepts>
@@ -24,13 +24,13 @@ inline const Triangles tetrahedron_triangles{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0
 /// The tetrahedron as a face graph of type `Graph`.
 template <class Graph>
 Graph tetrahedron() {
-  return make_face_graph<Graph>(tetra_points, tetra_triangles);
+  return mesh::make_face_graph<Graph>(tetra_points, tetra_triangles);
 }
 
 /// A short name of the face graph type, for the names of the files a test writes.
 template <class Graph>
 std::string graph_name() {
-  return std::same_as<Graph, Surface_mesh> ? "surface_mesh" : "polyhedron";
+  return std::same_as<Graph, mesh::Surface_mesh> ? "surface_mesh" : "polyhedron";
 }
 
 }  // namespace deformseg::test

@@ -3,16 +3,16 @@
 // lowest index's exception, nested loops, per-worker locals), interruption from the calling
 // thread, and results that do not depend on the number of threads for the loops not tested
 // elsewhere.
-#include <deformseg/evolving_graph.h>
-#include <deformseg/frame_distances.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
+#include <deformseg/strain/frame_distances.h>
 #include <deformseg/ged/exact_ged.h>
-#include <deformseg/histogram_distance.h>
+#include <deformseg/strain/histogram_distance.h>
 #include <deformseg/internal/parallel_for.h>
-#include <deformseg/motion_similarity.h>
-#include <deformseg/spatiotemporal_segments.h>
-#include <deformseg/strain.h>
-#include <deformseg/strain_histograms.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/spatiotemporal/spatiotemporal_segments.h>
+#include <deformseg/strain/strain.h>
+#include <deformseg/strain/strain_histograms.h>
+#include <deformseg/mesh/synthetic.h>
 #include <deformseg/threads.h>
 
 #include "ged_support.h"
@@ -63,12 +63,12 @@ private:
 
 const std::vector<int> thread_counts{1, 2, 7};
 
-Surface_mesh_animation bending_tube() {
-  Bending_tube spec;
+mesh::Surface_mesh_animation bending_tube() {
+  mesh::Bending_tube spec;
   spec.joints = {{.position = 0.3}, {.position = 0.7}};
   const double right = std::numbers::pi / 2;
   spec.schedule = {{5, {0.0, 0.0}}, {10, {right, 0.0}}, {5, {}}, {10, {right, right}}, {5, {}}};
-  return make_bending_tube(spec).animation;
+  return mesh::make_bending_tube(spec).animation;
 }
 
 }  // namespace
@@ -117,15 +117,15 @@ TEST_CASE("threads: the default follows set_default_threads, then the environmen
 
 TEST_CASE("threads: every threads option refuses a count above max_threads", "[threads]") {
   const auto tube = bending_tube();
-  CHECK_THROWS_WITH(compute_strain(tube, {.threads = 30000}), Catch::Contains("compute_strain: threads must be 0 "
+  CHECK_THROWS_WITH(strain::compute_strain(tube, {.threads = 30000}), Catch::Contains("compute_strain: threads must be 0 "
                                                                               "(the default) to 1024, not 30000"));
-  CHECK_THROWS_AS(compute_strain(tube, {.threads = -1}), invalid_input);
-  const auto field = compute_strain(tube, {.threads = 1});
+  CHECK_THROWS_AS(strain::compute_strain(tube, {.threads = -1}), invalid_input);
+  const auto field = strain::compute_strain(tube, {.threads = 1});
   CHECK_THROWS_WITH(frame_distances(field, {.threads = 70000}), Catch::Contains("not 70000"));
-  CHECK_THROWS_WITH(strain_histograms(field, std::vector<double>(field.num_faces(), 1.0), {.threads = 40000}),
+  CHECK_THROWS_WITH(strain::strain_histograms(field, std::vector<double>(field.num_faces(), 1.0), {.threads = 40000}),
                     Catch::Contains("not 40000"));
   const Eigen::MatrixXd h = Eigen::MatrixXd::Constant(3, 4, 0.25);
-  CHECK_THROWS_WITH(histogram_distances(h, h, Histogram_metric::earth_movers, 1025), Catch::Contains("not 1025"));
+  CHECK_THROWS_WITH(strain::histogram_distances(h, h, strain::Histogram_metric::earth_movers, 1025), Catch::Contains("not 1025"));
 }
 
 TEST_CASE("parallel_for: every index once, the lowest index's exception, on any threads", "[threads]") {
@@ -134,7 +134,7 @@ TEST_CASE("parallel_for: every index once, the lowest index's exception, on any 
       for (const std::size_t count : {std::size_t(0), std::size_t(1), std::size_t(1000)}) {
         INFO(threads << " threads, chunks of " << chunk << ", " << count << " indices");
         std::vector<std::atomic<int>> runs(count);
-        internal::parallel_for(count, threads, [&](std::size_t i) { ++runs[i]; }, chunk);
+        deformseg::internal::parallel_for(count, threads, [&](std::size_t i) { ++runs[i]; }, chunk);
         for (std::size_t i = 0; i < count; ++i) CHECK(runs[i].load() == 1);
       }
   for (const int threads : thread_counts) {
@@ -142,15 +142,15 @@ TEST_CASE("parallel_for: every index once, the lowest index's exception, on any 
     const auto failing = [](std::size_t i) {
       if (i == 900 || i == 5 || i == 600) throw std::runtime_error("index " + std::to_string(i));
     };
-    CHECK_THROWS_WITH(internal::parallel_for(1000, threads, failing), "index 5");
-    CHECK_THROWS_WITH(internal::parallel_for(1000, threads, failing, 64), "index 5");
+    CHECK_THROWS_WITH(deformseg::internal::parallel_for(1000, threads, failing), "index 5");
+    CHECK_THROWS_WITH(deformseg::internal::parallel_for(1000, threads, failing, 64), "index 5");
   }
 }
 
 TEST_CASE("parallel_for: per-worker locals, and nested loops run on their worker", "[threads]") {
   for (const int threads : thread_counts) {
     INFO(threads << " threads");
-    const auto sums = internal::parallel_for_with_locals(
+    const auto sums = deformseg::internal::parallel_for_with_locals(
         10000, threads, 3, [] { return std::size_t(0); }, [](std::size_t& sum, std::size_t i) { sum += i; });
     CHECK(sums.size() <= std::size_t(threads));
     std::size_t total = 0;
@@ -160,13 +160,13 @@ TEST_CASE("parallel_for: per-worker locals, and nested loops run on their worker
     std::atomic<bool> other_thread{false};
     std::mutex seen;
     std::set<std::thread::id> workers;
-    internal::parallel_for(50, threads, [&](std::size_t) {
+    deformseg::internal::parallel_for(50, threads, [&](std::size_t) {
       const auto worker = std::this_thread::get_id();
       {
         const std::lock_guard lock(seen);
         workers.insert(worker);
       }
-      internal::parallel_for(20, 7, [&](std::size_t) {
+      deformseg::internal::parallel_for(20, 7, [&](std::size_t) {
         if (std::this_thread::get_id() != worker) other_thread = true;
       });
     });
@@ -193,7 +193,7 @@ TEST_CASE("interruption: the check runs on the calling thread and stops the loop
       return false;
     });
     CHECK(interruption_check_installed());
-    CHECK_THROWS_AS(internal::parallel_for(1000, threads,
+    CHECK_THROWS_AS(deformseg::internal::parallel_for(1000, threads,
                                            [&](std::size_t) {
                                              ++steps;
                                              while (!stopped) std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -214,7 +214,7 @@ TEST_CASE("interruption: serial loops check between steps / what the check throw
       return false;
     });
     // Each step lasts longer than interruption_interval, so the check is due after the first.
-    CHECK_THROWS_AS(internal::parallel_for(100, 1,
+    CHECK_THROWS_AS(deformseg::internal::parallel_for(100, 1,
                                            [&](std::size_t) {
                                              ++steps;
                                              std::this_thread::sleep_for(interruption_interval * 3 / 2);
@@ -224,7 +224,7 @@ TEST_CASE("interruption: serial loops check between steps / what the check throw
   CHECK(checks == 1);
   CHECK(steps == 1);
   const Interruption_scope scope([]() -> bool { throw std::runtime_error("the user's reason"); });
-  CHECK_THROWS_WITH(internal::parallel_for(100, 2,
+  CHECK_THROWS_WITH(deformseg::internal::parallel_for(100, 2,
                                            [&](std::size_t) {
                                              std::this_thread::sleep_for(interruption_interval * 3 / 2);
                                            }),
@@ -246,32 +246,32 @@ TEST_CASE("interruption: an exact graph edit distance search stops between expan
 }
 
 TEST_CASE("interruption: similarity_stopped is a cancelled", "[threads]") {
-  STATIC_REQUIRE(std::is_base_of_v<cancelled, similarity_stopped>);
+  STATIC_REQUIRE(std::is_base_of_v<cancelled, similarity::similarity_stopped>);
   STATIC_REQUIRE(std::is_base_of_v<std::runtime_error, cancelled>);
 }
 
 TEST_CASE("threads: histograms, their distances, segments and graphs are the same on 1, 2 and 7 threads",
           "[threads]") {
   const auto tube = bending_tube();
-  const auto field = compute_strain(tube, {.reference = Strain_reference::previous_pose, .threads = 1});
+  const auto field = strain::compute_strain(tube, {.reference = strain::Strain_reference::previous_pose, .threads = 1});
   const std::vector<double> weights(field.num_faces(), 1.0);
-  const Strain_histograms one = strain_histograms(field, weights, {.threads = 1});
-  const Eigen::MatrixXd distances = histogram_distances(one, one, Histogram_metric::earth_movers, 1);
+  const strain::Strain_histograms one = strain::strain_histograms(field, weights, {.threads = 1});
+  const Eigen::MatrixXd distances = strain::histogram_distances(one, one, strain::Histogram_metric::earth_movers, 1);
   set_default_threads(1);
-  const Spatiotemporal_options options{.threshold = 0.01, .max_island = 8};
-  const Spatiotemporal_segmentation segments = spatiotemporal_segmentation(field, tube.triangles(), options);
-  const Evolving_graph graph = evolving_graph(tube, options);
+  const spatiotemporal::Spatiotemporal_options options{.threshold = 0.01, .max_island = 8};
+  const spatiotemporal::Spatiotemporal_segmentation segments = spatiotemporal::spatiotemporal_segmentation(field, tube.triangles(), options);
+  const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(tube, options);
   for (const int threads : thread_counts) {
     INFO(threads << " threads");
-    CHECK(compute_strain(tube, {.reference = Strain_reference::previous_pose, .threads = threads}).matrix() ==
+    CHECK(strain::compute_strain(tube, {.reference = strain::Strain_reference::previous_pose, .threads = threads}).matrix() ==
           field.matrix());
-    CHECK(strain_histograms(field, weights, {.threads = threads}) == one);
-    CHECK(histogram_distances(one, one, Histogram_metric::earth_movers, threads) == distances);
+    CHECK(strain::strain_histograms(field, weights, {.threads = threads}) == one);
+    CHECK(strain::histogram_distances(one, one, strain::Histogram_metric::earth_movers, threads) == distances);
     set_default_threads(threads);
-    const Spatiotemporal_segmentation other = spatiotemporal_segmentation(field, tube.triangles(), options);
+    const spatiotemporal::Spatiotemporal_segmentation other = spatiotemporal::spatiotemporal_segmentation(field, tube.triangles(), options);
     for (std::size_t t = 0; t < field.num_frames(); ++t)
       CHECK(std::ranges::equal(other.frame_labels(t), segments.frame_labels(t)));
-    const Evolving_graph other_graph = evolving_graph(tube, options);
+    const spatiotemporal::Evolving_graph other_graph = spatiotemporal::evolving_graph(tube, options);
     REQUIRE(other_graph.size() == graph.size());
     for (std::size_t k = 0; k < graph.size(); ++k) {
       CHECK(other_graph[k].first_frame == graph[k].first_frame);

@@ -1,8 +1,8 @@
 // Tests of write_strain_csv and write_strain_binary: what they write reads back to the field.
 #include "test_support.h"
 
-#include <deformseg/io/write_strain_field.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/io/strain_field.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <nlohmann/json.hpp>
 
@@ -17,11 +17,11 @@ using namespace deformseg;
 
 namespace {
 
-Strain_field<float> bent_tube_field() {
-  Bending_tube spec;
+strain::Strain_field<float> bent_tube_field() {
+  mesh::Bending_tube spec;
   spec.shape = {.radius = 0.1, .length = 1.0, .sectors = 8, .rings = 10, .caps = false};
   spec.schedule = {{4, {std::numbers::pi / 2}}, {3, {}}};
-  return compute_strain(make_bending_tube(spec).animation);
+  return strain::compute_strain(mesh::make_bending_tube(spec).animation);
 }
 
 using deformseg::test::file_text;
@@ -82,10 +82,10 @@ TEST_CASE("write_strain_binary: a JSON header line, then the values little-endia
 }
 
 TEST_CASE("write_strain_binary: double fields and no sigma", "[io][strain]") {
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.schedule = {{3, {1.0}}};
   const auto field =
-      compute_strain<double>(make_bending_tube(spec).animation, Strain_options{.normalization = No_normalization{}});
+      strain::compute_strain<double>(mesh::make_bending_tube(spec).animation, strain::Strain_options{.normalization = strain::No_normalization{}});
   const auto path = test::scratch_dir() / "field64.bin";
   io::write_strain_binary(field, path);
   const std::string bytes = file_text(path);

@@ -2,7 +2,7 @@
 ///
 /// An animation of one triangle mesh: fixed connectivity, vertex positions per frame. Every
 /// algorithm of deformseg takes a model of it, and checks it at compile time with the C++20
-/// concept deformseg::DeformingMesh.
+/// concept deformseg::mesh::DeformingMesh.
 ///
 /// A type `M` is a model when, for `const M& m` and a frame `t` in `[0, m.num_frames())`:
 ///
@@ -16,16 +16,16 @@
 /// Frames are counted from 0. The positions must be finite.
 ///
 /// Optionally, `m.frames_per_second()` (convertible to `double`) gives the frame rate; the
-/// descriptors that count time in seconds (deformseg::motion_signatures) read it through
-/// deformseg::frames_per_second, which gives 30 for a model without it. deformseg::Deforming_mesh
+/// descriptors that count time in seconds (deformseg::signatures::motion_signatures) read it through
+/// deformseg::mesh::frames_per_second, which gives 30 for a model without it. deformseg::mesh::Deforming_mesh
 /// has it (30 by default; the readers set it from their `fps` option).
 ///
 /// \par Has models
-/// deformseg::Deforming_mesh<FaceGraph, Coordinate>, for any FaceGraph (tested with
+/// deformseg::mesh::Deforming_mesh<FaceGraph, Coordinate>, for any FaceGraph (tested with
 /// `CGAL::Surface_mesh` and `CGAL::Polyhedron_3`).
 ///
 /// \par A type that is not a model
-/// is rejected at compile time: `static_assert(deformseg::DeformingMesh<M>)` names the first
+/// is rejected at compile time: `static_assert(deformseg::mesh::DeformingMesh<M>)` names the first
 /// requirement it misses.
 ///
-/// \sa deformseg::make_deforming_mesh, which copies any model into a deformseg::Deforming_mesh.
+/// \sa deformseg::mesh::make_deforming_mesh, which copies any model into a deformseg::mesh::Deforming_mesh.

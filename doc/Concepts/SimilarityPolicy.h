@@ -1,10 +1,10 @@
 /// \page SimilarityPolicyConcept The SimilarityPolicy concept
 ///
-/// How two animations are compared into a deformseg::Similarity, in two steps so that a set of N
+/// How two animations are compared into a deformseg::similarity::Similarity, in two steps so that a set of N
 /// animations is described N times, not N^2: `describe` computes what the policy compares of one
-/// animation, `compare` compares two such descriptions. deformseg::motion_similarity runs both
-/// for two animations, deformseg::similarity_matrix for every pair of a set. The C++20 concept
-/// deformseg::SimilarityPolicy checks a policy at compile time.
+/// animation, `compare` compares two such descriptions. deformseg::similarity::motion_similarity runs both
+/// for two animations, deformseg::similarity::similarity_matrix for every pair of a set. The C++20 concept
+/// deformseg::similarity::SimilarityPolicy checks a policy at compile time.
 ///
 /// A type `P` is a model for animations of type `Mesh` when it is copyable and, for `const P& p`,
 /// `const Mesh& mesh` and `const typename P::Description& a, b`:
@@ -13,23 +13,23 @@
 /// |---|---|---|
 /// | `P::Description` | a type | what is kept of one animation |
 /// | `p.describe(mesh)` | `P::Description` | that, for one animation |
-/// | `p.compare(a, b)` | deformseg::Similarity | the value in [0, 1], the raw score, the frame-to-frame alignment, the labels aligned and what was compared |
+/// | `p.compare(a, b)` | deformseg::similarity::Similarity | the value in [0, 1], the raw score, the frame-to-frame alignment, the labels aligned and what was compared |
 ///
 /// `compare(a, a)` should give 1, and `compare` should be safe to call from several threads at
-/// once (deformseg::similarity_matrix runs pairs in parallel).
+/// once (deformseg::similarity::similarity_matrix runs pairs in parallel).
 ///
 /// \par Has models
 ///
 /// | policy | header | describes an animation by | needs a correspondence |
 /// |---|---|---|---|
-/// | deformseg::Motion_signature_similarity (the default, deformseg::Default_similarity) | `similarity/motion_signature_similarity.h` | per-frame distributions of its vertices' speeds and vertical rates at several lags (deformseg::motion_signatures) | no |
-/// | deformseg::Strain_distribution_similarity | `similarity/strain_distribution_similarity.h` | per-frame histograms of the strain | no |
-/// | deformseg::Evolving_graph_similarity (the thesis') | `similarity/evolving_graph_similarity.h` | its evolving graph and the GEDs of its key frames | no |
-/// | deformseg::Self_similarity_matching | `similarity/self_similarity_matching.h` | its frame x frame Procrustes self-dissimilarity matrix, each frame by the profile of its row | no |
+/// | deformseg::similarity::Motion_signature_similarity (the default, deformseg::similarity::Default_similarity) | `similarity/motion_signature_similarity.h` | per-frame distributions of its vertices' speeds and vertical rates at several lags (deformseg::signatures::motion_signatures) | no |
+/// | deformseg::similarity::Strain_distribution_similarity | `similarity/strain_distribution_similarity.h` | per-frame histograms of the strain | no |
+/// | deformseg::similarity::Evolving_graph_similarity (the thesis') | `similarity/evolving_graph_similarity.h` | its evolving graph and the GEDs of its key frames | no |
+/// | deformseg::similarity::Self_similarity_matching | `similarity/self_similarity_matching.h` | its frame x frame Procrustes self-dissimilarity matrix, each frame by the profile of its row | no |
 ///
 /// All take an alignment policy (@ref AlignmentPolicyConcept) and a normalisation of its score,
-/// deformseg::Best_score_normalization by default; the thesis' also takes a GED policy and cost
-/// model (@ref GedConcepts; deformseg::Segment_costs by default) and a clustering policy
+/// deformseg::similarity::Best_score_normalization by default; the thesis' also takes a GED policy and cost
+/// model (@ref GedConcepts; deformseg::similarity::Segment_costs by default) and a clustering policy
 /// (@ref ClusteringPolicyConcept).
 ///
 /// \par A policy of one's own

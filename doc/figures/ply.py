@@ -1,4 +1,4 @@
-"""Reads the PLY files the deformseg tool writes (include/deformseg/io/write_ply.h), nothing more:
+"""Reads the PLY files the deformseg tool writes (include/deformseg/io/ply.h), nothing more:
 binary little-endian or ASCII, a `vertex` element of float or double `x y z`, and a `face`
 element of triangles (`list uchar int vertex_indices`), optionally with `uchar red green blue`.
 """

@@ -1,6 +1,6 @@
 #include "command.h"
 
-#include <deformseg/internal/file_io.h>
+#include <deformseg/io/internal/file_io.h>
 #include <deformseg/io/read_mesh.h>
 
 #include <algorithm>
@@ -68,17 +68,17 @@ Input_options with_clip_of_name(Input_options options) {
   return options;
 }
 
-Surface_mesh_animation read_input(const Input_options& given, Input_report* report) {
+mesh::Surface_mesh_animation read_input(const Input_options& given, Input_report* report) {
   const Input_options options = with_clip_of_name(given);
   check_input_options(options);
   progress("reading " + options.input);
   Input_report found;
-  Surface_mesh_animation animation = [&] {
+  mesh::Surface_mesh_animation animation = [&] {
     if (io::is_gltf(options.input)) {
       found.gltf.emplace();
       const io::Gltf_file file(options.input);
       if (!options.first_clip_by_default) io::require_clip_choice(file, options.clip);
-      Surface_mesh_animation read = file.read({.clip = options.clip, .fps = options.fps,
+      mesh::Surface_mesh_animation read = file.read({.clip = options.clip, .fps = options.fps,
                                                .repair = repair_options(options), .threads = options.threads},
                                               &*found.gltf);
       found.repair = found.gltf->repair;
@@ -103,10 +103,10 @@ void add_reference_mesh_option(CLI::App& command, std::string& path) {
                      "another pose) in place of a frame: a rest pose kept apart from the frames");
 }
 
-Surface_mesh read_reference_mesh(const std::string& path) {
+mesh::Surface_mesh read_reference_mesh(const std::string& path) {
   progress("reading the reference mesh " + path);
   const io::Triangle_soup soup = io::read_mesh(path);
-  return make_face_graph<Surface_mesh>(io::points_of(soup), soup.triangles);
+  return mesh::make_face_graph<mesh::Surface_mesh>(io::points_of(soup), soup.triangles);
 }
 
 nlohmann::json to_json(const io::Repair_report& r) {
@@ -138,7 +138,7 @@ void write_json(const nlohmann::json& document, const std::string& path) {
     std::cout << document.dump(2) << '\n';
     return;
   }
-  internal::write_file_bytes(path, document.dump(2) + '\n');  // names the file and the system's reason
+  deformseg::io::internal::write_file_bytes(path, document.dump(2) + '\n');  // names the file and the system's reason
 }
 
 void write_outputs(const nlohmann::json& document, const std::string& json_path,

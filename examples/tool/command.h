@@ -4,12 +4,12 @@
 
 #include "figure.h"
 
-#include <deformseg/color.h>
-#include <deformseg/default_mesh.h>
+#include <deformseg/color/color.h>
+#include <deformseg/mesh/default_mesh.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/strain.h>
+#include <deformseg/strain/strain.h>
 #include <deformseg/threads.h>
 
 #include <CLI/CLI.hpp>
@@ -59,14 +59,14 @@ Input_options with_clip_of_name(Input_options options);
 
 /// Reads the animation the options name, saying on standard error what it reads and, when the
 /// repair changed the mesh, what it changed; what it found goes to `report` when not null.
-Surface_mesh_animation read_input(const Input_options& options, Input_report* report = nullptr);
+mesh::Surface_mesh_animation read_input(const Input_options& options, Input_report* report = nullptr);
 
 /// Adds `--reference-mesh FILE` to a command that measures strain against a rest pose.
 void add_reference_mesh_option(CLI::App& command, std::string& path);
 
 /// The mesh of `--reference-mesh`: a rest pose kept apart from the frames (the cat folder's
 /// `cat-reference.obj`), with the connectivity of the animation as read.
-Surface_mesh read_reference_mesh(const std::string& path);
+mesh::Surface_mesh read_reference_mesh(const std::string& path);
 
 /// The result of `compute_strain()`, a strain against the reference mesh read from `path`, its
 /// errors naming that file: a mismatch of connectivity is the user's file's.

@@ -3,8 +3,8 @@
 #include "command.h"
 
 #include <deformseg/io/point_cache.h>
-#include <deformseg/io/write_obj.h>
-#include <deformseg/io/write_sequence.h>
+#include <deformseg/io/obj.h>
+#include <deformseg/io/frame_sequence.h>
 
 #include <filesystem>
 #include <memory>
@@ -28,14 +28,14 @@ std::string input_stem(const std::string& input) {
   return stem.empty() || stem.find_first_of("*?") != std::string::npos ? "animation" : stem;
 }
 
-std::vector<std::filesystem::path> write(const Surface_mesh_animation& animation, const Convert_options& o) {
+std::vector<std::filesystem::path> write(const mesh::Surface_mesh_animation& animation, const Convert_options& o) {
   const std::filesystem::path out(o.out);
   if (o.format != "pc2" && o.format != "mdd") {
     const io::Mesh_format format =
         o.format == "obj" ? io::Mesh_format::obj : o.format == "off" ? io::Mesh_format::off : io::Mesh_format::ply;
     return io::write_sequence(animation, out, {.format = format});
   }
-  internal::create_folder(out);
+  deformseg::io::internal::create_folder(out);
   const std::string stem = input_stem(with_clip_of_name(o.input).input);
   const auto topology = out / (stem + ".obj");
   const auto cache = out / (stem + "." + o.format);
@@ -64,7 +64,7 @@ void add_convert_command(CLI::App& app) {
   add_json_option(*command, o->json, "what was written");
   command->callback([o] {
     Input_report report;
-    const Surface_mesh_animation animation = read_input(o->input, &report);
+    const mesh::Surface_mesh_animation animation = read_input(o->input, &report);
     progress("writing " + std::to_string(animation.num_frames()) + " frames to " + o->out);
     const auto files = write(animation, *o);
     nlohmann::json written = nlohmann::json::array();

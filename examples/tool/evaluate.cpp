@@ -5,9 +5,9 @@
 
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/motion_labels.h>
-#include <deformseg/motion_similarity.h>
-#include <deformseg/retrieval_evaluation.h>
-#include <deformseg/strain_colors.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/evaluation/retrieval_evaluation.h>
+#include <deformseg/color/strain_colors.h>
 
 #include <algorithm>
 #include <chrono>
@@ -46,7 +46,7 @@ std::string fixed(double value, int decimals = 3) {
 
 // The animations read, and the labelled clips they are (without those skipped).
 struct Read_clips {
-  std::vector<Surface_mesh_animation> animations;
+  std::vector<mesh::Surface_mesh_animation> animations;
   std::vector<io::Labelled_clip> clips;
   std::vector<std::string> skipped;  // "FILE clip NAME: MESSAGE"
 };
@@ -114,8 +114,8 @@ std::vector<std::size_t> order_by_label(const std::vector<io::Labelled_clip>& cl
   std::vector<std::size_t> order(clips.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   const auto key = [&](std::size_t i) {
-    const Labelled_item& item = clips[i].item;
-    return std::tuple(item.motion == distractor_label, item.motion, item.body, item.clip);
+    const evaluation::Labelled_item& item = clips[i].item;
+    return std::tuple(item.motion == evaluation::distractor_label, item.motion, item.body, item.clip);
   };
   std::ranges::stable_sort(order, [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
   return order;
@@ -145,11 +145,11 @@ void write_grouped_heat_map(const Eigen::MatrixXd& m, const std::vector<io::Labe
   };
   Matrix_figure figure(n, n, cell, "similarity of " + std::to_string(n) + " clips by motion (" + o.policy.policy + ")",
                        motions, motions,
-                       Color_bar{"similarity (coloured by rank)", 0, 1, [](double f) { return strain_color(f); },
+                       Color_bar{"similarity (coloured by rank)", 0, 1, [](double f) { return color::strain_color(f); },
                                  value_at_rank});
   for (std::size_t r = 0; r < n; ++r)
     for (std::size_t c = 0; c < n; ++c)
-      figure.fill_cell(r, c, strain_color(rank(m(Eigen::Index(order[r]), Eigen::Index(order[c])))));
+      figure.fill_cell(r, c, color::strain_color(rank(m(Eigen::Index(order[r]), Eigen::Index(order[c])))));
   figure.draw_separators(motions, motions);
   figure.write(path);
 }
@@ -161,7 +161,7 @@ nlohmann::json optional_json(const std::optional<T>& value) {
 
 std::string optional_text(const std::optional<double>& value) { return value ? fixed(*value) : "none"; }
 
-nlohmann::json scores_json(const Retrieval_scores& s) {
+nlohmann::json scores_json(const evaluation::Retrieval_scores& s) {
   nlohmann::json per_motion = nlohmann::json::array();
   for (const auto& m : s.per_motion)
     per_motion.push_back({{"motion", m.motion}, {"queries", m.queries}, {"correct", m.correct},
@@ -187,7 +187,7 @@ std::string clip_name(const io::Labelled_clip& clip) {
 }
 
 // One line per query: what it found nearest, and at which rank the first clip of its motion came.
-void print_per_query(const Retrieval_scores& s, const std::vector<io::Labelled_clip>& clips) {
+void print_per_query(const evaluation::Retrieval_scores& s, const std::vector<io::Labelled_clip>& clips) {
   std::cout << "per query (query: nearest candidate, its value; rank of the first of the query's motion)\n";
   for (const auto& q : s.per_query) {
     const io::Labelled_clip& query = clips[q.query];
@@ -200,7 +200,7 @@ void print_per_query(const Retrieval_scores& s, const std::vector<io::Labelled_c
   }
 }
 
-void print_confusion(const Retrieval_scores& s) {
+void print_confusion(const evaluation::Retrieval_scores& s) {
   std::size_t width = 6;
   for (const auto& label : s.labels) width = std::max(width, label.size() + 1);
   std::cout << "confusion (rows: query motion, columns: nearest neighbour's motion)\n" << std::string(width, ' ');
@@ -208,7 +208,7 @@ void print_confusion(const Retrieval_scores& s) {
     std::cout << ' ' << std::string(5 - std::min<std::size_t>(5, label.size()), ' ') << label.substr(0, 5);
   std::cout << '\n';
   for (std::size_t r = 0; r < s.labels.size(); ++r) {
-    if (s.labels[r] == distractor_label) continue;  // never queried
+    if (s.labels[r] == evaluation::distractor_label) continue;  // never queried
     std::cout << s.labels[r] << std::string(width - s.labels[r].size(), ' ');
     for (const std::size_t count : s.confusion[r]) {
       const std::string text = count ? std::to_string(count) : ".";
@@ -218,7 +218,7 @@ void print_confusion(const Retrieval_scores& s) {
   }
 }
 
-void print_scores(const Retrieval_scores& s, std::size_t items) {
+void print_scores(const evaluation::Retrieval_scores& s, std::size_t items) {
   std::cout << "items                " << items << "\nqueries              " << s.queries
             << "\nwithout relevant     " << s.queries_without_relevant << "\nNN accuracy          "
             << optional_text(s.nn_accuracy) << "\nmAP                  " << optional_text(s.mean_average_precision)
@@ -237,10 +237,10 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
   while (true) {
     try {
       report = Matrix_progress{.descriptions = read.animations.size()};
-      return with_policy_choice(o.policy, [&](const auto& policy) {
-        return similarity_matrix(read.animations, policy, std::ref(report));
+      return similarity::with_policy_choice(o.policy, [&](const auto& policy) {
+        return similarity::similarity_matrix(read.animations, policy, std::ref(report));
       });
-    } catch (const animation_not_described& e) {
+    } catch (const similarity::animation_not_described& e) {
       const auto at = std::ptrdiff_t(e.index());
       const io::Labelled_clip& clip = read.clips[e.index()];
       const std::string clip_text = clip.item.clip.empty() ? "" : " clip '" + clip.item.clip + "'";
@@ -255,7 +255,7 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
 }
 
 void run_evaluate(const Evaluate_options& o) {
-  check_policy_choice(o.policy);
+  similarity::check_policy_choice(o.policy);
   if (!(o.fps > 0)) throw invalid_input("--fps must be positive");
   set_default_threads(o.threads);  // the matrix's threads; the readers take theirs
   const auto start = Clock::now();
@@ -265,9 +265,9 @@ void run_evaluate(const Evaluate_options& o) {
   Matrix_progress report;
   const Eigen::MatrixXd m = matrix_of_clips(read, o, report);
   const double matrix_seconds = seconds_since(report.start);
-  std::vector<Labelled_item> items;
+  std::vector<evaluation::Labelled_item> items;
   for (const auto& clip : read.clips) items.push_back(clip.item);
-  const Retrieval_scores scores = evaluate_retrieval(m, items);
+  const evaluation::Retrieval_scores scores = evaluation::evaluate_retrieval(m, items);
   const std::vector<std::size_t> order = order_by_label(read.clips);
   if (!o.png.empty()) write_grouped_heat_map(m, read.clips, order, o, o.png);
   progress("times: reading " + fixed(read_seconds, 1) + " s, describing " + fixed(report.describe_seconds, 1) +
@@ -282,7 +282,7 @@ void run_evaluate(const Evaluate_options& o) {
       rows.push_back(nlohmann::json::array());
       for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
     }
-    document = {{"labels", o.labels}, {"policy", o.policy.policy}, {"alignment_policy", alignment_name(o.policy)},
+    document = {{"labels", o.labels}, {"policy", o.policy.policy}, {"alignment_policy", similarity::alignment_name(o.policy)},
                 {"fps", o.fps}, {"inputs", inputs}, {"skipped", read.skipped}, {"scores", scores_json(scores)},
                 {"figure_order", order}, {"similarity", rows},
                 {"seconds", {{"reading", read_seconds}, {"describing", report.describe_seconds},

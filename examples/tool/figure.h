@@ -3,7 +3,7 @@
 // figures have them.
 #pragma once
 
-#include <deformseg/color.h>
+#include <deformseg/color/color.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -21,13 +21,13 @@ struct Image {
   std::vector<std::uint8_t> pixels;
   Image(int w, int h) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h) * 3, 255) {}
   /// Paints pixel (x, y); one outside the image is left alone.
-  void set(int x, int y, Rgb color) {
+  void set(int x, int y, color::Rgb color) {
     if (x < 0 || y < 0 || x >= width || y >= height) return;
     const std::size_t at = (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3;
     pixels[at] = color.r, pixels[at + 1] = color.g, pixels[at + 2] = color.b;
   }
   /// Paints the rectangle of `w` x `h` pixels whose top left pixel is (x, y).
-  void fill(int x, int y, int w, int h, Rgb color) {
+  void fill(int x, int y, int w, int h, color::Rgb color) {
     for (int dy = 0; dy < h; ++dy)
       for (int dx = 0; dx < w; ++dx) set(x + dx, y + dy, color);
   }
@@ -38,7 +38,7 @@ struct Image {
 /// Writes `image` as a PNG file; throws invalid_input with the system's reason when it cannot.
 void write_png(const Image& image, const std::string& path);
 
-constexpr Rgb black{0, 0, 0};
+constexpr color::Rgb black{0, 0, 0};
 
 /// How text runs: left to right, or turned a quarter to read from the bottom up.
 enum class Text_direction { across, up };
@@ -54,7 +54,7 @@ int text_height(int scale = 1);
 
 /// Draws `text` (printable ASCII; anything else shows as '?') with its top left corner at (x, y);
 /// written `up`, (x, y) is its bottom left corner as read.
-void draw_text(Image& image, const std::string& text, int x, int y, int scale = 1, Rgb color = black,
+void draw_text(Image& image, const std::string& text, int x, int y, int scale = 1, color::Rgb color = black,
                Text_direction direction = Text_direction::across);
 
 /// The labels along one side of a matrix figure.
@@ -80,7 +80,7 @@ Axis grouped_axis(std::string title, const std::vector<std::string>& group_of_ce
 struct Color_bar {
   std::string title;
   double low = 0, high = 1;
-  std::function<Rgb(double)> color;
+  std::function<color::Rgb(double)> color;
   /// The value shown at a fraction of the way, when the scale is not linear (colours by rank);
   /// none: `low + fraction (high - low)`.
   std::function<double(double)> value_at = nullptr;
@@ -103,11 +103,11 @@ class Matrix_figure {
   /// Pixels a cell.
   int cell() const { return cell_; }
   /// Paints cell (row, column).
-  void fill_cell(std::size_t row, std::size_t column, Rgb color);
+  void fill_cell(std::size_t row, std::size_t column, color::Rgb color);
   /// Outlines the square block of cells first..last on the diagonal, `thickness` pixels inside it.
-  void outline_diagonal_block(std::size_t first, std::size_t last, Rgb color, int thickness);
+  void outline_diagonal_block(std::size_t first, std::size_t last, color::Rgb color, int thickness);
   /// Draws the axes' separators over the cells as lines of `color`.
-  void draw_separators(const Axis& row_axis, const Axis& column_axis, Rgb color = {255, 255, 255});
+  void draw_separators(const Axis& row_axis, const Axis& column_axis, color::Rgb color = {255, 255, 255});
   /// Writes the figure as PNG.
   void write(const std::string& path) const { write_png(image_, path); }
 

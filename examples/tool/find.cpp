@@ -2,7 +2,7 @@
 // the default policy (motion signatures).
 #include "command.h"
 
-#include <deformseg/find_motion.h>
+#include <deformseg/similarity/find_motion.h>
 
 #include <iomanip>
 #include <iostream>
@@ -14,7 +14,7 @@ namespace {
 struct Find_command_options {
   Input_options query, long_animation;
   std::size_t count = 3;
-  double shortest = Find_motion_options{}.shortest;
+  double shortest = similarity::Find_motion_options{}.shortest;
   std::string json;
 };
 
@@ -23,12 +23,12 @@ void run_find(const Find_command_options& o) {
   if (!(o.shortest > 0 && o.shortest <= 1)) throw invalid_input("--shortest must be in (0, 1]");
   Input_options long_options = o.long_animation;
   long_options.threads = o.query.threads, long_options.fps = o.query.fps;  // given once for both
-  const Surface_mesh_animation query = read_input(o.query), long_animation = read_input(long_options);
+  const mesh::Surface_mesh_animation query = read_input(o.query), long_animation = read_input(long_options);
   progress("looking for " + std::to_string(query.num_frames()) + " frames in " +
            std::to_string(long_animation.num_frames()));
-  const auto matches = find_motion(query, long_animation, {.count = o.count, .shortest = o.shortest});
+  const auto matches = similarity::find_motion(query, long_animation, {.count = o.count, .shortest = o.shortest});
   nlohmann::json found = nlohmann::json::array();
-  for (const Motion_match& m : matches) {
+  for (const similarity::Motion_match& m : matches) {
     nlohmann::json pairs = nlohmann::json::array();
     for (const auto& [i, j] : m.alignment) pairs.push_back({i, j});
     found.push_back({{"first", m.first}, {"last", m.last}, {"similarity", m.value}, {"alignment", pairs}});
@@ -36,7 +36,7 @@ void run_find(const Find_command_options& o) {
   const nlohmann::json document = {
       {"query", o.query.input}, {"long", o.long_animation.input}, {"policy", "motion-signature"}, {"matches", found}};
   write_outputs(document, o.json, [&] {
-    for (const Motion_match& m : matches)
+    for (const similarity::Motion_match& m : matches)
       std::cout << "frames " << m.first << " to " << m.last << "  similarity " << std::fixed << std::setprecision(3)
                 << m.value << '\n';
   });

@@ -5,8 +5,8 @@
 #include <deformseg/ged/exact_ged.h>
 #include <deformseg/ged/ged_matrix.h>
 #include <deformseg/ged/lower_bound.h>
-#include <deformseg/internal/file_io.h>
-#include <deformseg/io/read_graph.h>
+#include <deformseg/io/internal/file_io.h>
+#include <deformseg/io/graphviz.h>
 
 #include <cmath>
 #include <iostream>
@@ -95,7 +95,7 @@ void write_csv(const Eigen::MatrixXd& d, const std::string& path) {
   for (Eigen::Index i = 0; i < d.rows(); ++i) {
     for (Eigen::Index j = 0; j < d.cols(); ++j) {
       if (j > 0) text += ',';
-      internal::append_shortest(text, d(i, j));
+      deformseg::io::internal::append_shortest(text, d(i, j));
     }
     text += '\n';
   }
@@ -104,7 +104,7 @@ void write_csv(const Eigen::MatrixXd& d, const std::string& path) {
     return;
   }
   progress("writing the distance matrix to " + path);
-  internal::Streamed_file file(path);
+  deformseg::io::internal::Streamed_file file(path);
   file.write(text);
   file.close();
 }

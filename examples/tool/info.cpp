@@ -21,14 +21,14 @@ struct Info_options {
 // --files lists a frame sequence's files; a glTF file or a point cache has none.
 void check_files_option(const Info_options& o) {
   if (!o.files) return;
-  const std::string extension = internal::lower_extension(o.input.input);  // no listing of a folder here
+  const std::string extension = deformseg::io::internal::lower_extension(o.input.input);  // no listing of a folder here
   if (io::is_gltf(o.input.input) || extension == ".pc2" || extension == ".mdd")
     throw invalid_input("--files lists the frame files of a folder or glob; this input is one " + extension.substr(1) +
                             " file",
                         {.file = o.input.input});
 }
 
-nlohmann::json bounding_box(const Surface_mesh_animation& animation) {
+nlohmann::json bounding_box(const mesh::Surface_mesh_animation& animation) {
   const auto [low, high] = motion_box(animation);
   return {{"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}};
 }
@@ -56,7 +56,7 @@ nlohmann::json gltf_json(const Input_options& input, const io::Gltf_read_report&
 }
 
 nlohmann::json describe(const Info_options& options, Input_report& report) {
-  const Surface_mesh_animation animation = read_input(options.input, &report);
+  const mesh::Surface_mesh_animation animation = read_input(options.input, &report);
   nlohmann::json info = {{"input", options.input.input},
                          {"format", io::animation_format(options.input.input)},
                          {"frames", animation.num_frames()},

@@ -2,7 +2,7 @@
 // page frame.
 #pragma once
 
-#include <deformseg/default_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
 
 #include <Eigen/Core>
 
@@ -17,7 +17,7 @@ struct Motion_box {
 };
 
 /// The box of `animation`. O(T V).
-inline Motion_box motion_box(const Surface_mesh_animation& animation) {
+inline Motion_box motion_box(const mesh::Surface_mesh_animation& animation) {
   Motion_box box;
   for (std::size_t t = 0; t < animation.num_frames(); ++t) {
     box.low = box.low.cwiseMin(animation.frame_matrix(t).rowwise().minCoeff());

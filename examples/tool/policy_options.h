@@ -1,8 +1,8 @@
 // The similarity policy options that the similarity, matrix and evaluate sub-commands share: the
-// command-line face of deformseg::Policy_choice.
+// command-line face of deformseg::similarity::Policy_choice.
 #pragma once
 
-#include <deformseg/motion_similarity.h>
+#include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/policy_choice.h>
 
 #include <CLI/CLI.hpp>
@@ -12,7 +12,7 @@
 
 namespace deformseg::tool {
 
-using Policy_options = Policy_choice;
+using Policy_options = similarity::Policy_choice;
 
 inline void add_policy_options(CLI::App& command, Policy_options& o) {
   const auto names = [](const auto& list) { return std::vector<std::string>(list.begin(), list.end()); };
@@ -24,17 +24,17 @@ inline void add_policy_options(CLI::App& command, Policy_options& o) {
                      "0.996): read the z-score or a rank, not the value; "
                      "graph: the thesis' evolving graphs, GED, clustering and label alignment; "
                      "self-similarity: each animation's own frame x frame distances after rigid alignment")
-      ->check(CLI::IsMember(names(policy_names)));
+      ->check(CLI::IsMember(names(similarity::policy_names)));
   command.add_option("--alignment", o.alignment,
                      "smith-waterman (local), dtw (global) or subsequence-dtw (open begin and end). Default: dtw for "
                      "motion-signature, smith-waterman for the others")
-      ->check(CLI::IsMember(names(alignment_names)));
+      ->check(CLI::IsMember(names(similarity::alignment_names)));
   command.add_option("--threshold", o.threshold, "graph: the deformed threshold of the segmentation, in [0, 1]. Default: 0.5")
       ->check(CLI::Range(0.0, 1.0));
   command.add_option("--up", o.up,
                      "motion-signature: the animations' up axis, whose rises and falls the signatures tell apart; "
                      "none: speeds alone, blind to direction. Default: +y (glTF's up)")
-      ->check(CLI::IsMember(names(up_names)));
+      ->check(CLI::IsMember(names(similarity::up_names)));
 }
 
 }  // namespace deformseg::tool

@@ -8,7 +8,7 @@
 
 namespace deformseg::tool {
 
-View view_of(const Surface_mesh_animation& animation) {
+View view_of(const mesh::Surface_mesh_animation& animation) {
   const Motion_box box = motion_box(animation);
   View view;
   view.low = box.low, view.high = box.high;
@@ -27,15 +27,15 @@ double edge(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vec
   return (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
 }
 
-Rgb shaded(Rgb color, double light) {
+color::Rgb shaded(color::Rgb color, double light) {
   const auto scale = [light](std::uint8_t c) { return std::uint8_t(std::lround(double(c) * light)); };
   return {scale(color.r), scale(color.g), scale(color.b)};
 }
 
 }  // namespace
 
-Image render_frame(const Surface_mesh_animation& animation, std::size_t t, const View& view,
-                   std::span<const Rgb> colors, int size) {
+Image render_frame(const mesh::Surface_mesh_animation& animation, std::size_t t, const View& view,
+                   std::span<const color::Rgb> colors, int size) {
   // The box's corners projected: the picture's extent, the same for every frame.
   const Eigen::Vector3d extent = view.high - view.low;
   const double width = std::abs(extent.dot(view.right)), height = std::abs(extent.dot(view.up));
@@ -56,7 +56,7 @@ Image render_frame(const Surface_mesh_animation& animation, std::size_t t, const
     const Eigen::Vector3d normal = (p1 - p0).cross(p2 - p0);
     const double area = edge(screen[i0], screen[i1], screen[i2]);
     if (normal.norm() == 0 || area == 0) continue;  // degenerate, or seen edge-on
-    const Rgb color = shaded(colors[j], 0.35 + 0.65 * std::abs(normal.normalized().dot(view.toward_viewer)));
+    const color::Rgb color = shaded(colors[j], 0.35 + 0.65 * std::abs(normal.normalized().dot(view.toward_viewer)));
     const double d0 = p0.dot(view.toward_viewer), d1 = p1.dot(view.toward_viewer), d2 = p2.dot(view.toward_viewer);
     const int x0 = std::max(0, int(std::floor(std::min({screen[i0].x(), screen[i1].x(), screen[i2].x()}))));
     const int x1 = std::min(image.width - 1, int(std::ceil(std::max({screen[i0].x(), screen[i1].x(), screen[i2].x()}))));

@@ -4,7 +4,7 @@
 
 #include "figure.h"
 
-#include <deformseg/default_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
 
 #include <Eigen/Core>
 
@@ -20,11 +20,11 @@ struct View {
 };
 
 /// The view of `animation`. O(T V).
-View view_of(const Surface_mesh_animation& animation);
+View view_of(const mesh::Surface_mesh_animation& animation);
 
 /// Frame `t` seen from `view` in an image whose longer side is `size` pixels, triangle j painted
 /// `colors[j]` (one colour a triangle) with a depth buffer. O(V + pixels covered).
-Image render_frame(const Surface_mesh_animation& animation, std::size_t t, const View& view,
-                   std::span<const Rgb> colors, int size);
+Image render_frame(const mesh::Surface_mesh_animation& animation, std::size_t t, const View& view,
+                   std::span<const color::Rgb> colors, int size);
 
 }  // namespace deformseg::tool

@@ -3,10 +3,10 @@
 #include "command.h"
 #include "policy_options.h"
 
-#include <deformseg/internal/file_io.h>
-#include <deformseg/motion_similarity.h>
+#include <deformseg/io/internal/file_io.h>
+#include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/significance.h>
-#include <deformseg/strain_colors.h>
+#include <deformseg/color/strain_colors.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -32,13 +32,13 @@ struct Similarity_command_options {
 // The similarity of A and B and, for a policy whose frames can be shuffled, the z-score of its
 // value against `copies` frame-shuffled copies of B.
 struct Similarity_with_significance {
-  Similarity similarity;
+  similarity::Similarity similarity;
   std::optional<double> z_score;
 };
 
 template <class Policy>
-Similarity_with_significance compare_with_significance(const Policy& policy, const Surface_mesh_animation& a,
-                                                       const Surface_mesh_animation& b, std::size_t copies,
+Similarity_with_significance compare_with_significance(const Policy& policy, const mesh::Surface_mesh_animation& a,
+                                                       const mesh::Surface_mesh_animation& b, std::size_t copies,
                                                        unsigned seed) {
   const auto da = policy.describe(a), db = policy.describe(b);
   Similarity_with_significance out{policy.compare(da, db), std::nullopt};
@@ -46,14 +46,14 @@ Similarity_with_significance compare_with_significance(const Policy& policy, con
     if (copies >= 2) {
       progress("z-score against " + std::to_string(copies) + " frame-shuffled copies of B");
       std::mt19937 random(seed);
-      out.z_score = similarity_significance(policy, da, db, copies, random);
+      out.z_score = similarity::similarity_significance(policy, da, db, copies, random);
     }
   }
   return out;
 }
 
 // A similarity compares motions: an input of one frame is refused, with the usual cause.
-void require_motion(const Surface_mesh_animation& animation, const std::string& input) {
+void require_motion(const mesh::Surface_mesh_animation& animation, const std::string& input) {
   if (animation.num_frames() < 2)
     throw invalid_input("an animation of " + std::to_string(animation.num_frames()) +
                             " frame: a motion needs at least 2 (an unquoted glob gives one input per file: quote it)",
@@ -62,7 +62,7 @@ void require_motion(const Surface_mesh_animation& animation, const std::string& 
 
 // The frame grid of A (rows) and B (columns), about 400 pixels on its longer side, grey lines at
 // the frame ticks, the aligned pairs in red, the value in the title.
-void write_alignment_figure(const Similarity& s, const Similarity_command_options& o, std::size_t frames_a,
+void write_alignment_figure(const similarity::Similarity& s, const Similarity_command_options& o, std::size_t frames_a,
                             std::size_t frames_b, const std::string& path) {
   progress("writing the alignment path to " + path);
   const int cell = cell_size(frames_a, frames_b, 400, 1, 40);
@@ -73,7 +73,7 @@ void write_alignment_figure(const Similarity& s, const Similarity_command_option
   char value[32];
   std::snprintf(value, sizeof value, "%.3f", s.value);
   Matrix_figure figure(frames_a, frames_b, cell,
-                       "similarity " + std::string(value) + " (" + o.policy.policy + ", " + alignment_name(o.policy) + ")",
+                       "similarity " + std::string(value) + " (" + o.policy.policy + ", " + similarity::alignment_name(o.policy) + ")",
                        rows, columns, std::nullopt);
   for (std::size_t i = 0; i < frames_a; ++i)
     for (std::size_t j = 0; j < frames_b; ++j) figure.fill_cell(i, j, {245, 245, 245});
@@ -83,25 +83,25 @@ void write_alignment_figure(const Similarity& s, const Similarity_command_option
 }
 
 void run_similarity(const Similarity_command_options& o) {
-  check_policy_choice(o.policy);
+  similarity::check_policy_choice(o.policy);
   if (o.copies == 1) throw invalid_input("--significance needs 0 (none) or at least 2 shuffled copies");
   if (o.copies.value_or(0) >= 2 && o.policy.policy == "graph")
     throw invalid_input("--significance does not apply to the graph policy, whose frames are key-frame labels");
   const std::size_t copies = o.copies.value_or(o.policy.policy == "graph" ? 0 : 20);
   Input_options options_b = o.b;
   options_b.threads = o.a.threads, options_b.fps = o.a.fps;  // given once for both
-  const Surface_mesh_animation a = read_input(o.a), b = read_input(options_b);
+  const mesh::Surface_mesh_animation a = read_input(o.a), b = read_input(options_b);
   require_motion(a, o.a.input);
   require_motion(b, o.b.input);
   progress("comparing " + std::to_string(a.num_frames()) + " and " + std::to_string(b.num_frames()) + " frames");
-  const Similarity_with_significance compared = with_policy_choice(
+  const Similarity_with_significance compared = similarity::with_policy_choice(
       o.policy, [&](const auto& policy) { return compare_with_significance(policy, a, b, copies, o.seed); });
-  const Similarity& s = compared.similarity;
+  const similarity::Similarity& s = compared.similarity;
   if (!o.png.empty()) write_alignment_figure(s, o, a.num_frames(), b.num_frames(), o.png);
   nlohmann::json pairs = nlohmann::json::array();
   for (const auto& [i, j] : s.alignment) pairs.push_back({i, j});
   const nlohmann::json document = {{"a", o.a.input}, {"b", o.b.input}, {"policy", o.policy.policy},
-                                   {"alignment_policy", alignment_name(o.policy)}, {"similarity", s.value},
+                                   {"alignment_policy", similarity::alignment_name(o.policy)}, {"similarity", s.value},
                                    {"score", s.score}, {"labels_a", s.labels_a}, {"labels_b", s.labels_b},
                                    {"alignment", pairs}, {"compared", s.compared},
                                    {"z_score", compared.z_score ? nlohmann::json(*compared.z_score) : nlohmann::json()},
@@ -136,12 +136,12 @@ void write_heat_map(const Eigen::MatrixXd& m, const Matrix_command_options& o, c
   const double low = std::min(m.minCoeff(), 1.0 - 1e-12);
   std::vector<std::string> names;
   for (const std::string& input : o.inputs) names.push_back(short_name(input));
-  Matrix_figure figure(n, n, cell, "similarity (" + o.policy.policy + ", " + alignment_name(o.policy) + ")",
+  Matrix_figure figure(n, n, cell, "similarity (" + o.policy.policy + ", " + similarity::alignment_name(o.policy) + ")",
                        named_axis("", names), named_axis("", names),
-                       Color_bar{"similarity", low, 1.0, [](double f) { return strain_color(f); }});
+                       Color_bar{"similarity", low, 1.0, [](double f) { return color::strain_color(f); }});
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j)
-      figure.fill_cell(i, j, strain_color((m(Eigen::Index(i), Eigen::Index(j)) - low) / (1.0 - low)));
+      figure.fill_cell(i, j, color::strain_color((m(Eigen::Index(i), Eigen::Index(j)) - low) / (1.0 - low)));
   figure.write(path);
 }
 
@@ -154,16 +154,16 @@ void write_csv(const Eigen::MatrixXd& m, const std::vector<std::string>& names, 
     text += names[std::size_t(i)];
     for (Eigen::Index j = 0; j < m.cols(); ++j) {
       text += ',';
-      internal::append_shortest(text, m(i, j));
+      deformseg::io::internal::append_shortest(text, m(i, j));
     }
     text += '\n';
   }
-  internal::write_file_bytes(path, text);
+  deformseg::io::internal::write_file_bytes(path, text);
 }
 
 void run_matrix(const Matrix_command_options& o) {
-  check_policy_choice(o.policy);
-  std::vector<Surface_mesh_animation> animations;
+  similarity::check_policy_choice(o.policy);
+  std::vector<mesh::Surface_mesh_animation> animations;
   for (const auto& input : o.inputs)
   {
     Input_options read;
@@ -173,8 +173,8 @@ void run_matrix(const Matrix_command_options& o) {
   }
   progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
   Matrix_progress report{.descriptions = animations.size()};
-  const Eigen::MatrixXd m = with_policy_choice(
-      o.policy, [&](const auto& policy) { return similarity_matrix(animations, policy, std::ref(report)); });
+  const Eigen::MatrixXd m = similarity::with_policy_choice(
+      o.policy, [&](const auto& policy) { return similarity::similarity_matrix(animations, policy, std::ref(report)); });
   if (!o.csv.empty()) write_csv(m, o.inputs, o.csv);
   if (!o.png.empty()) write_heat_map(m, o, o.png);
   nlohmann::json rows = nlohmann::json::array();
@@ -183,7 +183,7 @@ void run_matrix(const Matrix_command_options& o) {
     for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
   }
   const nlohmann::json document = {{"inputs", o.inputs}, {"policy", o.policy.policy},
-                                   {"alignment_policy", alignment_name(o.policy)}, {"similarity", rows}};
+                                   {"alignment_policy", similarity::alignment_name(o.policy)}, {"similarity", rows}};
   write_outputs(document, o.json, [&] {
     for (std::size_t i = 0; i < o.inputs.size(); ++i) {
       std::cout << i << "  " << o.inputs[i] << "\n  ";

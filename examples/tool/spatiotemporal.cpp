@@ -2,11 +2,11 @@
 // key frames, as JSON, DOT files and meshes coloured by segment.
 #include "command.h"
 
-#include <deformseg/evolving_graph.h>
-#include <deformseg/face_areas.h>
-#include <deformseg/io/write_evolving_graph.h>
-#include <deformseg/io/write_sequence.h>
-#include <deformseg/segment_colors.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
+#include <deformseg/mesh/face_areas.h>
+#include <deformseg/io/graphviz.h>
+#include <deformseg/io/frame_sequence.h>
+#include <deformseg/color/segment_colors.h>
 
 #include <iostream>
 #include <memory>
@@ -19,17 +19,17 @@ struct Spatiotemporal_command_options {
   Input_options input;
   std::optional<std::string> reference;  // none given: previous, or rest with a reference mesh
   std::string reference_mesh;
-  Spatiotemporal_options segments;
+  spatiotemporal::Spatiotemporal_options segments;
   std::string json;
   std::string dot;
   std::string mesh_dir;
 };
 
-nlohmann::json key_frame_json(const Key_frame& k) {
+nlohmann::json key_frame_json(const spatiotemporal::Key_frame& k) {
   nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
-  const Segment_graph& g = k.graph;
+  const spatiotemporal::Segment_graph& g = k.graph;
   for (std::size_t v = 0; v < boost::num_vertices(g); ++v) {
-    const bool rigid = g[v].kind == Segment_kind::rigid;
+    const bool rigid = g[v].kind == spatiotemporal::Segment_kind::rigid;
     nodes.push_back({{"id", v},
                      {"kind", rigid ? "rigid" : "deformed"},
                      {"segment", rigid ? nlohmann::json(nullptr) : nlohmann::json(g[v].segment)},
@@ -41,19 +41,19 @@ nlohmann::json key_frame_json(const Key_frame& k) {
   return {{"first", k.first_frame}, {"last", k.last_frame}, {"nodes", nodes}, {"edges", edges}};
 }
 
-nlohmann::json document_of(const Evolving_graph& graph) {
+nlohmann::json document_of(const spatiotemporal::Evolving_graph& graph) {
   nlohmann::json key_frames = nlohmann::json::array();
-  for (const Key_frame& k : graph) key_frames.push_back(key_frame_json(k));
+  for (const spatiotemporal::Key_frame& k : graph) key_frames.push_back(key_frame_json(k));
   return {{"frames", graph.num_frames()}, {"segments", graph.num_segments()}, {"key_frames", key_frames}};
 }
 
-void print(const Evolving_graph& graph) {
+void print(const spatiotemporal::Evolving_graph& graph) {
   std::cout << "frames      " << graph.num_frames() << "\nsegments    " << graph.num_segments() << "\nkey frames  "
             << graph.size() << "\nkey frame  frames  nodes (R rigid, D<segment> deformed)  edges\n";
   for (std::size_t k = 0; k < graph.size(); ++k) {
-    const Segment_graph& g = graph[k].graph;
+    const spatiotemporal::Segment_graph& g = graph[k].graph;
     std::cout << k << "  " << graph[k].first_frame << "-" << graph[k].last_frame << " ";
-    for (std::size_t v = 0; v < boost::num_vertices(g); ++v) std::cout << ' ' << node_label(g[v]);
+    for (std::size_t v = 0; v < boost::num_vertices(g); ++v) std::cout << ' ' << spatiotemporal::node_label(g[v]);
     std::cout << "  " << boost::num_edges(g) << '\n';
   }
 }
@@ -61,23 +61,23 @@ void print(const Evolving_graph& graph) {
 void run(const Spatiotemporal_command_options& o) {
   if (!o.reference_mesh.empty() && o.reference == "previous")
     throw invalid_input("--reference-mesh is a rest pose: it excludes --reference previous");
-  const Surface_mesh_animation animation = read_input(o.input);
-  Spatiotemporal_options options = o.segments;
+  const mesh::Surface_mesh_animation animation = read_input(o.input);
+  spatiotemporal::Spatiotemporal_options options = o.segments;
   options.reference = o.reference.value_or(o.reference_mesh.empty() ? "previous" : "rest") == "rest"
-                          ? Strain_reference::rest_pose
-                          : Strain_reference::previous_pose;
-  const std::optional<Surface_mesh> reference_mesh =
+                          ? strain::Strain_reference::rest_pose
+                          : strain::Strain_reference::previous_pose;
+  const std::optional<mesh::Surface_mesh> reference_mesh =
       o.reference_mesh.empty() ? std::nullopt : std::optional(read_reference_mesh(o.reference_mesh));
   progress("segmenting " + std::to_string(animation.num_faces()) + " triangles x " +
            std::to_string(animation.num_frames()) + " frames");
-  const Spatiotemporal_segmentation segmentation =
-      reference_mesh ? spatiotemporal_segmentation(naming_reference_mesh(o.reference_mesh, [&] {
-                         return compute_strain(animation, *reference_mesh, {.threads = o.input.threads});
+  const spatiotemporal::Spatiotemporal_segmentation segmentation =
+      reference_mesh ? spatiotemporal::spatiotemporal_segmentation(naming_reference_mesh(o.reference_mesh, [&] {
+                         return strain::compute_strain(animation, *reference_mesh, {.threads = o.input.threads});
                        }), animation.triangles(), options)
-                     : spatiotemporal_segmentation(animation, options);
-  const std::vector<double> areas = face_areas(animation, 0);
-  const Frame_segments frames(segmentation, animation.triangles(), areas);
-  const Evolving_graph graph = evolving_graph(frames);
+                     : spatiotemporal::spatiotemporal_segmentation(animation, options);
+  const std::vector<double> areas = mesh::face_areas(animation, 0);
+  const spatiotemporal::Frame_segments frames(segmentation, animation.triangles(), areas);
+  const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(frames);
   if (!o.dot.empty()) {
     progress("writing " + std::to_string(graph.size()) + " key frame graphs to " + o.dot);
     io::write_key_frames_dot(graph, o.dot);
@@ -85,7 +85,7 @@ void run(const Spatiotemporal_command_options& o) {
   if (!o.mesh_dir.empty()) {
     progress("writing " + std::to_string(animation.num_frames()) + " meshes coloured by segment to " + o.mesh_dir);
     io::write_sequence(animation, o.mesh_dir,
-                       {.face_colors = [&](std::size_t t) { return segment_face_colors(frames, t); }});
+                       {.face_colors = [&](std::size_t t) { return color::segment_face_colors(frames, t); }});
   }
   write_outputs(document_of(graph), o.json, [&] { print(graph); });
 }

@@ -3,10 +3,10 @@
 #include "command.h"
 #include "render.h"
 
-#include <deformseg/io/write_sequence.h>
-#include <deformseg/io/write_strain_field.h>
-#include <deformseg/strain.h>
-#include <deformseg/strain_colors.h>
+#include <deformseg/io/frame_sequence.h>
+#include <deformseg/io/strain_field.h>
+#include <deformseg/strain/strain.h>
+#include <deformseg/color/strain_colors.h>
 
 #include <algorithm>
 #include <cmath>
@@ -35,54 +35,54 @@ struct Strain_command_options {
 };
 
 // The strain against a frame, or against the reference mesh when there is one.
-template <StrainMeasure Measure, StrainNormalization Normalization>
-Strain_field<float> field_with(const Surface_mesh_animation& animation, const Surface_mesh* reference_mesh,
-                               const Strain_command_options& o, const Strain_options<Measure, Normalization>& options) {
-  if (!reference_mesh) return compute_strain(animation, options);
-  return naming_reference_mesh(o.reference_mesh, [&] { return compute_strain(animation, *reference_mesh, options); });
+template <strain::StrainMeasure Measure, strain::StrainNormalization Normalization>
+strain::Strain_field<float> field_with(const mesh::Surface_mesh_animation& animation, const mesh::Surface_mesh* reference_mesh,
+                               const Strain_command_options& o, const strain::Strain_options<Measure, Normalization>& options) {
+  if (!reference_mesh) return strain::compute_strain(animation, options);
+  return naming_reference_mesh(o.reference_mesh, [&] { return strain::compute_strain(animation, *reference_mesh, options); });
 }
 
 // The strain field the options ask for, with a measure and a normalisation chosen at run time.
-template <StrainMeasure Measure>
-Strain_field<float> field_with(const Surface_mesh_animation& animation, const Surface_mesh* reference_mesh,
+template <strain::StrainMeasure Measure>
+strain::Strain_field<float> field_with(const mesh::Surface_mesh_animation& animation, const mesh::Surface_mesh* reference_mesh,
                                const Strain_command_options& o, Measure measure) {
-  const auto reference = o.reference == "rest" ? Strain_reference::rest_pose : Strain_reference::previous_pose;
+  const auto reference = o.reference == "rest" ? strain::Strain_reference::rest_pose : strain::Strain_reference::previous_pose;
   const int threads = o.input.threads;
   if (o.normalize == "none")
     return field_with(animation, reference_mesh, o,
-                      Strain_options<Measure, No_normalization>{.reference = reference, .rest_frame = o.rest_frame,
+                      strain::Strain_options<Measure, strain::No_normalization>{.reference = reference, .rest_frame = o.rest_frame,
                                                                 .measure = measure, .threads = threads});
   return field_with(animation, reference_mesh, o,
-                    Strain_options<Measure, Gaussian_normalization>{.reference = reference, .rest_frame = o.rest_frame,
+                    strain::Strain_options<Measure, strain::Gaussian_normalization>{.reference = reference, .rest_frame = o.rest_frame,
                                                                     .measure = measure,
                                                                     .normalization = {.sigma = o.sigma},
                                                                     .threads = threads});
 }
 
-Strain_field<float> field_of(const Surface_mesh_animation& animation, const Surface_mesh* reference_mesh,
+strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& animation, const mesh::Surface_mesh* reference_mesh,
                              const Strain_command_options& o) {
-  if (o.measure == "green-lagrange") return field_with(animation, reference_mesh, o, Green_lagrange_strain{});
-  if (o.measure == "frobenius") return field_with(animation, reference_mesh, o, Frobenius_strain{});
-  if (o.measure == "area-ratio") return field_with(animation, reference_mesh, o, Area_ratio_strain{});
-  return field_with(animation, reference_mesh, o, Max_principal_strain{});
+  if (o.measure == "green-lagrange") return field_with(animation, reference_mesh, o, strain::Green_lagrange_strain{});
+  if (o.measure == "frobenius") return field_with(animation, reference_mesh, o, strain::Frobenius_strain{});
+  if (o.measure == "area-ratio") return field_with(animation, reference_mesh, o, strain::Area_ratio_strain{});
+  return field_with(animation, reference_mesh, o, strain::Max_principal_strain{});
 }
 
 // The colours of frame t: of the normalised strain, or, for a raw field, of the strain normalised
 // the default way for the picture only.
-std::vector<float> colour_values(const Strain_field<float>& field) {
+std::vector<float> colour_values(const strain::Strain_field<float>& field) {
   std::vector<float> values(field.values().begin(), field.values().end());
-  if (!field.sigma()) Gaussian_normalization{}.normalize(Raw_strain_field<float>{values, field.num_faces()});
+  if (!field.sigma()) strain::Gaussian_normalization{}.normalize(strain::Raw_strain_field<float>{values, field.num_faces()});
   return values;
 }
 
-void write_meshes(const Surface_mesh_animation& animation, const Strain_field<float>& field,
+void write_meshes(const mesh::Surface_mesh_animation& animation, const strain::Strain_field<float>& field,
                   const std::string& folder) {
   progress("writing " + std::to_string(animation.num_frames()) + " coloured meshes to " + folder);
   const std::vector<float> values = colour_values(field);
   const std::size_t faces = field.num_faces();
   io::write_sequence(animation, folder,
                      {.face_colors = [&](std::size_t t) {
-                       return strain_colors(std::span<const float>(values).subspan(t * faces, faces));
+                       return color::strain_colors(std::span<const float>(values).subspan(t * faces, faces));
                      }});
 }
 
@@ -97,7 +97,7 @@ std::vector<std::size_t> frames_to_draw(const Strain_command_options& o, std::si
 
 // A strip of frames, each seen from the same side and coloured by normalised strain (viridis),
 // named by its frame, with the colour bar on the right.
-void write_picture(const Surface_mesh_animation& animation, const Strain_field<float>& field,
+void write_picture(const mesh::Surface_mesh_animation& animation, const strain::Strain_field<float>& field,
                    const std::vector<std::size_t>& frames, const Strain_command_options& o) {
   progress("drawing " + std::to_string(frames.size()) + " frames coloured by strain into " + o.png);
   const std::vector<float> values = colour_values(field);
@@ -106,10 +106,10 @@ void write_picture(const Surface_mesh_animation& animation, const Strain_field<f
   std::vector<Image> pictures;
   for (std::size_t t : frames) {
     const auto strains = std::span<const float>(values).subspan(t * field.num_faces(), field.num_faces());
-    pictures.push_back(render_frame(animation, t, view, strain_colors(strains), panel));
+    pictures.push_back(render_frame(animation, t, view, color::strain_colors(strains), panel));
   }
   const Color_bar bar{field.sigma() ? "normalised strain" : "strain, normalised for the picture", 0, 1,
-                      [](double f) { return strain_color(f); }};
+                      [](double f) { return color::strain_color(f); }};
   const int title_height = text_height(2) + gap, label_height = text_height() + 4;
   const int height = pictures.front().height;
   Image image(padding + int(frames.size()) * (pictures.front().width + gap) + padding + color_bar_width(bar) + padding,
@@ -125,7 +125,7 @@ void write_picture(const Surface_mesh_animation& animation, const Strain_field<f
   write_png(image, o.png);
 }
 
-void write_field(const Strain_field<float>& field, const std::string& path) {
+void write_field(const strain::Strain_field<float>& field, const std::string& path) {
   progress("writing the field to " + path);
   if (std::filesystem::path(path).extension() == ".csv")
     io::write_strain_csv(field, path);
@@ -133,7 +133,7 @@ void write_field(const Strain_field<float>& field, const std::string& path) {
     io::write_strain_binary(field, path);
 }
 
-nlohmann::json summary(const Strain_command_options& o, const Strain_field<float>& field) {
+nlohmann::json summary(const Strain_command_options& o, const strain::Strain_field<float>& field) {
   nlohmann::json frames = nlohmann::json::array();
   for (std::size_t t = 0; t < field.num_frames(); ++t) {
     const auto values = field.frame(t);
@@ -172,13 +172,13 @@ void run(const Strain_command_options& o) {
   if (!o.reference_mesh.empty() && (o.reference == "previous" || o.rest_frame != 0))
     throw invalid_input("--reference-mesh takes the place of the rest frame: it excludes --reference previous and "
                         "--rest-frame");
-  const Surface_mesh_animation animation = read_input(o.input);
+  const mesh::Surface_mesh_animation animation = read_input(o.input);
   const std::vector<std::size_t> drawn = o.png.empty() ? std::vector<std::size_t>{} : frames_to_draw(o, animation.num_frames());
-  std::optional<Surface_mesh> reference_mesh;
+  std::optional<mesh::Surface_mesh> reference_mesh;
   if (!o.reference_mesh.empty()) reference_mesh = read_reference_mesh(o.reference_mesh);
   progress("computing the strain of " + std::to_string(animation.num_faces()) + " triangles x " +
            std::to_string(animation.num_frames()) + " frames");
-  const Strain_field<float> field = field_of(animation, reference_mesh ? &*reference_mesh : nullptr, o);
+  const strain::Strain_field<float> field = field_of(animation, reference_mesh ? &*reference_mesh : nullptr, o);
   if (!o.out.empty()) write_field(field, o.out);
   if (!o.mesh_dir.empty()) write_meshes(animation, field, o.mesh_dir);
   if (!o.png.empty()) write_picture(animation, field, drawn, o);

@@ -2,9 +2,9 @@
 #include "command.h"
 
 #include <deformseg/io/point_cache.h>
-#include <deformseg/io/write_obj.h>
-#include <deformseg/io/write_sequence.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/io/obj.h>
+#include <deformseg/io/frame_sequence.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <charconv>
 #include <filesystem>
@@ -23,7 +23,7 @@ struct Synth_options {
   double blend_width = 0.15;
   std::vector<std::string> schedule{"10:0", "10:90", "10:", "10:0"};
   std::string easing = "smooth";
-  Tube_shape shape;
+  mesh::Tube_shape shape;
   double scale = 1.0;
   std::vector<double> rotate{0, 0, 1, 0};
   std::vector<double> translate{0, 0, 0};
@@ -41,11 +41,11 @@ double parse_number(std::string_view text, std::string_view what) {
 }
 
 // "FRAMES:ANGLE,ANGLE,..." in degrees, one angle per joint; "FRAMES:" holds the pose.
-Tube_phase parse_phase(const std::string& phase) {
+mesh::Tube_phase parse_phase(const std::string& phase) {
   const auto colon = phase.find(':');
   if (colon == std::string::npos)
     throw invalid_input("--schedule: phase '" + phase + "' is not FRAMES:ANGLE[,ANGLE...]");
-  Tube_phase result{.frames = std::size_t(parse_number(phase.substr(0, colon), phase)), .angles = {}};
+  mesh::Tube_phase result{.frames = std::size_t(parse_number(phase.substr(0, colon), phase)), .angles = {}};
   for (std::size_t begin = colon + 1; begin < phase.size();) {
     const auto comma = std::min(phase.find(',', begin), phase.size());
     result.angles.push_back(parse_number(phase.substr(begin, comma - begin), phase) * degree);
@@ -54,14 +54,14 @@ Tube_phase parse_phase(const std::string& phase) {
   return result;
 }
 
-Bending_tube specification(const Synth_options& o) {
-  Bending_tube spec{.shape = o.shape, .joints = {}, .schedule = {}, .placement = {}};
+mesh::Bending_tube specification(const Synth_options& o) {
+  mesh::Bending_tube spec{.shape = o.shape, .joints = {}, .schedule = {}, .placement = {}};
   for (std::size_t j = 0; j < o.joints.size(); ++j)
     spec.joints.push_back({.position = o.joints[j], .blend_width = o.blend_width,
                            .direction = j < o.directions.size() ? o.directions[j] * degree : 0.0});
   for (const auto& phase : o.schedule) {
     spec.schedule.push_back(parse_phase(phase));
-    spec.schedule.back().easing = o.easing == "linear" ? Easing::linear : Easing::smooth;
+    spec.schedule.back().easing = o.easing == "linear" ? mesh::Easing::linear : mesh::Easing::smooth;
   }
   const Eigen::Vector3d axis(o.rotate[0], o.rotate[1], o.rotate[2]);
   if (axis.norm() == 0) throw invalid_input("--rotate: the axis must not be zero");
@@ -71,7 +71,7 @@ Bending_tube specification(const Synth_options& o) {
   return spec;
 }
 
-nlohmann::json ground_truth(const Synthetic_animation<>& tube, const std::vector<std::filesystem::path>& files) {
+nlohmann::json ground_truth(const mesh::Synthetic_animation<>& tube, const std::vector<std::filesystem::path>& files) {
   nlohmann::json phases = nlohmann::json::array();
   for (const auto& [first, last] : tube.phase_frames) phases.push_back({{"first", first}, {"last", last}});
   nlohmann::json angles = nlohmann::json::array();
@@ -87,7 +87,7 @@ nlohmann::json ground_truth(const Synthetic_animation<>& tube, const std::vector
           {"files", written}};
 }
 
-std::vector<std::filesystem::path> write(const Synthetic_animation<>& tube, const Synth_options& o) {
+std::vector<std::filesystem::path> write(const mesh::Synthetic_animation<>& tube, const Synth_options& o) {
   const std::filesystem::path out(o.out);
   std::filesystem::create_directories(out);
   if (o.format == "obj" || o.format == "ply")
@@ -141,7 +141,7 @@ void add_synth_command(CLI::App& app) {
       ->delimiter(',')->expected(3);
   add_json_option(*command, o->json, "the ground truth");
   command->callback([o] {
-    const auto tube = make_bending_tube(specification(*o));
+    const auto tube = mesh::make_bending_tube(specification(*o));
     progress("writing " + std::to_string(tube.animation.num_frames()) + " frames to " + o->out);
     const nlohmann::json truth = ground_truth(tube, write(tube, *o));
     write_json(truth, (std::filesystem::path(o->out) / "ground_truth.json").string());

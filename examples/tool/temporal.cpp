@@ -1,8 +1,8 @@
 // deformseg temporal INPUT: intervals of similar poses, from the normalised rest-pose strain.
 #include "command.h"
 
-#include <deformseg/internal/file_io.h>
-#include <deformseg/temporal_segmentation.h>
+#include <deformseg/io/internal/file_io.h>
+#include <deformseg/temporal/temporal_segmentation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,40 +30,40 @@ struct Temporal_command_options {
 };
 
 // The threshold (or penalty) the options give, or the policy's default.
-Segmentation_threshold threshold_of(const Temporal_command_options& o, Segmentation_threshold fallback) {
+temporal::Segmentation_threshold threshold_of(const Temporal_command_options& o, temporal::Segmentation_threshold fallback) {
   if (!o.threshold) return fallback;
   return {.value = *o.threshold, .relative = !o.absolute};
 }
 
 // The segmentation with the policy the options name; also what threshold it used.
-Temporal_segmentation segment(const Temporal_command_options& o, const Segment_cost& cost,
-                              Segmentation_threshold& used) {
+temporal::Temporal_segmentation segment(const Temporal_command_options& o, const temporal::Segment_cost& cost,
+                              temporal::Segmentation_threshold& used) {
   if (o.method == "binary-split") {
-    const Binary_split policy{.threshold = threshold_of(o, Binary_split{}.threshold), .min_length = o.min_length};
+    const temporal::Binary_split policy{.threshold = threshold_of(o, temporal::Binary_split{}.threshold), .min_length = o.min_length};
     used = policy.threshold;
-    return segment_frames(cost, policy);
+    return temporal::segment_frames(cost, policy);
   }
   if (o.method == "greedy") {
-    const Thesis_greedy policy{.threshold = threshold_of(o, Thesis_greedy{}.threshold)};
+    const temporal::Thesis_greedy policy{.threshold = threshold_of(o, temporal::Thesis_greedy{}.threshold)};
     used = policy.threshold;
-    return segment_frames(cost, policy);
+    return temporal::segment_frames(cost, policy);
   }
-  if (o.method == "barbic") return segment_frames(cost, Barbic_pca{});
-  const Optimal_partition policy{
-      .penalty = threshold_of(o, Optimal_partition{}.penalty), .segments = o.segments, .min_length = o.min_length};
+  if (o.method == "barbic") return temporal::segment_frames(cost, temporal::Barbic_pca{});
+  const temporal::Optimal_partition policy{
+      .penalty = threshold_of(o, temporal::Optimal_partition{}.penalty), .segments = o.segments, .min_length = o.min_length};
   used = policy.penalty;
-  return segment_frames(cost, policy);
+  return temporal::segment_frames(cost, policy);
 }
 
 void write_matrix(const Eigen::MatrixXf& d, const std::string& path) {
   progress("writing the frame distance matrix to " + path);
-  internal::Streamed_file file(path);
+  deformseg::io::internal::Streamed_file file(path);
   std::string line;
   for (Eigen::Index i = 0; i < d.rows(); ++i) {
     line.clear();
     for (Eigen::Index j = 0; j < d.cols(); ++j) {
       if (j > 0) line += ',';
-      internal::append_shortest(line, d(i, j));
+      deformseg::io::internal::append_shortest(line, d(i, j));
     }
     line += '\n';
     file.write(line);
@@ -73,7 +73,7 @@ void write_matrix(const Eigen::MatrixXf& d, const std::string& path) {
 
 // The matrix in grey (black: distance 0, white: the largest), about 400 pixels wide, with each
 // segment's diagonal block outlined in red, as the thesis draws them; frames along both axes.
-void write_figure(const Eigen::MatrixXf& d, const Temporal_segmentation& s, const std::string& input,
+void write_figure(const Eigen::MatrixXf& d, const temporal::Temporal_segmentation& s, const std::string& input,
                   const std::string& path) {
   progress("writing the figure to " + path);
   const auto frames = std::size_t(d.rows());
@@ -81,7 +81,7 @@ void write_figure(const Eigen::MatrixXf& d, const Temporal_segmentation& s, cons
   const double largest = std::max(double(d.maxCoeff()), double(std::numeric_limits<float>::min()));
   const auto grey = [](double fraction) {
     const auto level = std::uint8_t(std::lround(255 * std::clamp(fraction, 0.0, 1.0)));
-    return Rgb{level, level, level};
+    return color::Rgb{level, level, level};
   };
   Matrix_figure figure(frames, frames, cell,
                        std::to_string(s.segments.size()) + " segments of " + short_name(input), frame_axis("frame", frames, cell),
@@ -93,8 +93,8 @@ void write_figure(const Eigen::MatrixXf& d, const Temporal_segmentation& s, cons
   figure.write(path);
 }
 
-nlohmann::json document(const Temporal_command_options& o, const Temporal_segmentation& s,
-                        const Segmentation_threshold& threshold) {
+nlohmann::json document(const Temporal_command_options& o, const temporal::Temporal_segmentation& s,
+                        const temporal::Segmentation_threshold& threshold) {
   nlohmann::json segments = nlohmann::json::array();
   for (const auto& segment : s.segments)
     segments.push_back({{"first", segment.first}, {"last", segment.last}, {"cost", segment.cost}});
@@ -109,19 +109,19 @@ void run(const Temporal_command_options& o) {
   if (o.segments && o.method != "optimal") throw invalid_input("--segments asks for --method optimal");
   if (!o.reference_mesh.empty() && o.rest_frame != 0)
     throw invalid_input("--reference-mesh takes the place of the rest frame: it excludes --rest-frame");
-  const Surface_mesh_animation animation = read_input(o.input);
-  const std::optional<Surface_mesh> reference_mesh =
+  const mesh::Surface_mesh_animation animation = read_input(o.input);
+  const std::optional<mesh::Surface_mesh> reference_mesh =
       o.reference_mesh.empty() ? std::nullopt : std::optional(read_reference_mesh(o.reference_mesh));
   progress("computing the strain and the frame distances of " + std::to_string(animation.num_frames()) + " frames");
   const auto field = reference_mesh ? naming_reference_mesh(o.reference_mesh, [&] {
-    return compute_strain(animation, *reference_mesh, {.threads = o.input.threads});
-  }) : compute_strain(animation, {.rest_frame = o.rest_frame, .threads = o.input.threads});
-  const Frame_metric metric = o.metric == "l1" ? Frame_metric::l1
-                              : o.metric == "cosine" ? Frame_metric::cosine
-                                                     : Frame_metric::euclidean;
+    return strain::compute_strain(animation, *reference_mesh, {.threads = o.input.threads});
+  }) : strain::compute_strain(animation, {.rest_frame = o.rest_frame, .threads = o.input.threads});
+  const strain::Frame_metric metric = o.metric == "l1" ? strain::Frame_metric::l1
+                              : o.metric == "cosine" ? strain::Frame_metric::cosine
+                                                     : strain::Frame_metric::euclidean;
   const Eigen::MatrixXf distances = frame_distances(field, {.metric = metric, .threads = o.input.threads});
-  Segmentation_threshold used;
-  const Temporal_segmentation result = segment(o, Segment_cost(distances), used);
+  temporal::Segmentation_threshold used;
+  const temporal::Temporal_segmentation result = segment(o, temporal::Segment_cost(distances), used);
   if (!o.matrix.empty()) write_matrix(distances, o.matrix);
   if (!o.png.empty()) write_figure(distances, result, o.input.input, o.png);
   const nlohmann::json json = document(o, result, used);

@@ -6,8 +6,8 @@
 #include "view_data.h"
 #include "viewer_assets.h"
 
-#include <deformseg/internal/file_io.h>
-#include <deformseg/motion_similarity.h>
+#include <deformseg/io/internal/file_io.h>
+#include <deformseg/similarity/motion_similarity.h>
 
 #include <filesystem>
 #include <iostream>
@@ -43,7 +43,7 @@ void run(const View_command_options& o) {
   const View_coloring coloring = view_coloring(o.color);
   if (o.max_frames < 2) throw invalid_input("--max-frames must be at least 2");
   const auto three_js = three_js_files();
-  std::vector<Surface_mesh_animation> animations;
+  std::vector<mesh::Surface_mesh_animation> animations;
   std::vector<std::vector<std::size_t>> numbers(o.inputs.size());
   for (std::size_t k = 0; k < o.inputs.size(); ++k) {
     Input_options read;
@@ -62,7 +62,7 @@ void run(const View_command_options& o) {
   }
   if (animations.size() == 2) {
     progress("aligning the two animations");
-    const Similarity s = motion_similarity(animations[0], animations[1]);
+    const similarity::Similarity s = similarity::motion_similarity(animations[0], animations[1]);
     nlohmann::json pairs = nlohmann::json::array();
     for (const auto& [i, j] : s.alignment) pairs.push_back({i, j});
     document["alignment"] = {{"value", s.value}, {"policy", "motion signatures, DTW"}, {"pairs", pairs}};
@@ -70,10 +70,10 @@ void run(const View_command_options& o) {
   const std::filesystem::path out(o.out);
   std::filesystem::create_directories(out);
   progress("writing the page into " + o.out);
-  internal::write_file_bytes(out / "data.js", "window.DEFORMSEG_VIEW = " + document.dump() + ";\n");
-  internal::write_file_bytes(out / "index.html", std::string(viewer_assets::index_html));
-  internal::write_file_bytes(out / "viewer.js", std::string(viewer_assets::viewer_js));
-  internal::write_file_bytes(out / "viewer_core.js", std::string(viewer_assets::viewer_core_js));
+  deformseg::io::internal::write_file_bytes(out / "data.js", "window.DEFORMSEG_VIEW = " + document.dump() + ";\n");
+  deformseg::io::internal::write_file_bytes(out / "index.html", std::string(viewer_assets::index_html));
+  deformseg::io::internal::write_file_bytes(out / "viewer.js", std::string(viewer_assets::viewer_js));
+  deformseg::io::internal::write_file_bytes(out / "viewer_core.js", std::string(viewer_assets::viewer_core_js));
   for (const auto& [source, name] : three_js)
     std::filesystem::copy_file(source, out / name, std::filesystem::copy_options::overwrite_existing);
   std::cout << "open " << (std::filesystem::absolute(out) / "index.html").string() << '\n';

@@ -2,13 +2,13 @@
 #include "command.h"
 #include "motion_box.h"
 
-#include <deformseg/evolving_graph.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/face_areas.h>
-#include <deformseg/segment_colors.h>
-#include <deformseg/strain.h>
-#include <deformseg/strain_colors.h>
-#include <deformseg/temporal_segmentation.h>
+#include <deformseg/mesh/face_areas.h>
+#include <deformseg/color/segment_colors.h>
+#include <deformseg/strain/strain.h>
+#include <deformseg/color/strain_colors.h>
+#include <deformseg/temporal/temporal_segmentation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -39,11 +39,11 @@ std::string base64(std::span<const std::uint8_t> bytes) {
   return text;
 }
 
-Surface_mesh_animation evenly_sampled(const Surface_mesh_animation& animation, std::size_t max_frames,
+mesh::Surface_mesh_animation evenly_sampled(const mesh::Surface_mesh_animation& animation, std::size_t max_frames,
                                       std::vector<std::size_t>& numbers) {
   numbers = evenly_spaced_frames(animation.num_frames(), std::max<std::size_t>(max_frames, 1));
   if (numbers.size() == animation.num_frames()) return animation;
-  Surface_mesh_animation sampled(animation.face_graph());
+  mesh::Surface_mesh_animation sampled(animation.face_graph());
   for (std::size_t t : numbers)
     sampled.add_frame(std::span<const double>(animation.frame_matrix(t).data(), 3 * animation.num_vertices()));
   return sampled;
@@ -61,22 +61,22 @@ std::vector<std::uint8_t> little_endian(const std::vector<Word>& values) {
   return bytes;
 }
 
-nlohmann::json rgb(Rgb c) { return {c.r, c.g, c.b}; }
+nlohmann::json rgb(color::Rgb c) { return {c.r, c.g, c.b}; }
 
 // The faces' colours of every frame: a palette and an index into it per face per frame.
 struct Face_colors {
-  std::vector<Rgb> palette{};
+  std::vector<color::Rgb> palette{};
   std::vector<std::uint16_t> indices{};  // frame-major
   nlohmann::json legend{};
 };
 
 // Each face in the viridis colour of its normalised strain, quantised to 256 steps.
-Face_colors strain_colors_of(const Strain_field<float>& field, Strain_reference reference) {
+Face_colors strain_colors_of(const strain::Strain_field<float>& field, strain::Strain_reference reference) {
   Face_colors out;
-  for (int k = 0; k < 256; ++k) out.palette.push_back(strain_color(k / 255.0));
+  for (int k = 0; k < 256; ++k) out.palette.push_back(color::strain_color(k / 255.0));
   for (float v : field.values()) out.indices.push_back(std::uint16_t(std::lround(255 * std::clamp(double(v), 0.0, 1.0))));
   out.legend = {{"kind", "scale"},
-                {"title", reference == Strain_reference::rest_pose ? "normalised strain against frame 0"
+                {"title", reference == strain::Strain_reference::rest_pose ? "normalised strain against frame 0"
                                                                     : "normalised strain against the frame before"},
                 {"low", 0},
                 {"high", 1}};
@@ -84,10 +84,10 @@ Face_colors strain_colors_of(const Strain_field<float>& field, Strain_reference 
 }
 
 // Every face of a frame in the colour of the frame's temporal segment.
-Face_colors temporal_colors(const Temporal_segmentation& segments, std::size_t faces) {
+Face_colors temporal_colors(const temporal::Temporal_segmentation& segments, std::size_t faces) {
   Face_colors out{.legend = {{"kind", "list"}, {"title", "temporal segment"}, {"items", nlohmann::json::array()}}};
   for (std::size_t k = 0; k < segments.segments.size(); ++k) {
-    out.palette.push_back(segment_color(std::int32_t(k)));
+    out.palette.push_back(color::segment_color(std::int32_t(k)));
     out.legend["items"].push_back({{"name", "frames " + std::to_string(segments.segments[k].first) + "-" +
                                                 std::to_string(segments.segments[k].last)},
                                    {"color", k}});
@@ -98,19 +98,19 @@ Face_colors temporal_colors(const Temporal_segmentation& segments, std::size_t f
 
 // Each face in its spatio-temporal segment's colour (rigid: grey), as the meshes of
 // `spatiotemporal --mesh-dir` and the graph's nodes.
-Face_colors segment_colors_of(const Spatiotemporal_segmentation& segmentation) {
+Face_colors segment_colors_of(const spatiotemporal::Spatiotemporal_segmentation& segmentation) {
   Face_colors out{.legend = {{"kind", "list"}, {"title", "spatio-temporal segment"}, {"items", nlohmann::json::array()}}};
   std::map<std::int32_t, std::uint16_t> index_of;
   for (std::size_t t = 0; t < segmentation.num_frames(); ++t)
     for (std::int32_t label : segmentation.frame_labels(t)) {
       auto [at, added] = index_of.try_emplace(label, std::uint16_t(out.palette.size()));
-      if (added) out.palette.push_back(segment_color(label));
+      if (added) out.palette.push_back(color::segment_color(label));
       out.indices.push_back(at->second);
     }
   for (const auto& [label, index] : index_of)
     if (out.legend["items"].size() < 16)
-      out.legend["items"].push_back({{"name", node_label(Segment_node{.kind = label < 0 ? Segment_kind::rigid
-                                                                                      : Segment_kind::deformed,
+      out.legend["items"].push_back({{"name", spatiotemporal::node_label(spatiotemporal::Segment_node{.kind = label < 0 ? spatiotemporal::Segment_kind::rigid
+                                                                                      : spatiotemporal::Segment_kind::deformed,
                                                                       .segment = label})},
                                      {"color", index}});
   return out;
@@ -119,7 +119,7 @@ Face_colors segment_colors_of(const Spatiotemporal_segmentation& segmentation) {
 nlohmann::json colors_json(const Face_colors& colors, View_coloring coloring) {
   static const char* names[] = {"strain", "previous-strain", "temporal", "segments", "none"};
   nlohmann::json palette = nlohmann::json::array();
-  for (Rgb c : colors.palette) palette.push_back(rgb(c));
+  for (color::Rgb c : colors.palette) palette.push_back(rgb(c));
   const bool wide = colors.palette.size() > 256;
   std::vector<std::uint8_t> bytes;
   if (wide)
@@ -131,7 +131,7 @@ nlohmann::json colors_json(const Face_colors& colors, View_coloring coloring) {
 }
 
 // Positions quantised to 16 bits in the box of the whole motion.
-nlohmann::json positions_json(const Surface_mesh_animation& animation) {
+nlohmann::json positions_json(const mesh::Surface_mesh_animation& animation) {
   const auto [low, high] = motion_box(animation);
   const Eigen::Vector3d extent = (high - low).cwiseMax(std::numeric_limits<double>::min());
   std::vector<std::uint16_t> words;
@@ -146,17 +146,17 @@ nlohmann::json positions_json(const Surface_mesh_animation& animation) {
           {"positions", base64(little_endian(words))}};
 }
 
-nlohmann::json key_frames_json(const Evolving_graph& graph) {
+nlohmann::json key_frames_json(const spatiotemporal::Evolving_graph& graph) {
   nlohmann::json key_frames = nlohmann::json::array();
-  for (const Key_frame& k : graph) {
+  for (const spatiotemporal::Key_frame& k : graph) {
     nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
-    const Segment_graph& g = k.graph;
+    const spatiotemporal::Segment_graph& g = k.graph;
     for (std::size_t v = 0; v < boost::num_vertices(g); ++v) {
-      const bool rigid = g[v].kind == Segment_kind::rigid;
+      const bool rigid = g[v].kind == spatiotemporal::Segment_kind::rigid;
       nodes.push_back({{"kind", rigid ? "rigid" : "deformed"},
                        {"segment", rigid ? nlohmann::json(nullptr) : nlohmann::json(g[v].segment)},
                        {"area", g[v].area},
-                       {"color", rgb(segment_color(g[v].segment))}});
+                       {"color", rgb(color::segment_color(g[v].segment))}});
     }
     for (auto e : boost::make_iterator_range(boost::edges(g))) edges.push_back({boost::source(e, g), boost::target(e, g)});
     key_frames.push_back({{"first", k.first_frame}, {"last", k.last_frame}, {"nodes", nodes}, {"edges", edges}});
@@ -166,22 +166,22 @@ nlohmann::json key_frames_json(const Evolving_graph& graph) {
 
 }  // namespace
 
-nlohmann::json view_json(const Surface_mesh_animation& animation, const std::string& name,
+nlohmann::json view_json(const mesh::Surface_mesh_animation& animation, const std::string& name,
                          const std::vector<std::size_t>& frame_numbers, View_coloring coloring, int threads) {
   const std::size_t faces = animation.num_faces();
   // Each strain once: the rest-pose one serves the temporal segments (their default) and the
   // strain colours, the previous-pose one the spatio-temporal segments (theirs) and its colours.
-  const Strain_field<float> rest = compute_strain(animation, {.threads = threads});
-  const Strain_field<float> previous =
-      compute_strain(animation, {.reference = Strain_reference::previous_pose, .threads = threads});
-  const Temporal_segmentation segments = temporal_segmentation(rest);
-  const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(previous, animation.triangles());
-  const std::vector<double> areas = face_areas(animation, 0);
-  const Evolving_graph graph = evolving_graph(Frame_segments(segmentation, animation.triangles(), areas));
+  const strain::Strain_field<float> rest = strain::compute_strain(animation, {.threads = threads});
+  const strain::Strain_field<float> previous =
+      strain::compute_strain(animation, {.reference = strain::Strain_reference::previous_pose, .threads = threads});
+  const temporal::Temporal_segmentation segments = temporal::temporal_segmentation(rest);
+  const spatiotemporal::Spatiotemporal_segmentation segmentation = spatiotemporal::spatiotemporal_segmentation(previous, animation.triangles());
+  const std::vector<double> areas = mesh::face_areas(animation, 0);
+  const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segmentation, animation.triangles(), areas));
   Face_colors colors;
   switch (coloring) {
-    case View_coloring::strain: colors = strain_colors_of(rest, Strain_reference::rest_pose); break;
-    case View_coloring::previous_strain: colors = strain_colors_of(previous, Strain_reference::previous_pose); break;
+    case View_coloring::strain: colors = strain_colors_of(rest, strain::Strain_reference::rest_pose); break;
+    case View_coloring::previous_strain: colors = strain_colors_of(previous, strain::Strain_reference::previous_pose); break;
     case View_coloring::temporal: colors = temporal_colors(segments, faces); break;
     case View_coloring::segments: colors = segment_colors_of(segmentation); break;
     case View_coloring::none:

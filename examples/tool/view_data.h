@@ -4,7 +4,7 @@
 // file:// with no server.
 #pragma once
 
-#include <deformseg/default_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
 
 #include <nlohmann/json.hpp>
 
@@ -26,7 +26,7 @@ std::string base64(std::span<const std::uint8_t> bytes);
 
 /// At most `max_frames` frames of `animation`, evenly spaced from the first to the last (all of
 /// them when it has no more); `numbers` receives each kept frame's number in `animation`.
-Surface_mesh_animation evenly_sampled(const Surface_mesh_animation& animation, std::size_t max_frames,
+mesh::Surface_mesh_animation evenly_sampled(const mesh::Surface_mesh_animation& animation, std::size_t max_frames,
                                       std::vector<std::size_t>& numbers);
 
 /// The page's description of one animation: `name`, `frames`, `vertices`, `triangles`,
@@ -36,7 +36,7 @@ Surface_mesh_animation evenly_sampled(const Surface_mesh_animation& animation, s
 /// `color` (`mode`, `palette` of [r, g, b], `index_bytes` 1 or 2, `indices`: base64 of a palette
 /// index per face per frame, `legend`), `segments` (the temporal segments, `first`, `last`) and
 /// `key_frames` (`first`, `last`, `nodes` with `kind`, `segment`, `area`, `color`, and `edges`).
-nlohmann::json view_json(const Surface_mesh_animation& animation, const std::string& name,
+nlohmann::json view_json(const mesh::Surface_mesh_animation& animation, const std::string& name,
                          const std::vector<std::size_t>& frame_numbers, View_coloring coloring, int threads);
 
 }  // namespace deformseg::tool

@@ -149,7 +149,7 @@ inline thread_local Interruption_state interruption_state{};
 /// @code
 /// std::atomic<bool> stop_requested{false};  // set by a GUI's Cancel button
 /// deformseg::Interruption_scope scope([&] { return !stop_requested.load(); });
-/// try { auto m = deformseg::similarity_matrix(animations); } catch (const deformseg::cancelled&) {}
+/// try { auto m = deformseg::similarity::similarity_matrix(animations); } catch (const deformseg::cancelled&) {}
 /// @endcode
 class Interruption_scope {
 public:

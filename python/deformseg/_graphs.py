@@ -70,7 +70,7 @@ class KeyFrame:
 
 @dataclass(frozen=True)
 class EvolvingGraph:
-    """The evolving graph of an animation (deformseg::Evolving_graph): its key frames in time order,
+    """The evolving graph of an animation (deformseg::spatiotemporal::Evolving_graph): its key frames in time order,
     which cover frames 0..num_frames-1 exactly once, and the number of spatio-temporal segments
     (deformed node ids are in [0, num_segments)). A sequence of KeyFrame."""
 
@@ -111,7 +111,7 @@ def evolving_graph(animation: _deformseg.Animation, *, threshold: float = 0.5, r
                    reference_mesh: Optional[Union[str, "os.PathLike[str]"]] = None, min_triangles: int = 10,
                    min_frames: int = 2, max_island: int = 30) -> EvolvingGraph:
     """The spatio-temporal segmentation of `animation` and the evolving graph of its key frames
-    (deformseg::evolving_graph with Spatiotemporal_options; the tool's ``spatiotemporal``).
+    (deformseg::spatiotemporal::evolving_graph with Spatiotemporal_options; the tool's ``spatiotemporal``).
 
     threshold (default 0.5): a triangle-frame is deformed above this normalised strain, in [0, 1];
     reference: "previous" (the default; deformed while it moves) or "rest" (away from frame 0, or from

@@ -6,7 +6,7 @@
 // with tar into a temporary folder; without it, a generated animation of the same size and number
 // format (8432 vertices, 16864 triangles, 48 frames, 17 significant digits). Reports bytes per
 // second (MB/s) per thread, and frames per second for the whole sequence.
-#include <deformseg/default_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/obj.h>
 #include <deformseg/io/read_mesh.h>
@@ -106,7 +106,7 @@ void read_mesh_points(benchmark::State& state) {
 
 void cgal_read_polygon_mesh(benchmark::State& state) {
   for (auto _ : state) {
-    deformseg::Surface_mesh mesh;
+    deformseg::mesh::Surface_mesh mesh;
     if (!CGAL::IO::read_polygon_mesh(one_frame().string(), mesh)) state.SkipWithError("CGAL could not read the frame");
     benchmark::DoNotOptimize(mesh.number_of_faces());
   }

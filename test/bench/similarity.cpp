@@ -8,8 +8,8 @@
 // `describe` is one animation's description (motion signatures; strain and histograms; or strain,
 // segments, evolving graph and the GEDs of its key frames), `compare` the comparison of two descriptions,
 // `end_to_end` motion_similarity (two describes and a compare), `matrix` similarity_matrix of 10.
-#include <deformseg/motion_similarity.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <benchmark/benchmark.h>
 
@@ -22,10 +22,10 @@ using namespace deformseg;
 namespace {
 
 // A tube bending its two joints to random angles, phase after phase, 500 frames in all.
-Surface_mesh_animation tube(unsigned seed) {
+mesh::Surface_mesh_animation tube(unsigned seed) {
   std::mt19937 random(seed);
   std::uniform_int_distribution<int> angle(-90, 90), length(10, 40);
-  Bending_tube spec;
+  mesh::Bending_tube spec;
   spec.shape = {.radius = 0.1, .length = 1.0, .sectors = 100, .rings = 100, .caps = true};
   spec.joints = {{.position = 0.3, .blend_width = 0.2}, {.position = 0.7, .blend_width = 0.2}};
   std::size_t frames = 1;
@@ -35,12 +35,12 @@ Surface_mesh_animation tube(unsigned seed) {
     spec.schedule.push_back({phase, {a, b}});
     frames += phase;
   }
-  return make_bending_tube(spec).animation;
+  return mesh::make_bending_tube(spec).animation;
 }
 
-const std::vector<Surface_mesh_animation>& tubes() {
-  static const std::vector<Surface_mesh_animation> all = [] {
-    std::vector<Surface_mesh_animation> made;
+const std::vector<mesh::Surface_mesh_animation>& tubes() {
+  static const std::vector<mesh::Surface_mesh_animation> all = [] {
+    std::vector<mesh::Surface_mesh_animation> made;
     for (unsigned seed = 1; seed <= 10; ++seed) made.push_back(tube(seed));
     return made;
   }();
@@ -64,17 +64,17 @@ void compare(benchmark::State& state) {
 
 template <class Policy>
 void end_to_end(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(motion_similarity(tubes()[0], tubes()[1], Policy{}));
+  for (auto _ : state) benchmark::DoNotOptimize(similarity::motion_similarity(tubes()[0], tubes()[1], Policy{}));
 }
 
 template <class Policy>
 void matrix(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(similarity_matrix(tubes(), Policy{}));
+  for (auto _ : state) benchmark::DoNotOptimize(similarity::similarity_matrix(tubes(), Policy{}));
 }
 
-using Signatures = Motion_signature_similarity<>;
-using Histograms = Strain_distribution_similarity<>;
-using Graphs = Evolving_graph_similarity<>;
+using Signatures = similarity::Motion_signature_similarity<>;
+using Histograms = similarity::Strain_distribution_similarity<>;
+using Graphs = similarity::Evolving_graph_similarity<>;
 
 }  // namespace
 

@@ -12,7 +12,7 @@
 // outside the repository, so that a sweep reads the clips once.
 #include <deformseg/io/gltf.h>
 #include <deformseg/internal/parallel_for.h>
-#include <deformseg/motion_similarity.h>
+#include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/self_similarity_matching.h>
 
 #include <algorithm>
@@ -64,8 +64,8 @@ void read_distances(std::vector<Clip>& clips, const fs::path& dir) {
       const io::Sampled_gltf s = gltf.sample(io::Gltf_read_options{.clip = c->clip, .fps = 30});
       const auto described = std::chrono::steady_clock::now();
       const std::span<const double> first(s.positions.data(), 3 * s.num_vertices);
-      const auto weights = internal::vertex_area_weights(first, std::span(s.triangles), s.num_vertices);
-      c->distances = internal::procrustes_distances(s.positions, weights);
+      const auto weights = deformseg::signatures::vertex_area_weights(first, std::span(s.triangles), s.num_vertices);
+      c->distances = deformseg::signatures::procrustes_distances(s.positions, weights);
       describe_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - described).count();
     }
     std::cerr << file << ": " << members.size() << " clips\n";
@@ -179,8 +179,8 @@ void report(const std::vector<Clip>& clips, const Eigen::MatrixXd& value) {
 // Today's default policy on the same clips, read as meshes (welded); a clip that does not read
 // (RobotExpressive until mesh repair lands) is left out of queries and candidates.
 int evaluate_default(std::vector<Clip> clips, const fs::path& dir) {
-  const Default_similarity policy;
-  std::vector<Default_similarity::Description> described;
+  const similarity::Default_similarity policy;
+  std::vector<similarity::Default_similarity::Description> described;
   std::vector<Clip> kept;
   const auto start = std::chrono::steady_clock::now();
   std::map<std::string, std::vector<const Clip*>> by_file;
@@ -207,7 +207,7 @@ int evaluate_default(std::vector<Clip> clips, const fs::path& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  Self_similarity_matching<> policy;
+  similarity::Self_similarity_matching<> policy;
   std::string leave_out, cache;
   bool temporal = false, baseline = false;
   for (int i = 1; i + 1 < argc; i += 2) {
@@ -216,7 +216,7 @@ int main(int argc, char** argv) {
     else if (key == "--quantiles") policy.options.quantiles = std::stoul(value);
     else if (key == "--tolerance") policy.options.tolerance = std::stod(value);
     else if (key == "--profile") temporal = value == "temporal";
-    else if (key == "--normalize") policy.normalization.length = value == "longer" ? Normalize_by::longer : Normalize_by::shorter;
+    else if (key == "--normalize") policy.normalization.length = value == "longer" ? similarity::Normalize_by::longer : similarity::Normalize_by::shorter;
     else if (key == "--baseline") baseline = value == "default";
     else if (key == "--leave-out") leave_out = value;
     else if (key == "--cache") cache = value;
@@ -232,10 +232,10 @@ int main(int argc, char** argv) {
   }
   const auto read = std::chrono::steady_clock::now();
   std::erase_if(clips, [&](const Clip& c) { return c.file == leave_out; });
-  std::vector<Self_similarity_description> described;
+  std::vector<similarity::Self_similarity_description> described;
   for (const Clip& c : clips)
-    described.push_back({c.distances, temporal ? internal::temporal_profiles(c.distances, policy.options.window, policy.options.quantiles)
-                                               : internal::row_profiles(c.distances, policy.options.window, policy.options.quantiles)});
+    described.push_back({c.distances, temporal ? deformseg::similarity::internal::temporal_profiles(c.distances, policy.options.window, policy.options.quantiles)
+                                               : deformseg::similarity::internal::row_profiles(c.distances, policy.options.window, policy.options.quantiles)});
   const auto profiled = std::chrono::steady_clock::now();
   std::printf("window %zu, quantiles %zu, tolerance %g, left out: %s\n", policy.options.window,
               policy.options.quantiles, policy.options.tolerance, leave_out.empty() ? "none" : leave_out.c_str());

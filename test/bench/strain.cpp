@@ -9,8 +9,8 @@
 // one at a time over the tube, to show what limits it: gathering the edges through the index
 // table, the double transform to C - I, the float measure, the normalisation's statistic and map.
 #include <deformseg/io/frame_sequence.h>
-#include <deformseg/strain.h>
-#include <deformseg/synthetic.h>
+#include <deformseg/strain/strain.h>
+#include <deformseg/mesh/synthetic.h>
 
 #include <benchmark/benchmark.h>
 
@@ -28,20 +28,20 @@ using namespace deformseg;
 
 namespace {
 
-const Surface_mesh_animation& tube() {
-  static const Surface_mesh_animation animation = [] {
-    Bending_tube spec;
+const mesh::Surface_mesh_animation& tube() {
+  static const mesh::Surface_mesh_animation animation = [] {
+    mesh::Bending_tube spec;
     spec.shape = {.radius = 0.1, .length = 1.0, .sectors = 250, .rings = 200, .caps = true};
     spec.joints = {{.position = 0.3, .blend_width = 0.2}, {.position = 0.7, .blend_width = 0.2}};
     const double right = std::numbers::pi / 2;
     spec.schedule = {{50, {right, 0.0}}, {50, {right, right}}, {50, {}}, {49, {0.0, 0.0}}};
-    return make_bending_tube(spec).animation;  // 100,500 triangles, 200 frames
+    return mesh::make_bending_tube(spec).animation;  // 100,500 triangles, 200 frames
   }();
   return animation;
 }
 
-const std::optional<Surface_mesh_animation>& horse() {
-  static const std::optional<Surface_mesh_animation> animation = []() -> std::optional<Surface_mesh_animation> {
+const std::optional<mesh::Surface_mesh_animation>& horse() {
+  static const std::optional<mesh::Surface_mesh_animation> animation = []() -> std::optional<mesh::Surface_mesh_animation> {
     const char* from_environment = std::getenv("DEFORMSEG_DATA_DIR");
     const fs::path data = from_environment && *from_environment ? fs::path(from_environment) : fs::path(DEFORMSEG_DATA_DIR);
     const fs::path archive = data / "horse-gallop" / "horse-gallop.tar.xz";
@@ -59,21 +59,21 @@ const std::optional<Surface_mesh_animation>& horse() {
   return animation;
 }
 
-void report(benchmark::State& state, const Surface_mesh_animation& a) {
+void report(benchmark::State& state, const mesh::Surface_mesh_animation& a) {
   state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(a.num_faces() * a.num_frames()));
   state.counters["triangles"] = double(a.num_faces());
   state.counters["frames"] = double(a.num_frames());
 }
 
 // compute_strain, rest pose; range(0): threads, range(1): 1 with the Gaussian normalisation.
-void run(benchmark::State& state, const Surface_mesh_animation& a) {
+void run(benchmark::State& state, const mesh::Surface_mesh_animation& a) {
   const int threads = int(state.range(0));
   const bool normalised = state.range(1) != 0;
   for (auto _ : state) {
     if (normalised)
-      benchmark::DoNotOptimize(compute_strain(a, {.threads = threads}));
+      benchmark::DoNotOptimize(strain::compute_strain(a, {.threads = threads}));
     else
-      benchmark::DoNotOptimize(compute_strain(a, Strain_options{.normalization = No_normalization{}, .threads = threads}));
+      benchmark::DoNotOptimize(strain::compute_strain(a, strain::Strain_options{.normalization = strain::No_normalization{}, .threads = threads}));
   }
   report(state, a);
 }
@@ -93,20 +93,20 @@ void horse_strain(benchmark::State& state) {
 void previous_pose_strain(benchmark::State& state) {
   const auto& a = tube();
   for (auto _ : state)
-    benchmark::DoNotOptimize(compute_strain(a, {.reference = Strain_reference::previous_pose, .threads = int(state.range(0))}));
+    benchmark::DoNotOptimize(strain::compute_strain(a, {.reference = strain::Strain_reference::previous_pose, .threads = int(state.range(0))}));
   report(state, a);
 }
 
 void strain_with_directions(benchmark::State& state) {
   const auto& a = tube();
   for (auto _ : state)
-    benchmark::DoNotOptimize(compute_strain(a, {.principal_directions = true, .threads = int(state.range(0))}));
+    benchmark::DoNotOptimize(strain::compute_strain(a, {.principal_directions = true, .threads = int(state.range(0))}));
   report(state, a);
 }
 
 void double_strain(benchmark::State& state) {
   const auto& a = tube();
-  for (auto _ : state) benchmark::DoNotOptimize(compute_strain<double>(a, {.threads = int(state.range(0))}));
+  for (auto _ : state) benchmark::DoNotOptimize(strain::compute_strain<double>(a, {.threads = int(state.range(0))}));
   report(state, a);
 }
 
@@ -114,22 +114,22 @@ void double_strain(benchmark::State& state) {
 // (1: gather the edges; 2: and transform them to C - I in double; 3: and measure, in float).
 void stage(benchmark::State& state) {
   const auto& a = tube();
-  const auto triangles = internal::canonical_triangles(a.triangles());
-  const auto bases = internal::reference_bases(a.frame_positions(0).data(), std::span<const internal::Triangle_indices>(triangles),
+  const auto triangles = deformseg::strain::internal::canonical_triangles(a.triangles());
+  const auto bases = deformseg::strain::internal::reference_bases(a.frame_positions(0).data(), std::span<const deformseg::strain::internal::Triangle_indices>(triangles),
                                                1e-12, 1);
   const auto stages = state.range(0);
-  internal::Edge_block edges;
-  internal::Cauchy_green_block<float> green;
+  deformseg::strain::internal::Edge_block edges;
+  deformseg::strain::internal::Cauchy_green_block<float> green;
   std::vector<float> strain(a.num_faces());
   for (auto _ : state)
     for (std::size_t t = 0; t < a.num_frames(); ++t) {
       const double* xyz = a.frame_positions(t).data();
-      for (std::size_t j = 0; j < triangles.size(); j += internal::strain_block) {
-        const std::size_t n = std::min(internal::strain_block, triangles.size() - j);
-        internal::gather_edges(xyz, triangles.data() + j, n, edges);
+      for (std::size_t j = 0; j < triangles.size(); j += deformseg::strain::internal::strain_block) {
+        const std::size_t n = std::min(deformseg::strain::internal::strain_block, triangles.size() - j);
+        deformseg::strain::internal::gather_edges(xyz, triangles.data() + j, n, edges);
         if (stages >= 2)
-          internal::cauchy_green<false>(edges, bases.alpha.data() + j, bases.beta.data() + j, bases.gamma.data() + j, n, green);
-        if (stages >= 3) internal::measure_block<false>(green, n, Max_principal_strain{}, {strain.data() + j});
+          deformseg::strain::internal::cauchy_green<false>(edges, bases.alpha.data() + j, bases.beta.data() + j, bases.gamma.data() + j, n, green);
+        if (stages >= 3) deformseg::strain::internal::measure_block<false>(green, n, strain::Max_principal_strain{}, {strain.data() + j});
         benchmark::ClobberMemory();
       }
     }
@@ -140,14 +140,14 @@ void stage(benchmark::State& state) {
 // map 1 - exp(-s^2 / 2 sigma^2).
 void normalisation(benchmark::State& state) {
   const auto& a = tube();
-  const auto raw = compute_strain(a, Strain_options{.normalization = No_normalization{}});
+  const auto raw = strain::compute_strain(a, strain::Strain_options{.normalization = strain::No_normalization{}});
   std::vector<float> values(raw.values().begin(), raw.values().end());
-  const Raw_strain_field<float> field{values, raw.num_faces(), 0, 1};
+  const strain::Raw_strain_field<float> field{values, raw.num_faces(), 0, 1};
   for (auto _ : state) {
     if (state.range(0) == 0)
-      benchmark::DoNotOptimize(Gaussian_normalization{}.sigma_of(field));
+      benchmark::DoNotOptimize(strain::Gaussian_normalization{}.sigma_of(field));
     else
-      benchmark::DoNotOptimize(Gaussian_normalization{.sigma = 0.5}.normalize(field));
+      benchmark::DoNotOptimize(strain::Gaussian_normalization{.sigma = 0.5}.normalize(field));
   }
   report(state, a);
 }

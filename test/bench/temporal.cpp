@@ -6,7 +6,7 @@
 //    cost grows with the cube of a segment's length, on T = 1000).
 //
 //   build-bench/test/bench/temporal [--benchmark_filter=...]
-#include <deformseg/temporal_segmentation.h>
+#include <deformseg/temporal/temporal_segmentation.h>
 
 #include <benchmark/benchmark.h>
 
@@ -19,14 +19,14 @@ using namespace deformseg;
 namespace {
 
 // A field of F x T random strains in [0, 1).
-const Strain_field<float>& field() {
-  static const Strain_field<float> f = [] {
+const strain::Strain_field<float>& field() {
+  static const strain::Strain_field<float> f = [] {
     const std::size_t faces = 50000, frames = 2000;
     std::mt19937 random(1);
     std::uniform_real_distribution<float> strain(0.0f, 1.0f);
-    Strain_field<float>::Storage values(faces * frames);
+    strain::Strain_field<float>::Storage values(faces * frames);
     for (auto& v : values) v = strain(random);
-    return Strain_field<float>(faces, frames, std::move(values), {}, std::nullopt, 0);
+    return strain::Strain_field<float>(faces, frames, std::move(values), {}, std::nullopt, 0);
   }();
   return f;
 }
@@ -41,7 +41,7 @@ void plain_product(benchmark::State& state) {
 }
 
 void distances(benchmark::State& state) {
-  const auto metric = Frame_metric(state.range(0));
+  const auto metric = strain::Frame_metric(state.range(0));
   for (auto _ : state) benchmark::DoNotOptimize(frame_distances(field(), {.metric = metric}).data());
   state.SetItemsProcessed(std::int64_t(state.iterations()) * 2000 * 2000);
 }
@@ -71,27 +71,27 @@ const Eigen::MatrixXf& given_matrix(std::size_t frames) {
 
 void cost_table(benchmark::State& state) {
   const auto& d = given_matrix(10000);
-  for (auto _ : state) benchmark::DoNotOptimize(Segment_cost(d).num_frames());
+  for (auto _ : state) benchmark::DoNotOptimize(temporal::Segment_cost(d).num_frames());
 }
 
 template <class Policy>
 void policy(benchmark::State& state, Policy p) {
-  const Segment_cost cost(given_matrix(std::size_t(state.range(0))));
+  const temporal::Segment_cost cost(given_matrix(std::size_t(state.range(0))));
   std::size_t segments = 0;
-  for (auto _ : state) segments = segment_frames(cost, p).segments.size();
+  for (auto _ : state) segments = temporal::segment_frames(cost, p).segments.size();
   state.counters["segments"] = double(segments);
 }
 
 }  // namespace
 
 BENCHMARK(plain_product)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
-BENCHMARK(distances)->Arg(int(Frame_metric::euclidean))->Arg(int(Frame_metric::cosine))->ArgName("metric")
+BENCHMARK(distances)->Arg(int(strain::Frame_metric::euclidean))->Arg(int(strain::Frame_metric::cosine))->ArgName("metric")
     ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
 BENCHMARK(cost_table)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
-BENCHMARK_CAPTURE(policy, optimal_partition, Optimal_partition{})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK_CAPTURE(policy, optimal_50_segments, Optimal_partition{.segments = 50})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK_CAPTURE(policy, binary_split, Binary_split{})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK_CAPTURE(policy, thesis_greedy, Thesis_greedy{})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK_CAPTURE(policy, barbic_pca, Barbic_pca{})->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(policy, optimal_partition, temporal::Optimal_partition{})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(policy, optimal_50_segments, temporal::Optimal_partition{.segments = 50})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(policy, binary_split, temporal::Binary_split{})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(policy, thesis_greedy, temporal::Thesis_greedy{})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(policy, barbic_pca, temporal::Barbic_pca{})->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 BENCHMARK_MAIN();

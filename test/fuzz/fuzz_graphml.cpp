@@ -1,7 +1,7 @@
 // libFuzzer harness of read_labelled_graph on GraphML files.
 #include "fuzz_support.h"
 
-#include <deformseg/io/read_graph.h>
+#include <deformseg/io/graphviz.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return deformseg::fuzz::run_reader(data, size, ".graphml", [](const std::filesystem::path& path) {

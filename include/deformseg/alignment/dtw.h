@@ -5,7 +5,7 @@
 
 #include <deformseg/alignment/alignment.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/internal/alignment_grid.h>
+#include <deformseg/alignment/internal/alignment_grid.h>
 
 #include <algorithm>
 #include <array>

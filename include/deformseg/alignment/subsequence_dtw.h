@@ -6,7 +6,7 @@
 #include <deformseg/alignment/alignment.h>
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/internal/alignment_grid.h>
+#include <deformseg/alignment/internal/alignment_grid.h>
 
 #include <cstddef>
 #include <string>

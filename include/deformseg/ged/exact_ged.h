@@ -7,7 +7,7 @@
 #include <deformseg/ged/bipartite_ged.h>
 #include <deformseg/ged/edit_cost.h>
 #include <deformseg/ged/ged_result.h>
-#include <deformseg/internal/ged_search.h>
+#include <deformseg/ged/internal/ged_search.h>
 #include <deformseg/threads.h>
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 
 #include <deformseg/ged/edit_cost.h>
 #include <deformseg/ged/ged_result.h>
-#include <deformseg/internal/ged_search.h>
+#include <deformseg/ged/internal/ged_search.h>
 
 #include <cstddef>
 #include <limits>

@@ -1,4 +1,4 @@
-/// @file gltf.h
+/// @file io/gltf.h
 /// @brief Reads glTF 2.0 characters (`.gltf`, `.glb`): one clip of a skinned, morphed, rigidly
 /// parented scene sampled into an animation with fixed connectivity (`read_gltf`,
 /// `sample_gltf`, or `Gltf_file` for many clips of one file), and what a file holds
@@ -14,12 +14,12 @@
 #error "deformseg/io/gltf.h needs tinygltf (Debian: libtinygltf-dev), linked as TinyGLTF::TinyGLTF"
 #endif
 
-#include <deformseg/default_mesh.h>
-#include <deformseg/deforming_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/internal/gltf_animation.h>
-#include <deformseg/internal/gltf_mesh.h>
-#include <deformseg/internal/gltf_welding.h>
+#include <deformseg/io/internal/gltf_animation.h>
+#include <deformseg/io/internal/gltf_mesh.h>
+#include <deformseg/io/internal/gltf_welding.h>
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/threads.h>
@@ -129,7 +129,7 @@ struct Gltf_contents {
 
 }  // namespace deformseg::io
 
-namespace deformseg::internal::gltf {
+namespace deformseg::io::internal::gltf {
 
 /// The most coordinates (T x 3V) a sampled clip may have: 4 GiB of doubles.
 inline constexpr std::size_t max_coordinates = std::size_t(1) << 29;
@@ -225,7 +225,7 @@ inline void sample_frames(const Rig& rig, const Clip* clip, double fps, std::siz
       throw invalid_input("vertex " + std::to_string(std::size_t(bad - out) / 3) + " has a non-finite position",
                           {.frame = t});
   };
-  parallel_for_with_locals(frames, threads, 1, [] { return Pose_scratch{}; }, sample);
+  deformseg::internal::parallel_for_with_locals(frames, threads, 1, [] { return Pose_scratch{}; }, sample);
 }
 
 /// A parsed file and the scene's geometry, read once for any number of clips.
@@ -327,7 +327,7 @@ inline io::Gltf_contents contents(const std::filesystem::path& path, double fps)
   return result;
 }
 
-}  // namespace deformseg::internal::gltf
+}  // namespace deformseg::io::internal::gltf
 
 namespace deformseg::io {
 
@@ -432,13 +432,13 @@ public:
   /// @pre as `sample` and `repair`.
   /// @throws invalid_input naming the file, as `sample` and `repair`.
   /// @par Complexity that of `sample`, plus the repair's O(V + F log F) and a copy of the positions.
-  template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
-  Deforming_mesh<Graph, Coordinate> read(const Gltf_read_options& options = {},
+  template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
+  mesh::Deforming_mesh<Graph, Coordinate> read(const Gltf_read_options& options = {},
                                          Gltf_read_report* report = nullptr) const {
     Sampled_gltf sampled = sample(options);
     const Repaired_triangles repaired = repair(options.repair);
     try {
-      Deforming_mesh<Graph, Coordinate> animation = internal::animation_of<Graph, Coordinate>(
+      mesh::Deforming_mesh<Graph, Coordinate> animation = internal::animation_of<Graph, Coordinate>(
           repaired,
           internal::positions_of_sources<Coordinate>(std::span<const double>(sampled.positions), sampled.num_vertices,
                                                      repaired.source_vertex),
@@ -515,8 +515,8 @@ inline Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_re
 /// @throws invalid_input naming the file, as `sample_gltf` and `Gltf_file::repair`.
 /// @par Complexity that of `sample_gltf`, plus the repair's O(V + F log F) and a copy of the positions.
 /// @sa sample_gltf, gltf_contents, Gltf_file, Gltf_file::repair
-template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
-Deforming_mesh<Graph, Coordinate> read_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {},
+template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
+mesh::Deforming_mesh<Graph, Coordinate> read_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {},
                                             Gltf_read_report* report = nullptr) {
   return Gltf_file(path).read<Graph, Coordinate>(options, report);
 }

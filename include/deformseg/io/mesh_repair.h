@@ -1,14 +1,14 @@
-/// @file mesh_repair.h
+/// @file io/mesh_repair.h
 /// @brief Meshes as real assets come: welding of vertices that coincide in every frame, and the
 /// repair of triangles that break a 2-manifold (`repair_triangles`, `make_repaired_animation`).
 #pragma once
 
-#include <deformseg/default_mesh.h>
-#include <deformseg/deforming_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/internal/file_io.h>
-#include <deformseg/internal/soup_orientation.h>
-#include <deformseg/internal/vertex_welding.h>
+#include <deformseg/io/internal/file_io.h>
+#include <deformseg/io/internal/soup_orientation.h>
+#include <deformseg/io/internal/vertex_welding.h>
 
 #include <algorithm>
 #include <array>
@@ -111,7 +111,7 @@ struct Repaired_triangles {
 
 }  // namespace deformseg::io
 
-namespace deformseg::internal {
+namespace deformseg::io::internal {
 
 /// Throws unless positions, triangles and options fit together.
 template <std::floating_point T>
@@ -322,7 +322,7 @@ inline io::Repaired_triangles repair_welded(std::span<const Soup_triangle> trian
   return repaired_triangles(std::move(soup), welding, screened, triangles.size());
 }
 
-}  // namespace deformseg::internal
+}  // namespace deformseg::io::internal
 
 namespace deformseg::io {
 
@@ -384,7 +384,7 @@ Repaired_triangles repair_triangles(std::span<const T> positions, std::size_t nu
 
 }  // namespace deformseg::io
 
-namespace deformseg::internal {
+namespace deformseg::io::internal {
 
 /// Whether output vertex `i` is input vertex `i` for every vertex, so that positions serve as they are.
 inline bool keeps_input_vertices(const io::Repaired_triangles& repaired, std::size_t num_vertices) {
@@ -410,23 +410,23 @@ std::vector<Coordinate> positions_of_sources(std::span<const T> positions, std::
 }
 
 /// The animation of repaired triangles whose positions are given per output vertex.
-template <FaceGraph Graph, std::floating_point Coordinate>
-Deforming_mesh<Graph, Coordinate> animation_of(const io::Repaired_triangles& repaired, std::vector<Coordinate> positions,
+template <mesh::FaceGraph Graph, std::floating_point Coordinate>
+mesh::Deforming_mesh<Graph, Coordinate> animation_of(const io::Repaired_triangles& repaired, std::vector<Coordinate> positions,
                                                io::Repair_report* report) {
   const std::size_t vertices = repaired.source_vertex.size();
   std::vector<std::array<double, 3>> first_frame(vertices, std::array<double, 3>{});
   for (std::size_t i = 0; i < vertices && !positions.empty(); ++i)
     for (std::size_t k = 0; k < 3; ++k) first_frame[i][k] = double(positions[3 * i + k]);
-  Graph graph = make_face_graph<Graph>(first_frame, repaired.triangles);
-  Deforming_mesh<Graph, Coordinate> animation(std::move(graph), std::move(positions));
+  Graph graph = mesh::make_face_graph<Graph>(first_frame, repaired.triangles);
+  mesh::Deforming_mesh<Graph, Coordinate> animation(std::move(graph), std::move(positions));
   if (report) *report = repaired.report;
   return animation;
 }
 
 /// `make_repaired_animation` for readers that own the positions: when the repair keeps every
 /// vertex they become the animation's without a copy.
-template <FaceGraph Graph, std::floating_point Coordinate>
-Deforming_mesh<Graph, Coordinate> repaired_animation(std::vector<Coordinate>&& positions, std::size_t num_vertices,
+template <mesh::FaceGraph Graph, std::floating_point Coordinate>
+mesh::Deforming_mesh<Graph, Coordinate> repaired_animation(std::vector<Coordinate>&& positions, std::size_t num_vertices,
                                                      const io::Repaired_triangles& repaired, io::Repair_report* report) {
   if (keeps_input_vertices(repaired, num_vertices))
     return animation_of<Graph, Coordinate>(repaired, std::move(positions), report);
@@ -436,7 +436,7 @@ Deforming_mesh<Graph, Coordinate> repaired_animation(std::vector<Coordinate>&& p
   return animation_of<Graph, Coordinate>(repaired, std::move(moved), report);
 }
 
-}  // namespace deformseg::internal
+}  // namespace deformseg::io::internal
 
 namespace deformseg::io {
 
@@ -460,8 +460,8 @@ namespace deformseg::io {
 /// and vertex).
 /// @par Complexity O(T V + F log F) expected, as `repair_triangles`, plus one copy of the positions.
 /// @sa repair_triangles
-template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double, std::floating_point T>
-Deforming_mesh<Graph, Coordinate> make_repaired_animation(std::span<const T> positions, std::size_t num_vertices,
+template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double, std::floating_point T>
+mesh::Deforming_mesh<Graph, Coordinate> make_repaired_animation(std::span<const T> positions, std::size_t num_vertices,
                                                           std::span<const std::array<std::uint32_t, 3>> triangles,
                                                           const Repair_options& options = {},
                                                           Repair_report* report = nullptr) {

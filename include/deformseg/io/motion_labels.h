@@ -3,7 +3,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/retrieval_evaluation.h>
+#include <deformseg/evaluation/retrieval_evaluation.h>
 
 #include <algorithm>
 #include <array>
@@ -27,14 +27,14 @@ struct Labelled_clip {
   std::filesystem::path file{};
   /// @brief Its labels; `item.clip` names the clip in `file` (empty: none; the tool's `evaluate` then reads
   /// a file of one clip, or a `FILE.glb#CLIP` in the file column, and refuses a file of several).
-  Labelled_item item{};
+  evaluation::Labelled_item item{};
 };
 
 }  // namespace deformseg::io
 
 // Not deformseg::io::internal: a namespace of that name would hide deformseg::internal from every
 // io header included after this one.
-namespace deformseg::internal::labels {
+namespace deformseg::io::internal::labels {
 
 using io::Labelled_clip;
 
@@ -127,12 +127,12 @@ inline Labelled_clip read_row(const std::string& line, const Columns& columns, c
                     .item = {.motion = field(2), .body = field(4), .rig = field(3), .clip = field(1)}};
   if (field(0).empty()) throw invalid_input("the file field is empty", where);
   if (row.item.motion.empty())
-    throw invalid_input(std::string("the motion field is empty (a distractor is '") + distractor_label + "')", where);
+    throw invalid_input(std::string("the motion field is empty (a distractor is '") + evaluation::distractor_label + "')", where);
   if (row.item.body.empty()) row.item.body = field(0);
   return row;
 }
 
-}  // namespace deformseg::internal::labels
+}  // namespace deformseg::io::internal::labels
 
 namespace deformseg::io {
 

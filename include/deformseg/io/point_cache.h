@@ -1,4 +1,4 @@
-/// @file point_cache.h
+/// @file io/point_cache.h
 /// @brief Point caches: reads and writes Blender/Maya `.pc2` and LightWave/Blender `.mdd` files
 /// (`read_pc2`, `read_mdd`, `read_point_cache_info`, `write_pc2`, `write_mdd`).
 ///
@@ -14,10 +14,10 @@
 /// A file is read with one call and written with one call.
 #pragma once
 
-#include <deformseg/default_mesh.h>
-#include <deformseg/deforming_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/internal/file_io.h>
+#include <deformseg/io/internal/file_io.h>
 
 #include <algorithm>
 #include <bit>
@@ -68,7 +68,7 @@ struct Pc2_write_options {
 
 }  // namespace deformseg::io
 
-namespace deformseg::internal {
+namespace deformseg::io::internal {
 
 inline constexpr std::string_view pc2_signature{"POINTCACHE2\0", 12};
 inline constexpr std::uint64_t pc2_header_size = 32;
@@ -189,8 +189,8 @@ inline io::Point_cache_info parse_cache_header(io::Point_cache_format format, co
 /// The frames of a point cache whose header is `info`, from `first` on, as an animation of
 /// `topology`. A non-finite coordinate is reported with its frame and vertex.
 template <std::endian order, class Graph, class Coordinate>
-Deforming_mesh<Graph, Coordinate> decode_frames(const char* first, const io::Point_cache_info& info,
-                                                Deforming_mesh<Graph, Coordinate> animation,
+mesh::Deforming_mesh<Graph, Coordinate> decode_frames(const char* first, const io::Point_cache_info& info,
+                                                mesh::Deforming_mesh<Graph, Coordinate> animation,
                                                 const std::filesystem::path& path) {
   animation.reserve_frames(info.num_frames);
   std::vector<Coordinate> xyz(3 * info.num_vertices);
@@ -210,10 +210,10 @@ Deforming_mesh<Graph, Coordinate> decode_frames(const char* first, const io::Poi
 
 /// Reads a whole point cache of `format` as an animation of `topology`.
 template <io::Point_cache_format format, class Graph, class Coordinate>
-Deforming_mesh<Graph, Coordinate> read_point_cache(const std::filesystem::path& path, Graph topology) {
+mesh::Deforming_mesh<Graph, Coordinate> read_point_cache(const std::filesystem::path& path, Graph topology) {
   const File_bytes bytes = read_file_bytes(path);
   const io::Point_cache_info info = parse_cache_header(format, bytes, path);
-  Deforming_mesh<Graph, Coordinate> animation(std::move(topology));
+  mesh::Deforming_mesh<Graph, Coordinate> animation(std::move(topology));
   // The vertex count first: a cache of another mesh explains a size that does not match.
   check_vertex_count(info, animation.num_vertices(), path);
   check_cache_size(info, bytes.file_size, path);
@@ -253,7 +253,7 @@ inline io::Point_cache_format point_cache_format(const std::filesystem::path& pa
 
 /// Throws unless an animation fits in a point cache: at least one frame, counts within int32.
 template <class Graph, class Coordinate>
-void check_cache_counts(const Deforming_mesh<Graph, Coordinate>& animation, const std::filesystem::path& path) {
+void check_cache_counts(const mesh::Deforming_mesh<Graph, Coordinate>& animation, const std::filesystem::path& path) {
   if (animation.num_frames() == 0) fail_cache(path, "the animation has no frame: a point cache needs at least one");
   for (const auto& [count, what] : {std::pair{animation.num_vertices(), "vertices"}, std::pair{animation.num_frames(), "frames"}})
     if (count > std::size_t(max_cache_count))
@@ -273,7 +273,7 @@ float to_float32(Coordinate x, std::size_t frame, std::size_t index, const std::
 
 /// Stores every frame's positions as float32 from `out` on, in the byte order `order`.
 template <std::endian order, class Graph, class Coordinate>
-void encode_frames(const Deforming_mesh<Graph, Coordinate>& animation, char* out, const std::filesystem::path& path) {
+void encode_frames(const mesh::Deforming_mesh<Graph, Coordinate>& animation, char* out, const std::filesystem::path& path) {
   for (std::size_t t = 0; t < animation.num_frames(); ++t) {
     const std::span<const Coordinate> xyz = animation.frame_positions(t);
     for (std::size_t i = 0; i < xyz.size(); ++i, out += 4) store<order>(out, to_float32(xyz[i], t, i, path));
@@ -282,11 +282,11 @@ void encode_frames(const Deforming_mesh<Graph, Coordinate>& animation, char* out
 
 /// The size of a point cache file: its header, then 12 bytes per vertex and frame.
 template <class Graph, class Coordinate>
-std::size_t cache_size(const Deforming_mesh<Graph, Coordinate>& animation, std::uint64_t header) {
+std::size_t cache_size(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std::uint64_t header) {
   return static_cast<std::size_t>(header + bytes_per_point * animation.num_vertices() * animation.num_frames());
 }
 
-}  // namespace deformseg::internal
+}  // namespace deformseg::io::internal
 
 namespace deformseg::io {
 
@@ -341,9 +341,9 @@ inline Point_cache_info read_point_cache_info(const std::filesystem::path& cache
 /// before the header is known to match the file.
 /// @par Complexity O(T V).
 /// @sa read_mdd, read_point_cache_info, write_pc2
-template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
-Deforming_mesh<Graph, Coordinate> read_pc2(const std::filesystem::path& cache, Graph topology,
-                                           double frames_per_second = default_frames_per_second) {
+template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
+mesh::Deforming_mesh<Graph, Coordinate> read_pc2(const std::filesystem::path& cache, Graph topology,
+                                           double frames_per_second = mesh::default_frames_per_second) {
   auto animation = internal::read_point_cache<Point_cache_format::pc2, Graph, Coordinate>(cache, std::move(topology));
   animation.set_frames_per_second(frames_per_second);
   return animation;
@@ -370,9 +370,9 @@ Deforming_mesh<Graph, Coordinate> read_pc2(const std::filesystem::path& cache, G
 /// before the header is known to match the file.
 /// @par Complexity O(T V).
 /// @sa read_pc2, read_point_cache_info, write_mdd
-template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
-Deforming_mesh<Graph, Coordinate> read_mdd(const std::filesystem::path& cache, Graph topology,
-                                           double frames_per_second = default_frames_per_second) {
+template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
+mesh::Deforming_mesh<Graph, Coordinate> read_mdd(const std::filesystem::path& cache, Graph topology,
+                                           double frames_per_second = mesh::default_frames_per_second) {
   auto animation = internal::read_point_cache<Point_cache_format::mdd, Graph, Coordinate>(cache, std::move(topology));
   animation.set_frames_per_second(frames_per_second);
   return animation;
@@ -392,8 +392,8 @@ Deforming_mesh<Graph, Coordinate> read_mdd(const std::filesystem::path& cache, G
 /// reported as invalid input, the path being the caller's; no partial file is left then.
 /// @par Complexity O(T V); the whole file is built in memory (12 T V bytes) first.
 /// @sa read_pc2, write_mdd
-template <FaceGraph Graph, std::floating_point Coordinate>
-void write_pc2(const Deforming_mesh<Graph, Coordinate>& animation, const std::filesystem::path& cache,
+template <mesh::FaceGraph Graph, std::floating_point Coordinate>
+void write_pc2(const mesh::Deforming_mesh<Graph, Coordinate>& animation, const std::filesystem::path& cache,
                const Pc2_write_options& options = {}) {
   constexpr auto little = std::endian::little;
   internal::check_cache_counts(animation, cache);
@@ -428,8 +428,8 @@ void write_pc2(const Deforming_mesh<Graph, Coordinate>& animation, const std::fi
 /// range) when a precondition fails or the file cannot be written; no partial file is left then.
 /// @par Complexity O(T V); the whole file is built in memory (12 T V + 4 T bytes) first.
 /// @sa read_mdd, write_pc2
-template <FaceGraph Graph, std::floating_point Coordinate>
-void write_mdd(const Deforming_mesh<Graph, Coordinate>& animation, const std::filesystem::path& cache,
+template <mesh::FaceGraph Graph, std::floating_point Coordinate>
+void write_mdd(const mesh::Deforming_mesh<Graph, Coordinate>& animation, const std::filesystem::path& cache,
                double frames_per_second = 25) {
   constexpr auto big = std::endian::big;
   internal::check_cache_counts(animation, cache);

@@ -1,10 +1,10 @@
-/// @file read_animation.h
+/// @file io/read_animation.h
 /// @brief Reads an animation from any input the library knows: a glTF clip, a folder or glob of
 /// frame files, or a point cache with its topology mesh.
 #pragma once
 
-#include <deformseg/default_mesh.h>
-#include <deformseg/deforming_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/mesh_repair.h>
@@ -85,11 +85,11 @@ inline std::string animation_format(const std::string& input) {
 
 }  // namespace deformseg::io
 
-namespace deformseg::internal {
+namespace deformseg::io::internal {
 
 /// `read_animation` of a glTF file: `read_gltf` with the options that apply to it.
 template <class Graph, class Coordinate>
-Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input, const io::Animation_read_options& options,
+mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input, const io::Animation_read_options& options,
                                                   io::Repair_report* report) {
   if (options.topology)
     throw invalid_input("a glTF file has its own connectivity: no topology mesh applies", {.file = input});
@@ -111,7 +111,7 @@ Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input, cons
 #endif
 }
 
-}  // namespace deformseg::internal
+}  // namespace deformseg::io::internal
 
 namespace deformseg::io {
 
@@ -142,8 +142,8 @@ namespace deformseg::io {
 /// @throws invalid_input naming the file, line or frame of the first problem found; with
 /// `Defect_policy::refuse`, the first defect of the connectivity, located at its file.
 /// @par Complexity linear in the size of the input, plus the repair's (see `repair_triangles`).
-template <FaceGraph Graph = Surface_mesh, std::floating_point Coordinate = double>
-Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input, const Animation_read_options& options = {},
+template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
+mesh::Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input, const Animation_read_options& options = {},
                                                  Repair_report* report = nullptr) {
   thread_count(options.threads);
   if (const auto [file, clip] = split_clip_suffix(input); clip) {

@@ -1,10 +1,10 @@
-/// @file read_mesh.h
+/// @file io/read_mesh.h
 /// @brief Reads a mesh file of any format deformseg knows, chosen by its extension: `read_mesh`,
 /// and its vertex positions only: `read_mesh_points`.
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/internal/text_scanner.h>
+#include <deformseg/io/internal/text_scanner.h>
 #include <deformseg/io/obj.h>
 #include <deformseg/io/off.h>
 #include <deformseg/io/ply.h>
@@ -17,7 +17,7 @@
 #include <span>
 #include <string>
 
-namespace deformseg::internal {
+namespace deformseg::io::internal {
 
 /// The mesh formats deformseg reads.
 enum class Mesh_format { obj, off, ply };
@@ -49,7 +49,7 @@ void read_points_as(const std::filesystem::path& path, std::span<T> xyz) {
   }
 }
 
-}  // namespace deformseg::internal
+}  // namespace deformseg::io::internal
 
 namespace deformseg::io {
 

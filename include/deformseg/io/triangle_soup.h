@@ -1,4 +1,4 @@
-/// @file triangle_soup.h
+/// @file io/triangle_soup.h
 /// @brief `Triangle_soup`, one mesh as the readers give it, and the options they share.
 #pragma once
 
@@ -34,7 +34,7 @@ struct Mesh_read_options {
 };
 
 /// @brief The vertices of `soup` as a range of 3-coordinate points, for
-/// `deformseg::make_face_graph(points_of(soup), soup.triangles)`.
+/// `deformseg::mesh::make_face_graph(points_of(soup), soup.triangles)`.
 /// @return a view of `std::span<const double, 3>`, valid while `soup.points` is not changed.
 /// @par Complexity O(1).
 inline auto points_of(const Triangle_soup& soup) {

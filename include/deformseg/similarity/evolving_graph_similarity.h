@@ -8,8 +8,8 @@
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/clustering/clustering.h>
 #include <deformseg/clustering/k_medoids.h>
-#include <deformseg/compact_segment_graph.h>
-#include <deformseg/evolving_graph.h>
+#include <deformseg/spatiotemporal/compact_segment_graph.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
 #include <deformseg/ged/bipartite_ged.h>
 #include <deformseg/ged/ged_matrix.h>
 #include <deformseg/internal/parallel_for.h>
@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-namespace deformseg {
+namespace deformseg::similarity {
 
 /// @brief How `Evolving_graph_similarity` scores a pair of frames from their cluster labels.
 enum class Label_dissimilarity {
@@ -54,11 +54,11 @@ enum class Label_dissimilarity {
 /// `compare`: Ka Kb GEDs, the clustering of Ka + Kb graphs, and the alignment's O(Ta Tb).
 template <class Ged = ged::Bipartite_ged, class Costs = Segment_costs, class Clustering = clustering::K_medoids,
           alignment::AlignmentPolicy Alignment = alignment::Smith_waterman, class Normalization = Best_score_normalization>
-  requires ged::GedPolicy<Ged, Segment_graph, Costs> && clustering::ClusteringPolicy<Clustering>
+  requires ged::GedPolicy<Ged, spatiotemporal::Segment_graph, Costs> && clustering::ClusteringPolicy<Clustering>
 struct Evolving_graph_similarity {
   /// @brief The spatio-temporal segmentation. Default: `Spatiotemporal_options` (previous pose,
   /// threshold 0.5).
-  Spatiotemporal_options segmentation{};
+  spatiotemporal::Spatiotemporal_options segmentation{};
   /// @brief Whether each key-frame graph's detached rigid nodes (rigid pieces touching no other
   /// segment: a character's separate meshes) are merged into one before the edit distances
   /// (`compact_segment_graph`). Default true: real characters' graphs shrink from 40-140 nodes to
@@ -81,18 +81,18 @@ struct Evolving_graph_similarity {
   /// @brief What is compared of one animation: its evolving graph, its key-frame graphs and their
   /// edit distances among themselves.
   struct Description {
-    Evolving_graph graph;               ///< the evolving graph
-    std::vector<Segment_graph> graphs;  ///< its key frames' graphs, in order (compacted with `compact_graphs`)
+    spatiotemporal::Evolving_graph graph;               ///< the evolving graph
+    std::vector<spatiotemporal::Segment_graph> graphs;  ///< its key frames' graphs, in order (compacted with `compact_graphs`)
     Eigen::MatrixXd distances;          ///< their pairwise edit distances (`ged::ged_matrix`)
   };
 
   /// @brief The evolving graph of `animation` and the edit distances of its key frames.
   /// @tparam Mesh a `DeformingMesh`.
   /// @throws invalid_input as `evolving_graph`.
-  template <DeformingMesh Mesh>
+  template <mesh::DeformingMesh Mesh>
   Description describe(const Mesh& animation) const {
-    Description d{evolving_graph(animation, segmentation), {}, {}};
-    for (const Key_frame& k : d.graph) d.graphs.push_back(compact_graphs ? compact_segment_graph(k.graph) : k.graph);
+    Description d{spatiotemporal::evolving_graph(animation, segmentation), {}, {}};
+    for (const spatiotemporal::Key_frame& k : d.graph) d.graphs.push_back(compact_graphs ? spatiotemporal::compact_segment_graph(k.graph) : k.graph);
     d.distances = ged::ged_matrix(d.graphs, ged, costs);
     return d;
   }
@@ -132,7 +132,7 @@ private:
     Eigen::MatrixXd d(na + nb, na + nb);
     d.topLeftCorner(na, na) = a.distances;
     d.bottomRightCorner(nb, nb) = b.distances;
-    internal::parallel_for_each_index(std::size_t(na * nb), [&](std::size_t p) {
+    deformseg::internal::parallel_for_each_index(std::size_t(na * nb), [&](std::size_t p) {
       const Eigen::Index i = Eigen::Index(p) / nb, j = Eigen::Index(p) % nb;
       d(i, na + j) = d(na + j, i) = ged(a.graphs[std::size_t(i)], b.graphs[std::size_t(j)], costs).distance;
     });
@@ -141,7 +141,7 @@ private:
 
   // Per frame, the cluster of its key frame's graph (graph `offset + k` of the clustering for
   // key frame k).
-  static std::vector<std::size_t> frame_labels(const Evolving_graph& graph, const std::vector<std::size_t>& clusters,
+  static std::vector<std::size_t> frame_labels(const spatiotemporal::Evolving_graph& graph, const std::vector<std::size_t>& clusters,
                                                std::size_t offset) {
     std::vector<std::size_t> labels;
     labels.reserve(graph.num_frames());
@@ -162,4 +162,4 @@ private:
   }
 };
 
-}  // namespace deformseg
+}  // namespace deformseg::similarity

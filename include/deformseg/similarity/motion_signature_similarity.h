@@ -8,9 +8,9 @@
 
 #include <deformseg/alignment/alignment.h>
 #include <deformseg/alignment/dtw.h>
-#include <deformseg/deforming_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/motion_signatures.h>
+#include <deformseg/signatures/motion_signatures.h>
 #include <deformseg/similarity/significance.h>
 #include <deformseg/similarity/similarity.h>
 
@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-namespace deformseg {
+namespace deformseg::similarity {
 
 /// @brief What `Motion_signature_similarity` compares of one animation: its motion signatures
 /// (`motion_signatures`) at instants at most 1 / `signature_rate` seconds apart, each row with the
@@ -55,7 +55,7 @@ namespace internal {
 /// its frames' when it is sampled at least `rate` times a second; else every 1 / rate seconds,
 /// and its last frame's.
 inline std::vector<double> signature_instants(std::size_t frames, double fps, double rate) {
-  if (fps >= rate || frames < 2) return frame_instants(frames, fps);
+  if (fps >= rate || frames < 2) return signatures::frame_instants(frames, fps);
   const double end = double(frames - 1) / fps;
   std::vector<double> instants;
   for (std::size_t k = 0; double(k) / rate < end - 1e-9 / rate; ++k) instants.push_back(double(k) / rate);
@@ -116,7 +116,7 @@ template <alignment::AlignmentPolicy Alignment = alignment::Dtw, class Normaliza
 struct Motion_signature_similarity {
   /// @brief The lags, quantiles, floor and up direction of the signatures. Default:
   /// `Motion_signature_options{}`.
-  Motion_signature_options signatures{};
+  signatures::Motion_signature_options signatures{};
   /// @brief The RMS difference of two frames' signatures at which their dissimilarity is 1 - 1/e.
   /// Default 1.77, chosen on the shared characters with each body left out in turn (every fold
   /// chose it but the robot's) as the smallest scale at which same-motion pairs of different bodies
@@ -142,10 +142,10 @@ struct Motion_signature_similarity {
   /// @tparam Mesh a `DeformingMesh`.
   /// @throws invalid_input as `motion_signatures` (fewer than two frames, ...), or when
   /// `signature_rate` is not positive and finite.
-  template <DeformingMesh Mesh>
+  template <mesh::DeformingMesh Mesh>
   Description describe(const Mesh& animation) const {
-    return internal::with_positions_and_weights(animation, [&](auto positions, std::span<const double> weights) {
-      return describe_positions(positions, weights, frames_per_second(animation));
+    return signatures::with_positions_and_weights(animation, [&](auto positions, std::span<const double> weights) {
+      return describe_positions(positions, weights, mesh::frames_per_second(animation));
     });
   }
 
@@ -155,7 +155,7 @@ struct Motion_signature_similarity {
   /// @throws invalid_input as `describe`.
   template <class Coordinate>
   Description describe_positions(std::span<const Coordinate> positions, std::span<const double> weights,
-                                 double frames_per_second = default_frames_per_second) const {
+                                 double frames_per_second = mesh::default_frames_per_second) const {
     if (!(signature_rate > 0) || !std::isfinite(signature_rate))
       throw invalid_input("Motion_signature_similarity: the signature rate must be positive and finite");
     if (!(frames_per_second > 0) || !std::isfinite(frames_per_second))
@@ -164,7 +164,7 @@ struct Motion_signature_similarity {
     const std::size_t frames = weights.empty() ? 0 : positions.size() / (3 * weights.size());
     const std::vector<double> instants = internal::signature_instants(frames, frames_per_second, signature_rate);
     Description d;
-    d.signatures = internal::signatures_at(positions, weights, signatures, frames_per_second,
+    d.signatures = signatures::motion_signatures_at(positions, weights, signatures, frames_per_second,
                                            std::span<const double>(instants));
     d.frames = internal::nearest_frames(instants, frames_per_second, frames);
     return d;
@@ -201,4 +201,4 @@ struct Motion_signature_similarity {
   }
 };
 
-}  // namespace deformseg
+}  // namespace deformseg::similarity

@@ -21,7 +21,7 @@
 #include <string>
 #include <string_view>
 
-namespace deformseg {
+namespace deformseg::similarity {
 
 /// @brief The names of the similarity policies: `Motion_signature_similarity` (the default),
 /// `Strain_distribution_similarity`, `Evolving_graph_similarity` and `Self_similarity_matching`.
@@ -121,4 +121,4 @@ auto with_policy_choice(const Policy_choice& choice, const Run& run) {
   return with_alignment(alignment::Smith_waterman{});
 }
 
-}  // namespace deformseg
+}  // namespace deformseg::similarity

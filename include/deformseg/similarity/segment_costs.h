@@ -3,11 +3,11 @@
 /// nodes' kinds and area shares.
 #pragma once
 
-#include <deformseg/frame_segments.h>
+#include <deformseg/spatiotemporal/frame_segments.h>
 
 #include <cmath>
 
-namespace deformseg {
+namespace deformseg::similarity {
 
 /// @brief Edit costs of segment graphs (a `ged::GedCostModel` for `Segment_node` labels):
 /// inserting or deleting a node costs 1 plus `area_weight` times its area share; substituting a
@@ -24,13 +24,13 @@ struct Segment_costs {
   double area_weight = 1.0;
 
   /// @brief `[kinds differ] + area_weight |a.area - b.area|`.
-  double node_substitution(const Segment_node& a, const Segment_node& b) const {
+  double node_substitution(const spatiotemporal::Segment_node& a, const spatiotemporal::Segment_node& b) const {
     return (a.kind != b.kind ? 1.0 : 0.0) + area_weight * std::abs(a.area - b.area);
   }
   /// @brief `1 + area_weight a.area`.
-  double node_insertion(const Segment_node& a) const { return 1.0 + area_weight * a.area; }
+  double node_insertion(const spatiotemporal::Segment_node& a) const { return 1.0 + area_weight * a.area; }
   /// @brief `1 + area_weight a.area`.
-  double node_deletion(const Segment_node& a) const { return 1.0 + area_weight * a.area; }
+  double node_deletion(const spatiotemporal::Segment_node& a) const { return 1.0 + area_weight * a.area; }
   /// @brief 1.
   double edge_insertion() const { return 1.0; }
   /// @brief 1.
@@ -39,4 +39,4 @@ struct Segment_costs {
   double edge_substitution() const { return 0.0; }
 };
 
-}  // namespace deformseg
+}  // namespace deformseg::similarity

@@ -7,9 +7,9 @@
 
 #include <deformseg/alignment/alignment.h>
 #include <deformseg/alignment/smith_waterman.h>
-#include <deformseg/deforming_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/internal/procrustes_distances.h>
+#include <deformseg/signatures/procrustes_distances.h>
 #include <deformseg/similarity/significance.h>
 #include <deformseg/similarity/similarity.h>
 
@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-namespace deformseg {
+namespace deformseg::similarity {
 
 /// @brief What `Self_similarity_matching` compares of one animation.
 struct Self_similarity_description {
@@ -157,28 +157,28 @@ struct Self_similarity_matching {
   /// frame's area.
   /// @tparam Mesh a `DeformingMesh`.
   /// @throws invalid_input when the animation has no frame or no vertex.
-  template <DeformingMesh Mesh>
+  template <mesh::DeformingMesh Mesh>
   Description describe(const Mesh& animation) const {
     if constexpr (requires { animation.all_positions(); animation.triangles(); }) {
       if (animation.num_frames() == 0) throw invalid_input("Self_similarity_matching: an animation without frames");
       const std::vector<double> positions(animation.all_positions().begin(), animation.all_positions().end());
       const std::span<const double> first(positions.data(), 3 * animation.num_vertices());
-      return describe_positions(positions, internal::vertex_area_weights(first, animation.triangles(),
+      return describe_positions(positions, signatures::vertex_area_weights(first, animation.triangles(),
                                                                          animation.num_vertices()));
     } else {
-      return describe(make_deforming_mesh<double>(animation));
+      return describe(mesh::make_deforming_mesh<double>(animation));
     }
   }
 
   /// @brief The description of an animation given as raw positions, for data with no mesh built
   /// (a triangle soup, a sampled glTF clip): `positions` holds `T x 3V` coordinates (frame after
   /// frame, x y z per vertex), `weights` V non-negative vertex weights (e.g.
-  /// `internal::vertex_area_weights`), not all 0.
+  /// `signatures::vertex_area_weights`), not all 0.
   /// @throws invalid_input when the sizes disagree.
   Description describe_positions(std::span<const double> positions, std::span<const double> weights) const {
     if (options.quantiles == 0) throw invalid_input("Self_similarity_matching: 0 quantiles");
     Description d;
-    d.distances = internal::procrustes_distances(positions, weights);
+    d.distances = signatures::procrustes_distances(positions, weights);
     if (d.distances.rows() == 0) throw invalid_input("Self_similarity_matching: an animation without frames");
     d.profiles = internal::row_profiles(d.distances, options.window, options.quantiles);
     return d;
@@ -231,4 +231,4 @@ double self_similarity_significance(const Policy& policy, const Self_similarity_
   return similarity_significance(policy, a, b, copies, random);
 }
 
-}  // namespace deformseg
+}  // namespace deformseg::similarity

@@ -15,7 +15,7 @@
 #include <span>
 #include <vector>
 
-namespace deformseg {
+namespace deformseg::similarity {
 
 /// @brief The frames (rows) of a per-frame description in the order `order` gives: row t of the
 /// result is row `order[t]` of `frames`. The overload for the descriptions that are matrices with
@@ -69,4 +69,4 @@ double similarity_significance(const Policy& policy, const Description& a, const
   return deviation > 0 ? (value - mean) / deviation : 0.0;
 }
 
-}  // namespace deformseg
+}  // namespace deformseg::similarity

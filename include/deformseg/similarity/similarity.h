@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-namespace deformseg {
+namespace deformseg::similarity {
 
 /// @brief The similarity of two animations A and B.
 struct Similarity {
@@ -109,4 +109,4 @@ Similarity aligned_similarity(const Alignment& alignment, const Normalization& n
 
 }  // namespace internal
 
-}  // namespace deformseg
+}  // namespace deformseg::similarity

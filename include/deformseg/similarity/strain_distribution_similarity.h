@@ -6,13 +6,13 @@
 
 #include <deformseg/alignment/alignment.h>
 #include <deformseg/alignment/smith_waterman.h>
-#include <deformseg/histogram_distance.h>
+#include <deformseg/strain/histogram_distance.h>
 #include <deformseg/similarity/similarity.h>
-#include <deformseg/strain_histograms.h>
+#include <deformseg/strain/strain_histograms.h>
 
 #include <string>
 
-namespace deformseg {
+namespace deformseg::similarity {
 
 /// @brief Similarity policy (models `SimilarityPolicy`): each frame of an animation becomes the
 /// area-weighted histogram of its triangles' strain (`strain_histograms`, previous-pose raw strain
@@ -34,23 +34,23 @@ template <alignment::AlignmentPolicy Alignment = alignment::Smith_waterman,
 struct Strain_distribution_similarity {
   /// @brief The strain and its histograms. Default: `Strain_histogram_options` (previous pose,
   /// raw maximal principal strain, 16 log-spaced bins from 0.05 to 1).
-  Strain_histogram_options<> histograms{};
+  strain::Strain_histogram_options<> histograms{};
   /// @brief How two frames' histograms are compared. Default: earth mover's distance.
-  Histogram_metric metric = Histogram_metric::earth_movers;
+  strain::Histogram_metric metric = strain::Histogram_metric::earth_movers;
   /// @brief How the two frame sequences are aligned. Default: Smith–Waterman, +1 / -1 / -1.
   Alignment alignment{};
   /// @brief How the score becomes the similarity. Default: `Best_score_normalization`.
   Normalization normalization{};
 
   /// @brief What is compared of one animation: its histograms, `T x (B + 2)`.
-  using Description = Strain_histograms;
+  using Description = strain::Strain_histograms;
 
   /// @brief The histograms of `animation`'s frames.
   /// @tparam Mesh a `DeformingMesh`.
   /// @throws invalid_input as `strain_histograms`.
-  template <DeformingMesh Mesh>
+  template <mesh::DeformingMesh Mesh>
   Description describe(const Mesh& animation) const {
-    return strain_histograms(animation, histograms);
+    return strain::strain_histograms(animation, histograms);
   }
 
   /// @brief The similarity of two animations from their histograms: the alignment of their frame
@@ -58,11 +58,11 @@ struct Strain_distribution_similarity {
   /// @throws invalid_input when the histograms have different bin counts.
   Similarity compare(const Description& a, const Description& b) const {
     return internal::aligned_similarity(
-        alignment, normalization, histogram_distances(a, b, metric, histograms.histogram.threads),
+        alignment, normalization, strain::histogram_distances(a, b, metric, histograms.histogram.threads),
         std::string("area-weighted histograms of each frame's strain, compared by ") +
-            (metric == Histogram_metric::earth_movers ? "earth mover's distance" : "total variation") +
+            (metric == strain::Histogram_metric::earth_movers ? "earth mover's distance" : "total variation") +
             ", frames aligned in time");
   }
 };
 
-}  // namespace deformseg
+}  // namespace deformseg::similarity

@@ -1,10 +1,10 @@
-/// @file barbic_pca.h
+/// @file temporal/barbic_pca.h
 /// @brief The PCA change detection of Barbič et al. 2004, a baseline policy of temporal
 /// segmentation: `Barbic_pca`.
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/segment_cost.h>
+#include <deformseg/temporal/segment_cost.h>
 #include <deformseg/temporal/segments.h>
 
 #include <Eigen/Eigenvalues>
@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-namespace deformseg {
+namespace deformseg::temporal {
 
 /// @brief Temporal segmentation by PCA change detection (J. Barbič, A. Safonova, J.-Y. Pan,
 /// C. Faloutsos, J. K. Hodgins, N. S. Pollard: *Segmenting motion capture data into distinct
@@ -124,4 +124,4 @@ private:
   }
 };
 
-}  // namespace deformseg
+}  // namespace deformseg::temporal

@@ -1,15 +1,15 @@
-/// @file binary_split.h
+/// @file temporal/binary_split.h
 /// @brief Temporal segmentation by recursive binary splitting: `Binary_split`.
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/segment_cost.h>
+#include <deformseg/temporal/segment_cost.h>
 #include <deformseg/temporal/segments.h>
 
 #include <cstddef>
 #include <vector>
 
-namespace deformseg {
+namespace deformseg::temporal {
 
 /// @brief Temporal segmentation top-down: while a segment's `Ds` is above the threshold, split it
 /// in two where the length-weighted cost `(k - h + 1) Ds(h, k) + (t - k) Ds(k + 1, t)` is least.
@@ -64,4 +64,4 @@ private:
   }
 };
 
-}  // namespace deformseg
+}  // namespace deformseg::temporal

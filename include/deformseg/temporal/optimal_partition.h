@@ -1,10 +1,10 @@
-/// @file optimal_partition.h
+/// @file temporal/optimal_partition.h
 /// @brief The exact optimum of the length-weighted segmentation cost, by dynamic programming:
 /// `Optimal_partition`.
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/segment_cost.h>
+#include <deformseg/temporal/segment_cost.h>
 #include <deformseg/temporal/segments.h>
 
 #include <cstddef>
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace deformseg {
+namespace deformseg::temporal {
 
 /// @brief The partition of the frames into segments of at least `min_length` frames that
 /// minimises `sum over segments (n - m + 1) Ds(m, n)`, plus a penalty per segment, or with
@@ -111,4 +111,4 @@ private:
   }
 };
 
-}  // namespace deformseg
+}  // namespace deformseg::temporal

@@ -1,15 +1,15 @@
-/// @file segments.h
+/// @file temporal/segments.h
 /// @brief What temporal segmentation policies share: frame intervals, the threshold that sets
 /// their granularity, and the `TemporalSegmentationPolicy` concept.
 #pragma once
 
-#include <deformseg/segment_cost.h>
+#include <deformseg/temporal/segment_cost.h>
 
 #include <concepts>
 #include <cstddef>
 #include <vector>
 
-namespace deformseg {
+namespace deformseg::temporal {
 
 /// @brief The frames [first, last] of one temporal segment, both included.
 struct Frame_interval {
@@ -44,8 +44,8 @@ struct Segmentation_threshold {
 /// // Segments of a fixed length, a policy of one's own.
 /// struct Fixed_length {
 ///   std::size_t length = 10;
-///   std::vector<deformseg::Frame_interval> operator()(const deformseg::Segment_cost& cost) const {
-///     std::vector<deformseg::Frame_interval> out;
+///   std::vector<deformseg::temporal::Frame_interval> operator()(const deformseg::temporal::Segment_cost& cost) const {
+///     std::vector<deformseg::temporal::Frame_interval> out;
 ///     for (std::size_t m = 0; m < cost.num_frames(); m += length)
 ///       out.push_back({m, std::min(m + length, cost.num_frames()) - 1});
 ///     return out;
@@ -57,4 +57,4 @@ concept TemporalSegmentationPolicy = std::copy_constructible<P> && requires(cons
   { policy(cost) } -> std::same_as<std::vector<Frame_interval>>;
 };
 
-}  // namespace deformseg
+}  // namespace deformseg::temporal

@@ -1,8 +1,8 @@
-/// @file thesis_greedy.h
+/// @file temporal/thesis_greedy.h
 /// @brief The reconstruction of the thesis' Algorithm 4-1: `Thesis_greedy`.
 #pragma once
 
-#include <deformseg/segment_cost.h>
+#include <deformseg/temporal/segment_cost.h>
 #include <deformseg/temporal/segments.h>
 
 #include <algorithm>
@@ -10,7 +10,7 @@
 #include <optional>
 #include <vector>
 
-namespace deformseg {
+namespace deformseg::temporal {
 
 /// @brief Temporal segmentation by the thesis' Algorithm 4-1, as deformseg reconstructs it
 /// (@ref method_temporal): in the frames [h, t], take the longest window [m, n] whose `Ds(m, n)` is at most the threshold
@@ -64,4 +64,4 @@ private:
   }
 };
 
-}  // namespace deformseg
+}  // namespace deformseg::temporal

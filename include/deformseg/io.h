@@ -1,0 +1,20 @@
+/// @file io.h
+/// @brief Every public header of module `io`, readers and writers: one header per format, the animation and
+/// mesh readers that choose by extension, mesh repair.
+#pragma once
+
+#include <deformseg/io/frame_sequence.h>
+#if DEFORMSEG_HAS_GLTF
+#include <deformseg/io/gltf.h>
+#endif
+#include <deformseg/io/graphviz.h>
+#include <deformseg/io/mesh_repair.h>
+#include <deformseg/io/motion_labels.h>
+#include <deformseg/io/obj.h>
+#include <deformseg/io/off.h>
+#include <deformseg/io/ply.h>
+#include <deformseg/io/point_cache.h>
+#include <deformseg/io/read_animation.h>
+#include <deformseg/io/read_mesh.h>
+#include <deformseg/io/strain_field.h>
+#include <deformseg/io/triangle_soup.h>

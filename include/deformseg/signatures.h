@@ -1,0 +1,7 @@
+/// @file signatures.h
+/// @brief Every public header of module `signatures`, motion signatures: per-frame distributions of how fast
+/// the shape moves, and the Procrustes distances between poses.
+#pragma once
+
+#include <deformseg/signatures/motion_signatures.h>
+#include <deformseg/signatures/procrustes_distances.h>

@@ -1,0 +1,9 @@
+/// @file spatiotemporal.h
+/// @brief Every public header of module `spatiotemporal`, spatio-temporal segmentation: per-frame segments of
+/// triangles, segment graphs and the evolving graph.
+#pragma once
+
+#include <deformseg/spatiotemporal/compact_segment_graph.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
+#include <deformseg/spatiotemporal/frame_segments.h>
+#include <deformseg/spatiotemporal/spatiotemporal_segments.h>

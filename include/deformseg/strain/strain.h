@@ -1,0 +1,438 @@
+/// @file strain/strain.h
+/// @brief Per-triangle strain of a deforming mesh: `compute_strain`, its options and its result
+/// `Strain_field`, and `put_strain_frame` / `put_principal_directions` to hand one frame to a
+/// face property map.
+#pragma once
+
+#include <deformseg/mesh/deforming_mesh.h>
+#include <deformseg/exceptions.h>
+#include <deformseg/strain/internal/strain_kernel.h>
+#include <deformseg/strain/strain_measures.h>
+#include <deformseg/strain/strain_normalization.h>
+#include <deformseg/threads.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace deformseg::strain {
+
+/// @brief What a triangle's deformation is measured against.
+enum class Strain_reference {
+  /// @brief One fixed frame of the animation, `Strain_options::rest_frame`: strain measures the
+  /// pose. Its own strain is 0.
+  rest_pose,
+  /// @brief The frame before: strain of frame t against frame t - 1 measures the motion. Frame 0's
+  /// strain is 0.
+  previous_pose,
+};
+
+/// @brief The options of `compute_strain`, an aggregate for designated initializers.
+///
+/// The measure and the normalisation are policy objects; the class template argument deduction of
+/// C++20 aggregates picks their types, so that
+/// @code
+/// compute_strain(animation);                                                  // the defaults
+/// compute_strain(animation, {.reference = Strain_reference::previous_pose});  // default policies
+/// compute_strain(animation, Strain_options{.measure = Green_lagrange_strain{},
+///                                          .normalization = No_normalization{}});
+/// compute_strain(animation, {.normalization = {.sigma = 0.05}});              // Gaussian, given sigma
+/// @endcode
+/// all read as they mean. That deduction needs GCC 11 or Clang 17; with Clang 16, name the
+/// template arguments (`Strain_options<Green_lagrange_strain, No_normalization>{...}`).
+/// @tparam Measure a `StrainMeasure`, default `Max_principal_strain`.
+/// @tparam Normalization a `StrainNormalization`, default `Gaussian_normalization`.
+template <StrainMeasure Measure = Max_principal_strain, StrainNormalization Normalization = Gaussian_normalization>
+struct Strain_options {
+  /// @brief The reference: the rest pose (default) or the previous pose.
+  Strain_reference reference = Strain_reference::rest_pose;
+  /// @brief The rest pose's frame, for `Strain_reference::rest_pose`. Default: 0.
+  std::size_t rest_frame = 0;
+  /// @brief The scalar each triangle's stretches become. Default: `Max_principal_strain`.
+  Measure measure{};
+  /// @brief How raw strains are normalised. Default: `Gaussian_normalization` with sigma from the
+  /// data.
+  Normalization normalization{};
+  /// @brief Whether to compute the principal directions too (3 more values per triangle-frame).
+  /// Default: false.
+  bool principal_directions = false;
+  /// @brief A reference triangle is degenerate, and its strain 0, when twice its area is at most
+  /// this times its longest edge squared (its smallest height at most this times its longest edge).
+  /// Default: 1e-12, so only triangles of zero area up to rounding. A larger value (1e-3, say)
+  /// also sets the strain of sliver triangles to 0.
+  double degenerate_tolerance = 1e-12;
+  /// @brief Threads to use: 0 (default) for `default_threads()` (all the hardware's threads
+  /// unless `DEFORMSEG_NUM_THREADS` or `OMP_NUM_THREADS` says otherwise), at most `max_threads`
+  /// (see threads.h). The result is bit-identical for any number.
+  int threads = 0;
+};
+
+/// @brief The strain of every triangle at every frame: an `F x T` matrix, column-major so that a
+/// frame is a contiguous vector of F values (the frame descriptor of temporal segmentation), with
+/// the principal directions when they were asked for.
+///
+/// Triangle `j` is the face of index `j` in the animation's face index map (for a
+/// `Deforming_mesh`, `face_descriptors()[j]`), frames are counted from 0.
+/// @tparam Value `float` (default) or `double`.
+template <std::floating_point Value = float>
+class Strain_field {
+public:
+  using value_type = Value;  ///< the type of a strain
+  /// @brief How the values are stored: a `std::vector` of `Value` whose allocator leaves new
+  /// elements uninitialised (the kernel writes every one, and a large field is then first touched
+  /// in parallel).
+  using Storage = std::vector<Value, internal::Default_init_allocator<Value>>;
+  /// @brief The whole field as an `F x T` column-major Eigen matrix, without copy.
+  using Matrix_map = Eigen::Map<const Eigen::Matrix<Value, Eigen::Dynamic, Eigen::Dynamic>>;
+  /// @brief The principal directions of one frame as an `F x 3` Eigen matrix (row j: the unit
+  /// vector of triangle j), without copy.
+  using Directions_map = Eigen::Map<const Eigen::Matrix<Value, Eigen::Dynamic, 3>>;
+
+  /// @brief An empty field: no triangle, no frame.
+  Strain_field() = default;
+
+  /// @brief A field from its parts, as `compute_strain` makes it.
+  /// @param faces the number of triangles F.
+  /// @param frames the number of frames T.
+  /// @param values `F T` strains, frame after frame.
+  /// @param directions empty, or `3 F T` values: per frame, the x of every triangle's direction,
+  /// then the y, then the z.
+  /// @param sigma the normalisation's parameter, if any.
+  /// @param degenerate_count the number of triangle-frames with a degenerate reference triangle.
+  /// @throws invalid_input when the sizes do not match.
+  /// @par Complexity O(1).
+  Strain_field(std::size_t faces, std::size_t frames, Storage values, Storage directions,
+               std::optional<double> sigma, std::size_t degenerate_count)
+      : faces_(faces), frames_(frames), values_(std::move(values)), directions_(std::move(directions)),
+        sigma_(sigma), degenerate_count_(degenerate_count) {
+    if (values_.size() != faces * frames || !(directions_.empty() || directions_.size() == 3 * faces * frames))
+      throw invalid_input("Strain_field: expected " + std::to_string(faces * frames) + " values and 0 or " +
+                          std::to_string(3 * faces * frames) + " direction components, got " +
+                          std::to_string(values_.size()) + " and " + std::to_string(directions_.size()));
+  }
+
+  /// @brief The number of triangles F.
+  std::size_t num_faces() const noexcept { return faces_; }
+  /// @brief The number of frames T.
+  std::size_t num_frames() const noexcept { return frames_; }
+
+  /// @brief The strain of triangle `face` at frame `frame`, unchecked.
+  /// @pre `face < num_faces()` and `frame < num_frames()`.
+  Value operator()(std::size_t face, std::size_t frame) const noexcept { return values_[frame * faces_ + face]; }
+
+  /// @brief The strains of all triangles at frame `t`, contiguous.
+  /// @throws invalid_input when `t >= num_frames()`.
+  std::span<const Value> frame(std::size_t t) const {
+    check_frame(t);
+    return std::span<const Value>(values_).subspan(t * faces_, faces_);
+  }
+  /// @brief All strains, frame after frame (`F T` values).
+  std::span<const Value> values() const noexcept { return values_; }
+  /// @brief The field as an `F x T` Eigen matrix, without copy.
+  Matrix_map matrix() const { return Matrix_map(values_.data(), Eigen::Index(faces_), Eigen::Index(frames_)); }
+
+  /// @brief Whether the principal directions were computed (`Strain_options::principal_directions`).
+  bool has_principal_directions() const noexcept { return !directions_.empty(); }
+  /// @brief The principal direction of every triangle at frame `t`, as an `F x 3` matrix.
+  ///
+  /// Row j is the unit vector, in the plane of triangle j as deformed at frame t, along which it
+  /// is stretched most (the image of the eigenvector of C for l1, see `compute_strain`); its sign
+  /// has no meaning. Where no direction stretches more than another (`l1^2 - l2^2 <= 1e-6 l1^2`:
+  /// a rigid or uniformly scaled triangle, and every triangle of a frame whose strain is 0 by
+  /// definition), it is the direction of the triangle's edge from its vertex of smallest index to
+  /// the next one along the face; for a degenerate reference triangle, or a triangle collapsed to a
+  /// point, it is 0.
+  /// @throws invalid_input when `t >= num_frames()` or the directions were not computed.
+  Directions_map principal_directions(std::size_t t) const {
+    check_frame(t);
+    if (!has_principal_directions())
+      throw invalid_input("principal directions were not computed: set Strain_options::principal_directions");
+    return Directions_map(directions_.data() + 3 * t * faces_, Eigen::Index(faces_), 3);
+  }
+
+  /// @brief The sigma of the Gaussian normalisation (given, or from the data; 0 when every
+  /// sample was 0), or what another normalisation reported; none without normalisation.
+  std::optional<double> sigma() const noexcept { return sigma_; }
+  /// @brief The number of triangle-frames whose reference triangle is degenerate (zero area, see
+  /// `Strain_options::degenerate_tolerance`), whose strain is 0. For a fixed reference, the number
+  /// of degenerate triangles times the number of frames other than the reference frame.
+  std::size_t degenerate_count() const noexcept { return degenerate_count_; }
+
+private:
+  void check_frame(std::size_t t) const {
+    if (t >= frames_)
+      throw invalid_input("strain of frame " + std::to_string(t) + " asked of a field of " +
+                          std::to_string(frames_) + " frames");
+  }
+
+  std::size_t faces_ = 0;
+  std::size_t frames_ = 0;
+  Storage values_{};
+  Storage directions_{};
+  std::optional<double> sigma_{};
+  std::size_t degenerate_count_ = 0;
+};
+
+namespace internal {
+
+template <class T>
+struct Is_strain_options : std::false_type {};
+template <class M, class N>
+struct Is_strain_options<Strain_options<M, N>> : std::true_type {};
+
+// A FaceGraph given as a reference mesh. Strain_options is ruled out first: boost::graph_traits,
+// which FaceGraph asks for, is a hard error rather than a failed constraint for a non-graph.
+template <class G>
+concept Reference_face_graph = !Is_strain_options<G>::value && mesh::FaceGraph<G>;
+
+template <StrainMeasure Measure, StrainNormalization Normalization>
+void check_strain_options(const Strain_options<Measure, Normalization>& options, std::size_t frames,
+                          std::size_t faces) {
+  if (frames == 0) throw invalid_input("compute_strain: the animation has no frame");
+  if (faces == 0) throw invalid_input("compute_strain: the animation has no triangle");
+  if (options.reference == Strain_reference::rest_pose && options.rest_frame >= frames)
+    throw invalid_input("compute_strain: rest frame " + std::to_string(options.rest_frame) +
+                        " out of range for an animation of " + std::to_string(frames) + " frames");
+  thread_count(options.threads, "compute_strain");
+  if (!(options.degenerate_tolerance >= 0 && options.degenerate_tolerance < 1))
+    throw invalid_input("compute_strain: degenerate_tolerance must be in [0, 1), not " +
+                        std::to_string(options.degenerate_tolerance));
+}
+
+// The field of `animation` against the reference `reference_xyz` (positions of its vertices, 3 V
+// values) or, when null, against what options.reference says.
+template <std::floating_point Value, class Graph, class Coordinate, class ReferenceCoordinate,
+          StrainMeasure Measure, StrainNormalization Normalization>
+Strain_field<Value> strain_field(const mesh::Deforming_mesh<Graph, Coordinate>& animation,
+                                 const ReferenceCoordinate* reference_xyz,
+                                 const Strain_options<Measure, Normalization>& options) {
+  const std::size_t faces = animation.num_faces();
+  const std::size_t frames = animation.num_frames();
+  const std::vector<Triangle_indices> canonical = canonical_triangles(animation.triangles());
+  const std::span<const Triangle_indices> triangles = canonical;
+  const auto positions = animation.all_positions();
+  typename Strain_field<Value>::Storage values(faces * frames);
+  typename Strain_field<Value>::Storage directions(options.principal_directions ? 3 * faces * frames : 0);
+  Value* direction_data = options.principal_directions ? directions.data() : nullptr;
+
+  std::optional<std::size_t> zero_frame;
+  std::size_t degenerate = 0;
+  if (options.reference == Strain_reference::previous_pose) {
+    zero_frame = 0;
+    degenerate = previous_pose_strains(positions, frames, triangles, options.degenerate_tolerance, options.measure,
+                                       options.threads, values.data(), direction_data);
+  } else {
+    if (!reference_xyz) zero_frame = options.rest_frame;
+    const Reference_bases bases =
+        reference_xyz ? reference_bases(reference_xyz, triangles, options.degenerate_tolerance, options.threads)
+                      : reference_bases(animation.frame_positions(options.rest_frame).data(), triangles,
+                                        options.degenerate_tolerance, options.threads);
+    degenerate = fixed_reference_strains(positions, frames, triangles, bases, zero_frame, options.measure,
+                                         options.threads, values.data(), direction_data);
+  }
+  const std::optional<double> sigma = options.normalization.normalize(
+      Raw_strain_field<Value>{std::span<Value>(values), faces, zero_frame, options.threads});
+  return Strain_field<Value>(faces, frames, std::move(values), std::move(directions), sigma, degenerate);
+}
+
+// The positions of `reference` in its vertex index order, after checking that its triangles are
+// those of `animation`.
+template <class Graph, class Coordinate, mesh::FaceGraph ReferenceGraph>
+std::vector<double> reference_positions(const mesh::Deforming_mesh<Graph, Coordinate>& animation,
+                                        const ReferenceGraph& reference) {
+  const std::size_t vertices = num_vertices(reference);
+  const std::size_t faces = num_faces(reference);
+  if (vertices != animation.num_vertices() || faces != animation.num_faces())
+    throw invalid_input("compute_strain: the reference mesh has " + std::to_string(vertices) + " vertices and " +
+                        std::to_string(faces) + " faces, the animation " + std::to_string(animation.num_vertices()) +
+                        " and " + std::to_string(animation.num_faces()));
+  // Its own index table, through a Deforming_mesh of it, compared triangle by triangle (up to the
+  // rotation of each, which does not change the strain).
+  const mesh::Deforming_mesh<ReferenceGraph> copy(reference);
+  const auto mine = canonical_triangles(copy.triangles());
+  const auto theirs = canonical_triangles(animation.triangles());
+  for (std::size_t j = 0; j < faces; ++j)
+    if (mine[j] != theirs[j])
+      throw invalid_input("compute_strain: face " + std::to_string(j) + " of the reference mesh has vertices " +
+                          std::to_string(mine[j][0]) + " " + std::to_string(mine[j][1]) + " " +
+                          std::to_string(mine[j][2]) + ", the animation's " + std::to_string(theirs[j][0]) + " " +
+                          std::to_string(theirs[j][1]) + " " + std::to_string(theirs[j][2]));
+  std::vector<double> xyz(3 * vertices);
+  const auto points = get(CGAL::vertex_point, reference);
+  const auto index = copy.vertex_index_map();
+  for (auto v : copy.vertex_descriptors()) {
+    const auto& p = get(points, v);
+    for (int k = 0; k < 3; ++k) xyz[3 * get(index, v) + std::size_t(k)] = CGAL::to_double(p[k]);
+  }
+  for (std::size_t i = 0; i < xyz.size(); ++i)
+    if (!std::isfinite(xyz[i]))
+      throw invalid_input("compute_strain: vertex " + std::to_string(i / 3) +
+                          " of the reference mesh has a non-finite coordinate");
+  return xyz;
+}
+
+}  // namespace internal
+
+/// @brief The strain of every triangle of an animation at every frame (@ref method_strain).
+///
+/// For each triangle and frame, the affine map from the reference triangle to the deformed one has
+/// the in-plane deformation gradient `F = Ds Dm^-1` (Dm, Ds: 2x2 edge matrices of the reference
+/// and deformed triangles, each in a basis of its own plane) with singular values, the principal
+/// stretches, `l1 >= l2`. The measure (`options.measure`) maps them to one scalar, by default
+/// `max(|l1 - 1|, |l2 - 1|)`; the normalisation (`options.normalization`) then maps the raw
+/// strains of the whole animation, by default through the Gaussian kernel
+/// `1 - exp(-s^2 / (2 sigma^2))` with sigma a robust statistic of them (see
+/// `Gaussian_normalization`).
+///
+/// The reference is the rest pose (`options.rest_frame`, default frame 0) or the previous frame
+/// (`options.reference`), or a mesh of its own (the other overload). Its triangles' bases are
+/// computed once, in double; a degenerate one (zero area, see
+/// `Strain_options::degenerate_tolerance`) gives strain 0, never NaN, and is counted in
+/// `Strain_field::degenerate_count()`.
+///
+/// The raw strain is invariant to rotation and translation of each frame; a uniform scale of the
+/// whole animation (reference included) leaves it unchanged. Any strain is finite: stretches beyond
+/// 4e9 (float; 7e75 for double) saturate.
+///
+/// @par Precision
+/// The edge vectors and the images of the reference basis are computed in double from the stored
+/// positions, so that translation far from the origin costs nothing (a triangle's strain depends
+/// on its edges only); from there on the arithmetic is `Value`'s and well conditioned, slivers
+/// included. With `Value = float` each raw strain is within about 1e-6 x (1 + l1) of the exact
+/// strain of the stored positions (the tests compare with a `long double` computation); with
+/// `Value = double`, within about 1e-14 x (1 + l1) for triangles that are not slivers.
+///
+/// @tparam Value the field's value type, `float` (default) or `double`.
+/// @tparam Mesh a `DeformingMesh`; a `Deforming_mesh` is read in place, any other model is first
+/// copied with `make_deforming_mesh`.
+/// @param animation the animation.
+/// @param options reference, measure, normalisation, directions, threads (see `Strain_options`).
+/// @return the `F x T` field, with sigma and the degenerate count.
+/// @pre `animation` has at least one frame and one triangle; `options.rest_frame` is one of its
+/// frames; `options.threads` from 0 to `max_threads`; `options.degenerate_tolerance` in [0, 1).
+/// @throws invalid_input naming the problem when a precondition fails, or the normalisation's
+/// parameters are invalid (a given sigma that is not finite and > 0).
+/// @par Complexity
+/// O(T F), in parallel over (frame, block of triangles) work items, plus O(T F) for the
+/// normalisation. Measured (test/bench/strain.cpp, 2-core AMD EPYC): 95 to 120 million
+/// triangle-frames per second on one thread and 190 to 250 million on two, normalised, when
+/// compiled for AVX2 (`-march=x86-64-v3`); about 1.6 times fewer with the SSE2 of a default x86-64
+/// build. Gathering the vertices of each triangle through the index table takes most of the time.
+/// @sa Strain_options, Strain_field, put_strain_frame
+template <std::floating_point Value = float, mesh::DeformingMesh Mesh, StrainMeasure Measure = Max_principal_strain,
+          StrainNormalization Normalization = Gaussian_normalization>
+Strain_field<Value> compute_strain(const Mesh& animation, const Strain_options<Measure, Normalization>& options = {}) {
+  if constexpr (mesh::is_deforming_mesh_v<Mesh>) {
+    internal::check_strain_options(options, animation.num_frames(), animation.num_faces());
+    return internal::strain_field<Value>(animation, static_cast<const double*>(nullptr), options);
+  } else {
+    return compute_strain<Value>(mesh::make_deforming_mesh(animation), options);
+  }
+}
+
+/// @brief The strain of every triangle of an animation at every frame against a reference mesh of
+/// its own: a mesh with the same connectivity, in another pose (the rest pose the animation does
+/// not hold, or another animation's).
+///
+/// As the other overload with `Strain_reference::rest_pose` and the reference mesh's positions in
+/// place of the rest frame; no frame is 0 by definition, so every frame counts in sigma.
+/// @tparam ReferenceGraph a `FaceGraph` with a vertex point map.
+/// @param animation the animation.
+/// @param reference the reference mesh: vertex i (in its vertex index map) is the animation's
+/// vertex i, and its faces are the animation's, in the same order.
+/// @param options as for the other overload; `reference` must be `rest_pose` and `rest_frame` 0.
+/// @return the `F x T` field.
+/// @pre as the other overload; `reference` has the animation's vertex and face counts, the same
+/// triangles (face j has the vertices of the animation's triangle j, in the same order) and
+/// finite coordinates.
+/// @throws invalid_input naming the first mismatch (counts, or the first face that differs), or
+/// when `options` asks for another reference.
+/// @par Complexity O(T F + V).
+template <std::floating_point Value = float, mesh::DeformingMesh Mesh, internal::Reference_face_graph ReferenceGraph,
+          StrainMeasure Measure = Max_principal_strain, StrainNormalization Normalization = Gaussian_normalization>
+Strain_field<Value> compute_strain(const Mesh& animation, const ReferenceGraph& reference,
+                                   const Strain_options<Measure, Normalization>& options = {}) {
+  if constexpr (mesh::is_deforming_mesh_v<Mesh>) {
+    if (options.reference != Strain_reference::rest_pose || options.rest_frame != 0)
+      throw invalid_input("compute_strain: a reference mesh takes the place of the rest pose; leave "
+                          "options.reference and options.rest_frame at their defaults");
+    internal::check_strain_options(options, animation.num_frames(), animation.num_faces());
+    const std::vector<double> xyz = internal::reference_positions(animation, reference);
+    return internal::strain_field<Value>(animation, xyz.data(), options);
+  } else {
+    return compute_strain<Value>(mesh::make_deforming_mesh(animation), reference, options);
+  }
+}
+
+namespace internal {
+
+// Calls put(face descriptor, j) for each face of `graph`, j its index.
+template <mesh::FaceGraph Graph, class Put>
+void for_each_face_index(const Graph& graph, std::size_t expected_faces, const Put& put) {
+  if (num_faces(graph) != expected_faces)
+    throw invalid_input("the graph has " + std::to_string(num_faces(graph)) + " faces, the strain field " +
+                        std::to_string(expected_faces));
+  const auto index = CGAL::get_initialized_face_index_map(graph);
+  for (auto f : faces(graph)) put(f, std::size_t(get(index, f)));
+}
+
+}  // namespace internal
+
+/// @brief Writes the strains of frame `t` into a face property map: face f gets the strain of
+/// triangle `index(f)`, with `index` the graph's initialized face index map.
+///
+/// `graph` is the animation's connectivity (`animation.face_graph()`) or a mesh with the same
+/// faces in the same order.
+/// @tparam FacePropertyMap a writable property map from the graph's face descriptors to a type
+/// that `Value` converts to.
+/// @param field the strain field.
+/// @param t the frame.
+/// @param graph the connectivity.
+/// @param map where to write.
+/// @throws invalid_input when `t` is out of range or the graph has another number of faces.
+/// @par Complexity O(F).
+/// @sa put_principal_directions
+template <std::floating_point Value, mesh::FaceGraph Graph, class FacePropertyMap>
+void put_strain_frame(const Strain_field<Value>& field, std::size_t t, const Graph& graph, FacePropertyMap map) {
+  const auto strains = field.frame(t);
+  internal::for_each_face_index(graph, field.num_faces(), [&](auto f, std::size_t j) { put(map, f, strains[j]); });
+}
+
+/// @brief Writes the principal directions of frame `t` into a face property map of vectors: face
+/// f gets `Vector(x, y, z)`, the direction of triangle `index(f)` (see
+/// `Strain_field::principal_directions`).
+/// @tparam FacePropertyMap a writable property map from the graph's face descriptors to a vector
+/// type constructible from three doubles (`Kernel::Vector_3`, `Eigen::Vector3d`, ...).
+/// @param field a strain field computed with `principal_directions`.
+/// @param t the frame.
+/// @param graph the connectivity, as for `put_strain_frame`.
+/// @param map where to write.
+/// @throws invalid_input when `t` is out of range, the directions were not computed, or the graph
+/// has another number of faces.
+/// @par Complexity O(F).
+template <std::floating_point Value, mesh::FaceGraph Graph, class FacePropertyMap>
+void put_principal_directions(const Strain_field<Value>& field, std::size_t t, const Graph& graph,
+                              FacePropertyMap map) {
+  using Vector = typename boost::property_traits<FacePropertyMap>::value_type;
+  const auto directions = field.principal_directions(t);
+  internal::for_each_face_index(graph, field.num_faces(), [&](auto f, std::size_t j) {
+    put(map, f, Vector(double(directions(Eigen::Index(j), 0)), double(directions(Eigen::Index(j), 1)),
+                       double(directions(Eigen::Index(j), 2))));
+  });
+}
+
+}  // namespace deformseg::strain

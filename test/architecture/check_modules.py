@@ -1,0 +1,126 @@
+#!/usr/bin/env python3
+"""Checks the module rule of deformseg's headers (chapter "Architecture" of the manual).
+
+The headers below include/deformseg/ form modules, one folder and one namespace each, in layers:
+a module includes the foundation (the headers at the top: errors, threads), its own headers and
+the public headers of the modules below it, never those above; a module's internal/ folder is
+included by that module alone; a header of module M opens no namespace but deformseg::M and, for
+its details, deformseg::M::internal. Run with the include/deformseg folder; --self-test proves
+that each rule catches what it should.
+"""
+import pathlib
+import re
+import sys
+import tempfile
+
+# Bottom to top: each module may include those before it.
+LAYERS = ['mesh', 'strain', 'signatures', 'temporal', 'spatiotemporal', 'ged', 'clustering',
+          'alignment', 'similarity', 'evaluation', 'color', 'io']
+
+INCLUDE = re.compile(r'^\s*#\s*include\s*<deformseg/([^>]+)>', re.M)
+NAMESPACE = re.compile(r'^\s*namespace\s+([\w:]+)\s*\{', re.M)
+
+
+def module_of(relative):
+    """The module of a header path below include/deformseg ('' for the foundation)."""
+    parts = relative.split('/')
+    return '' if len(parts) == 1 or parts[0] == 'internal' else parts[0]
+
+
+def umbrella_module(relative):
+    """The module a top-level umbrella header stands for, or None."""
+    name = relative[:-2] if relative.endswith('.h') else relative
+    return name if '/' not in relative and name in LAYERS else None
+
+
+def include_problems(relative, included):
+    mine, theirs = module_of(relative), module_of(included)
+    umbrella = umbrella_module(relative)
+    if umbrella:
+        if theirs != umbrella or '/internal/' in included:
+            return [f'the umbrella header of {umbrella} includes {included}']
+        return []
+    if theirs == '':
+        if umbrella_module(included):
+            return [f'includes the umbrella header {included}; include the headers it needs']
+        return []
+    if theirs not in LAYERS:
+        return [f'includes {included} of an unknown module {theirs}']
+    if theirs == mine:
+        return []
+    if '/internal/' in included:
+        return [f'includes {included}, a detail of module {theirs}']
+    if mine == '':
+        return [f'the foundation includes {included} of module {theirs}']
+    if LAYERS.index(theirs) > LAYERS.index(mine):
+        return [f'module {mine} includes {included} of module {theirs}, which is above it']
+    return []
+
+
+def namespace_problems(relative, text):
+    mine = module_of(relative)
+    if umbrella_module(relative):
+        return []
+    nested_details = r'|internal(::\w+)*$'  # inside the module's own namespace
+    allowed = re.compile((r'deformseg(::internal(::\w+)*)?$' if mine == '' else
+                          rf'deformseg::{mine}(::internal(::\w+)*)?$') + nested_details)
+    return [f'opens namespace {name}, not deformseg::{mine or "internal"}'
+            for name in NAMESPACE.findall(text) if not allowed.match(name)]
+
+
+def problems(root):
+    root = pathlib.Path(root)
+    found = []
+    for path in sorted(root.rglob('*.h')):
+        relative = path.relative_to(root).as_posix()
+        mine = module_of(relative)
+        if mine and mine not in LAYERS:
+            found.append(f'{relative}: module {mine} is in no layer')
+            continue
+        text = path.read_text()
+        for included in INCLUDE.findall(text):
+            found += [f'{relative}: {p}' for p in include_problems(relative, included)]
+        found += [f'{relative}: {p}' for p in namespace_problems(relative, text)]
+    return found
+
+
+def self_test():
+    cases = {  # a tree of one or two headers, and whether it breaks the rule
+        'upward include': ({'strain/a.h': '#include <deformseg/similarity/b.h>', 'similarity/b.h': ''}, True),
+        'downward include': ({'similarity/a.h': '#include <deformseg/strain/b.h>', 'strain/b.h': ''}, False),
+        'detail of another module': ({'io/a.h': '#include <deformseg/strain/internal/b.h>',
+                                      'strain/internal/b.h': ''}, True),
+        'own detail': ({'strain/a.h': '#include <deformseg/strain/internal/b.h>', 'strain/internal/b.h': ''}, False),
+        'foundation reaching up': ({'threads.h': '#include <deformseg/mesh/a.h>', 'mesh/a.h': ''}, True),
+        'module in no layer': ({'extras/a.h': ''}, True),
+        'namespace of another module': ({'strain/a.h': 'namespace deformseg::mesh {\n}'}, True),
+        'plain deformseg namespace in a module': ({'strain/a.h': 'namespace deformseg {\n}'}, True),
+        'module namespace and its details': ({'strain/a.h': 'namespace deformseg::strain {\nnamespace internal {\n}\n}\n'
+                                              'namespace deformseg::strain::internal {\n}'}, False),
+        'umbrella of its module': ({'strain.h': '#include <deformseg/strain/a.h>', 'strain/a.h': ''}, False),
+        'umbrella reaching elsewhere': ({'strain.h': '#include <deformseg/mesh/a.h>', 'mesh/a.h': ''}, True),
+        'module including an umbrella': ({'similarity/a.h': '#include <deformseg/strain/strain.h>', 'strain.h': ''}, True),
+    }
+    failures = []
+    for name, (files, broken) in cases.items():
+        with tempfile.TemporaryDirectory() as folder:
+            for relative, text in files.items():
+                path = pathlib.Path(folder, relative)
+                path.parent.mkdir(parents=True, exist_ok=True)
+                path.write_text(text + '\n')
+            if bool(problems(folder)) != broken:
+                failures.append(f'self-test "{name}": expected {"a" if broken else "no"} problem, '
+                                f'found {problems(folder)}')
+    return failures
+
+
+def main(argv):
+    found = self_test() if argv[1:] == ['--self-test'] else problems(argv[1])
+    for line in found:
+        print(line)
+    print(f'{len(found)} problem(s)')
+    return 1 if found else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv))
