@@ -2,7 +2,7 @@
 // reporting progress.
 #pragma once
 
-#include "figure.h"
+#include "figures/figure.h"
 
 #include <deformseg/color.h>
 #include <deformseg/default_mesh.h>
