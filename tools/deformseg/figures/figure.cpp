@@ -1,15 +1,16 @@
 #include "figure.h"
 
 #include <deformseg/exceptions.h>
-#include <deformseg/internal/file_io.h>
 
 #include <stb/stb_easy_font.h>
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <system_error>
 
 namespace deformseg::tool {
 
@@ -23,7 +24,7 @@ void Image::paste(const Image& other, int x, int y) {
 
 void write_png(const Image& image, const std::string& path) {
   if (!stbi_write_png(path.c_str(), image.width, image.height, 3, image.pixels.data(), image.width * 3))
-    throw invalid_input("cannot write: " + internal::last_system_error(), {.file = path});
+    throw invalid_input("cannot write: " + std::generic_category().message(errno), {.file = path});
 }
 
 namespace {
