@@ -82,7 +82,7 @@ def reads_nothing(run):
 
 @pytest.fixture(scope="session")
 def tool():
-    """deformseg(*args): runs the tool with `args` and returns the `Run`."""
+    """tool(*args): runs deformseg with `args` and returns the `Run`."""
     program = os.environ.get("DEFORMSEG_TOOL")
     if not program:
         pytest.fail("DEFORMSEG_TOOL is not set: run these tests through CTest, or set it to the built tool")
