@@ -1,7 +1,7 @@
 """How fast `deformseg view` writes, and Chromium opens, the page of a 20,000-triangle, 500-frame
 animation (a synthetic tube), run by hand:
 
-    /usr/bin/python3 test/bench/view_page.py build/examples/deformseg [--work DIR]
+    /usr/bin/python3 test/bench/view_page.py build/tools/deformseg [--work DIR]
 
 Prints the page's size, the tool's time to write it and the time from navigation to the page's
 first frame shown (its status line's data-ready-ms), from disk in headless Chromium: real time,

@@ -1,4 +1,4 @@
-// The viewer page's pure parts (examples/tool/viewer/viewer_core.js) under Node.js:
+// The viewer page's pure parts (tools/deformseg/viewer/viewer_core.js) under Node.js:
 //   node viewer_core.test.js PATH/TO/viewer_core.js
 'use strict';
 const assert = require('assert');

@@ -1,7 +1,7 @@
 // deformseg strain INPUT: the per-triangle strain of every frame, as a field file, coloured
 // meshes and a JSON summary.
 #include "command.h"
-#include "render.h"
+#include "figures/render.h"
 
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/strain_field.h>

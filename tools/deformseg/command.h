@@ -2,7 +2,7 @@
 // reporting progress.
 #pragma once
 
-#include "figure.h"
+#include "figures/figure.h"
 
 #include <deformseg/color/color.h>
 #include <deformseg/mesh/default_mesh.h>

@@ -3,7 +3,7 @@
 // DIR/index.html opens from disk, with no server: three.js comes from Debian's libjs-three, copied
 // beside it, and the data are a script, data.js.
 #include "command.h"
-#include "view_data.h"
+#include "viewer/view_data.h"
 #include "viewer_assets.h"
 
 #include <deformseg/io/internal/file_io.h>

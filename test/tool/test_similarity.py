@@ -1,0 +1,99 @@
+"""similarity and matrix: an animation against itself gives 1 by every policy; the default policy
+aligns by DTW and gives a z-score against shuffled copies; options that do not apply are refused
+before anything is read."""
+
+import re
+
+import pytest
+
+from conftest import fails, reads_nothing, succeeds
+
+POLICIES = ["motion-signature", "histogram", "self-similarity", "graph"]
+
+
+@pytest.mark.parametrize("policy", POLICIES)
+def test_similarity_self(tool, scratch, synth_obj, policy):
+    png = scratch / f"similarity-{policy}.png"
+    result = tool("similarity", synth_obj[0], synth_obj[0], "--policy", policy, "--png", png, "--json", "-").json()
+    assert result["similarity"] == 1.0 and result["policy"] == policy
+    assert isinstance(result["alignment"], list) and "labels_a" in result
+    assert png.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+
+
+# The default policy aligns by DTW and gives a z-score against 20 shuffled copies; the graph
+# policy none; --significance 1 is refused before anything is read.
+def test_similarity_default(tool, synth_obj, bend_once):
+    result = tool("similarity", synth_obj[0], bend_once[0], "--json", "-").json()
+    assert result["policy"] == "motion-signature" and result["alignment_policy"] == "dtw"
+    assert isinstance(result["z_score"], float) and result["shuffled_copies"] == 20
+
+
+def test_similarity_z_score(tool, synth_obj, bend_once):
+    out = succeeds(tool("similarity", synth_obj[0], bend_once[0], "--significance", "5", "--seed", "3")).out
+    assert re.search(r"similarity +0\.[0-9]+", out), out
+    assert re.search(r"z-score +-?[0-9.]+ \(against 5 frame-shuffled copies of B\)", out), out
+
+
+def test_similarity_graph_no_z_score(tool, synth_obj, bend_once):
+    result = tool("similarity", synth_obj[0], bend_once[0], "--policy", "graph", "--json", "-").json()
+    assert result["z_score"] is None and result["shuffled_copies"] == 0
+
+
+def test_similarity_one_copy(tool, scratch):
+    reads_nothing(fails(tool("similarity", scratch / "no-such-a", scratch / "no-such-b", "--significance", "1"),
+                        "--significance needs 0 (none) or at least 2"))
+
+
+def test_similarity_dtw(tool, synth_obj, bend_once):
+    out = succeeds(tool("similarity", synth_obj[0], bend_once[0], "--alignment", "dtw")).out
+    assert re.search(r"similarity +0\.[0-9]+", out) and "aligned" in out, out
+
+
+def test_similarity_missing_input(tool, scratch, synth_obj):
+    fails(tool("similarity", synth_obj[0], scratch / "no-such-folder"), "no-such-folder")
+
+
+def test_similarity_unknown_policy(tool):
+    fails(tool("similarity", "a", "b", "--policy", "magic"), "--policy")
+
+
+def test_similarity_threshold_not_graph(tool, scratch):
+    reads_nothing(fails(tool("similarity", scratch / "no-such-a", scratch / "no-such-b", "--threshold", "0.1"),
+                        "threshold applies to the graph policy only, not to the motion-signature policy"))
+
+
+@pytest.mark.parametrize("up", ["none", "+z"])
+def test_similarity_up(tool, synth_obj, up):
+    assert tool("similarity", synth_obj[0], synth_obj[0], "--up", up, "--json", "-").json()["similarity"] == 1.0
+
+
+def test_similarity_up_not_signature(tool, scratch):
+    reads_nothing(fails(tool("similarity", scratch / "no-such-a", scratch / "no-such-b", "--policy", "histogram",
+                             "--up", "none"),
+                        "up applies to the motion-signature policy only, not to the histogram policy"))
+
+
+def test_similarity_up_unknown(tool, scratch):
+    reads_nothing(fails(tool("similarity", scratch / "no-such-a", scratch / "no-such-b", "--up", "w"), "--up"))
+
+
+def test_matrix_csv(tool, scratch, synth_obj, bend_once):
+    run = succeeds(tool("matrix", synth_obj[0], bend_once[0], synth_obj[0], "--csv", scratch / "matrix.csv",
+                        "--png", scratch / "matrix.png", "--json", "-"))
+    matrix = run.json()["similarity"]
+    assert len(matrix) == 3 and all(len(row) == 3 for row in matrix)
+    assert [matrix[i][i] for i in range(3)] == [1.0, 1.0, 1.0] and matrix[0][2] == 1.0
+    assert "described 3 animations" in run.err and "matrix: 9 of 9 steps" in run.err
+    header, *rows = (scratch / "matrix.csv").read_text().splitlines()
+    assert header.startswith("animation,") and len(rows) == 3
+    assert (scratch / "matrix.png").read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+
+
+def test_matrix_one_input(tool, synth_obj):
+    fails(tool("matrix", synth_obj[0]), "inputs")
+
+
+# An unquoted glob: one-frame inputs are refused with the cause.
+def test_matrix_unquoted_glob(tool, synth_obj):
+    fails(tool("matrix", synth_obj[0] / "frame_0000.obj", synth_obj[0] / "frame_0001.obj"),
+          "an animation of 1 frame: a motion needs at least 2 (an unquoted glob")

@@ -1,0 +1,103 @@
+"""synth writes tubes in every format; info reads them back with the right counts."""
+
+import re
+
+import pytest
+
+from conftest import fails, reads_nothing, succeeds, synth
+
+FORMATS = ["obj", "ply", "pc2", "mdd"]
+
+
+@pytest.fixture(scope="session")
+def tubes(tool, scratch):
+    """The default tube written in each format: format -> (folder, run of synth)."""
+    return {format: synth(tool, scratch, f"synth-{format}", "--format", format) for format in FORMATS}
+
+
+def input_of(tubes, format):
+    """The input naming the tube of `format`: its folder, or its cache and its topology."""
+    folder = tubes[format][0]
+    if format in ("pc2", "mdd"):
+        return [folder / f"tube.{format}", "--topology", folder / "tube.obj"]
+    return [folder]
+
+
+@pytest.mark.parametrize("format", FORMATS)
+def test_synth(tubes, format):
+    assert tubes[format][1].json()["frames"] == 41
+
+
+# Each format the tool writes reads back with the right counts: 41 frames of the default tube.
+@pytest.mark.parametrize("format", FORMATS)
+def test_info(tool, tubes, format):
+    info = tool("info", *input_of(tubes, format), "--json", "-").json()
+    assert info["format"] == format
+    assert (info["frames"], info["vertices"], info["triangles"]) == (41, 786, 1568)
+
+
+def test_synth_two_joints(synth_two):
+    made = synth_two[1].json()
+    assert made["frames"] == 16 and made["triangles"] == 304
+
+
+def test_synth_three_poses(three_poses):
+    assert three_poses[1].json()["frames"] == 66
+
+
+def test_synth_bend_once(bend_once):
+    assert bend_once[1].json()["frames"] == 31
+
+
+def test_synth_bad_schedule(tool, scratch):
+    fails(tool("synth", scratch / "synth-bad", "--schedule", "10:x"), "deformseg: error: --schedule: 'x'")
+
+
+def test_synth_wrong_angle_count(tool, scratch):
+    fails(tool("synth", scratch / "synth-bad", "--schedule", "10:1,2"), "phase 0: needs")
+
+
+def test_synth_out_below_a_file(tool, a_file):
+    run = fails(tool("synth", a_file / "tube"), "out: cannot create the folder ",
+                f"{a_file}/tube: ", f"{a_file} is a file, not a folder")
+    assert "writing" not in run.output
+
+
+# One clear line and a non-zero exit on bad input.
+def test_info_missing(tool, scratch):
+    run = fails(tool("info", scratch / "no-such-folder"))
+    assert re.search(r"deformseg: error: [^\n]*no-such-folder", run.err), run.describe()
+
+
+def test_info_cache_without_topology(tool, tubes):
+    fails(tool("info", tubes["pc2"][0] / "tube.pc2"), "needs a topology mesh")
+
+
+# The one rule of what a command prints: the summary on standard output, with --json FILE as well.
+def test_info_json_file_keeps_summary(tool, synth_obj, scratch):
+    run = succeeds(tool("info", synth_obj[0], "--json", scratch / "info.json"))
+    assert re.search(r"frames +41\n", run.out), run.describe()
+    assert '"frames"' not in run.output
+
+
+# info --files: the frames in the order read (natural order: frame_2 before frame_10).
+def test_info_files(tool, synth_obj):
+    out = succeeds(tool("info", synth_obj[0], "--files")).out
+    lines = out.splitlines()
+    header = next(i for i, line in enumerate(lines) if line.startswith("files"))
+    assert lines[header].split() == ["files", "frame:", "file,", "in", "the", "order", "read"]
+    listed = [line.split() for line in lines[header + 1:header + 42]]
+    assert [entry[0] for entry in listed] == [f"{i}:" for i in range(41)]
+    assert listed[0][1].endswith("frame_0000.obj") and listed[40][1].endswith("frame_0040.obj")
+
+
+def test_info_files_json(tool, synth_obj):
+    files = tool("info", synth_obj[0], "--files", "--json", "-").json()["files"]
+    assert files[0].endswith("frame_0000.obj")
+
+
+def test_info_files_of_cache(tool, tubes):
+    folder = tubes["pc2"][0]
+    run = fails(tool("info", folder / "tube.pc2", "--topology", folder / "tube.obj", "--files"),
+                "--files lists the frame files of a folder or glob; this input is one pc2 file")
+    reads_nothing(run)
