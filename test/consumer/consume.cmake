@@ -1,11 +1,15 @@
 # Builds and runs the consumer project (CONSUMER_SOURCE_DIR) against deformseg in one of the three
-# ways chapter 1 describes, in WORK_DIR:
+# ways chapter 1 describes, in WORK_DIR, once linking the algorithms (deformseg::deformseg) and
+# once the readers (deformseg::io):
 #   ROUTE=installed       cmake --install of the project built in BINARY_DIR into a prefix, then
 #                         find_package with CMAKE_PREFIX_PATH;
 #   ROUTE=build_tree      a build tree of SOURCE_DIR configured as a library user would (tests,
 #                         examples off, and none of their dependencies found: CLI11, nlohmann-json,
 #                         Catch2, Doxygen), then find_package with deformseg_DIR;
 #   ROUTE=add_subdirectory the sources added to the consumer's own build.
+# The algorithms' consumer must not link TinyGLTF, and by find_package it is configured with
+# TinyGLTF hidden: the package must not look for it. The readers' consumer reads GLTF_FILE: the
+# animation when HAS_GLTF (deformseg found TinyGLTF), the refusal that names tinygltf otherwise.
 file(REMOVE_RECURSE ${WORK_DIR})
 function(run)
   execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE output)
@@ -15,7 +19,10 @@ function(run)
   set(output "${output}" PARENT_SCOPE)
 endfunction()
 
-set(consumer_options -DCMAKE_BUILD_TYPE=Release)
+# The consumers unoptimised (no build type): they run in no time, and most of the test's time is
+# their compilation, a third shorter at -O0.
+set(consumer_options "")
+set(hide_tinygltf -DCMAKE_DISABLE_FIND_PACKAGE_TinyGLTF=ON)
 if(ROUTE STREQUAL "installed")
   run(${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${WORK_DIR}/prefix)
   list(APPEND consumer_options -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix)
@@ -33,9 +40,39 @@ elseif(ROUTE STREQUAL "build_tree")
   list(APPEND consumer_options -Ddeformseg_DIR=${WORK_DIR}/deformseg)
 elseif(ROUTE STREQUAL "add_subdirectory")
   list(APPEND consumer_options -DDEFORMSEG_SOURCE_DIR=${SOURCE_DIR})
+  set(hide_tinygltf "")  # deformseg's own CMakeLists looks for it, for deformseg::io
 else()
   message(FATAL_ERROR "ROUTE is installed, build_tree or add_subdirectory, not '${ROUTE}'")
 endif()
-run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build ${consumer_options})
-run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
-run(${WORK_DIR}/build/consumer)
+
+# Configures and builds the consumer of deformseg::${target} in WORK_DIR/consumer_${target};
+# `output` is the build's, with every command line.
+function(build_consumer target)
+  set(build ${WORK_DIR}/consumer_${target})
+  run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${build} -DCONSUMER_TARGET=${target} ${consumer_options} ${ARGN})
+  run(${CMAKE_COMMAND} --build ${build} --verbose)
+  set(output "${output}" PARENT_SCOPE)
+endfunction()
+
+build_consumer(deformseg ${hide_tinygltf})
+string(TOLOWER "${output}" build_commands)
+if(build_commands MATCHES "tinygltf")
+  message(FATAL_ERROR "the consumer of deformseg::deformseg is built with tinygltf:\n${output}")
+endif()
+run(${WORK_DIR}/consumer_deformseg/consumer)
+
+build_consumer(io)
+string(TOLOWER "${output}" build_commands)
+if(HAS_GLTF AND NOT build_commands MATCHES "tinygltf")
+  message(FATAL_ERROR "the consumer of deformseg::io is built without tinygltf:\n${output}")
+endif()
+execute_process(COMMAND ${WORK_DIR}/consumer_io/consumer ${GLTF_FILE} RESULT_VARIABLE status OUTPUT_VARIABLE output)
+if(HAS_GLTF)
+  set(expected "^read 1 frames of 1 triangles\n$")
+else()
+  set(expected "^error: .*built without tinygltf")
+endif()
+if(NOT output MATCHES "${expected}")
+  message(FATAL_ERROR "the consumer of deformseg::io read ${GLTF_FILE} (status ${status}):\n${output}\n"
+                      "expected: ${expected}")
+endif()
