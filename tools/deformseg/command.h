@@ -68,12 +68,12 @@ void add_reference_mesh_option(CLI::App& command, std::string& path);
 /// `cat-reference.obj`), with the connectivity of the animation as read.
 mesh::Surface_mesh read_reference_mesh(const std::string& path);
 
-/// The result of `compute_strain()`, a strain against the reference mesh read from `path`, its
+/// The result of `compute()`, a strain against the reference mesh read from `path`, its
 /// errors naming that file: a mismatch of connectivity is the user's file's.
 template <class ComputeStrain>
-auto naming_reference_mesh(const std::string& path, const ComputeStrain& compute_strain) {
+auto naming_reference_mesh(const std::string& path, const ComputeStrain& compute) {
   try {
-    return compute_strain();
+    return compute();
   } catch (const invalid_input& error) {
     throw invalid_input(std::string(error.what()) + " (the reference mesh must have the connectivity of the "
                         "animation as read: `deformseg info` gives its counts)", {.file = path});

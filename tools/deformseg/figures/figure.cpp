@@ -54,7 +54,7 @@ int text_width(const std::string& text, int scale) {
 
 int text_height(int scale) { return 12 * scale; }
 
-void draw_text(Image& image, const std::string& text, int x, int y, int scale, Rgb color, Text_direction direction) {
+void draw_text(Image& image, const std::string& text, int x, int y, int scale, color::Rgb color, Text_direction direction) {
   std::string glyphs = printable(text);
   // Each quad is 4 vertices of 3 floats and 4 colour bytes; stb_easy_font needs about 270 bytes a
   // character at most.
@@ -219,11 +219,11 @@ Matrix_figure::Matrix_figure(std::size_t rows, std::size_t columns, int cell, co
   if (bar) draw_color_bar(image_, left_ + plot_w + 2 * padding, top_, plot_h, *bar);
 }
 
-void Matrix_figure::fill_cell(std::size_t row, std::size_t column, Rgb color) {
+void Matrix_figure::fill_cell(std::size_t row, std::size_t column, color::Rgb color) {
   image_.fill(left_ + int(column) * cell_, top_ + int(row) * cell_, cell_, cell_, color);
 }
 
-void Matrix_figure::outline_diagonal_block(std::size_t first, std::size_t last, Rgb color, int thickness) {
+void Matrix_figure::outline_diagonal_block(std::size_t first, std::size_t last, color::Rgb color, int thickness) {
   const int low = int(first) * cell_, size = int(last - first + 1) * cell_;
   const int t = std::min(thickness, size);
   image_.fill(left_ + low, top_ + low, size, t, color);
@@ -232,7 +232,7 @@ void Matrix_figure::outline_diagonal_block(std::size_t first, std::size_t last, 
   image_.fill(left_ + low + size - t, top_ + low, t, size, color);
 }
 
-void Matrix_figure::draw_separators(const Axis& row_axis, const Axis& column_axis, Rgb color) {
+void Matrix_figure::draw_separators(const Axis& row_axis, const Axis& column_axis, color::Rgb color) {
   for (std::size_t row : row_axis.separators) image_.fill(left_, top_ + int(row) * cell_, int(columns_) * cell_, 1, color);
   for (std::size_t column : column_axis.separators)
     image_.fill(left_ + int(column) * cell_, top_, 1, int(rows_) * cell_, color);
