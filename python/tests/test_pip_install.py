@@ -3,8 +3,8 @@ installs it into a scratch virtual environment, offline (`--no-build-isolation -
 build tools and NumPy are the system's); the installed package imports from outside the tree and
 gives the results of the package under test.
 
-It compiles the extension once more, as a user's `pip install` does: about 4 minutes of two cores,
-so CTest runs it alone (`python.pip_install`, label `pip`), in parallel with the other tests."""
+It compiles the extension once more, as a user's `pip install` does (about two minutes of one core),
+so CTest runs it as a test of its own (`python.pip_install`, label `pip`) beside the C++ tests."""
 import os
 import pathlib
 import shutil
@@ -31,7 +31,7 @@ def source_copy(destination):
 def test_pip_install_builds_an_importable_package(tmp_path, grid):
     cmake = os.environ.get("DEFORMSEG_CMAKE")
     if not cmake:
-        pytest.skip("DEFORMSEG_CMAKE is set by CTest (python.pip_install), which runs this 4-minute build")
+        pytest.skip("DEFORMSEG_CMAKE is set by CTest (python.pip_install), which runs this long build")
     source = source_copy(tmp_path / "source")
     environment = dict(os.environ, PATH=os.pathsep.join([str(pathlib.Path(cmake).parent), os.environ["PATH"]]))
     environment.pop("PYTHONPATH", None)  # the package under test must not hide the installed one
