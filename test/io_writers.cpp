@@ -1,4 +1,4 @@
-// Tests of io/write_obj.h, io/write_off.h, io/write_ply.h and io/write_sequence.h: exact text, numbers that read
+// Tests of the writers of io/obj.h, io/off.h, io/ply.h and io/frame_sequence.h: exact text, numbers that read
 // back identically, PLY face colours read back by CGAL, file names that sort in frame order, and
 // the errors.
 #include "tetrahedron.h"

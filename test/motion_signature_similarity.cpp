@@ -12,7 +12,9 @@
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/signatures/motion_signatures.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
+#include <deformseg/similarity/self_similarity_matching.h>
 #include <deformseg/similarity/significance.h>
+#include <deformseg/strain/strain_histograms.h>
 #include <deformseg/mesh/synthetic.h>
 #include <deformseg/threads.h>
 
@@ -25,6 +27,13 @@
 #include <random>
 #include <string>
 #include <vector>
+
+// The descriptions whose frames similarity_significance shuffles; the tool and the Python module
+// ask this concept for the z-score, so a description that lost it would lose the z-score silently.
+static_assert(deformseg::similarity::ReorderableDescription<deformseg::similarity::Motion_signature_description>);
+static_assert(deformseg::similarity::ReorderableDescription<deformseg::similarity::Self_similarity_description>);
+static_assert(deformseg::similarity::ReorderableDescription<deformseg::strain::Strain_histograms>);
+static_assert(!deformseg::similarity::ReorderableDescription<int>);
 
 using namespace deformseg;
 

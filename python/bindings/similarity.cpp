@@ -55,7 +55,7 @@ Similarity_result similarity(const Animation& a, const Animation& b, const std::
     Interruptible_call call;
     const auto da = p.describe(a.mesh), db = p.describe(b.mesh);
     Similarity_result out{p.compare(da, db), std::nullopt, 0};
-    if constexpr (requires { frame_count(db); reordered_frames(db, std::span<const std::size_t>()); }) {
+    if constexpr (similarity::ReorderableDescription<std::remove_cvref_t<decltype(db)>>) {
       if (copies >= 2) {
         std::mt19937 random(seed);
         out.z_score = similarity::similarity_significance(p, da, db, copies, random);

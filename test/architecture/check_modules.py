@@ -99,7 +99,7 @@ def self_test():
                                               'namespace deformseg::strain::internal {\n}'}, False),
         'umbrella of its module': ({'strain.h': '#include <deformseg/strain/a.h>', 'strain/a.h': ''}, False),
         'umbrella reaching elsewhere': ({'strain.h': '#include <deformseg/mesh/a.h>', 'mesh/a.h': ''}, True),
-        'module including an umbrella': ({'similarity/a.h': '#include <deformseg/strain/strain.h>', 'strain.h': ''}, True),
+        'module including an umbrella': ({'similarity/a.h': '#include <deformseg/strain.h>', 'strain.h': ''}, True),
     }
     failures = []
     for name, (files, broken) in cases.items():

@@ -2,7 +2,7 @@
 // names do not collide when a program includes them all.
 #include <deformseg/alignment.h>
 #include <deformseg/clustering.h>
-#include <deformseg/color/color.h>
+#include <deformseg/color.h>
 #include <deformseg/evaluation.h>
 #include <deformseg/ged.h>
 #include <deformseg/io.h>
@@ -10,7 +10,7 @@
 #include <deformseg/signatures.h>
 #include <deformseg/similarity.h>
 #include <deformseg/spatiotemporal.h>
-#include <deformseg/strain/strain.h>
+#include <deformseg/strain.h>
 #include <deformseg/temporal.h>
 
 namespace deformseg {

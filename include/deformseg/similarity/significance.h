@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstddef>
 #include <numeric>
+#include <concepts>
 #include <span>
 #include <vector>
 
@@ -37,6 +38,16 @@ std::size_t frame_count(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynam
   return std::size_t(frames.rows());
 }
 
+/// @brief A description whose frames can be shuffled: `frame_count(d)` and
+/// `reordered_frames(d, order)` exist for it (the library's per-frame descriptions: motion
+/// signatures, strain histograms, self-similarity). `similarity_significance` takes these; a
+/// front end asks this concept, looked up here, rather than calling the two functions itself.
+template <class Description>
+concept ReorderableDescription = requires(const Description& d, std::span<const std::size_t> order) {
+  { frame_count(d) } -> std::convertible_to<std::size_t>;
+  { reordered_frames(d, order) } -> std::convertible_to<Description>;
+};
+
 /// @brief The significance of `policy.compare(a, b).value`: its z-score against `copies` copies of
 /// `b` whose frames are shuffled by `random`, `(value - mean) / standard deviation` of theirs.
 ///
@@ -44,13 +55,12 @@ std::size_t frame_count(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynam
 /// value comes from the frames coming in the same order, beyond alike frames alone: a high value
 /// with a low z-score means alike poses or rhythms in another order. Deterministic for a given
 /// generator state (the caller passes it, so runs repeat exactly).
-/// @tparam Policy a `SimilarityPolicy` whose `Description` has `reordered_frames` and `frame_count`
-/// (the library's per-frame policies: motion signatures, strain histograms, self-similarity).
+/// @tparam Policy a `SimilarityPolicy` whose `Description` is a `ReorderableDescription`.
 /// @tparam Random a uniform random bit generator (`std::mt19937`).
 /// @return the z-score; 0 when the copies all score the same (no spread).
 /// @throws invalid_input when `copies < 2`, or as `compare`.
 /// @par Complexity `copies + 1` compares.
-template <class Policy, class Description, class Random>
+template <class Policy, ReorderableDescription Description, class Random>
 double similarity_significance(const Policy& policy, const Description& a, const Description& b, std::size_t copies,
                                Random& random) {
   if (copies < 2) throw invalid_input("similarity_significance: fewer than 2 shuffled copies");
