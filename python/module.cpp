@@ -478,7 +478,7 @@ py::array matrix(const py::sequence& animations, const std::optional<py::sequenc
   const Animation_list rows(animations, "animations");
   const std::optional<Animation_list> columns =
       database ? std::optional<Animation_list>(std::in_place, *database, "database") : std::nullopt;
-  similarity::Similarity_progress report;
+  Progress report;
   if (progress)
     report = [&progress](std::size_t done, std::size_t total) {
       py::gil_scoped_acquire acquire;
@@ -790,7 +790,9 @@ PYBIND11_MODULE(_deformseg, m) {
   invalid.doc() = "Input that breaks a documented precondition (deformseg::invalid_input). A ValueError whose "
                   "message reads 'FILE:LINE: frame K: MESSAGE' (unknown parts left out); `file` (str or None), "
                   "`line` (int or None, from 1) and `frame` (int or None, from 0) give the parts.";
-  static py::exception<similarity::similarity_stopped> stopped(m, "SimilarityStopped", PyExc_RuntimeError);
+  // cancelled -> SimilarityStopped: the calls Python can stop by a progress callback (Ctrl-C raises
+  // KeyboardInterrupt instead, through the interruption check).
+  static py::exception<cancelled> stopped(m, "SimilarityStopped", PyExc_RuntimeError);
   stopped.doc() = "similarity_matrix was stopped: its progress callback returned False.";
   py::register_exception_translator([](std::exception_ptr error) {
     if (!error) return;
@@ -804,7 +806,7 @@ PYBIND11_MODULE(_deformseg, m) {
       instance.attr("frame") = w.frame ? py::object(py::int_(*w.frame)) : py::object(py::none());
       instance.attr("message") = e.message();
       PyErr_SetObject(invalid.ptr(), instance.ptr());
-    } catch (const similarity::similarity_stopped& e) {
+    } catch (const cancelled& e) {
       stopped(e.what());
     }
   });

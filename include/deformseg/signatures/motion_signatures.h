@@ -207,7 +207,7 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
   using Row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   Row_major out = Row_major(static_cast<Eigen::Index>(instants.size()), static_cast<Eigen::Index>(columns));
   const double vertical_factor = std::sqrt(options.vertical_weight);
-  deformseg::internal::parallel_for_each_index(instants.size(), [&](std::size_t r) {
+  deformseg::internal::parallel_for(instants.size(), 0, [&](std::size_t r) {
     std::vector<std::pair<double, double>> speeds(vertices), rises(up ? vertices : 0);
     for (std::size_t l = 0; l < lags; ++l) {
       const double lag = options.lags[l];
