@@ -189,9 +189,7 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
   for (const double lag : options.lags)
     if (!(lag > 0) || !std::isfinite(lag))
       throw invalid_input("motion_signatures: a lag of " + std::to_string(lag) + " s; lags must be positive");
-  if (!(frames_per_second > 0) || !std::isfinite(frames_per_second))
-    throw invalid_input("motion_signatures: a frame rate of " + std::to_string(frames_per_second) +
-                        " fps; it must be positive");
+  mesh::check_frames_per_second(frames_per_second, "motion_signatures");
   if (!(options.floor > 0)) throw invalid_input("motion_signatures: the floor must be positive");
   if (options.up && !(options.vertical_unit > 0))
     throw invalid_input("motion_signatures: the vertical unit must be positive");
