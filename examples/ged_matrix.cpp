@@ -22,7 +22,7 @@ int main() {
   // The same with Bipartite_ged, both directions, and a progress report.
   const auto r = deformseg::ged::ged_matrix_results(
       paths, deformseg::ged::Bipartite_ged{}, deformseg::ged::Unit_costs{},
-      {.both_directions = true, .on_pair = [](std::size_t done, std::size_t total) {
+      {.both_directions = true, .progress = [](std::size_t done, std::size_t total) {
          std::cout << "pair " << done << " of " << total << '\n';
          return true;
        }});

@@ -165,3 +165,24 @@ TEST_CASE("make_face_graph names the triangle that cannot be added", "[deforming
                       Catch::StartsWith("triangle 0 cannot be added"));
   }
 }
+
+namespace {
+
+TEST_CASE("check_frames_per_second: the one check of a frame rate, its message the same everywhere",
+          "[deforming_mesh][errors]") {
+  CHECK_NOTHROW(mesh::check_frames_per_second(24));
+  for (const double fps : {0.0, -30.0, std::numeric_limits<double>::infinity(), std::nan("")}) {
+    CHECK_THROWS_WITH(mesh::check_frames_per_second(fps),
+                      Catch::StartsWith("fps must be positive and finite (the frame rate, in frames per second), not"));
+    CHECK_THROWS_WITH(mesh::check_frames_per_second(fps, "motion_signatures"),
+                      Catch::StartsWith("motion_signatures: fps"));
+  }
+  CHECK_THROWS_WITH(mesh::check_frames_per_second(0, {}, {.file = "walk.obj"}),
+                    Catch::StartsWith("walk.obj: fps must"));
+  mesh::Deforming_mesh<mesh::Surface_mesh> animation(
+      mesh::make_face_graph<mesh::Surface_mesh>(tetra_points, tetra_triangles));
+  CHECK_THROWS_WITH(animation.set_frames_per_second(-1), "fps must be positive and finite (the frame rate, in frames "
+                                                         "per second), not -1.000000");
+}
+
+}  // namespace

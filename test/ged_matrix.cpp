@@ -6,7 +6,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <random>
+#include <stdexcept>
+#include <thread>
+#include <vector>
 #include <span>
 
 namespace {
@@ -60,7 +64,6 @@ TEST_CASE("ged_matrix: symmetric, zero diagonal, equal to the pairwise calls", "
   check_matrix(graphs, Assignment_lower_bound{});
   const Ged_matrix_result exact = ged_matrix_results(graphs);
   CHECK(exact.exact);
-  CHECK_FALSE(exact.stopped);
   CHECK(ged_matrix(std::span<const Ged_graph>(graphs)) == exact.distance);
   CHECK(ged_matrix(std::vector<Ged_graph>{}).size() == 0);
   CHECK(ged_matrix(std::vector<Ged_graph>(1)) == Eigen::MatrixXd::Zero(1, 1));
@@ -104,26 +107,38 @@ TEST_CASE("ged_matrix: both directions give the tighter bounds", "[ged][matrix]"
   CHECK(better > 0);
 }
 
-TEST_CASE("ged_matrix: the callback sees every pair and can stop the work / errors propagate", "[ged][matrix]") {
-  const auto graphs = random_graphs(74, 8);
-  std::size_t calls = 0, last = 0;
+TEST_CASE("ged_matrix: the progress callback, on the calling thread, reports each batch and can stop the work / "
+          "errors propagate",
+          "[ged][matrix]") {
+  const auto graphs = random_graphs(74, 8);  // 28 pairs
+  const auto caller = std::this_thread::get_id();
+  std::atomic<bool> called_elsewhere{false};
+  std::vector<std::size_t> calls;
   const auto all = ged_matrix_results(graphs, Bipartite_ged{}, Unit_costs{},
-                                      {.on_pair = [&](std::size_t done, std::size_t total) {
-                                        ++calls;
-                                        last = done;
-                                        CHECK(total == 28);
-                                        return true;
-                                      }});
-  CHECK(calls == 28);
-  CHECK(last == 28);
-  CHECK_FALSE(all.stopped);
-  const auto stopped = ged_matrix_results(graphs, Bipartite_ged{}, Unit_costs{},
-                                          {.threads = 1, .on_pair = [](std::size_t done, std::size_t) { return done < 3; }});
-  CHECK(stopped.stopped);
-  CHECK_FALSE(stopped.exact);
-  CHECK(stopped.pairs[2].upper < std::numeric_limits<double>::infinity());
-  CHECK(std::isinf(stopped.pairs[3].distance));
-  CHECK(stopped.pairs[3].lower == 0);
+                                      {.threads = 7, .progress = [&](std::size_t done, std::size_t total) {
+                                         if (std::this_thread::get_id() != caller) called_elsewhere = true;
+                                         calls.push_back(done);
+                                         CHECK(total == 28);
+                                         return true;
+                                       }});
+  CHECK_FALSE(called_elsewhere.load());
+  CHECK(calls == std::vector<std::size_t>{16, 28});  // batches of at least 16 pairs, the last with all 28
+  CHECK(all.distance == ged_matrix(graphs, Bipartite_ged{}));
+  for (const int threads : {1, 2, 7}) {
+    std::size_t calls_before_stop = 0;
+    CHECK_THROWS_MATCHES(ged_matrix_results(graphs, Bipartite_ged{}, Unit_costs{},
+                                            {.threads = threads, .progress = [&](std::size_t, std::size_t) {
+                                               ++calls_before_stop;
+                                               return false;
+                                             }}),
+                         deformseg::cancelled, Catch::Message("the computation was stopped by its progress callback"));
+    CHECK(calls_before_stop == 1);  // after the first batch, the second not started
+  }
+  CHECK_THROWS_WITH(ged_matrix_results(graphs, Bipartite_ged{}, Unit_costs{},
+                                       {.progress = [](std::size_t, std::size_t) -> bool {
+                                          throw std::runtime_error("the caller's reason");
+                                        }}),
+                    "the caller's reason");
   struct Negative : Unit_costs {
     double edge_insertion() const { return -2.0; }
   };

@@ -245,8 +245,25 @@ TEST_CASE("interruption: an exact graph edit distance search stops between expan
   CHECK_THROWS_AS(ged::Exact_ged{}(a, b), cancelled);
 }
 
-TEST_CASE("interruption: similarity_stopped is a cancelled", "[threads]") {
-  STATIC_REQUIRE(std::is_base_of_v<cancelled, similarity::similarity_stopped>);
+TEST_CASE("parallel_for: a loop of cheap steps below its grain runs on the calling thread alone", "[threads]") {
+  const auto caller = std::this_thread::get_id();
+  std::atomic<bool> elsewhere{false};
+  std::vector<int> runs(64, 0);
+  deformseg::internal::parallel_for(64, 7, [&](std::size_t i) {
+    ++runs[i];
+    if (std::this_thread::get_id() != caller) elsewhere = true;
+  }, deformseg::internal::cheap_steps);
+  CHECK_FALSE(elsewhere.load());
+  CHECK(runs == std::vector<int>(64, 1));
+  std::vector<std::atomic<int>> more(1000);
+  deformseg::internal::parallel_for(1000, 7, [&](std::size_t i) { ++more[i]; }, deformseg::internal::cheap_steps);
+  for (const auto& count : more) CHECK(count.load() == 1);
+  // A bad count is refused however short the loop.
+  CHECK_THROWS_AS(deformseg::internal::parallel_for(3, -1, [](std::size_t) {}, deformseg::internal::cheap_steps),
+                  invalid_input);
+}
+
+TEST_CASE("interruption: cancelled is a runtime_error", "[threads]") {
   STATIC_REQUIRE(std::is_base_of_v<std::runtime_error, cancelled>);
 }
 

@@ -63,9 +63,9 @@ private:
   Input_location where_;
 };
 
-/// @brief Thrown by a call that was stopped before its end because it was asked to stop: an
-/// `Interruption_check` returned false, or (its subclass `similarity_stopped`) a progress
-/// callback did.
+/// @brief Thrown by a call that was stopped before its end because it was asked to stop: its
+/// `Progress` callback or an `Interruption_check` returned false (threads.h); the message says
+/// which. The one exception of every stopped call of deformseg.
 class cancelled : public std::runtime_error {
 public:
   /// @brief The exception, with a message saying who stopped the call.

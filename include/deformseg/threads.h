@@ -1,8 +1,8 @@
 /// @file threads.h
 /// @brief How the parallel algorithms run: the one rule for their number of threads
-/// (`thread_count`, `default_threads`, `max_threads`) and the one way to interrupt a long call
-/// from the thread that made it (`Interruption_scope`; the call then throws `cancelled`, of
-/// exceptions.h).
+/// (`thread_count`, `default_threads`, `max_threads`) and the one convention for stopping a long
+/// call from the thread that made it, by its `Progress` callback or by an `Interruption_scope`
+/// (either way the call throws `cancelled`, of exceptions.h).
 ///
 /// Every `threads` option of deformseg (and `--threads` of the tool, `threads=` in Python) means
 /// the same: 0, the default, for `default_threads()`, or a count from 1 to `max_threads`; any
@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <charconv>
 #include <chrono>
+#include <cstddef>
 #include <cstdlib>
 #include <functional>
 #include <optional>
@@ -113,6 +114,25 @@ inline void set_default_threads(int threads) {
   if (threads != 0) thread_count(threads, "set_default_threads");
   internal::default_threads_of_thread = threads;
 }
+
+/// @brief The progress callback of deformseg's long calls (`similarity::similarity_matrix`,
+/// `ged::ged_matrix_results`): called as the work advances with `done` of `total` steps finished,
+/// always on the thread that made the call (never on a worker thread, so it needs no locking and
+/// may use what belongs to that thread), with `done` increasing, last with `done == total`.
+/// Returning true lets the call go on; returning false stops it: the call takes no more work,
+/// waits for the steps in progress and throws `cancelled`. An exception the callback throws
+/// stops the call too and comes out of it. An empty function (the default) is never called.
+/// What a step is and how often the callback is called, each call says.
+using Progress = std::function<bool(std::size_t done, std::size_t total)>;
+
+namespace internal {
+
+// Reports `done` of `total` to `progress`, if any; throws cancelled when it returns false.
+inline void report_progress(const Progress& progress, std::size_t done, std::size_t total) {
+  if (progress && !progress(done, total)) throw cancelled("the computation was stopped by its progress callback");
+}
+
+}  // namespace internal
 
 /// @brief A check that a long call makes on the thread that made it, about every
 /// `interruption_interval` while it runs: returning true lets it go on, false stops it (it then

@@ -2,7 +2,6 @@
 #include "bindings.h"
 
 #include <deformseg/exceptions.h>
-#include <deformseg/similarity/motion_similarity.h>
 
 namespace py = pybind11;
 
@@ -14,7 +13,9 @@ void bind_errors(py::module_& m) {
   invalid.doc() = "Input that breaks a documented precondition (deformseg::invalid_input). A ValueError whose "
                   "message reads 'FILE:LINE: frame K: MESSAGE' (unknown parts left out); `file` (str or None), "
                   "`line` (int or None, from 1) and `frame` (int or None, from 0) give the parts.";
-  static py::exception<similarity::similarity_stopped> stopped(m, "SimilarityStopped", PyExc_RuntimeError);
+  // cancelled -> SimilarityStopped: the calls Python can stop by a progress callback (Ctrl-C raises
+  // KeyboardInterrupt instead, through the interruption check).
+  static py::exception<cancelled> stopped(m, "SimilarityStopped", PyExc_RuntimeError);
   stopped.doc() = "similarity_matrix was stopped: its progress callback returned False.";
   py::register_exception_translator([](std::exception_ptr error) {
     if (!error) return;
@@ -28,7 +29,7 @@ void bind_errors(py::module_& m) {
       instance.attr("frame") = w.frame ? py::object(py::int_(*w.frame)) : py::object(py::none());
       instance.attr("message") = e.message();
       PyErr_SetObject(invalid.ptr(), instance.ptr());
-    } catch (const similarity::similarity_stopped& e) {
+    } catch (const cancelled& e) {
       stopped(e.what());
     }
   });

@@ -16,7 +16,7 @@ namespace py = pybind11;
 namespace deformseg::python {
 
 Animation animation_of_arrays(const py::object& faces_like, const py::object& frames_like, double fps) {
-  if (!(fps > 0) || !std::isfinite(fps)) throw invalid_input("fps must be positive and finite");
+  mesh::check_frames_per_second(fps);
   const py::array frames = as_array(frames_like, "frames");
   const py::array faces = as_array(faces_like, "faces");
   std::vector<double> positions = positions_of(frames);
@@ -49,7 +49,7 @@ Animation read_input(const std::filesystem::path& path, std::optional<std::strin
   const auto location = Input_location{.file = input};
   if (!gltf && clip) throw invalid_input("clip applies to glTF files only", location);
   if (gltf && topology) throw invalid_input("topology does not apply to a glTF file: it has its own", location);
-  if (!(fps > 0)) throw invalid_input("fps must be positive", location);
+  mesh::check_frames_per_second(fps, {}, location);
   try {
     thread_count(threads);
   } catch (const invalid_input& e) {

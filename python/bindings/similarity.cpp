@@ -98,7 +98,7 @@ py::array matrix(const py::sequence& animations, const std::optional<py::sequenc
   const Animation_list rows(animations, "animations");
   const std::optional<Animation_list> columns =
       database ? std::optional<Animation_list>(std::in_place, *database, "database") : std::nullopt;
-  similarity::Similarity_progress report;
+  Progress report;
   if (progress)
     report = [&progress](std::size_t done, std::size_t total) {
       py::gil_scoped_acquire acquire;

@@ -111,7 +111,7 @@ std::vector<std::size_t> evenly_spaced_frames(std::size_t frames, std::size_t co
 /// A line on standard error, for progress.
 void progress(const std::string& line);
 
-/// A similarity matrix's progress (a `Similarity_progress`) on standard error: a line when its
+/// A similarity matrix's progress (a `Progress`) on standard error: a line when its
 /// `descriptions` are all made, with their time, and one about every 5 % of the steps.
 struct Matrix_progress {
   std::size_t descriptions = 0;

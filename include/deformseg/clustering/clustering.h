@@ -6,6 +6,7 @@
 
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/parallel_for.h>
+#include <deformseg/internal/random.h>
 
 #include <Eigen/Core>
 
@@ -127,35 +128,6 @@ inline void check_distance_matrix(const Eigen::MatrixXd& distances, std::string_
 
 namespace internal {
 
-// Runs body(i) for i in [0, n), 16 at a time on the default threads when n > 64 (on this thread
-// below); each i writes only its own outputs, so the result does not depend on the threads.
-template <class Body>
-void parallel_for(std::size_t n, const Body& body) {
-  deformseg::internal::parallel_for(n, n > 64 ? 0 : 1, body, 16);
-}
-
-// Uniform in [0, 1) from the top 53 bits of one draw: the same on every standard library, unlike
-// std::uniform_real_distribution.
-inline double uniform01(std::mt19937_64& random) { return double(random() >> 11) * 0x1.0p-53; }
-
-// Uniform in [0, n) for n > 0, by rejection, portable likewise.
-inline std::size_t uniform_below(std::mt19937_64& random, std::size_t n) {
-  const std::uint64_t range = std::uint64_t(n);
-  const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() - std::numeric_limits<std::uint64_t>::max() % range;
-  std::uint64_t draw = random();
-  while (draw >= limit) draw = random();
-  return std::size_t(draw % range);
-}
-
-// 0..n-1 shuffled by Fisher-Yates with the portable draw above (std::shuffle is not portable).
-inline std::vector<std::size_t> shuffled_indices(std::size_t n, std::uint64_t seed) {
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::mt19937_64 random(seed);
-  for (std::size_t i = n; i > 1; --i) std::swap(order[i - 1], order[uniform_below(random, i)]);
-  return order;
-}
-
 inline std::size_t distinct_labels(const std::vector<std::size_t>& labels) {
   std::vector<char> seen;
   std::size_t count = 0;
@@ -193,7 +165,7 @@ inline double weighted_silhouette(const Eigen::MatrixXd& d, const std::vector<do
   std::vector<double> size(clusters, 0.0);
   for (std::size_t i = 0; i < n; ++i) size[labels[i]] += weights[i];
   std::vector<double> score(n, 0.0);
-  parallel_for(n, [&](std::size_t i) {
+  deformseg::internal::parallel_for(n, 0, [&](std::size_t i) {
     std::vector<double> sum(clusters, 0.0);  // weighted distance from i to each cluster
     for (std::size_t j = 0; j < n; ++j) sum[labels[j]] += weights[j] * d(Eigen::Index(j), Eigen::Index(i));
     const std::size_t own = labels[i];
@@ -204,7 +176,7 @@ inline double weighted_silhouette(const Eigen::MatrixXd& d, const std::vector<do
       if (c != own && size[c] > 0) b = std::min(b, sum[c] / size[c]);
     const double larger = std::max(a, b);
     score[i] = larger > 0 ? (b - a) / larger : 0.0;
-  });
+  }, deformseg::internal::cheap_steps);
   double total = 0, weight = 0;
   for (std::size_t i = 0; i < n; ++i) {
     total += weights[i] * score[i];
@@ -218,10 +190,10 @@ inline std::vector<std::size_t> medoids_of(const Eigen::MatrixXd& d, const std::
                                            const std::vector<std::size_t>& labels, std::size_t clusters) {
   const std::size_t n = labels.size();
   std::vector<double> within(n, 0.0);
-  parallel_for(n, [&](std::size_t i) {
+  deformseg::internal::parallel_for(n, 0, [&](std::size_t i) {
     for (std::size_t j = 0; j < n; ++j)
       if (labels[j] == labels[i]) within[i] += weights[j] * d(Eigen::Index(j), Eigen::Index(i));
-  });
+  }, deformseg::internal::cheap_steps);
   std::vector<std::size_t> medoid(clusters, n);
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t& m = medoid[labels[i]];

@@ -53,7 +53,7 @@ public:
     bool converged = false;
   };
 
-  Run run(std::size_t k, std::size_t max_iterations, std::mt19937_64& random) const {
+  Run run(std::size_t k, std::size_t max_iterations, deformseg::internal::Random_engine& random) const {
     Eigen::MatrixXd centres = seed(k, random);
     Run r;
     r.labels.assign(n_, k);
@@ -80,7 +80,7 @@ private:
 
   // k-means++: the first centre drawn in proportion to the weights, each next one in proportion
   // to weight x squared distance to the nearest centre so far.
-  Eigen::MatrixXd seed(std::size_t k, std::mt19937_64& random) const {
+  Eigen::MatrixXd seed(std::size_t k, deformseg::internal::Random_engine& random) const {
     Eigen::MatrixXd centres(x_.rows(), Eigen::Index(k));
     std::vector<double> nearest(n_, 1.0);
     std::vector<char> chosen(n_, 0);
@@ -99,10 +99,11 @@ private:
 
   // Index i with probability mass[i] / sum; when all mass is 0 (points coincide with the
   // centres), the first point not chosen yet.
-  static std::size_t draw(const std::vector<double>& mass, std::mt19937_64& random, const std::vector<char>& chosen) {
+  static std::size_t draw(const std::vector<double>& mass, deformseg::internal::Random_engine& random,
+                          const std::vector<char>& chosen) {
     double total = 0;
     for (const double m : mass) total += m;
-    const double target = uniform01(random) * total;
+    const double target = deformseg::internal::uniform01(random) * total;
     double sum = 0;
     std::size_t last = mass.size();
     for (std::size_t i = 0; i < mass.size(); ++i) {
@@ -120,7 +121,7 @@ private:
   // Each point to its nearest centre (ties to the least); whether any label changed.
   bool assign(const Eigen::MatrixXd& centres, std::vector<std::size_t>& labels, std::vector<double>& distance) const {
     std::vector<char> changed(n_, 0);
-    parallel_for(n_, [&](std::size_t i) {
+    deformseg::internal::parallel_for(n_, 0, [&](std::size_t i) {
       std::size_t best = 0;
       double least = std::numeric_limits<double>::infinity();
       for (Eigen::Index c = 0; c < centres.cols(); ++c) {
@@ -133,7 +134,7 @@ private:
       changed[i] = labels[i] != best;
       labels[i] = best;
       distance[i] = least;
-    });
+    }, deformseg::internal::cheap_steps);
     for (const char c : changed)
       if (c) return true;
     return false;
@@ -250,7 +251,7 @@ private:
   Clustering best_of_runs(const Grouped_items& g, const internal::Lloyd& lloyd, std::size_t k) const {
     Clustering c;
     if (k == 0) return c;
-    std::mt19937_64 random(seed);
+    deformseg::internal::Random_engine random(seed);
     internal::Lloyd::Run best;
     for (std::size_t r = 0; r < restarts; ++r) {
       internal::Lloyd::Run run = lloyd.run(k, max_iterations, random);

@@ -61,14 +61,14 @@ inline std::vector<std::size_t> pam_build(const Eigen::MatrixXd& d, const std::v
   std::vector<double> gain(n);
   while (medoids.size() < k) {
     // The gain of j as a medoid (the first one: minus its total distance).
-    parallel_for(n, [&](std::size_t j) {
+    deformseg::internal::parallel_for(n, 0, [&](std::size_t j) {
       double g = 0;
       for (std::size_t i = 0; i < n; ++i) {
         const double x = d(Eigen::Index(i), Eigen::Index(j));
         g += medoids.empty() ? -w[i] * x : w[i] * std::max(0.0, nearest[i] - x);
       }
       gain[j] = g;
-    });
+    }, deformseg::internal::cheap_steps);
     std::size_t best = n;
     for (const std::size_t j : order)
       if (!is_medoid[j] && (best == n || gain[j] > gain[best])) best = j;
@@ -168,16 +168,16 @@ private:
     const auto n = std::size_t(d.rows());
     Clustering c;
     if (k == 0) return c;
-    const std::vector<std::size_t> order = internal::shuffled_indices(n, seed);
+    const std::vector<std::size_t> order = deformseg::internal::shuffled_indices(n, seed);
     c.medoids = internal::pam_build(d, w, k, order);
     internal::Nearest_medoids near(d, c.medoids);
     std::vector<char> is_medoid(n, 0);
     for (const std::size_t m : c.medoids) is_medoid[m] = 1;
     std::vector<internal::Swap> swaps(n);
     for (;;) {
-      internal::parallel_for(n, [&](std::size_t h) {
+      deformseg::internal::parallel_for(n, 0, [&](std::size_t h) {
         swaps[h] = is_medoid[h] ? internal::Swap{} : internal::best_swap_for(d, w, near, k, h);
-      });
+      }, deformseg::internal::cheap_steps);
       std::size_t best = n;
       for (const std::size_t h : order)
         if (best == n || swaps[h].delta < swaps[best].delta) best = h;

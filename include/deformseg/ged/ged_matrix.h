@@ -12,14 +12,11 @@
 #include <Eigen/Core>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <exception>
-#include <functional>
 #include <limits>
-#include <mutex>
 #include <ranges>
 #include <string>
 #include <utility>
@@ -40,10 +37,10 @@ struct Ged_matrix_options {
   /// when either is. Better bounds for twice the work; only meaningful for a symmetric cost model
   /// (insertion costs equal to deletion costs, symmetric substitution costs).
   bool both_directions = false;
-  /// @brief Called after each pair with the number of pairs done and the total, one call at a
-  /// time (from any thread); returning false stops the work: the pairs not yet started are left
-  /// with `lower = 0` and `distance = upper = +infinity`. Empty (the default): no call.
-  std::function<bool(std::size_t done, std::size_t total)> on_pair{};
+  /// @brief Called on the calling thread with the pairs done and their total (see `Progress`),
+  /// after each parallel batch of pairs (about 5 % of them, at least 16); returning false stops
+  /// the work, which then throws `cancelled`. Empty (the default): no call.
+  Progress progress{};
 };
 
 /// @brief The pairwise comparison of a set of graphs: matrices of distances and bounds, and each
@@ -54,7 +51,6 @@ struct Ged_matrix_result {
   Eigen::MatrixXd upper;          ///< k x k, symmetric: each pair's upper bound (may be +infinity)
   std::vector<Ged_result> pairs;  ///< pair {i, j}, i < j, at index pair_index(i, j): graph i -> graph j
   bool exact = true;              ///< whether every pair's distance is exact
-  bool stopped = false;           ///< whether `on_pair` stopped the work early
 
   /// @brief The index in `pairs` of pair {i, j} (i != j, either order): pairs are stored row by
   /// row of the upper triangle.
@@ -106,12 +102,12 @@ inline Ged_result combined(Ged_result forward, Ged_result reverse, std::size_t n
 /// @param graphs the k graphs; k may be 0 or 1.
 /// @param policy a `GedPolicy`; default Exact_ged{} (its default node limit).
 /// @param costs a `GedCostModel`; default Unit_costs.
-/// @param options threads, both directions, a progress and stop callback.
+/// @param options threads, both directions, a progress callback that can stop the work.
 /// @return k x k matrices and k (k - 1) / 2 pair results.
 /// @throws invalid_input or whatever the policy throws (the exception of the first failing pair
 /// in pair order; the pairs after it are not started); invalid_input for `threads` out of [0,
-/// `max_threads`]; cancelled when the calling thread's `Interruption_check` stops the work
-/// (threads.h), unlike `on_pair`, which gives the partial result.
+/// `max_threads`]; cancelled when `options.progress` or the calling thread's
+/// `Interruption_check` (threads.h) returned false.
 /// @par Complexity k (k - 1) / 2 policy calls (twice that with both directions).
 template <std::ranges::random_access_range Graphs, class Policy = Exact_ged,
           class Costs = Unit_costs>
@@ -125,11 +121,9 @@ Ged_matrix_result ged_matrix_results(const Graphs& graphs, const Policy& policy 
   const double infinity = std::numeric_limits<double>::infinity();
   std::vector<Ged_result> pairs(todo.size(), Ged_result{.distance = infinity, .exact = false, .lower = 0,
                                                         .upper = infinity, .mapping = {}});
-  std::atomic<bool> stop{false};
-  std::mutex progress;
-  std::size_t done = 0;
-  deformseg::internal::parallel_for(todo.size(), thread_count(options.threads, "ged_matrix"), [&](std::size_t at) {
-    if (stop.load()) return;
+  const int threads = thread_count(options.threads, "ged_matrix");
+  const std::size_t total = todo.size();
+  deformseg::internal::parallel_for_reporting(total, threads, options.progress, 0, total, [&](std::size_t at) {
     const auto [i, j] = todo[at];
     const auto& a = graphs[static_cast<std::ranges::range_difference_t<Graphs>>(i)];
     const auto& b = graphs[static_cast<std::ranges::range_difference_t<Graphs>>(j)];
@@ -137,15 +131,11 @@ Ged_matrix_result ged_matrix_results(const Graphs& graphs, const Policy& policy 
     pairs[at] = options.both_directions
                     ? internal::combined(std::move(forward), policy(b, a, costs), boost::num_vertices(a))
                     : std::move(forward);
-    if (options.on_pair) {
-      const std::lock_guard lock(progress);
-      if (!options.on_pair(++done, todo.size())) stop.store(true);
-    }
   });
   Ged_matrix_result result{.distance = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
                            .lower = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
                            .upper = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
-                           .pairs = {}, .exact = true, .stopped = stop.load()};
+                           .pairs = {}, .exact = true};
   for (std::size_t at = 0; at < todo.size(); ++at) {
     const auto i = static_cast<Eigen::Index>(todo[at].first), j = static_cast<Eigen::Index>(todo[at].second);
     const Ged_result& r = pairs[at];
@@ -166,8 +156,8 @@ Ged_matrix_result ged_matrix_results(const Graphs& graphs, const Policy& policy 
 /// @param graphs the k graphs, a random-access range of one `LabelledGraph` type.
 /// @param policy a `GedPolicy`; default Exact_ged{}.
 /// @param costs a `GedCostModel`; default Unit_costs.
-/// @param options threads, both directions, a progress and stop callback.
-/// @throws invalid_input or whatever the policy throws.
+/// @param options threads, both directions, a progress callback that can stop the work.
+/// @throws invalid_input or whatever the policy throws; cancelled as `ged_matrix_results`.
 /// @par Complexity k (k - 1) / 2 policy calls.
 template <std::ranges::random_access_range Graphs, class Policy = Exact_ged,
           class Costs = Unit_costs>

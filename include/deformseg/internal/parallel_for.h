@@ -1,4 +1,6 @@
-// deformseg's one parallel loop, on std::thread: the threads are made for the call and joined
+// deformseg's one parallel loop, which every parallel loop of the library uses (parallel_for,
+// parallel_for_with_locals, and parallel_for_reporting for the calls that take a Progress), on
+// std::thread: the threads are made for the call and joined
 // before it returns, so that no pool outlives a call (a process may fork after any call, which
 // GNU OpenMP's pool did not survive). The count follows the rule of threads.h. Indices are handed
 // out in increasing order, `chunk` at a time (a dynamic schedule); after a body throws, indices
@@ -209,17 +211,49 @@ auto parallel_for_with_locals(std::size_t count, int threads, std::size_t chunk,
 
 struct No_local {};
 
-// parallel_for_with_locals without locals: body(i) for every i in [0, count).
+// How a loop's indices are handed out: `chunk` at a time, and all on the calling thread when the
+// loop has fewer than `min_parallel` indices (for cheap steps, where making threads would cost
+// more than the loop).
+struct Loop_grain {
+  std::size_t chunk = 1;
+  std::size_t min_parallel = 0;
+};
+
+// The grain of loops whose steps are cheap, a pass over one row of a matrix (clustering).
+inline constexpr Loop_grain cheap_steps{.chunk = 16, .min_parallel = 65};
+
+// parallel_for_with_locals without locals: body(i) for every i in [0, count), on `threads`
+// threads (a `threads` option), handed out as `grain` says.
 template <class Body>
-void parallel_for(std::size_t count, int threads, const Body& body, std::size_t chunk = 1) {
-  parallel_for_with_locals(count, threads, chunk, [] { return No_local{}; },
+void parallel_for(std::size_t count, int threads, const Body& body, Loop_grain grain) {
+  const int used = count < grain.min_parallel ? 1 : threads;
+  if (used != threads) thread_count(threads);  // a bad count is refused whatever the loop's length
+  parallel_for_with_locals(count, used, grain.chunk, [] { return No_local{}; },
                            [&](No_local&, std::size_t i) { body(i); });
 }
 
-// parallel_for on the default number of threads.
+// parallel_for, `chunk` indices at a time.
 template <class Body>
-void parallel_for_each_index(std::size_t count, const Body& body) {
-  parallel_for(count, 0, body);
+void parallel_for(std::size_t count, int threads, const Body& body, std::size_t chunk = 1) {
+  parallel_for(count, threads, body, Loop_grain{.chunk = chunk});
+}
+
+// parallel_for for a long call that reports its progress (threads.h): runs body(0) ...
+// body(count - 1) in batches of about 5 % of the loop, at least 16 indices, one parallel_for
+// each, and after each batch reports `first_step` + the indices done, of `total_steps`, on the
+// calling thread, so that the callback needs no locking; without a callback, in one loop. The
+// batches keep the loop's exception rule: the lowest index's exception comes out.
+// Throws: cancelled when `progress` returns false; as parallel_for.
+template <class Body>
+void parallel_for_reporting(std::size_t count, int threads, const Progress& progress, std::size_t first_step,
+                            std::size_t total_steps, const Body& body) {
+  if (!progress) return parallel_for(count, threads, body);
+  const std::size_t batch = std::max<std::size_t>(16, count / 20);
+  for (std::size_t begin = 0; begin < count; begin += batch) {
+    const std::size_t size = std::min(batch, count - begin);
+    parallel_for(size, threads, [&](std::size_t k) { body(begin + k); });
+    report_progress(progress, first_step + begin + size, total_steps);
+  }
 }
 
 }  // namespace deformseg::internal

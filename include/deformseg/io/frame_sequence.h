@@ -280,8 +280,7 @@ mesh::Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& d
                                                       const Frame_sequence_options& options = {},
                                                       Repair_report* report = nullptr) {
   thread_count(options.threads);
-  if (!(options.fps > 0) || !std::isfinite(options.fps))
-    throw invalid_input("fps must be positive and finite, not " + std::to_string(options.fps));
+  mesh::check_frames_per_second(options.fps);
   const std::vector<std::filesystem::path> files = list_frame_files(directory_or_glob);
   const std::filesystem::path topology_file = options.topology.value_or(files.front());
   const Input_location topology_location{.file = topology_file.string(),

@@ -207,8 +207,7 @@ inline std::optional<std::size_t> select_clip(const tinygltf::Model& model, cons
 }
 
 inline void check_options(const io::Gltf_read_options& options) {
-  if (!(options.fps > 0) || !std::isfinite(options.fps))
-    throw invalid_input("fps must be positive and finite, not " + std::to_string(options.fps));
+  mesh::check_frames_per_second(options.fps);
   thread_count(options.threads);
 }
 

@@ -165,8 +165,7 @@ mesh::Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input,
                                                    .fps = options.fps},
                                                   report);
 
-  if (!(options.fps > 0) || !std::isfinite(options.fps))
-    throw invalid_input("fps must be positive and finite, not " + std::to_string(options.fps), {.file = input});
+  mesh::check_frames_per_second(options.fps, {}, {.file = input});
   if (!options.topology)
     throw invalid_input("a ." + format + " point cache needs a topology mesh (.obj, .off or .ply)",
                         {.file = input});

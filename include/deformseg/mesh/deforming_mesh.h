@@ -77,6 +77,21 @@ concept DeformingMesh =
 /// @brief The frame rate of an animation that does not say its own: 30 frames per second.
 inline constexpr double default_frames_per_second = 30;
 
+/// @brief The one check of a frame rate given to deformseg (an animation's, a reader's option, a
+/// signature's): it must be positive and finite.
+/// @param fps the frame rate, in frames per second.
+/// @param where what takes it, put before the message (e.g. "motion_signatures"); may be empty.
+/// @param location the file it applies to, if any.
+/// @throws invalid_input otherwise, e.g. "fps must be positive and finite (the frame rate, in
+/// frames per second), not 0.000000".
+inline void check_frames_per_second(double fps, const std::string& where = {}, const Input_location& location = {}) {
+  if (!(fps > 0) || !std::isfinite(fps))
+    throw invalid_input((where.empty() ? "" : where + ": ") +
+                            "fps must be positive and finite (the frame rate, in frames per second), not " +
+                            std::to_string(fps),
+                        location);
+}
+
 /// @brief The default model of `DeformingMesh`: the connectivity of a `FaceGraph` and the vertex
 /// positions of every frame, stored contiguously.
 ///
@@ -216,8 +231,7 @@ public:
   /// @brief Sets the frame rate, in frames per second.
   /// @pre `fps` is finite and positive; otherwise throws `invalid_input`.
   void set_frames_per_second(double fps) {
-    if (!(fps > 0) || !std::isfinite(fps))
-      throw invalid_input("the frame rate must be positive and finite, not " + std::to_string(fps) + " fps");
+    check_frames_per_second(fps);
     frames_per_second_ = fps;
   }
 

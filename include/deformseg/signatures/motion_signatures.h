@@ -189,9 +189,7 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
   for (const double lag : options.lags)
     if (!(lag > 0) || !std::isfinite(lag))
       throw invalid_input("motion_signatures: a lag of " + std::to_string(lag) + " s; lags must be positive");
-  if (!(frames_per_second > 0) || !std::isfinite(frames_per_second))
-    throw invalid_input("motion_signatures: a frame rate of " + std::to_string(frames_per_second) +
-                        " fps; it must be positive");
+  mesh::check_frames_per_second(frames_per_second, "motion_signatures");
   if (!(options.floor > 0)) throw invalid_input("motion_signatures: the floor must be positive");
   if (options.up && !(options.vertical_unit > 0))
     throw invalid_input("motion_signatures: the vertical unit must be positive");
@@ -207,7 +205,7 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
   using Row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   Row_major out = Row_major(static_cast<Eigen::Index>(instants.size()), static_cast<Eigen::Index>(columns));
   const double vertical_factor = std::sqrt(options.vertical_weight);
-  deformseg::internal::parallel_for_each_index(instants.size(), [&](std::size_t r) {
+  deformseg::internal::parallel_for(instants.size(), 0, [&](std::size_t r) {
     std::vector<std::pair<double, double>> speeds(vertices), rises(up ? vertices : 0);
     for (std::size_t l = 0; l < lags; ++l) {
       const double lag = options.lags[l];

@@ -132,7 +132,7 @@ private:
     Eigen::MatrixXd d(na + nb, na + nb);
     d.topLeftCorner(na, na) = a.distances;
     d.bottomRightCorner(nb, nb) = b.distances;
-    deformseg::internal::parallel_for_each_index(std::size_t(na * nb), [&](std::size_t p) {
+    deformseg::internal::parallel_for(std::size_t(na * nb), 0, [&](std::size_t p) {
       const Eigen::Index i = Eigen::Index(p) / nb, j = Eigen::Index(p) % nb;
       d(i, na + j) = d(na + j, i) = ged(a.graphs[std::size_t(i)], b.graphs[std::size_t(j)], costs).distance;
     });

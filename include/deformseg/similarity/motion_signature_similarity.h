@@ -158,9 +158,7 @@ struct Motion_signature_similarity {
                                  double frames_per_second = mesh::default_frames_per_second) const {
     if (!(signature_rate > 0) || !std::isfinite(signature_rate))
       throw invalid_input("Motion_signature_similarity: the signature rate must be positive and finite");
-    if (!(frames_per_second > 0) || !std::isfinite(frames_per_second))
-      throw invalid_input("motion_signatures: a frame rate of " + std::to_string(frames_per_second) +
-                          " fps; it must be positive");
+    mesh::check_frames_per_second(frames_per_second, "motion_signatures");
     const std::size_t frames = weights.empty() ? 0 : positions.size() / (3 * weights.size());
     const std::vector<double> instants = internal::signature_instants(frames, frames_per_second, signature_rate);
     Description d;

@@ -9,6 +9,7 @@
 #include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/similarity/similarity.h>
 #include <deformseg/similarity/strain_distribution_similarity.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
 
@@ -45,21 +46,6 @@ Similarity motion_similarity(const Mesh& a, const Mesh& b, const Policy& policy 
   return policy.compare(policy.describe(a), policy.describe(b));
 }
 
-/// @brief Called by `similarity_matrix` as its work advances: `done` of `total` steps (one a
-/// description, one a comparison) finished; returning false stops the computation, which then
-/// throws `similarity_stopped`. Always called on the calling thread, between parallel batches,
-/// with `done` increasing, last with `done == total`; and once with `done` equal to the number of
-/// descriptions, when all are made. An empty function (the default) is never called.
-using Similarity_progress = std::function<bool(std::size_t done, std::size_t total)>;
-
-/// @brief Thrown by `similarity_matrix` when its `Similarity_progress` returned false: a
-/// `cancelled`, as when an `Interruption_check` (threads.h) stops it.
-class similarity_stopped : public cancelled {
-public:
-  /// @brief The exception, with a fixed message.
-  similarity_stopped() : cancelled("the similarity matrix was stopped by its progress callback") {}
-};
-
 /// @brief Thrown by `similarity_matrix` when the policy cannot describe one of the animations (a
 /// single pose, which has no motion, say): the policy's `invalid_input`, its message after the
 /// animation's place, so that a caller can name the animation or leave it out and try again.
@@ -88,32 +74,17 @@ private:
 
 namespace internal {
 
-// Runs body(0) ... body(count - 1) in parallel batches, reporting `first_step + end of batch` to
-// `progress` after each batch (on this thread, so a callback needs no locking); batches are about
-// 5 % of this loop, at least 16 steps, so that even slow descriptions are reported but the
-// threads stay busy.
-template <class Body>
-void run_in_batches(std::size_t count, std::size_t first_step, std::size_t total_steps,
-                    const Similarity_progress& progress, const Body& body) {
-  const std::size_t batch = std::max<std::size_t>(16, count / 20);
-  for (std::size_t begin = 0; begin < count; begin += batch) {
-    const std::size_t size = std::min(batch, count - begin);
-    deformseg::internal::parallel_for_each_index(size, [&](std::size_t k) { body(begin + k); });
-    if (progress && !progress(first_step + begin + size, total_steps)) throw similarity_stopped();
-  }
-}
-
 // Each animation of `animations` described once, in parallel, reported as steps from `first_step`.
 // An animation the policy refuses is named by an animation_not_described (in the database when
 // `database`).
 template <class Animations, class Policy>
 std::vector<typename Policy::Description> describe_all(const Animations& animations, const Policy& policy,
                                                        std::size_t first_step, std::size_t total_steps,
-                                                       const Similarity_progress& progress, bool database = false) {
+                                                       const Progress& progress, bool database = false) {
   const std::size_t n = std::size_t(std::ranges::size(animations));
   // Optional because a Description need not be default-constructible.
   std::vector<std::optional<typename Policy::Description>> made(n);
-  run_in_batches(n, first_step, total_steps, progress, [&](std::size_t i) {
+  deformseg::internal::parallel_for_reporting(n, 0, progress, first_step, total_steps, [&](std::size_t i) {
     try {
       made[i].emplace(policy.describe(std::ranges::begin(animations)[std::ptrdiff_t(i)]));
     } catch (const invalid_input& e) {
@@ -136,21 +107,23 @@ std::vector<typename Policy::Description> describe_all(const Animations& animati
 /// @tparam Animations a random-access range of a `DeformingMesh` type.
 /// @param animations the N animations.
 /// @param policy the similarity policy (default `Default_similarity{}`).
-/// @param progress called as the work advances (see `Similarity_progress`): N + N (N + 1) / 2
-/// steps; default none.
+/// @param progress called on the calling thread as the work advances (see `Progress`): N + N (N +
+/// 1) / 2 steps, one a description, one a comparison; called after each parallel batch (about 5 %
+/// of the descriptions or of the pairs, at least 16), so once with `done` = N, when the
+/// descriptions are all made; default none.
 /// @return the N x N matrix of similarity values.
 /// @throws animation_not_described (an invalid_input) for the first animation, in index order,
 /// that the policy cannot describe, naming it; invalid_input as the policy does for the first
 /// failing pair.
-/// @throws similarity_stopped when `progress` returned false; cancelled when the calling
-/// thread's `Interruption_check` stopped it (threads.h).
+/// @throws cancelled when `progress` or the calling thread's `Interruption_check` (threads.h)
+/// returned false.
 /// @par Complexity N describes and N (N + 1) / 2 compares, on `default_threads()` threads (see
 /// `set_default_threads`); the result does not depend on their number.
 template <std::ranges::random_access_range Animations, class Policy = Default_similarity>
   requires mesh::DeformingMesh<std::ranges::range_value_t<Animations>> &&
            SimilarityPolicy<Policy, std::ranges::range_value_t<Animations>>
 Eigen::MatrixXd similarity_matrix(const Animations& animations, const Policy& policy = {},
-                                  const Similarity_progress& progress = {}) {
+                                  const Progress& progress = {}) {
   const std::size_t n = std::size_t(std::ranges::size(animations));
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i < n; ++i)
@@ -159,7 +132,7 @@ Eigen::MatrixXd similarity_matrix(const Animations& animations, const Policy& po
   const auto descriptions = internal::describe_all(animations, policy, 0, total, progress);
   const auto size = Eigen::Index(n);
   Eigen::MatrixXd values(size, size);
-  internal::run_in_batches(pairs.size(), n, total, progress, [&](std::size_t p) {
+  deformseg::internal::parallel_for_reporting(pairs.size(), 0, progress, n, total, [&](std::size_t p) {
     const auto [i, j] = pairs[p];
     const double v = policy.compare(descriptions[i], descriptions[j]).value;
     values(Eigen::Index(i), Eigen::Index(j)) = values(Eigen::Index(j), Eigen::Index(i)) = v;
@@ -175,14 +148,15 @@ Eigen::MatrixXd similarity_matrix(const Animations& animations, const Policy& po
 /// @param queries the Q animations of the rows.
 /// @param database the D animations of the columns.
 /// @param policy the similarity policy (default `Default_similarity{}`).
-/// @param progress called as the work advances (see `Similarity_progress`): Q + D + Q D steps;
-/// default none.
+/// @param progress called on the calling thread as the work advances (see `Progress`): Q + D + Q D
+/// steps, after each parallel batch of the queries' descriptions, the database's and the pairs
+/// (as in the all-pairs `similarity_matrix`); default none.
 /// @return the Q x D matrix of similarity values (not symmetric: a policy's `compare` need not be).
 /// @throws animation_not_described (an invalid_input) for the first query, or else the first
 /// database animation, in index order, that the policy cannot describe, naming it; invalid_input
 /// as the policy does for the first failing pair.
-/// @throws similarity_stopped when `progress` returned false; cancelled when the calling
-/// thread's `Interruption_check` stopped it (threads.h).
+/// @throws cancelled when `progress` or the calling thread's `Interruption_check` (threads.h)
+/// returned false.
 /// @par Complexity Q + D describes and Q D compares, on `default_threads()` threads (see
 /// `set_default_threads`); the result does not depend on their number.
 template <std::ranges::random_access_range Queries, std::ranges::random_access_range Database,
@@ -191,13 +165,13 @@ template <std::ranges::random_access_range Queries, std::ranges::random_access_r
            std::same_as<std::ranges::range_value_t<Queries>, std::ranges::range_value_t<Database>> &&
            SimilarityPolicy<Policy, std::ranges::range_value_t<Queries>>
 Eigen::MatrixXd similarity_matrix(const Queries& queries, const Database& database, const Policy& policy = {},
-                                  const Similarity_progress& progress = {}) {
+                                  const Progress& progress = {}) {
   const std::size_t q = std::size_t(std::ranges::size(queries)), d = std::size_t(std::ranges::size(database));
   const std::size_t total = q + d + q * d;
   const auto rows = internal::describe_all(queries, policy, 0, total, progress);
   const auto columns = internal::describe_all(database, policy, q, total, progress, true);
   Eigen::MatrixXd values(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(d));
-  internal::run_in_batches(q * d, q + d, total, progress, [&](std::size_t p) {
+  deformseg::internal::parallel_for_reporting(q * d, 0, progress, q + d, total, [&](std::size_t p) {
     values(Eigen::Index(p / d), Eigen::Index(p % d)) = policy.compare(rows[p / d], columns[p % d]).value;
   });
   return values;

@@ -221,7 +221,7 @@ inline std::size_t frame_count(const Self_similarity_description& d) { return st
 /// @brief `similarity_significance` for `Self_similarity_matching`: the z-score of
 /// `policy.compare(a, b).value` against `copies` copies of `b` with frames shuffled by `random`.
 /// @tparam Policy a `Self_similarity_matching`.
-/// @tparam Random a uniform random bit generator (`std::mt19937`).
+/// @tparam Random a generator of 32 or 64 uniform bits: `std::mt19937` or `std::mt19937_64`.
 /// @return the z-score; 0 when the copies all score the same as each other (no spread).
 /// @throws invalid_input when `copies < 2`, or as `compare`.
 /// @par Complexity `copies + 1` compares.

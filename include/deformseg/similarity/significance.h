@@ -5,6 +5,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/random.h>
 
 #include <Eigen/Core>
 
@@ -54,13 +55,15 @@ concept ReorderableDescription = requires(const Description& d, std::span<const 
 /// A shuffled copy keeps every frame and loses their order, so the z-score says how much of the
 /// value comes from the frames coming in the same order, beyond alike frames alone: a high value
 /// with a low z-score means alike poses or rhythms in another order. Deterministic for a given
-/// generator state (the caller passes it, so runs repeat exactly).
+/// generator state (the caller passes it, so runs repeat exactly), and the same with every
+/// standard library: the shuffles are deformseg's own (Fisher-Yates on draws of the generator's
+/// bits), not `std::shuffle`, whose algorithm each library chooses.
 /// @tparam Policy a `SimilarityPolicy` whose `Description` is a `ReorderableDescription`.
-/// @tparam Random a uniform random bit generator (`std::mt19937`).
+/// @tparam Random a generator of 32 or 64 uniform bits: `std::mt19937` or `std::mt19937_64`.
 /// @return the z-score; 0 when the copies all score the same (no spread).
 /// @throws invalid_input when `copies < 2`, or as `compare`.
 /// @par Complexity `copies + 1` compares.
-template <class Policy, ReorderableDescription Description, class Random>
+template <class Policy, ReorderableDescription Description, deformseg::internal::Bits_generator Random>
 double similarity_significance(const Policy& policy, const Description& a, const Description& b, std::size_t copies,
                                Random& random) {
   if (copies < 2) throw invalid_input("similarity_significance: fewer than 2 shuffled copies");
@@ -69,7 +72,7 @@ double similarity_significance(const Policy& policy, const Description& a, const
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::vector<double> shuffled;
   for (std::size_t c = 0; c < copies; ++c) {
-    std::shuffle(order.begin(), order.end(), random);
+    deformseg::internal::shuffle(order.begin(), order.end(), random);
     shuffled.push_back(policy.compare(a, reordered_frames(b, std::span<const std::size_t>(order))).value);
   }
   const double mean = std::accumulate(shuffled.begin(), shuffled.end(), 0.0) / double(copies);

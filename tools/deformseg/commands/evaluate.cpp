@@ -256,7 +256,7 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
 
 void run_evaluate(const Evaluate_options& o) {
   similarity::check_policy_choice(o.policy);
-  if (!(o.fps > 0)) throw invalid_input("--fps must be positive");
+  mesh::check_frames_per_second(o.fps, "--fps");
   set_default_threads(o.threads);  // the matrix's threads; the readers take theirs
   const auto start = Clock::now();
   Read_clips read = read_clips(io::read_motion_labels(o.labels), o);

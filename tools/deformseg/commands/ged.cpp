@@ -114,9 +114,9 @@ void run_ged_matrix(const Ged_matrix_command_options& o) {
   for (const std::string& file : o.files) graphs.push_back(read_graph(file));
   const std::size_t pairs = graphs.size() * (graphs.size() - 1) / 2;
   progress("comparing " + std::to_string(pairs) + " pairs of graphs");
-  const std::size_t step = std::max<std::size_t>(1, pairs / 10);
-  const ged::Ged_matrix_options options{.threads = o.threads, .on_pair = [step](std::size_t done, std::size_t total) {
-    if (done % step == 0 || done == total) progress(std::to_string(done) + " of " + std::to_string(total) + " pairs");
+  // Called after each batch of about 5 % of the pairs.
+  const ged::Ged_matrix_options options{.threads = o.threads, .progress = [](std::size_t done, std::size_t total) {
+    progress(std::to_string(done) + " of " + std::to_string(total) + " pairs");
     return true;
   }};
   const ged::Ged_matrix_result r = with_policy(
