@@ -660,6 +660,32 @@ TEST_CASE("strain: a reference mesh of its own", "[strain]") {
   CHECK(std::ranges::equal(with_polyhedron.values(), with_mesh.values()));
 }
 
+TEST_CASE("strain: policy objects in place of the options' measure and normalisation", "[strain]") {
+  mesh::Bending_tube spec;
+  spec.schedule = {{4, {right_angle}}};
+  const auto tube = mesh::make_bending_tube(spec);
+  const auto& a = tube.animation;
+  const mesh::Surface_mesh rest = a.face_graph();
+  // The options' measure and normalisation, which the policies replace, differ from them.
+  const strain::Strain_options ignored{.reference = strain::Strain_reference::previous_pose,
+                                       .measure = strain::Area_ratio_strain{},
+                                       .normalization = strain::No_normalization{}};
+  const auto chosen = strain::compute_strain(a, {.reference = strain::Strain_reference::previous_pose,
+                                                 .measure = strain::Green_lagrange_strain{},
+                                                 .normalization = Gaussian{.percentile = 50}});
+  const auto given = strain::compute_strain(a, ignored, strain::Green_lagrange_strain{}, Gaussian{.percentile = 50});
+  CHECK(largest(given) > 0.1);
+  CHECK(std::ranges::equal(given.values(), chosen.values()));
+  CHECK(given.sigma() == chosen.sigma());
+  const auto against_rest = strain::compute_strain(a, rest, {.measure = strain::Frobenius_strain{}});
+  const auto against_rest_given =
+      strain::compute_strain(a, rest, {.measure = strain::Area_ratio_strain{}}, strain::Frobenius_strain{}, Gaussian{});
+  CHECK(largest(against_rest) > 0.1);
+  CHECK(std::ranges::equal(against_rest_given.values(), against_rest.values()));
+  CHECK_THROWS_WITH(strain::compute_strain(a, rest, ignored, strain::Max_principal_strain{}, Gaussian{}),
+                    Catch::Contains("a reference mesh takes the place of the rest pose"));
+}
+
 TEST_CASE("strain: one frame into face property maps", "[strain]") {
   mesh::Bending_tube spec;
   spec.schedule = {{4, {right_angle}}};
