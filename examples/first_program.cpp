@@ -27,8 +27,8 @@ int main(int argc, char** argv) try {
   std::cout << "A: " << a.num_frames() << " frames of " << a.num_faces() << " triangles\n";
 
   // The normalised strain of every triangle of A at every frame, against frame 0.
-  const strain::Strain_field<float> strain = strain::compute_strain(a);
-  std::cout << "strain of triangle 0 at the last frame: " << strain(0, a.num_frames() - 1) << '\n';
+  const strain::Strain_field<float> field = strain::compute_strain(a);
+  std::cout << "strain of triangle 0 at the last frame: " << field(0, a.num_frames() - 1) << '\n';
 
   // Intervals of similar poses of A.
   const temporal::Temporal_segmentation poses = temporal::temporal_segmentation(a);
@@ -37,8 +37,8 @@ int main(int argc, char** argv) try {
 
   // How alike A and B move: 1 for the same motion, whatever the shape, size or frame rate; a faster
   // motion (as B's quicker bend) is another motion.
-  const similarity::Similarity similarity = similarity::motion_similarity(a, b);
-  std::cout << "similarity of A and B: " << similarity.value << '\n';
+  const similarity::Similarity alike = similarity::motion_similarity(a, b);
+  std::cout << "similarity of A and B: " << alike.value << '\n';
 } catch (const std::exception& error) {  // deformseg::invalid_input names the file, line or frame
   std::cerr << "error: " << error.what() << '\n';
   return 1;

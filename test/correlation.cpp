@@ -64,7 +64,7 @@ TEST_CASE("spearman_correlation: unchanged by increasing transforms, 1 for any m
 TEST_CASE("correlation: invalid input throws", "[correlation]") {
   using deformseg::invalid_input;
   const std::vector<double> three{1, 2, 3}, two{1, 2}, one{1}, constant{4, 4, 4};
-  for (const auto correlation : {&evaluation::pearson_correlation, &evaluation::spearman_correlation}) {
+  for (const auto correlation : {&pearson_correlation, &evaluation::spearman_correlation}) {
     CHECK_THROWS_AS(correlation(three, two), invalid_input);
     CHECK_THROWS_AS(correlation(one, one), invalid_input);
     CHECK_THROWS_WITH(correlation(three, constant), Catch::Contains("constant"));

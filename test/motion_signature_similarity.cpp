@@ -313,10 +313,10 @@ TEST_CASE("similarity_significance: ordered frames stand out from shuffled ones"
   // A description in another order: row t is row order[t].
   const std::vector<std::size_t> order{2, 0, 1};
   const Eigen::MatrixXd three = a.signatures.topRows(3);
-  const Eigen::MatrixXd reordered = reordered_frames(three, std::span<const std::size_t>(order));
+  const Eigen::MatrixXd reordered = similarity::reordered_frames(three, std::span<const std::size_t>(order));
   CHECK(reordered.row(0) == three.row(2));
   CHECK(reordered.row(1) == three.row(0));
-  CHECK(frame_count(reordered) == 3);
+  CHECK(similarity::frame_count(reordered) == 3);
 }
 
 // --- Issue 25: the value does not depend on the sampling rate; find_motion finds copies. ---

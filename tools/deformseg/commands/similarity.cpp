@@ -42,7 +42,7 @@ Similarity_with_significance compare_with_significance(const Policy& policy, con
                                                        unsigned seed) {
   const auto da = policy.describe(a), db = policy.describe(b);
   Similarity_with_significance out{policy.compare(da, db), std::nullopt};
-  if constexpr (requires { frame_count(db); reordered_frames(db, std::span<const std::size_t>()); }) {
+  if constexpr (requires { similarity::frame_count(db); similarity::reordered_frames(db, std::span<const std::size_t>()); }) {
     if (copies >= 2) {
       progress("z-score against " + std::to_string(copies) + " frame-shuffled copies of B");
       std::mt19937 random(seed);

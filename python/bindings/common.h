@@ -1,0 +1,30 @@
+// What every part of deformseg._deformseg shares: long calls that release the GIL and stop on
+// Ctrl-C, the refusal of a bad argument.
+#pragma once
+
+#include <deformseg/threads.h>
+
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+namespace deformseg::python {
+
+// The library's long loops call this on the calling thread about every 20 ms (threads.h): a
+// signal caught meanwhile runs its Python handler, and what the handler raises
+// (KeyboardInterrupt for Ctrl-C) stops the call and comes out of it.
+bool no_signal_raised();
+
+// The GIL released for a call that can take long, which Ctrl-C can interrupt.
+struct Interruptible_call {
+  Interruption_scope scope{&no_signal_raised};
+  pybind11::gil_scoped_release release;
+};
+
+// Throws invalid_input (InvalidInput in Python) with `message`.
+[[noreturn]] void refuse(const std::string& message);
+
+// The name of the Python type of `value`, for messages.
+std::string type_name(const pybind11::handle& value);
+
+}  // namespace deformseg::python

@@ -1,0 +1,70 @@
+"""`pip install .` (the README's first route) builds the package from a copy of the source tree and
+installs it into a scratch virtual environment, offline (`--no-build-isolation --no-index`: the
+build tools and NumPy are the system's); the installed package imports from outside the tree and
+gives the results of the package under test.
+
+It compiles the extension once more, as a user's `pip install` does (about two minutes of one core),
+so CTest runs it as a test of its own (`python.pip_install`, label `pip`) beside the C++ tests."""
+import os
+import pathlib
+import shutil
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+
+import deformseg
+
+REPOSITORY = pathlib.Path(__file__).resolve().parents[2]
+
+
+def source_copy(destination):
+    """The source tree without its build folders and Git data, as a fresh clone has it."""
+    def ignored(folder, names):
+        return [n for n in names if pathlib.Path(folder) == REPOSITORY and (n.startswith("build") or n == ".git")]
+    shutil.copytree(REPOSITORY, destination, ignore=ignored)
+    return destination
+
+
+def test_pip_install_builds_an_importable_package(tmp_path, grid):
+    cmake = os.environ.get("DEFORMSEG_CMAKE")
+    if not cmake:
+        pytest.skip("DEFORMSEG_CMAKE is set by CTest (python.pip_install), which runs this long build")
+    source = source_copy(tmp_path / "source")
+    environment = dict(os.environ, PATH=os.pathsep.join([str(pathlib.Path(cmake).parent), os.environ["PATH"]]))
+    environment.pop("PYTHONPATH", None)  # the package under test must not hide the installed one
+    venv = tmp_path / "venv"
+    subprocess.run([sys.executable, "-m", "venv", "--system-site-packages", "--without-pip", venv], check=True)
+    python = venv / "bin" / "python"
+    done = subprocess.run([python, "-m", "pip", "install", "--no-build-isolation", "--no-index", "."], cwd=source,
+                          env=environment, capture_output=True, text=True)
+    assert done.returncode == 0, done.stdout[-4000:] + done.stderr[-4000:]
+
+    faces, frames = grid(4, 5, 9)
+    np.save(tmp_path / "faces.npy", faces)
+    np.save(tmp_path / "frames.npy", frames)
+    script = textwrap.dedent("""
+        import importlib.metadata, pathlib, sys
+        import numpy as np
+        import deformseg
+        a = deformseg.Animation(np.load("faces.npy"), np.load("frames.npy"))
+        np.save("strain.npy", deformseg.strain(a))
+        package = pathlib.Path(deformseg.__file__).parent
+        print(package)
+        print(importlib.metadata.version("deformseg"), deformseg.__version__)
+        print(" ".join(sorted(p.name for p in package.iterdir() if p.name != "__pycache__")))
+        print(deformseg.temporal_segmentation(a))
+        """)
+    done = subprocess.run([python, "-c", script], cwd=tmp_path, env=environment, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    package, versions, files, segments = done.stdout.strip().splitlines()
+    assert pathlib.Path(package).is_relative_to(venv), package  # installed, not the tree's
+    assert versions == f"{deformseg.__version__} {deformseg.__version__}"
+    assert {"__init__.py", "__init__.pyi", "_graphs.py", "py.typed"} <= set(files.split())
+    assert any(f.startswith("_deformseg.") and f.endswith(".so") for f in files.split()), files
+    a = deformseg.Animation(faces, frames)
+    assert np.array_equal(np.load(tmp_path / "strain.npy"), deformseg.strain(a))
+    assert segments == str(deformseg.temporal_segmentation(a))
+    assert not (source / "deformseg.egg-info").exists()  # setup.py keeps its files in build-python/

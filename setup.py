@@ -1,0 +1,79 @@
+"""The build of the Python package for pip (pyproject.toml names setuptools as its backend).
+
+The compiled extension deformseg._deformseg is the CMake target `_deformseg` (python/CMakeLists.txt):
+build_ext configures the project with the Python module alone (no tests, examples or tool) for the
+Python that runs pip, builds that target and copies it into the wheel beside the pure-Python files
+of python/deformseg/. CMake's build folder is kept below build-python/, so that a second
+`pip install .` recompiles only what changed.
+
+Environment: CMAKE_ARGS, more arguments for CMake's configuration (`-DDEFORMSEG_ARCH=` for a
+wheel that runs on any x86-64, `-DCMAKE_CXX_COMPILER=clang++`); CMAKE_BUILD_PARALLEL_LEVEL, the
+number of compile jobs (default: every core).
+"""
+import os
+import pathlib
+import re
+import shlex
+import shutil
+import subprocess
+import sys
+import sysconfig
+
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+ROOT = pathlib.Path(__file__).resolve().parent
+BUILD_BASE = "build-python"  # below the tree's root, beside CMake's usual build/ (both git-ignored)
+
+
+def project_version():
+    """The version of project(deformseg VERSION x.y.z) in CMakeLists.txt, the one source of it."""
+    found = re.search(r"project\(deformseg VERSION ([0-9.]+)", (ROOT / "CMakeLists.txt").read_text())
+    if not found:
+        raise RuntimeError("CMakeLists.txt: no 'project(deformseg VERSION x.y.z)' to take the version from")
+    return found.group(1)
+
+
+class CMakeExtension(Extension):
+    """An extension that is a CMake target of this project rather than a list of sources."""
+
+    def __init__(self, name, target):
+        super().__init__(name, sources=[])
+        self.target = target
+
+
+class CMakeBuild(build_ext):
+    def build_extension(self, ext):
+        build = pathlib.Path(self.build_temp).resolve() / "cmake"
+        configure = ["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
+                     f"-DPython_EXECUTABLE={sys.executable}", "-DDEFORMSEG_BUILD_PYTHON=ON",
+                     "-DDEFORMSEG_BUILD_TESTS=OFF", "-DDEFORMSEG_BUILD_EXAMPLES=OFF", *pybind11_arguments(),
+                     *shlex.split(os.environ.get("CMAKE_ARGS", ""))]
+        subprocess.run(configure, check=True)
+        jobs = [] if "CMAKE_BUILD_PARALLEL_LEVEL" in os.environ else ["--parallel", str(os.cpu_count() or 1)]
+        subprocess.run(["cmake", "--build", str(build), "--target", ext.target, *jobs], check=True)
+        built = build / "python" / "deformseg" / (ext.target + sysconfig.get_config_var("EXT_SUFFIX"))
+        if not built.exists():
+            raise RuntimeError(f"{built}: CMake built no extension for this Python ({sys.executable})")
+        destination = pathlib.Path(self.get_ext_fullpath(ext.name))
+        destination.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(built, destination)
+
+
+def pybind11_arguments():
+    """pybind11's CMake files, when the pybind11 Python package is there (pip's build isolation
+    installs it; Debian's python3-pybind11 has them too); else CMake searches for pybind11-dev's."""
+    try:
+        import pybind11
+    except ImportError:
+        return []
+    return [f"-Dpybind11_DIR={pybind11.get_cmake_dir()}"]
+
+
+(ROOT / BUILD_BASE).mkdir(exist_ok=True)  # egg_info writes its folder there, not in the tree
+setup(
+    version=project_version(),
+    ext_modules=[CMakeExtension("deformseg._deformseg", target="_deformseg")],
+    cmdclass={"build_ext": CMakeBuild},
+    options={"build": {"build_base": BUILD_BASE}, "egg_info": {"egg_base": BUILD_BASE}},
+)
