@@ -39,7 +39,8 @@ int main() {
   spec.schedule = {{5, {0.0}}, {10, {std::numbers::pi / 2}}, {5, {}}, {10, {0.0}}};
   const auto animation = mesh::make_bending_tube(spec).animation;
   // The policies take the place of Strain_options::measure and ::normalization; the options keep the rest.
-  const strain::Strain_field<float> stretch = strain::compute_strain(animation, {}, Stretch_only{}, Divide_by_largest{});
+  const strain::Strain_field<float> stretch =
+      strain::compute_strain(animation, {}, Stretch_only{}, Divide_by_largest{});
   const auto bent = stretch.frame(20);
   const auto stretched = std::count_if(bent.begin(), bent.end(), [](float s) { return s > 0.01f; });
   std::cout << "largest stretch " << *stretch.sigma() << "; frame 20: largest "

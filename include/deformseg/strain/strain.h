@@ -43,7 +43,8 @@ enum class Strain_reference {
 };
 
 /// @brief The built-in strain measures, one of which `Strain_options::measure` holds.
-using Strain_measure_choice = std::variant<Max_principal_strain, Green_lagrange_strain, Frobenius_strain, Area_ratio_strain>;
+using Strain_measure_choice =
+    std::variant<Max_principal_strain, Green_lagrange_strain, Frobenius_strain, Area_ratio_strain>;
 
 /// @brief The built-in normalisations, one of which `Strain_options::normalization` holds.
 using Strain_normalization_choice = std::variant<Gaussian_normalization, No_normalization>;
@@ -449,8 +450,9 @@ Strain_field<Value> compute_strain(const Mesh& animation, const ReferenceGraph& 
 /// @par Complexity O(T F + V), with the policies' own costs.
 template <std::floating_point Value = float, mesh::DeformingMesh Mesh, internal::Reference_face_graph ReferenceGraph,
           StrainMeasure Measure, StrainNormalization Normalization>
-Strain_field<Value> compute_strain(const Mesh& animation, const ReferenceGraph& reference, const Strain_options& options,
-                                   const Measure& measure, const Normalization& normalization) {
+Strain_field<Value> compute_strain(const Mesh& animation, const ReferenceGraph& reference,
+                                   const Strain_options& options, const Measure& measure,
+                                   const Normalization& normalization) {
   return internal::strain_against<Value>(animation, reference, options, measure, normalization);
 }
 
