@@ -47,8 +47,8 @@ int main() {
   // Raw Green-Lagrange strain in double, with principal directions.
   // [measure]
   const auto green = strain::compute_strain<double>(
-      animation, strain::Strain_options{.measure = strain::Green_lagrange_strain{}, .normalization = strain::No_normalization{},
-                                .principal_directions = true});
+      animation, {.measure = strain::Green_lagrange_strain{}, .normalization = strain::No_normalization{},
+                  .principal_directions = true});
   // [measure]
   const std::size_t bent = std::size_t(std::max_element(green.frame(20).begin(), green.frame(20).end()) -
                                        green.frame(20).begin());
@@ -58,7 +58,8 @@ int main() {
   // A reference mesh of its own (here the straight tube, as a Surface_mesh) in place of a frame.
   // [reference_mesh]
   const mesh::Surface_mesh straight = animation.face_graph();
-  const auto against_mesh = strain::compute_strain(animation, straight, {.normalization = {.sigma = 0.1}});
+  const auto against_mesh =
+      strain::compute_strain(animation, straight, {.normalization = strain::Gaussian_normalization{.sigma = 0.1}});
   // [reference_mesh]
   std::cout << "against the straight mesh, sigma given " << *against_mesh.sigma() << ", frame 20 triangle " << bent
             << ": " << against_mesh(bent, 20) << '\n';

@@ -1,6 +1,7 @@
 // A strain measure and a normalisation of one's own: stretching only (compression counts 0), and
 // every strain divided by the largest one of the animation, so that the most stretched triangle
-// gets 1. Any types that model StrainMeasure and StrainNormalization plug into Strain_options.
+// gets 1. Any types that model StrainMeasure and StrainNormalization are passed to compute_strain
+// beside its options.
 #include <deformseg/strain/strain.h>
 #include <deformseg/mesh/synthetic.h>
 
@@ -37,8 +38,9 @@ int main() {
   mesh::Bending_tube spec;  // rests, bends by 90 degrees, holds, straightens: 31 frames
   spec.schedule = {{5, {0.0}}, {10, {std::numbers::pi / 2}}, {5, {}}, {10, {0.0}}};
   const auto animation = mesh::make_bending_tube(spec).animation;
-  const strain::Strain_options<Stretch_only, Divide_by_largest> options{};
-  const strain::Strain_field<float> stretch = strain::compute_strain(animation, options);
+  // The policies take the place of Strain_options::measure and ::normalization; the options keep the rest.
+  const strain::Strain_field<float> stretch =
+      strain::compute_strain(animation, {}, Stretch_only{}, Divide_by_largest{});
   const auto bent = stretch.frame(20);
   const auto stretched = std::count_if(bent.begin(), bent.end(), [](float s) { return s > 0.01f; });
   std::cout << "largest stretch " << *stretch.sigma() << "; frame 20: largest "

@@ -22,6 +22,7 @@ int main() {
 
   // The same field binned otherwise, against the rest pose, with the areas as weights.
   const auto coarse = strain::strain_histograms(
-      tube, {.strain = {.reference = strain::Strain_reference::rest_pose}, .histogram = {.bins = 4, .min_strain = 1e-3}});
+      tube, {.strain = {.reference = strain::Strain_reference::rest_pose, .normalization = strain::No_normalization{}},
+             .histogram = {.bins = 4, .min_strain = 1e-3}});
   std::printf("against the rest pose, frame 18 (bent): rigid %.3f\n", coarse(18, 0));
 }

@@ -92,11 +92,12 @@ Map linear_map(const Eigen::Matrix3d& m, const Map& then = identity()) {
   return [m, then](const Vector3& p) { return then(m * p); };
 }
 
-strain::Strain_options<strain::Max_principal_strain, strain::No_normalization> raw() { return {}; }
+using Gaussian = strain::Gaussian_normalization;
 
-template <class Measure>
-strain::Strain_options<Measure, strain::No_normalization> raw_with(Measure) {
-  return {};
+strain::Strain_options raw() { return {.normalization = strain::No_normalization{}}; }
+
+strain::Strain_options raw_with(strain::Strain_measure_choice measure) {
+  return {.measure = measure, .normalization = strain::No_normalization{}};
 }
 
 // The largest strain magnitude of a field over all triangles and frames.
@@ -231,7 +232,7 @@ TEST_CASE("strain: a rigid motion of every frame gives 0 for every measure", "[s
   CHECK(largest(strain::compute_strain(animation, raw_with(strain::Area_ratio_strain{}))) < tolerance);
   CHECK(largest(strain::compute_strain<double>(animation, raw())) < tolerance);
   CHECK(largest(strain::compute_strain(animation, {.reference = strain::Strain_reference::previous_pose,
-                                           .normalization = {.sigma = 0.1}})) < 1e-12);
+                                           .normalization = Gaussian{.sigma = 0.1}})) < 1e-12);
 }
 
 TEST_CASE("strain: a uniform scale of the whole sequence gives the same field", "[strain]") {
@@ -456,12 +457,12 @@ TEST_CASE("strain: one thread and all threads give bit-identical fields", "[stra
   for (auto reference : {strain::Strain_reference::rest_pose, strain::Strain_reference::previous_pose})
     for (auto statistic : {strain::Sigma_statistic::percentile, strain::Sigma_statistic::standard_deviation, strain::Sigma_statistic::scaled_mad}) {
       const auto one = strain::compute_strain(tube.animation, {.reference = reference,
-                                                        .normalization = {.statistic = statistic},
+                                                        .normalization = Gaussian{.statistic = statistic},
                                                         .principal_directions = true,
                                                         .threads = 1});
       for (int threads : {2, 3, 0}) {
         const auto many = strain::compute_strain(tube.animation, {.reference = reference,
-                                                           .normalization = {.statistic = statistic},
+                                                           .normalization = Gaussian{.statistic = statistic},
                                                            .principal_directions = true,
                                                            .threads = threads});
         CHECK(same(one, many));
@@ -585,8 +586,8 @@ TEST_CASE("strain: the Gaussian normalisation and its sigma statistics", "[strai
   SECTION("default: the 95th percentile, nearest rank") {
     const auto field = strain::compute_strain(tube.animation);
     CHECK(*field.sigma() == nearest_rank(95));
-    CHECK(*strain::compute_strain(tube.animation, {.normalization = {.percentile = 50}}).sigma() == nearest_rank(50));
-    CHECK(*strain::compute_strain(tube.animation, {.normalization = {.percentile = 100}}).sigma() == samples.back());
+    CHECK(*strain::compute_strain(tube.animation, {.normalization = Gaussian{.percentile = 50}}).sigma() == nearest_rank(50));
+    CHECK(*strain::compute_strain(tube.animation, {.normalization = Gaussian{.percentile = 100}}).sigma() == samples.back());
     const double sigma = *field.sigma();
     for (std::size_t t = 0; t < field.num_frames(); ++t)
       for (std::size_t j = 0; j < field.num_faces(); ++j) {
@@ -599,25 +600,24 @@ TEST_CASE("strain: the Gaussian normalisation and its sigma statistics", "[strai
     for (float v : samples) mean += v;
     mean /= double(samples.size());
     for (float v : samples) square += (v - mean) * (v - mean);
-    const auto std_field = strain::compute_strain(tube.animation, {.normalization = {.statistic = strain::Sigma_statistic::standard_deviation}});
+    const auto std_field = strain::compute_strain(tube.animation, {.normalization = Gaussian{.statistic = strain::Sigma_statistic::standard_deviation}});
     CHECK(*std_field.sigma() == Approx(std::sqrt(square / double(samples.size()))).epsilon(1e-12));
     const double median = nearest_rank(50);
     std::vector<double> deviations;
     for (float v : samples) deviations.push_back(std::abs(double(v) - median));
     std::sort(deviations.begin(), deviations.end());
-    const auto mad_field = strain::compute_strain(tube.animation, {.normalization = {.statistic = strain::Sigma_statistic::scaled_mad}});
+    const auto mad_field = strain::compute_strain(tube.animation, {.normalization = Gaussian{.statistic = strain::Sigma_statistic::scaled_mad}});
     CHECK(*mad_field.sigma() == Approx(1.4826 * deviations[(deviations.size() + 1) / 2 - 1]).epsilon(1e-6));
   }
   SECTION("a given sigma, and none") {
-    const auto given = strain::compute_strain(tube.animation, {.normalization = {.sigma = 0.05}});
+    const auto given = strain::compute_strain(tube.animation, {.normalization = Gaussian{.sigma = 0.05}});
     CHECK(*given.sigma() == 0.05);
     CHECK(given(100, 8) == Approx(-std::expm1(-double(raw_field(100, 8)) * raw_field(100, 8) / (2 * 0.05 * 0.05))).epsilon(1e-6));
     const auto none = strain::compute_strain(tube.animation, raw());
     CHECK(!none.sigma());
   }
   SECTION("a user's measure and normalisation") {
-    const auto field = strain::compute_strain(tube.animation, strain::Strain_options{.measure = Largest_stretch{},
-                                                                     .normalization = Divide_by_largest{}});
+    const auto field = strain::compute_strain(tube.animation, {}, Largest_stretch{}, Divide_by_largest{});
     CHECK(*field.sigma() > 0.1);
     CHECK(largest(field) == Approx(1));
   }
@@ -647,8 +647,8 @@ TEST_CASE("strain: a reference mesh of its own", "[strain]") {
   // The rest frame as a mesh of its own gives the rest-pose field, every frame a sample.
   const mesh::Surface_mesh rest = a.face_graph();
   // Frame 0 is then measured (rounding, ~1e-16) rather than 0 by definition.
-  const auto with_mesh = strain::compute_strain(a, rest, {.normalization = {.sigma = 0.1}});
-  const auto with_frame = strain::compute_strain(a, {.normalization = {.sigma = 0.1}});
+  const auto with_mesh = strain::compute_strain(a, rest, {.normalization = Gaussian{.sigma = 0.1}});
+  const auto with_frame = strain::compute_strain(a, {.normalization = Gaussian{.sigma = 0.1}});
   const auto after_frame_0 = [](const auto& field) { return field.values().subspan(field.num_faces()); };
   CHECK(std::ranges::equal(after_frame_0(with_mesh), after_frame_0(with_frame)));
   CHECK(largest(with_mesh) == largest(with_frame));
@@ -656,8 +656,34 @@ TEST_CASE("strain: a reference mesh of its own", "[strain]") {
   std::vector<std::array<double, 3>> points;
   for (std::size_t i = 0; i < a.num_vertices(); ++i) points.push_back({a.frame_positions(0)[3 * i], a.frame_positions(0)[3 * i + 1], a.frame_positions(0)[3 * i + 2]});
   const auto polyhedron = mesh::make_face_graph<Polyhedron>(points, a.triangles());
-  const auto with_polyhedron = strain::compute_strain(a, polyhedron, {.normalization = {.sigma = 0.1}});
+  const auto with_polyhedron = strain::compute_strain(a, polyhedron, {.normalization = Gaussian{.sigma = 0.1}});
   CHECK(std::ranges::equal(with_polyhedron.values(), with_mesh.values()));
+}
+
+TEST_CASE("strain: policy objects in place of the options' measure and normalisation", "[strain]") {
+  mesh::Bending_tube spec;
+  spec.schedule = {{4, {right_angle}}};
+  const auto tube = mesh::make_bending_tube(spec);
+  const auto& a = tube.animation;
+  const mesh::Surface_mesh rest = a.face_graph();
+  // The options' measure and normalisation, which the policies replace, differ from them.
+  const strain::Strain_options ignored{.reference = strain::Strain_reference::previous_pose,
+                                       .measure = strain::Area_ratio_strain{},
+                                       .normalization = strain::No_normalization{}};
+  const auto chosen = strain::compute_strain(a, {.reference = strain::Strain_reference::previous_pose,
+                                                 .measure = strain::Green_lagrange_strain{},
+                                                 .normalization = Gaussian{.percentile = 50}});
+  const auto given = strain::compute_strain(a, ignored, strain::Green_lagrange_strain{}, Gaussian{.percentile = 50});
+  CHECK(largest(given) > 0.1);
+  CHECK(std::ranges::equal(given.values(), chosen.values()));
+  CHECK(given.sigma() == chosen.sigma());
+  const auto against_rest = strain::compute_strain(a, rest, {.measure = strain::Frobenius_strain{}});
+  const auto against_rest_given =
+      strain::compute_strain(a, rest, {.measure = strain::Area_ratio_strain{}}, strain::Frobenius_strain{}, Gaussian{});
+  CHECK(largest(against_rest) > 0.1);
+  CHECK(std::ranges::equal(against_rest_given.values(), against_rest.values()));
+  CHECK_THROWS_WITH(strain::compute_strain(a, rest, ignored, strain::Max_principal_strain{}, Gaussian{}),
+                    Catch::Contains("a reference mesh takes the place of the rest pose"));
 }
 
 TEST_CASE("strain: one frame into face property maps", "[strain]") {
@@ -698,10 +724,10 @@ TEST_CASE("strain: bad input throws invalid_input with a clear message", "[strai
   CHECK_THROWS_WITH(strain::compute_strain(a, {.rest_frame = 4}), Contains("rest frame 4 out of range") && Contains("4 frames"));
   CHECK_THROWS_WITH(strain::compute_strain(a, {.threads = -1}), Contains("threads must be"));
   CHECK_THROWS_WITH(strain::compute_strain(a, {.degenerate_tolerance = 1.5}), Contains("degenerate_tolerance"));
-  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = {.sigma = 0.0}}), Contains("sigma must be finite and > 0"));
-  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = {.sigma = std::nan("")}}), Contains("sigma must be"));
-  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = {.percentile = 0}}), Contains("percentile must be in (0, 100]"));
-  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = {.noise_level = -1}}), Contains("noise_level"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.sigma = 0.0}}), Contains("sigma must be finite and > 0"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.sigma = std::nan("")}}), Contains("sigma must be"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.percentile = 0}}), Contains("percentile must be in (0, 100]"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.noise_level = -1}}), Contains("noise_level"));
 
   SECTION("a reference mesh that does not match") {
     mesh::Bending_tube other = spec;

@@ -167,7 +167,9 @@ TEST_CASE("strain data: the same poses on a cat and a lion give alike frame dist
   const double poses_only = correlation(strain::Strain_options{.rest_frame = 9}, 9);
   const double raw = correlation(strain::Strain_options{.rest_frame = 9, .normalization = strain::No_normalization{}}, 10);
   const double deviation = correlation(
-      strain::Strain_options{.rest_frame = 9, .normalization = {.statistic = strain::Sigma_statistic::standard_deviation}}, 10);
+      strain::Strain_options{.rest_frame = 9, .normalization = strain::Gaussian_normalization{
+                                                  .statistic = strain::Sigma_statistic::standard_deviation}},
+      10);
   INFO("correlation: default " << normalised << " (9 x 9: " << poses_only << "), no normalisation " << raw
                                << ", sigma = standard deviation " << deviation);
   CHECK(normalised >= 0.95);

@@ -147,7 +147,8 @@ TEST_CASE("strain_histograms: a rigidly moved, uniformly scaled copy has the sam
   CHECK(original(0, 0) == Approx(1.0));
   CHECK(original.col(0).minCoeff() < 0.9);
   // Against the rest pose, too.
-  const strain::Strain_histogram_options<> rest{.strain = {.reference = strain::Strain_reference::rest_pose}};
+  const strain::Strain_histogram_options rest{
+      .strain = {.reference = strain::Strain_reference::rest_pose, .normalization = strain::No_normalization{}}};
   const auto a = strain::strain_histograms(mesh::make_bending_tube(two_joint_tube({})).animation, rest);
   const auto b = strain::strain_histograms(mesh::make_bending_tube(spec).animation, rest);
   CHECK((a - b).cwiseAbs().maxCoeff() < 1e-6);
@@ -238,7 +239,9 @@ TEST_CASE("strain_histograms data: the cat and lion poses match pose by pose", "
   REQUIRE(cat.num_frames() == 10);
   REQUIRE(lion.num_frames() == 10);
   // Against the rest pose (the reference, frame 9), so that each frame is one pose, not a move.
-  const strain::Strain_histogram_options<> poses{.strain = {.reference = strain::Strain_reference::rest_pose, .rest_frame = 9}};
+  const strain::Strain_histogram_options poses{.strain = {.reference = strain::Strain_reference::rest_pose,
+                                                          .rest_frame = 9,
+                                                          .normalization = strain::No_normalization{}}};
   const Eigen::MatrixXd d = strain::histogram_distances(strain::strain_histograms(cat, poses), strain::strain_histograms(lion, poses));
   std::size_t nearest_is_same = 0;
   double same = 0, other = 0;

@@ -19,4 +19,5 @@
 /// deformseg::strain::Max_principal_strain (the default), deformseg::strain::Green_lagrange_strain,
 /// deformseg::strain::Frobenius_strain, deformseg::strain::Area_ratio_strain.
 ///
-/// \sa deformseg::strain::Strain_options::measure
+/// \sa deformseg::strain::Strain_options::measure (the built-in models), deformseg::strain::compute_strain
+/// (the overload that takes a model of your own)

@@ -16,4 +16,5 @@
 /// \par Has models
 /// deformseg::strain::Gaussian_normalization (the default), deformseg::strain::No_normalization.
 ///
-/// \sa deformseg::strain::Strain_options::normalization, deformseg::strain::Strain_field::sigma
+/// \sa deformseg::strain::Strain_options::normalization (the built-in models), deformseg::strain::compute_strain
+/// (the overload that takes a model of your own), deformseg::strain::Strain_field::sigma

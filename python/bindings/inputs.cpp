@@ -83,6 +83,17 @@ std::optional<Reference_mesh> reference_mesh_of(const std::optional<std::filesys
   return Reference_mesh{path->string(), mesh::make_face_graph<mesh::Surface_mesh>(io::points_of(soup), soup.triangles)};
 }
 
+strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference,
+                                     const strain::Strain_options& options) {
+  if (!reference) return strain::compute_strain(a, options);
+  try {
+    return strain::compute_strain(a, reference->graph, options);
+  } catch (const invalid_input& error) {
+    throw invalid_input(std::string(error.what()) + " (the reference mesh must have the connectivity of the "
+                        "animation as read: its num_vertices and num_faces)", {.file = reference->path});
+  }
+}
+
 void check_rest(const std::optional<std::filesystem::path>& reference_mesh, std::size_t rest_frame) {
   if (reference_mesh && rest_frame != 0)
     refuse("reference_mesh takes the place of the rest frame: it excludes rest_frame");

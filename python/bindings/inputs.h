@@ -56,16 +56,7 @@ void check_rest(const std::optional<std::filesystem::path>& reference_mesh, std:
 
 // The strain field of `a` with `options`, against `reference` when there is one; its errors then
 // name the reference mesh's file, as the tool's do: a mismatch of connectivity is that file's.
-template <class Options>
 strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference,
-                             const Options& options) {
-  if (!reference) return strain::compute_strain(a, options);
-  try {
-    return strain::compute_strain(a, reference->graph, options);
-  } catch (const invalid_input& error) {
-    throw invalid_input(std::string(error.what()) + " (the reference mesh must have the connectivity of the "
-                        "animation as read: its num_vertices and num_faces)", {.file = reference->path});
-  }
-}
+                                     const strain::Strain_options& options);
 
 }  // namespace deformseg::python

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -22,20 +23,12 @@ namespace py = pybind11;
 namespace deformseg::python {
 namespace {
 
-template <class Measure>
-strain::Strain_field<float> strain_with(const mesh::Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference_mesh,
-                                strain::Strain_reference reference, std::size_t rest_frame, Measure measure, bool gaussian,
-                                std::optional<double> sigma, double tolerance, int threads) {
-  if (!gaussian)
-    return field_of(a, reference_mesh,
-                    strain::Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
-                                   .normalization = strain::No_normalization{}, .degenerate_tolerance = tolerance,
-                                   .threads = threads});
-  return field_of(a, reference_mesh,
-                  strain::Strain_options{.reference = reference, .rest_frame = rest_frame, .measure = measure,
-                                 .normalization = strain::Gaussian_normalization{.sigma = sigma},
-                                 .degenerate_tolerance = tolerance, .threads = threads});
-}
+// The built-in strain measures by their names.
+const std::map<std::string, strain::Strain_measure_choice> strain_measures{
+    {"max-principal", strain::Max_principal_strain{}},
+    {"green-lagrange", strain::Green_lagrange_strain{}},
+    {"frobenius", strain::Frobenius_strain{}},
+    {"area-ratio", strain::Area_ratio_strain{}}};
 
 py::array strain(const Animation& a, const std::string& reference, std::size_t rest_frame,
                  const std::optional<std::filesystem::path>& reference_mesh, const std::string& measure,
@@ -49,19 +42,21 @@ py::array strain(const Animation& a, const std::string& reference, std::size_t r
   if (ref == strain::Strain_reference::previous_pose && rest_frame != 0) refuse("rest_frame asks for reference='rest'");
   if (reference_mesh && (ref == strain::Strain_reference::previous_pose || rest_frame != 0))
     refuse("reference_mesh takes the place of the rest frame: it excludes reference='previous' and rest_frame");
-  if (measure != "max-principal" && measure != "green-lagrange" && measure != "frobenius" && measure != "area-ratio")
+  const auto chosen = strain_measures.find(measure);
+  if (chosen == strain_measures.end())
     refuse("measure must be 'max-principal', 'green-lagrange', 'frobenius' or 'area-ratio', got '" + measure + "'");
+  const strain::Strain_options options{
+      .reference = ref,
+      .rest_frame = rest_frame,
+      .measure = chosen->second,
+      .normalization = gaussian ? strain::Strain_normalization_choice(strain::Gaussian_normalization{.sigma = sigma})
+                                : strain::No_normalization{},
+      .degenerate_tolerance = degenerate_tolerance,
+      .threads = threads};
   strain::Strain_field<float> field;
   {
     Interruptible_call call;
-    const std::optional<Reference_mesh> rest = reference_mesh_of(reference_mesh);
-    const auto run = [&](auto m) {
-      return strain_with(a.mesh, rest, ref, rest_frame, m, gaussian, sigma, degenerate_tolerance, threads);
-    };
-    if (measure == "max-principal") field = run(strain::Max_principal_strain{});
-    else if (measure == "green-lagrange") field = run(strain::Green_lagrange_strain{});
-    else if (measure == "frobenius") field = run(strain::Frobenius_strain{});
-    else field = run(strain::Area_ratio_strain{});
+    field = field_of(a.mesh, reference_mesh_of(reference_mesh), options);
   }
   const auto shape = std::vector<py::ssize_t>{py::ssize_t(field.num_frames()), py::ssize_t(field.num_faces())};
   return owning(std::move(field), +[](const strain::Strain_field<float>& f) { return f.values().data(); }, shape);

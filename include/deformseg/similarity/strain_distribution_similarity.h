@@ -34,7 +34,7 @@ template <alignment::AlignmentPolicy Alignment = alignment::Smith_waterman,
 struct Strain_distribution_similarity {
   /// @brief The strain and its histograms. Default: `Strain_histogram_options` (previous pose,
   /// raw maximal principal strain, 16 log-spaced bins from 0.05 to 1).
-  strain::Strain_histogram_options<> histograms{};
+  strain::Strain_histogram_options histograms{};
   /// @brief How two frames' histograms are compared. Default: earth mover's distance.
   strain::Histogram_metric metric = strain::Histogram_metric::earth_movers;
   /// @brief How the two frame sequences are aligned. Default: Smith–Waterman, +1 / -1 / -1.

@@ -27,6 +27,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace deformseg::strain {
@@ -41,32 +42,36 @@ enum class Strain_reference {
   previous_pose,
 };
 
-/// @brief The options of `compute_strain`, an aggregate for designated initializers.
+/// @brief The built-in strain measures, one of which `Strain_options::measure` holds.
+using Strain_measure_choice =
+    std::variant<Max_principal_strain, Green_lagrange_strain, Frobenius_strain, Area_ratio_strain>;
+
+/// @brief The built-in normalisations, one of which `Strain_options::normalization` holds.
+using Strain_normalization_choice = std::variant<Gaussian_normalization, No_normalization>;
+
+/// @brief The options of `compute_strain`, a plain aggregate for designated initializers.
 ///
-/// The measure and the normalisation are policy objects; the class template argument deduction of
-/// C++20 aggregates picks their types, so that
+/// The measure and the normalisation are chosen among the library's (`Strain_measure_choice`,
+/// `Strain_normalization_choice`), so that
 /// @code
 /// compute_strain(animation);                                                  // the defaults
 /// compute_strain(animation, {.reference = Strain_reference::previous_pose});  // default policies
-/// compute_strain(animation, Strain_options{.measure = Green_lagrange_strain{},
-///                                          .normalization = No_normalization{}});
-/// compute_strain(animation, {.normalization = {.sigma = 0.05}});              // Gaussian, given sigma
+/// compute_strain(animation, {.measure = Green_lagrange_strain{}, .normalization = No_normalization{}});
+/// compute_strain(animation, {.normalization = Gaussian_normalization{.sigma = 0.05}});
 /// @endcode
-/// all read as they mean. That deduction needs GCC 11 or Clang 17; with Clang 16, name the
-/// template arguments (`Strain_options<Green_lagrange_strain, No_normalization>{...}`).
-/// @tparam Measure a `StrainMeasure`, default `Max_principal_strain`.
-/// @tparam Normalization a `StrainNormalization`, default `Gaussian_normalization`.
-template <StrainMeasure Measure = Max_principal_strain, StrainNormalization Normalization = Gaussian_normalization>
+/// all read as they mean, and a front end chooses them at run time without a template. A measure
+/// or normalisation of one's own (a `StrainMeasure`, a `StrainNormalization`) is passed to the
+/// `compute_strain` overloads that take the policy objects, in place of these two members.
 struct Strain_options {
   /// @brief The reference: the rest pose (default) or the previous pose.
   Strain_reference reference = Strain_reference::rest_pose;
   /// @brief The rest pose's frame, for `Strain_reference::rest_pose`. Default: 0.
   std::size_t rest_frame = 0;
   /// @brief The scalar each triangle's stretches become. Default: `Max_principal_strain`.
-  Measure measure{};
+  Strain_measure_choice measure{};
   /// @brief How raw strains are normalised. Default: `Gaussian_normalization` with sigma from the
   /// data.
-  Normalization normalization{};
+  Strain_normalization_choice normalization{};
   /// @brief Whether to compute the principal directions too (3 more values per triangle-frame).
   /// Default: false.
   bool principal_directions = false;
@@ -189,19 +194,12 @@ private:
 
 namespace internal {
 
-template <class T>
-struct Is_strain_options : std::false_type {};
-template <class M, class N>
-struct Is_strain_options<Strain_options<M, N>> : std::true_type {};
-
 // A FaceGraph given as a reference mesh. Strain_options is ruled out first: boost::graph_traits,
 // which FaceGraph asks for, is a hard error rather than a failed constraint for a non-graph.
 template <class G>
-concept Reference_face_graph = !Is_strain_options<G>::value && mesh::FaceGraph<G>;
+concept Reference_face_graph = !std::same_as<G, Strain_options> && mesh::FaceGraph<G>;
 
-template <StrainMeasure Measure, StrainNormalization Normalization>
-void check_strain_options(const Strain_options<Measure, Normalization>& options, std::size_t frames,
-                          std::size_t faces) {
+inline void check_strain_options(const Strain_options& options, std::size_t frames, std::size_t faces) {
   if (frames == 0) throw invalid_input("compute_strain: the animation has no frame");
   if (faces == 0) throw invalid_input("compute_strain: the animation has no triangle");
   if (options.reference == Strain_reference::rest_pose && options.rest_frame >= frames)
@@ -213,13 +211,25 @@ void check_strain_options(const Strain_options<Measure, Normalization>& options,
                         std::to_string(options.degenerate_tolerance));
 }
 
+// Calls `f` with a policy object, or with the one a choice of built-in policies holds: the kernel
+// is instantiated for the policy's own type either way.
+template <class Policy, class F>
+decltype(auto) with_policy(const Policy& policy, F&& f) {
+  return std::forward<F>(f)(policy);
+}
+template <class... Policies, class F>
+decltype(auto) with_policy(const std::variant<Policies...>& choice, F&& f) {
+  return std::visit(std::forward<F>(f), choice);
+}
+
 // The field of `animation` against the reference `reference_xyz` (positions of its vertices, 3 V
-// values) or, when null, against what options.reference says.
-template <std::floating_point Value, class Graph, class Coordinate, class ReferenceCoordinate,
-          StrainMeasure Measure, StrainNormalization Normalization>
+// values) or, when null, against what options.reference says; `measure` and `normalization` are
+// policy objects or choices of built-in ones.
+template <std::floating_point Value, class Graph, class Coordinate, class ReferenceCoordinate, class Measure,
+          class Normalization>
 Strain_field<Value> strain_field(const mesh::Deforming_mesh<Graph, Coordinate>& animation,
-                                 const ReferenceCoordinate* reference_xyz,
-                                 const Strain_options<Measure, Normalization>& options) {
+                                 const ReferenceCoordinate* reference_xyz, const Strain_options& options,
+                                 const Measure& measure, const Normalization& normalization) {
   const std::size_t faces = animation.num_faces();
   const std::size_t frames = animation.num_frames();
   const std::vector<Triangle_indices> canonical = canonical_triangles(animation.triangles());
@@ -233,19 +243,24 @@ Strain_field<Value> strain_field(const mesh::Deforming_mesh<Graph, Coordinate>& 
   std::size_t degenerate = 0;
   if (options.reference == Strain_reference::previous_pose) {
     zero_frame = 0;
-    degenerate = previous_pose_strains(positions, frames, triangles, options.degenerate_tolerance, options.measure,
-                                       options.threads, values.data(), direction_data);
+    degenerate = with_policy(measure, [&](const auto& m) {
+      return previous_pose_strains(positions, frames, triangles, options.degenerate_tolerance, m, options.threads,
+                                   values.data(), direction_data);
+    });
   } else {
     if (!reference_xyz) zero_frame = options.rest_frame;
     const Reference_bases bases =
         reference_xyz ? reference_bases(reference_xyz, triangles, options.degenerate_tolerance, options.threads)
                       : reference_bases(animation.frame_positions(options.rest_frame).data(), triangles,
                                         options.degenerate_tolerance, options.threads);
-    degenerate = fixed_reference_strains(positions, frames, triangles, bases, zero_frame, options.measure,
-                                         options.threads, values.data(), direction_data);
+    degenerate = with_policy(measure, [&](const auto& m) {
+      return fixed_reference_strains(positions, frames, triangles, bases, zero_frame, m, options.threads,
+                                     values.data(), direction_data);
+    });
   }
-  const std::optional<double> sigma = options.normalization.normalize(
-      Raw_strain_field<Value>{std::span<Value>(values), faces, zero_frame, options.threads});
+  const std::optional<double> sigma = with_policy(normalization, [&](const auto& n) {
+    return n.normalize(Raw_strain_field<Value>{std::span<Value>(values), faces, zero_frame, options.threads});
+  });
   return Strain_field<Value>(faces, frames, std::move(values), std::move(directions), sigma, degenerate);
 }
 
@@ -285,6 +300,36 @@ std::vector<double> reference_positions(const mesh::Deforming_mesh<Graph, Coordi
   return xyz;
 }
 
+// compute_strain with its policies given apart from the options (policy objects or choices).
+template <std::floating_point Value, mesh::DeformingMesh Mesh, class Measure, class Normalization>
+Strain_field<Value> strain_of(const Mesh& animation, const Strain_options& options, const Measure& measure,
+                              const Normalization& normalization) {
+  if constexpr (mesh::is_deforming_mesh_v<Mesh>) {
+    check_strain_options(options, animation.num_frames(), animation.num_faces());
+    return strain_field<Value>(animation, static_cast<const double*>(nullptr), options, measure, normalization);
+  } else {
+    return strain_of<Value>(mesh::make_deforming_mesh(animation), options, measure, normalization);
+  }
+}
+
+// The same against a reference mesh.
+template <std::floating_point Value, mesh::DeformingMesh Mesh, class ReferenceGraph, class Measure,
+          class Normalization>
+Strain_field<Value> strain_against(const Mesh& animation, const ReferenceGraph& reference,
+                                   const Strain_options& options, const Measure& measure,
+                                   const Normalization& normalization) {
+  if constexpr (mesh::is_deforming_mesh_v<Mesh>) {
+    if (options.reference != Strain_reference::rest_pose || options.rest_frame != 0)
+      throw invalid_input("compute_strain: a reference mesh takes the place of the rest pose; leave "
+                          "options.reference and options.rest_frame at their defaults");
+    check_strain_options(options, animation.num_frames(), animation.num_faces());
+    const std::vector<double> xyz = reference_positions(animation, reference);
+    return strain_field<Value>(animation, xyz.data(), options, measure, normalization);
+  } else {
+    return strain_against<Value>(mesh::make_deforming_mesh(animation), reference, options, measure, normalization);
+  }
+}
+
 }  // namespace internal
 
 /// @brief The strain of every triangle of an animation at every frame (@ref method_strain).
@@ -296,10 +341,11 @@ std::vector<double> reference_positions(const mesh::Deforming_mesh<Graph, Coordi
 /// `max(|l1 - 1|, |l2 - 1|)`; the normalisation (`options.normalization`) then maps the raw
 /// strains of the whole animation, by default through the Gaussian kernel
 /// `1 - exp(-s^2 / (2 sigma^2))` with sigma a robust statistic of them (see
-/// `Gaussian_normalization`).
+/// `Gaussian_normalization`). A measure or normalisation of one's own is passed to the overload
+/// that takes the policy objects.
 ///
 /// The reference is the rest pose (`options.rest_frame`, default frame 0) or the previous frame
-/// (`options.reference`), or a mesh of its own (the other overload). Its triangles' bases are
+/// (`options.reference`), or a mesh of its own (the overloads taking `reference`). Its triangles' bases are
 /// computed once, in double; a degenerate one (zero area, see
 /// `Strain_options::degenerate_tolerance`) gives strain 0, never NaN, and is counted in
 /// `Strain_field::degenerate_count()`.
@@ -333,49 +379,81 @@ std::vector<double> reference_positions(const mesh::Deforming_mesh<Graph, Coordi
 /// compiled for AVX2 (`-march=x86-64-v3`); about 1.6 times fewer with the SSE2 of a default x86-64
 /// build. Gathering the vertices of each triangle through the index table takes most of the time.
 /// @sa Strain_options, Strain_field, put_strain_frame
-template <std::floating_point Value = float, mesh::DeformingMesh Mesh, StrainMeasure Measure = Max_principal_strain,
-          StrainNormalization Normalization = Gaussian_normalization>
-Strain_field<Value> compute_strain(const Mesh& animation, const Strain_options<Measure, Normalization>& options = {}) {
-  if constexpr (mesh::is_deforming_mesh_v<Mesh>) {
-    internal::check_strain_options(options, animation.num_frames(), animation.num_faces());
-    return internal::strain_field<Value>(animation, static_cast<const double*>(nullptr), options);
-  } else {
-    return compute_strain<Value>(mesh::make_deforming_mesh(animation), options);
-  }
+template <std::floating_point Value = float, mesh::DeformingMesh Mesh>
+Strain_field<Value> compute_strain(const Mesh& animation, const Strain_options& options = {}) {
+  return internal::strain_of<Value>(animation, options, options.measure, options.normalization);
+}
+
+/// @brief The strain of every triangle of an animation at every frame, with a measure and a
+/// normalisation of one's own (@ref chapter_08).
+///
+/// As the overload without policies, with `measure` and `normalization` in place of `options.measure` and
+/// `options.normalization`, which are ignored. Pass a built-in policy for the one not replaced:
+/// @code
+/// compute_strain(animation, {.reference = Strain_reference::previous_pose}, Largest_stretch{}, No_normalization{});
+/// @endcode
+/// @tparam Measure a `StrainMeasure`.
+/// @tparam Normalization a `StrainNormalization`.
+/// @param animation the animation.
+/// @param options reference, directions, tolerance, threads (see `Strain_options`).
+/// @param measure the scalar each triangle's stretches become.
+/// @param normalization how the raw strains are normalised.
+/// @return the `F x T` field, with what `normalization` returned as sigma.
+/// @pre as the overload without policies.
+/// @throws invalid_input as the overload without policies, or what the policies throw.
+/// @par Complexity as the overload without policies, plus the policies' own costs.
+template <std::floating_point Value = float, mesh::DeformingMesh Mesh, StrainMeasure Measure,
+          StrainNormalization Normalization>
+Strain_field<Value> compute_strain(const Mesh& animation, const Strain_options& options, const Measure& measure,
+                                   const Normalization& normalization) {
+  return internal::strain_of<Value>(animation, options, measure, normalization);
 }
 
 /// @brief The strain of every triangle of an animation at every frame against a reference mesh of
 /// its own: a mesh with the same connectivity, in another pose (the rest pose the animation does
 /// not hold, or another animation's).
 ///
-/// As the other overload with `Strain_reference::rest_pose` and the reference mesh's positions in
+/// As the first overload with `Strain_reference::rest_pose` and the reference mesh's positions in
 /// place of the rest frame; no frame is 0 by definition, so every frame counts in sigma.
 /// @tparam ReferenceGraph a `FaceGraph` with a vertex point map.
 /// @param animation the animation.
 /// @param reference the reference mesh: vertex i (in its vertex index map) is the animation's
 /// vertex i, and its faces are the animation's, in the same order.
-/// @param options as for the other overload; `reference` must be `rest_pose` and `rest_frame` 0.
+/// @param options as for the first overload; `reference` must be `rest_pose` and `rest_frame` 0.
 /// @return the `F x T` field.
-/// @pre as the other overload; `reference` has the animation's vertex and face counts, the same
+/// @pre as the first overload; `reference` has the animation's vertex and face counts, the same
 /// triangles (face j has the vertices of the animation's triangle j, in the same order) and
 /// finite coordinates.
 /// @throws invalid_input naming the first mismatch (counts, or the first face that differs), or
 /// when `options` asks for another reference.
 /// @par Complexity O(T F + V).
-template <std::floating_point Value = float, mesh::DeformingMesh Mesh, internal::Reference_face_graph ReferenceGraph,
-          StrainMeasure Measure = Max_principal_strain, StrainNormalization Normalization = Gaussian_normalization>
+template <std::floating_point Value = float, mesh::DeformingMesh Mesh, internal::Reference_face_graph ReferenceGraph>
 Strain_field<Value> compute_strain(const Mesh& animation, const ReferenceGraph& reference,
-                                   const Strain_options<Measure, Normalization>& options = {}) {
-  if constexpr (mesh::is_deforming_mesh_v<Mesh>) {
-    if (options.reference != Strain_reference::rest_pose || options.rest_frame != 0)
-      throw invalid_input("compute_strain: a reference mesh takes the place of the rest pose; leave "
-                          "options.reference and options.rest_frame at their defaults");
-    internal::check_strain_options(options, animation.num_frames(), animation.num_faces());
-    const std::vector<double> xyz = internal::reference_positions(animation, reference);
-    return internal::strain_field<Value>(animation, xyz.data(), options);
-  } else {
-    return compute_strain<Value>(mesh::make_deforming_mesh(animation), reference, options);
-  }
+                                   const Strain_options& options = {}) {
+  return internal::strain_against<Value>(animation, reference, options, options.measure, options.normalization);
+}
+
+/// @brief The strain against a reference mesh of its own, with a measure and a normalisation of
+/// one's own: as the overload without `reference` that takes them, against `reference` as the
+/// overload without policies.
+/// @tparam ReferenceGraph a `FaceGraph` with a vertex point map.
+/// @tparam Measure a `StrainMeasure`.
+/// @tparam Normalization a `StrainNormalization`.
+/// @param animation the animation.
+/// @param reference the reference mesh (see the overload without policies).
+/// @param options as for that overload; its `measure` and `normalization` are ignored.
+/// @param measure the scalar each triangle's stretches become.
+/// @param normalization how the raw strains are normalised.
+/// @return the `F x T` field.
+/// @pre as the overload without policies.
+/// @throws invalid_input as the overload without policies, or what the policies throw.
+/// @par Complexity O(T F + V), with the policies' own costs.
+template <std::floating_point Value = float, mesh::DeformingMesh Mesh, internal::Reference_face_graph ReferenceGraph,
+          StrainMeasure Measure, StrainNormalization Normalization>
+Strain_field<Value> compute_strain(const Mesh& animation, const ReferenceGraph& reference,
+                                   const Strain_options& options, const Measure& measure,
+                                   const Normalization& normalization) {
+  return internal::strain_against<Value>(animation, reference, options, measure, normalization);
 }
 
 namespace internal {

@@ -209,13 +209,15 @@ Strain_histograms strain_histograms(const Strain_field<Value>& field, std::span<
 /// 0.024 against 0.029 for the lion. The price of the previous pose: frame 0's histogram is all
 /// rigid, and the strain between frames, so the histograms, depend on the speed of the motion
 /// and the frame rate (lower `min_strain` for animations sampled much more densely).
-/// @tparam Measure the `StrainMeasure` of the strain, default `Max_principal_strain`.
-/// @tparam Normalization the `StrainNormalization` of the strain, default `No_normalization`.
-template <StrainMeasure Measure = Max_principal_strain, StrainNormalization Normalization = No_normalization>
+///
+/// A strain of one's own measure or normalisation is binned by the overload of `strain_histograms`
+/// that takes a field (`compute_strain` with the policy objects, weights from `face_areas`).
 struct Strain_histogram_options {
   /// @brief The strain that is binned. Default: the raw strain (no normalisation) against the
-  /// previous pose, `Strain_options{.reference = Strain_reference::previous_pose}`.
-  Strain_options<Measure, Normalization> strain{.reference = Strain_reference::previous_pose};
+  /// previous pose, `Strain_options{.reference = Strain_reference::previous_pose, .normalization =
+  /// No_normalization{}}`. Options given here replace all of these: name `No_normalization{}`
+  /// among them to keep the strain raw.
+  Strain_options strain{.reference = Strain_reference::previous_pose, .normalization = No_normalization{}};
   /// @brief The bins (and threads). Default: `Histogram_options{}`.
   Histogram_options histogram{};
 };
@@ -238,10 +240,8 @@ struct Strain_histogram_options {
 /// the animation; the rest pose has a triangle of non-zero area.
 /// @throws invalid_input naming the broken precondition.
 /// @par Complexity that of `compute_strain`, plus O(T (F + B)).
-template <mesh::DeformingMesh Mesh, StrainMeasure Measure = Max_principal_strain,
-          StrainNormalization Normalization = No_normalization>
-Strain_histograms strain_histograms(const Mesh& animation,
-                                    const Strain_histogram_options<Measure, Normalization>& options = {}) {
+template <mesh::DeformingMesh Mesh>
+Strain_histograms strain_histograms(const Mesh& animation, const Strain_histogram_options& options = {}) {
   if constexpr (mesh::is_deforming_mesh_v<Mesh>) {
     if (options.strain.rest_frame >= animation.num_frames())
       throw invalid_input("strain_histograms: rest frame " + std::to_string(options.strain.rest_frame) +

@@ -56,7 +56,8 @@ struct Principal_stretches {
 ///   template <std::floating_point T>
 ///   T operator()(const deformseg::strain::Principal_stretches<T>& p) const { return p.strain1; }
 /// };
-/// auto field = deformseg::strain::compute_strain(animation, deformseg::strain::Strain_options{.measure = Largest_stretch{}});
+/// auto field = deformseg::strain::compute_strain(animation, {}, Largest_stretch{},
+///                                                deformseg::strain::Gaussian_normalization{});
 /// @endcode
 template <class M>
 concept StrainMeasure = std::default_initializable<M> && std::copy_constructible<M> &&

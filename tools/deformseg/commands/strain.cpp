@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -34,37 +35,24 @@ struct Strain_command_options {
   std::string json;
 };
 
-// The strain against a frame, or against the reference mesh when there is one.
-template <strain::StrainMeasure Measure, strain::StrainNormalization Normalization>
-strain::Strain_field<float> field_with(const mesh::Surface_mesh_animation& animation, const mesh::Surface_mesh* reference_mesh,
-                               const Strain_command_options& o, const strain::Strain_options<Measure, Normalization>& options) {
-  if (!reference_mesh) return strain::compute_strain(animation, options);
-  return naming_reference_mesh(o.reference_mesh, [&] { return strain::compute_strain(animation, *reference_mesh, options); });
-}
+// The built-in measures by their names on the command line.
+const std::map<std::string, strain::Strain_measure_choice> measures{{"max-principal", strain::Max_principal_strain{}},
+                                                                    {"green-lagrange", strain::Green_lagrange_strain{}},
+                                                                    {"frobenius", strain::Frobenius_strain{}},
+                                                                    {"area-ratio", strain::Area_ratio_strain{}}};
 
-// The strain field the options ask for, with a measure and a normalisation chosen at run time.
-template <strain::StrainMeasure Measure>
-strain::Strain_field<float> field_with(const mesh::Surface_mesh_animation& animation, const mesh::Surface_mesh* reference_mesh,
-                               const Strain_command_options& o, Measure measure) {
-  const auto reference = o.reference == "rest" ? strain::Strain_reference::rest_pose : strain::Strain_reference::previous_pose;
-  const int threads = o.input.threads;
-  if (o.normalize == "none")
-    return field_with(animation, reference_mesh, o,
-                      strain::Strain_options<Measure, strain::No_normalization>{.reference = reference, .rest_frame = o.rest_frame,
-                                                                .measure = measure, .threads = threads});
-  return field_with(animation, reference_mesh, o,
-                    strain::Strain_options<Measure, strain::Gaussian_normalization>{.reference = reference, .rest_frame = o.rest_frame,
-                                                                    .measure = measure,
-                                                                    .normalization = {.sigma = o.sigma},
-                                                                    .threads = threads});
-}
-
+// The strain field the options ask for, against a frame or against the reference mesh when there is one.
 strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& animation, const mesh::Surface_mesh* reference_mesh,
                              const Strain_command_options& o) {
-  if (o.measure == "green-lagrange") return field_with(animation, reference_mesh, o, strain::Green_lagrange_strain{});
-  if (o.measure == "frobenius") return field_with(animation, reference_mesh, o, strain::Frobenius_strain{});
-  if (o.measure == "area-ratio") return field_with(animation, reference_mesh, o, strain::Area_ratio_strain{});
-  return field_with(animation, reference_mesh, o, strain::Max_principal_strain{});
+  const strain::Strain_options options{
+      .reference = o.reference == "rest" ? strain::Strain_reference::rest_pose : strain::Strain_reference::previous_pose,
+      .rest_frame = o.rest_frame,
+      .measure = measures.at(o.measure),
+      .normalization = o.normalize == "none" ? strain::Strain_normalization_choice(strain::No_normalization{})
+                                             : strain::Gaussian_normalization{.sigma = o.sigma},
+      .threads = o.input.threads};
+  if (!reference_mesh) return strain::compute_strain(animation, options);
+  return naming_reference_mesh(o.reference_mesh, [&] { return strain::compute_strain(animation, *reference_mesh, options); });
 }
 
 // The colours of frame t: of the normalised strain, or, for a raw field, of the strain normalised
