@@ -30,9 +30,11 @@ int main() {
 
   // The sigma the default normalisation chose, found again from the raw strains (frame 0, the
   // rest frame, is 0 by definition and left out).
-  const auto raw = strain::compute_strain(animation, strain::Strain_options{.normalization = strain::No_normalization{}});
+  const auto raw =
+      strain::compute_strain(animation, strain::Strain_options{.normalization = strain::No_normalization{}});
   std::vector<float> values(raw.values().begin(), raw.values().end());
-  const double sigma = strain::Gaussian_normalization{}.sigma_of(strain::Raw_strain_field<float>{values, raw.num_faces(), 0});
+  const double sigma =
+      strain::Gaussian_normalization{}.sigma_of(strain::Raw_strain_field<float>{values, raw.num_faces(), 0});
   std::cout << "sigma from the raw strains: " << sigma << '\n';
 
   // Motion: strain of each frame against the one before; it is 0 while the tube holds still.

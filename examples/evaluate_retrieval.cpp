@@ -9,11 +9,12 @@
 
 int main() {
   using namespace deformseg;
-  const std::vector<evaluation::Labelled_item> items{{.motion = "walk", .body = "fox", .rig = "", .clip = "Walk"},
-                                         {.motion = "walk", .body = "knight", .rig = "kaykit", .clip = "Walking_A"},
-                                         {.motion = "run", .body = "knight", .rig = "kaykit", .clip = "Running_A"},
-                                         {.motion = "run", .body = "mage", .rig = "kaykit", .clip = "Running_B"},
-                                         {.motion = evaluation::distractor_label, .body = "mage", .rig = "kaykit", .clip = "Cheer"}};
+  const std::vector<evaluation::Labelled_item> items{
+      {.motion = "walk", .body = "fox", .rig = "", .clip = "Walk"},
+      {.motion = "walk", .body = "knight", .rig = "kaykit", .clip = "Walking_A"},
+      {.motion = "run", .body = "knight", .rig = "kaykit", .clip = "Running_A"},
+      {.motion = "run", .body = "mage", .rig = "kaykit", .clip = "Running_B"},
+      {.motion = evaluation::distractor_label, .body = "mage", .rig = "kaykit", .clip = "Cheer"}};
   Eigen::MatrixXd similarity(5, 5);
   similarity << 1.0, 0.6, 0.8, 0.4, 0.5,  //
       0.7, 1.0, 0.9, 0.7, 0.2,            //

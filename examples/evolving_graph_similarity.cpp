@@ -14,14 +14,17 @@ int main() {
   using namespace deformseg;
   const double right = std::numbers::pi / 2;
   mesh::Bending_tube once, twice;
-  once.schedule = {{5, {0.0}}, {10, {right}, mesh::Easing::linear}, {8, {}}, {10, {0.0}, mesh::Easing::linear}, {5, {}}};
+  once.schedule = {
+      {5, {0.0}}, {10, {right}, mesh::Easing::linear}, {8, {}}, {10, {0.0}, mesh::Easing::linear}, {5, {}}};
   twice.schedule = {{5, {0.0}}, {5, {right}, mesh::Easing::linear}, {4, {}}, {5, {0.0}, mesh::Easing::linear},
                     {5, {right}, mesh::Easing::linear}, {4, {}}, {5, {0.0}, mesh::Easing::linear}, {5, {}}};
   const auto a = mesh::make_bending_tube(once).animation;
   const auto b = mesh::make_bending_tube(twice).animation;
 
   // [policy]
-  similarity::Evolving_graph_similarity<ged::Exact_ged, similarity::Segment_costs, clustering::Agglomerative, alignment::Dtw> policy;
+  similarity::Evolving_graph_similarity<ged::Exact_ged, similarity::Segment_costs, clustering::Agglomerative,
+                                        alignment::Dtw>
+      policy;
   policy.segmentation.threshold = 0.01;  // the tube's whole blend zone deforms while it moves
   policy.costs.area_weight = 0;          // unit costs on the kinds, as METHOD.md's default
   policy.clustering.clusters = 3;

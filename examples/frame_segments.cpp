@@ -13,7 +13,8 @@ int main() {
   mesh::Bending_tube spec;
   spec.schedule = {{10, {0.0}}, {10, {std::numbers::pi / 2}, mesh::Easing::linear}, {10, {}}};
   const auto animation = mesh::make_bending_tube(spec).animation;
-  const spatiotemporal::Spatiotemporal_segmentation segmentation = spatiotemporal::spatiotemporal_segmentation(animation, {.threshold = 0.01});
+  const spatiotemporal::Spatiotemporal_segmentation segmentation =
+      spatiotemporal::spatiotemporal_segmentation(animation, {.threshold = 0.01});
 
   // Area shares from the rest frame's triangle areas.
   // [frame_graphs]

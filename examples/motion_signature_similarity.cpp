@@ -45,7 +45,8 @@ int main() {
   for (Eigen::Index q = rates_up; q < rates_up + 8; ++q) std::printf(" %5.2f", signatures(10, q));
   std::printf("\n\n");
 
-  const similarity::Motion_signature_similarity<> policy;  // lags 1, 4, 16, 128 / 30 s; 8 quantiles; up +Y; scale 1.77; DTW
+  const similarity::Motion_signature_similarity<>
+      policy;  // lags 1, 4, 16, 128 / 30 s; 8 quantiles; up +Y; scale 1.77; DTW
   const auto query = policy.describe(tube(bend_hold_unbend));
   struct Candidate {
     const char* name;

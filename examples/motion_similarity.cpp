@@ -19,7 +19,8 @@ int main() {
   const auto b = mesh::make_bending_tube(thick).animation;
   const auto c = mesh::make_bending_tube(other).animation;
 
-  const similarity::Similarity same = similarity::motion_similarity(a, b);  // Default_similarity: motion signatures, DTW
+  const similarity::Similarity same =
+      similarity::motion_similarity(a, b);  // Default_similarity: motion signatures, DTW
   std::cout << "same schedule, thin and thick tube: " << same.value << " (" << same.alignment.size()
             << " frame pairs aligned)\n";
   std::cout << "other schedule, same tube:          " << similarity::motion_similarity(a, c).value << '\n';
@@ -43,6 +44,7 @@ int main() {
   const auto d = mesh::make_bending_tube(still).animation;
   similarity::Strain_distribution_similarity<> by_longer;
   by_longer.normalization.length = similarity::Normalize_by::longer;
-  std::cout << "standing still against the thin tube, by the shorter: " << similarity::motion_similarity(d, a, strain).value
+  std::cout << "standing still against the thin tube, by the shorter: "
+            << similarity::motion_similarity(d, a, strain).value
             << ", by the longer: " << similarity::motion_similarity(d, a, by_longer).value << '\n';
 }

@@ -15,7 +15,8 @@ struct Deformed_area_similarity {
 
   template <deformseg::mesh::DeformingMesh Mesh>
   Description describe(const Mesh& animation) const {
-    const auto strain = deformseg::strain::compute_strain(animation, {.reference = deformseg::strain::Strain_reference::previous_pose});
+    const auto strain =
+        deformseg::strain::compute_strain(animation, {.reference = deformseg::strain::Strain_reference::previous_pose});
     const std::vector<double> areas = deformseg::mesh::face_areas(animation, 0);
     double total = 0;
     for (double a : areas) total += a;
@@ -41,7 +42,8 @@ struct Deformed_area_similarity {
   }
 };
 
-static_assert(deformseg::similarity::SimilarityPolicy<Deformed_area_similarity, deformseg::mesh::Surface_mesh_animation>);
+static_assert(
+    deformseg::similarity::SimilarityPolicy<Deformed_area_similarity, deformseg::mesh::Surface_mesh_animation>);
 
 int main() {
   using namespace deformseg;
@@ -50,6 +52,6 @@ int main() {
   const auto a = mesh::make_bending_tube(spec).animation;
   spec.shape.radius = 0.2;
   const auto b = mesh::make_bending_tube(spec).animation;
-  std::cout << "own policy, thin against thick tube: " << similarity::motion_similarity(a, b, Deformed_area_similarity{}).value
-            << '\n';
+  std::cout << "own policy, thin against thick tube: "
+            << similarity::motion_similarity(a, b, Deformed_area_similarity{}).value << '\n';
 }

@@ -42,8 +42,8 @@ int main(int argc, char** argv) {
     const std::string up = choice.up.empty() ? "" : ", up " + choice.up;
     const std::string name = choice.policy + ", " + similarity::alignment_name(choice) + up;
     try {
-      const double value =
-          similarity::with_policy_choice(choice, [&](const auto& policy) { return similarity::motion_similarity(a, b, policy).value; });
+      const double value = similarity::with_policy_choice(
+          choice, [&](const auto& policy) { return similarity::motion_similarity(a, b, policy).value; });
       std::printf("%-40s %.3f\n", name.c_str(), value);
     } catch (const invalid_input& e) {
       std::printf("%-40s refused: %s\n", name.c_str(), e.what());

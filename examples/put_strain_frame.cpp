@@ -17,7 +17,8 @@ int main() {
   // [property_maps]
   mesh::Surface_mesh mesh = tube.animation.face_graph();
   auto strain = mesh.add_property_map<mesh::Surface_mesh::Face_index, float>("f:strain", 0.0f).first;
-  auto direction = mesh.add_property_map<mesh::Surface_mesh::Face_index, mesh::Kernel::Vector_3>("f:stretch_direction").first;
+  auto direction =
+      mesh.add_property_map<mesh::Surface_mesh::Face_index, mesh::Kernel::Vector_3>("f:stretch_direction").first;
   strain::put_strain_frame(field, 8, mesh, strain);
   strain::put_principal_directions(field, 8, mesh, direction);
   // [property_maps]

@@ -158,7 +158,8 @@ int main(int argc, char** argv) {
               << animation.num_vertices() << " vertices and " << animation.num_faces() << " triangles\n";
     for (const std::string& skipped : report.skipped) std::cout << "  " << skipped << "\n";
     const std::size_t last = animation.num_vertices() - 1;
-    const auto first_frame = animation.frame_positions(0), last_frame = animation.frame_positions(animation.num_frames() - 1);
+    const auto first_frame = animation.frame_positions(0),
+               last_frame = animation.frame_positions(animation.num_frames() - 1);
     std::cout << "  vertex " << last << " moves from (" << first_frame[3 * last] << ", " << first_frame[3 * last + 1]
               << ") to (" << last_frame[3 * last] << ", " << last_frame[3 * last + 1] << ")\n";
     // [read]

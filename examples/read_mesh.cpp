@@ -44,7 +44,8 @@ int main(int argc, char** argv) {
       return 0;
     }
     write_pyramid();
-    for (const char* path : {"pyramid.obj", "pyramid.off"}) print(path, deformseg::io::read_mesh(path, {.triangulate = true}));
+    for (const char* path : {"pyramid.obj", "pyramid.off"})
+      print(path, deformseg::io::read_mesh(path, {.triangulate = true}));
 
     // [error]
     // Without `triangulate`, the quad is an error that names the file and the line.

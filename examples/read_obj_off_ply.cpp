@@ -25,7 +25,9 @@ void build_and_print(const std::string& name, const io::Triangle_soup& soup) {
 int main(int argc, char** argv) {
   if (argc > 1) {
     const std::string path = argv[1];
-    const auto soup = path.ends_with(".obj") ? io::read_obj(path) : path.ends_with(".off") ? io::read_off(path) : io::read_ply(path);
+    const auto soup = path.ends_with(".obj")   ? io::read_obj(path)
+                      : path.ends_with(".off") ? io::read_off(path)
+                                               : io::read_ply(path);
     build_and_print(path, soup);
     return 0;
   }

@@ -14,7 +14,8 @@ int main() {
   const std::vector<std::vector<mesh::Tube_phase>> schedules{
       {{5, {0.0}}, {10, {right}}, {8, {}}, {10, {0.0}}, {5, {}}},
       {{5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {right}}, {4, {}}, {5, {0.0}}, {5, {}}}};
-  const std::vector<mesh::Tube_shape> shapes{{}, {.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false}};
+  const std::vector<mesh::Tube_shape> shapes{
+      {}, {.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false}};
   std::vector<mesh::Surface_mesh_animation> animations;
   for (const auto& schedule : schedules)
     for (const auto& shape : shapes) {

@@ -22,11 +22,13 @@ int main() {
               << " triangle-frames, at most " << e.largest_slice << " triangles in a frame\n";
   }
   std::size_t deformed_at_15 = 0;
-  for (std::int32_t label : segments.frame_labels(15)) deformed_at_15 += label != spatiotemporal::Spatiotemporal_segmentation::rigid;
+  for (std::int32_t label : segments.frame_labels(15))
+    deformed_at_15 += label != spatiotemporal::Spatiotemporal_segmentation::rigid;
   std::cout << "frame 15: " << deformed_at_15 << " deformed triangles\n";
 
   // Rest-pose strain, without clean-up: deformed while away from the rest pose.
   const auto pose = spatiotemporal::spatiotemporal_segmentation(
-      animation, {.reference = strain::Strain_reference::rest_pose, .min_triangles = 1, .min_frames = 1, .max_island = 0});
+      animation,
+      {.reference = strain::Strain_reference::rest_pose, .min_triangles = 1, .min_frames = 1, .max_island = 0});
   std::cout << "against the rest pose, without clean-up: " << pose.num_segments() << " segments\n";
 }

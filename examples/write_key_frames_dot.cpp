@@ -15,10 +15,12 @@ int main() {
   const double right = std::numbers::pi / 2;
   mesh::Bending_tube spec;
   spec.joints = {{.position = 0.3}, {.position = 0.7}};
-  spec.schedule = {{5, {0.0, 0.0}}, {10, {right, 0.0}, mesh::Easing::linear}, {10, {right, right}, mesh::Easing::linear}};
+  spec.schedule = {
+      {5, {0.0, 0.0}}, {10, {right, 0.0}, mesh::Easing::linear}, {10, {right, right}, mesh::Easing::linear}};
   const auto animation = mesh::make_bending_tube(spec).animation;
   // [dot]
-  const spatiotemporal::Spatiotemporal_segmentation segmentation = spatiotemporal::spatiotemporal_segmentation(animation, {.threshold = 0.01});
+  const spatiotemporal::Spatiotemporal_segmentation segmentation =
+      spatiotemporal::spatiotemporal_segmentation(animation, {.threshold = 0.01});
   const spatiotemporal::Frame_segments frames(segmentation, animation.triangles(), mesh::face_areas(animation, 0));
   const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(frames);
 
@@ -29,8 +31,9 @@ int main() {
 
   // Segment 0 has the same colour in every frame; rigid triangles are grey.
   // [colors]
-  const auto files = io::write_sequence(animation, "two_joints_segments",
-                                        {.face_colors = [&](std::size_t t) { return color::segment_face_colors(frames, t); }});
+  const auto files =
+      io::write_sequence(animation, "two_joints_segments",
+                         {.face_colors = [&](std::size_t t) { return color::segment_face_colors(frames, t); }});
   // [colors]
   std::cout << files.size() << " coloured meshes in two_joints_segments/\n";
 }

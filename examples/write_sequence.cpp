@@ -22,7 +22,8 @@ int main() {
   const auto moved = [&](std::size_t t) {
     std::vector<color::Rgb> colors;
     for (const auto& triangle : animation.triangles()) {
-      const double distance = (animation.frame_matrix(t).col(triangle[0]) - animation.frame_matrix(0).col(triangle[0])).norm();
+      const double distance =
+          (animation.frame_matrix(t).col(triangle[0]) - animation.frame_matrix(0).col(triangle[0])).norm();
       const auto fade = static_cast<std::uint8_t>(255 * (1 - std::min(distance / 0.2, 1.0)));
       colors.push_back({255, fade, fade});
     }
@@ -34,7 +35,8 @@ int main() {
   const auto obj = io::write_sequence(animation, "tube_obj", {.format = io::Mesh_format::obj});
   // [write]
   // The name a frame gets: zero-padded so that plain and natural sorting agree.
-  std::cout << "frame 7 of 16 is written as " << io::sequence_file_name(7, 16, {.format = io::Mesh_format::obj}) << '\n';
+  std::cout << "frame 7 of 16 is written as " << io::sequence_file_name(7, 16, {.format = io::Mesh_format::obj})
+            << '\n';
   std::cout << ply.size() << " PLY files, " << ply.front().string() << " to " << ply.back().string() << '\n'
             << obj.size() << " OBJ files, " << obj.front().string() << " to " << obj.back().string() << '\n';
 }

@@ -108,7 +108,8 @@ TEST_CASE("Dtw: equals the brute force over all warping paths, with and without 
     }
     const Alignment result = dtw.align(n, m, dis);
     CHECK(result.score == Approx(expected).margin(1e-12));
-    CHECK(deformseg::alignment_test::check_warping_path(result.pairs, d, 0, m - 1) == Approx(result.score).margin(1e-12));
+    CHECK(deformseg::alignment_test::check_warping_path(result.pairs, d, 0, m - 1) ==
+          Approx(result.score).margin(1e-12));
     for (const auto& [i, j] : result.pairs) CHECK(in_band(i, j, n, m, w));
     CHECK(dtw.score(n, m, dis) == result.score);
   }

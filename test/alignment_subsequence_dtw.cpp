@@ -88,8 +88,8 @@ TEST_CASE("Subsequence_dtw: equals the brute force over all parts and paths", "[
       if (swapped)
         for (auto& [i, j] : along_query) std::swap(i, j);
       REQUIRE(!along_query.empty());
-      const double sum =
-          deformseg::alignment_test::check_warping_path(along_query, q, along_query.front().second, along_query.back().second);
+      const double sum = deformseg::alignment_test::check_warping_path(along_query, q, along_query.front().second,
+                                                                       along_query.back().second);
       CHECK(sum == Approx(result.score).margin(1e-12));
       CHECK(policy.score(n, m, dis) == result.score);
     }

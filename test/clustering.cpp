@@ -55,7 +55,9 @@ struct Too_few_labels {
 
 struct Not_a_clustering_policy {};
 struct Returns_labels_only {
-  std::vector<std::size_t> operator()(const Eigen::MatrixXd& d) const { return std::vector<std::size_t>(std::size_t(d.rows())); }
+  std::vector<std::size_t> operator()(const Eigen::MatrixXd& d) const {
+    return std::vector<std::size_t>(std::size_t(d.rows()));
+  }
 };
 struct Takes_a_vector {
   Clustering operator()(const std::vector<double>&) const { return {}; }

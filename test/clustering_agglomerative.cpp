@@ -126,7 +126,8 @@ TEST_CASE("Agglomerative: items at distance 0 weigh as items in the average", "[
     // Offsets 2^p / 1000 make the distances between distinct points all different: no ties.
     std::vector<double> x;
     std::uniform_int_distribution<int> position(0, 40), copies(1, 3);
-    for (int p = 0; p < 6; ++p) x.insert(x.end(), std::size_t(copies(random)), position(random) + 0.001 * double(1 << p));
+    for (int p = 0; p < 6; ++p)
+      x.insert(x.end(), std::size_t(copies(random)), position(random) + 0.001 * double(1 << p));
     const Eigen::MatrixXd d = on_a_line(x);
     for (const Linkage linkage : {Linkage::average, Linkage::complete})
       for (std::size_t k = 1; k <= 6; ++k) {
@@ -136,7 +137,8 @@ TEST_CASE("Agglomerative: items at distance 0 weigh as items in the average", "[
   }
 }
 
-TEST_CASE("Agglomerative: far-apart blobs are recovered by k, by height, by silhouette", "[clustering][agglomerative]") {
+TEST_CASE("Agglomerative: far-apart blobs are recovered by k, by height, by silhouette",
+          "[clustering][agglomerative]") {
   for (unsigned seed = 0; seed < 10; ++seed) {
     const auto blobs = make_blobs({8, 15, 5, 11, 9, 1}, seed);
     INFO("seed " << seed);

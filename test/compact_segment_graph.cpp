@@ -8,7 +8,9 @@ using namespace deformseg;
 
 namespace {
 
-spatiotemporal::Segment_node rigid(std::size_t triangles, double area) { return {spatiotemporal::Segment_kind::rigid, -1, triangles, area}; }
+spatiotemporal::Segment_node rigid(std::size_t triangles, double area) {
+  return {spatiotemporal::Segment_kind::rigid, -1, triangles, area};
+}
 spatiotemporal::Segment_node deformed(std::int32_t id, std::size_t triangles, double area) {
   return {spatiotemporal::Segment_kind::deformed, id, triangles, area};
 }

@@ -35,7 +35,8 @@ std::string shape(const spatiotemporal::Segment_graph& g) {
     text << (v ? " " : "") << spatiotemporal::node_label(g[v]);
   std::set<std::pair<std::size_t, std::size_t>> edges;
   for (auto e : boost::make_iterator_range(boost::edges(g)))
-    edges.emplace(std::min(boost::source(e, g), boost::target(e, g)), std::max(boost::source(e, g), boost::target(e, g)));
+    edges.emplace(std::min(boost::source(e, g), boost::target(e, g)),
+                  std::max(boost::source(e, g), boost::target(e, g)));
   text << " |";
   for (auto [u, v] : edges) text << ' ' << u << '-' << v;
   return text.str();
@@ -74,7 +75,8 @@ TEST_CASE("frame segments: each frame's graph equals a brute force on random lab
     strain::Strain_field<float>::Storage values(deformed.size());
     for (std::size_t i = 0; i < values.size(); ++i) values[i] = deformed[i] ? 1.0f : 0.0f;
     const strain::Strain_field<float> field(faces, frames, std::move(values), {}, std::nullopt, 0);
-    const auto s = spatiotemporal::spatiotemporal_segmentation(field, triangles, {.min_triangles = 1, .min_frames = 1, .max_island = 0});
+    const auto s = spatiotemporal::spatiotemporal_segmentation(field, triangles,
+                                                               {.min_triangles = 1, .min_frames = 1, .max_island = 0});
     std::vector<double> areas(faces);
     for (std::size_t f = 0; f < faces; ++f) areas[f] = 1.0 + double(f % 3);
     const spatiotemporal::Frame_segments segments(s, triangles, areas);
@@ -123,8 +125,10 @@ TEST_CASE("frame segments: each frame's graph equals a brute force on random lab
       }
       // Canonical order: deformed nodes by segment id, then rigid ones.
       for (std::size_t v = 1; v < boost::num_vertices(g); ++v) {
-        const bool both_deformed = g[v - 1].kind == spatiotemporal::Segment_kind::deformed && g[v].kind == spatiotemporal::Segment_kind::deformed;
-        CHECK(!(g[v - 1].kind == spatiotemporal::Segment_kind::rigid && g[v].kind == spatiotemporal::Segment_kind::deformed));
+        const bool both_deformed = g[v - 1].kind == spatiotemporal::Segment_kind::deformed &&
+                                   g[v].kind == spatiotemporal::Segment_kind::deformed;
+        CHECK(!(g[v - 1].kind == spatiotemporal::Segment_kind::rigid &&
+                g[v].kind == spatiotemporal::Segment_kind::deformed));
         if (both_deformed) CHECK(g[v - 1].segment < g[v].segment);
       }
     }
@@ -151,8 +155,10 @@ TEST_CASE("frame segments: a band across a grid cuts its rigid part in two", "[e
   CHECK(node[9] == 0);
   CHECK_THROWS_WITH(segments.graph(1), Catch::Contains("frame 1"));
   CHECK_THROWS_WITH(spatiotemporal::Frame_segments(s, grid(3)), Catch::Contains("18 triangles"));
-  CHECK_THROWS_WITH(spatiotemporal::Frame_segments(s, triangles, std::vector<double>(32, 0.0)), Catch::Contains("sum to 0"));
-  CHECK_THROWS_WITH(spatiotemporal::Frame_segments(s, triangles, std::vector<double>(3, 1.0)), Catch::Contains("3 face areas"));
+  CHECK_THROWS_WITH(spatiotemporal::Frame_segments(s, triangles, std::vector<double>(32, 0.0)),
+                    Catch::Contains("sum to 0"));
+  CHECK_THROWS_WITH(spatiotemporal::Frame_segments(s, triangles, std::vector<double>(3, 1.0)),
+                    Catch::Contains("3 face areas"));
 }
 
 TEST_CASE("evolving graph: a tube bending once gives R, then R - D - R, then R", "[evolving_graph]") {
@@ -177,7 +183,8 @@ TEST_CASE("evolving graph: a tube bending once gives R, then R - D - R, then R",
   CHECK(bent[1].area == Approx(bent[2].area).epsilon(0.05));
   CHECK(graph[0].graph[0].triangles == tube.animation.num_faces());
   // Rest-pose strain measures the pose: the tube stays deformed while it is bent, hold included.
-  const spatiotemporal::Evolving_graph rest = spatiotemporal::evolving_graph(tube.animation, {.reference = strain::Strain_reference::rest_pose, .threshold = 0.01});
+  const spatiotemporal::Evolving_graph rest = spatiotemporal::evolving_graph(
+      tube.animation, {.reference = strain::Strain_reference::rest_pose, .threshold = 0.01});
   REQUIRE(rest.size() >= 2);
   CHECK(shape(rest[0].graph) == "R |");
   CHECK(shape(rest[rest.size() - 1].graph) == "D0 R R | 0-1 0-2");
@@ -204,11 +211,13 @@ TEST_CASE("evolving graph: a moved, turned and scaled tube gives the same evolvi
   mesh::Bending_tube spec = two_joints();
   spec.schedule = {{4, {0.0, 0.0}}, {8, {right_angle, 0.0}}, {8, {right_angle, -right_angle}, linear},
                    {4, {0.0, 0.0}}};
-  const spatiotemporal::Evolving_graph a = spatiotemporal::evolving_graph(mesh::make_bending_tube(spec).animation, tube_options);
+  const spatiotemporal::Evolving_graph a =
+      spatiotemporal::evolving_graph(mesh::make_bending_tube(spec).animation, tube_options);
   spec.placement = {.scale = 0.02,
                     .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, -2, 3).normalized())),
                     .translation = Eigen::Vector3d(-7, 300, 12)};
-  const spatiotemporal::Evolving_graph b = spatiotemporal::evolving_graph(mesh::make_bending_tube(spec).animation, tube_options);
+  const spatiotemporal::Evolving_graph b =
+      spatiotemporal::evolving_graph(mesh::make_bending_tube(spec).animation, tube_options);
   REQUIRE(key_frames(a) == key_frames(b));
   CHECK(a.size() > 3);
   for (std::size_t k = 0; k < a.size(); ++k)
@@ -222,8 +231,10 @@ TEST_CASE("evolving graph: key frames must cover the frames in order", "[evolvin
   std::vector<spatiotemporal::Key_frame> gap;
   gap.push_back({0, 3, spatiotemporal::Segment_graph(1)});
   gap.push_back({5, 6, spatiotemporal::Segment_graph(1)});
-  CHECK_THROWS_WITH(spatiotemporal::Evolving_graph(7, 0, gap), Catch::Contains("frames 5-6") && Catch::Contains("frame 4"));
-  CHECK_THROWS_WITH(spatiotemporal::Evolving_graph(9, 0, {{0, 8, spatiotemporal::Segment_graph(1)}, {9, 9, spatiotemporal::Segment_graph(1)}}),
+  CHECK_THROWS_WITH(spatiotemporal::Evolving_graph(7, 0, gap),
+                    Catch::Contains("frames 5-6") && Catch::Contains("frame 4"));
+  CHECK_THROWS_WITH(spatiotemporal::Evolving_graph(
+                        9, 0, {{0, 8, spatiotemporal::Segment_graph(1)}, {9, 9, spatiotemporal::Segment_graph(1)}}),
                     Catch::Contains("cover 10 of 9"));
   CHECK(spatiotemporal::Evolving_graph(0, 0, {}).empty());
 }
@@ -273,8 +284,12 @@ TEST_CASE("evolving graph: Graphviz draws every key frame of the horse", "[evolv
 TEST_CASE("evolving graph: a rigid node has no segment attribute in DOT, as it has null in JSON",
           "[evolving_graph]") {
   spatiotemporal::Segment_graph graph;
-  boost::add_vertex(spatiotemporal::Segment_node{.kind = spatiotemporal::Segment_kind::rigid, .triangles = 30, .area = 0.75}, graph);
-  boost::add_vertex(spatiotemporal::Segment_node{.kind = spatiotemporal::Segment_kind::deformed, .segment = 4, .triangles = 10, .area = 0.25}, graph);
+  boost::add_vertex(
+      spatiotemporal::Segment_node{.kind = spatiotemporal::Segment_kind::rigid, .triangles = 30, .area = 0.75}, graph);
+  boost::add_vertex(
+      spatiotemporal::Segment_node{
+          .kind = spatiotemporal::Segment_kind::deformed, .segment = 4, .triangles = 10, .area = 0.25},
+      graph);
   boost::add_edge(0, 1, graph);
   std::ostringstream text;
   io::write_segment_graph_dot(text, graph);

@@ -50,7 +50,8 @@ TEST_CASE("frame_distances: equal to the direct formulas, symmetric, 0 on the di
     double worst = 0;
     for (std::size_t a = 0; a < 300; a += 7)
       for (std::size_t b = 0; b < 300; b += 3)
-        if (a != b) worst = std::max(worst, std::abs(d(Eigen::Index(a), Eigen::Index(b)) - direct(field, a, b, metric)));
+        if (a != b)
+          worst = std::max(worst, std::abs(d(Eigen::Index(a), Eigen::Index(b)) - direct(field, a, b, metric)));
     INFO("metric " << int(metric) << ", worst difference " << worst);
     CHECK(worst < 1e-4);
   }

@@ -30,7 +30,8 @@ std::vector<Ged_graph> random_graphs(unsigned seed, std::size_t count) {
   std::mt19937 rng(seed);
   std::uniform_int_distribution<std::size_t> size(0, 8);
   std::vector<Ged_graph> graphs;
-  for (std::size_t k = 0; k < count; ++k) graphs.push_back(deformseg::test::random_labelled_graph(rng, size(rng), 3, 0.3));
+  for (std::size_t k = 0; k < count; ++k)
+    graphs.push_back(deformseg::test::random_labelled_graph(rng, size(rng), 3, 0.3));
   return graphs;
 }
 
@@ -88,7 +89,8 @@ TEST_CASE("ged_matrix: both directions give the tighter bounds", "[ged][matrix]"
   const auto graphs = random_graphs(73, 10);
   const Ged_matrix_result once = ged_matrix_results(graphs, Bipartite_ged{});
   const Ged_matrix_result both = ged_matrix_results(graphs, Bipartite_ged{}, Unit_costs{}, {.both_directions = true});
-  const Ged_matrix_result lower = ged_matrix_results(graphs, Assignment_lower_bound{}, Unit_costs{}, {.both_directions = true});
+  const Ged_matrix_result lower =
+      ged_matrix_results(graphs, Assignment_lower_bound{}, Unit_costs{}, {.both_directions = true});
   const Eigen::MatrixXd exact = ged_matrix(graphs);
   int better = 0;
   for (std::size_t i = 0; i < graphs.size(); ++i)

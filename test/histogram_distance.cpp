@@ -16,7 +16,8 @@ using namespace deformseg;
 
 namespace {
 
-constexpr strain::Histogram_metric metrics[] = {strain::Histogram_metric::total_variation, strain::Histogram_metric::earth_movers};
+constexpr strain::Histogram_metric metrics[] = {strain::Histogram_metric::total_variation,
+                                                strain::Histogram_metric::earth_movers};
 
 Eigen::MatrixXd random_histograms(std::mt19937& rng, Eigen::Index count, Eigen::Index bins) {
   std::uniform_real_distribution<double> mass(0, 1);
@@ -57,14 +58,17 @@ Eigen::RowVectorXd one_hot(Eigen::Index bins, Eigen::Index at) {
 TEST_CASE("histogram_distance: hand values", "[histogram_distance]") {
   const Eigen::RowVector4d a(0.5, 0.5, 0, 0), b(0, 0.5, 0.5, 0), c(0, 0, 0, 1);
   CHECK(strain::histogram_distance(a, b, strain::Histogram_metric::total_variation) == Approx(0.5));
-  CHECK(strain::histogram_distance(a, b, strain::Histogram_metric::earth_movers) == Approx(1.0 / 3));  // half the mass, one bin
+  CHECK(strain::histogram_distance(a, b, strain::Histogram_metric::earth_movers) ==
+        Approx(1.0 / 3));  // half the mass, one bin
   CHECK(strain::histogram_distance(a, c, strain::Histogram_metric::total_variation) == Approx(1.0));
   CHECK(strain::histogram_distance(a, c, strain::Histogram_metric::earth_movers) == Approx((0.5 * 3 + 0.5 * 2) / 3));
-  CHECK(strain::histogram_distance(a, b) == strain::histogram_distance(a, b, strain::Histogram_metric::earth_movers));  // the default
+  CHECK(strain::histogram_distance(a, b) ==
+        strain::histogram_distance(a, b, strain::Histogram_metric::earth_movers));  // the default
   // Column vectors and float work alike; one bin is always at distance 0.
   CHECK(strain::histogram_distance(Eigen::Vector4f(0.5f, 0.5f, 0, 0), Eigen::Vector4f(0, 0.5f, 0.5f, 0)) ==
         Approx(1.0 / 3));
-  for (auto metric : metrics) CHECK(strain::histogram_distance(Eigen::VectorXd::Ones(1), Eigen::VectorXd::Ones(1), metric) == 0);
+  for (auto metric : metrics)
+    CHECK(strain::histogram_distance(Eigen::VectorXd::Ones(1), Eigen::VectorXd::Ones(1), metric) == 0);
 }
 
 TEST_CASE("histogram_distance: earth mover's of shifted one-hot histograms is proportional to the shift",
@@ -85,7 +89,8 @@ TEST_CASE("histogram_distance: earth mover's agrees with a greedy transport on r
   for (Eigen::Index bins : {2, 3, 7, 18}) {
     const Eigen::MatrixXd h = random_histograms(rng, 30, bins);
     for (Eigen::Index i = 0; i + 1 < h.rows(); ++i)
-      CHECK(strain::histogram_distance(h.row(i), h.row(i + 1)) == Approx(transported(h.row(i), h.row(i + 1))).margin(1e-12));
+      CHECK(strain::histogram_distance(h.row(i), h.row(i + 1)) ==
+            Approx(transported(h.row(i), h.row(i + 1))).margin(1e-12));
   }
 }
 
@@ -115,7 +120,8 @@ TEST_CASE("histogram_distances: each entry is the pairwise distance, for any thr
     REQUIRE(d.rows() == 23);
     REQUIRE(d.cols() == 31);
     for (Eigen::Index i = 0; i < d.rows(); ++i)
-      for (Eigen::Index j = 0; j < d.cols(); ++j) REQUIRE(d(i, j) == strain::histogram_distance(a.row(i), b.row(j), metric));
+      for (Eigen::Index j = 0; j < d.cols(); ++j)
+        REQUIRE(d(i, j) == strain::histogram_distance(a.row(i), b.row(j), metric));
     CHECK(strain::histogram_distances(a, b, metric, 1) == d);
     CHECK(strain::histogram_distances(a, b, metric, 2) == d);
   }
@@ -127,8 +133,9 @@ TEST_CASE("histogram_distance: bad input is rejected, naming the problem", "[his
   CHECK_THROWS_WITH(strain::histogram_distance(good, Eigen::RowVector2d(0.5, 0.5)), Catch::Contains("same size"));
   CHECK_THROWS_WITH(strain::histogram_distance(good, Eigen::RowVector3d(0.2, 0.3, 0.6)), Catch::Contains("sums to"));
   CHECK_THROWS_WITH(strain::histogram_distance(good, Eigen::RowVector3d(-0.2, 0.7, 0.5)), Catch::Contains("bin 0"));
-  CHECK_THROWS_AS(strain::histogram_distance(good, Eigen::RowVector3d(std::numeric_limits<double>::quiet_NaN(), 0.5, 0.5)),
-                  invalid_input);
+  CHECK_THROWS_AS(
+      strain::histogram_distance(good, Eigen::RowVector3d(std::numeric_limits<double>::quiet_NaN(), 0.5, 0.5)),
+      invalid_input);
   CHECK_THROWS_AS(strain::histogram_distance(Eigen::RowVectorXd(0), Eigen::RowVectorXd(0)), invalid_input);
   CHECK_THROWS_AS(strain::histogram_distance(Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity()), invalid_input);
   const Eigen::MatrixXd a = good.replicate(3, 1);

@@ -43,7 +43,8 @@ std::string tetrahedron_frame(int t, const std::string& extra_vertex = "") {
   std::string text;
   const int corner[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   for (const auto& c : corner)
-    text += "v " + std::to_string(c[0] + t) + " " + std::to_string(c[1] + 2 * t) + " " + std::to_string(c[2] + 3 * t) + "\n";
+    text += "v " + std::to_string(c[0] + t) + " " + std::to_string(c[1] + 2 * t) + " " + std::to_string(c[2] + 3 * t) +
+            "\n";
   return text + extra_vertex + "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
 }
 
@@ -103,8 +104,10 @@ TEST_CASE("list_frame_files: nothing to read names the input", "[io][frame_seque
   touch(folder / "1.obj");
   touch(folder / "2.ply");
   CHECK_THROWS_MATCHES(list_frame_files(folder.string()), invalid_input,
-                       Message(folder.string() + ": the folder holds frames of several formats (.obj and .ply): give "
-                                                 "a pattern such as \"" + (folder / "*").string() + ".obj\" to choose"));
+                       Message(folder.string() +
+                               ": the folder holds frames of several formats (.obj and .ply): give "
+                               "a pattern such as \"" +
+                               (folder / "*").string() + ".obj\" to choose"));
 }
 
 TEST_CASE("read_frame_sequence: connectivity of the first frame, positions of all", "[io][frame_sequence]") {
@@ -155,10 +158,12 @@ TEST_CASE("read_frame_sequence: the connectivity of a topology file, in another 
 TEST_CASE("read_frame_sequence: polygons need triangulate", "[io][frame_sequence]") {
   const fs::path folder = deformseg::test::fresh_dir("io_frame_sequence/quads");
   for (int t = 0; t < 2; ++t)
-    std::ofstream(folder / ("q" + std::to_string(t) + ".obj")) << "v 0 0 " << t << "\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
-  CHECK_THROWS_MATCHES(read_frame_sequence(folder.string()), invalid_input,
-                       Message((folder / "q0.obj").string() + ":5: frame 0: a face with 4 vertices, not a triangle: "
-                                                              "set the option `triangulate` to fan-triangulate polygons"));
+    std::ofstream(folder / ("q" + std::to_string(t) + ".obj"))
+        << "v 0 0 " << t << "\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  CHECK_THROWS_MATCHES(
+      read_frame_sequence(folder.string()), invalid_input,
+      Message((folder / "q0.obj").string() + ":5: frame 0: a face with 4 vertices, not a triangle: "
+                                             "set the option `triangulate` to fan-triangulate polygons"));
   const auto animation = read_frame_sequence(folder.string(), {.triangulate = true});
   CHECK(animation.num_faces() == 2);
   CHECK(animation.frame_positions(1)[2] == 1.0);
@@ -182,9 +187,10 @@ TEST_CASE("read_frame_sequence: errors name the file and the frame, the lowest f
   }
   SECTION("a bad first frame: a defect refused, named at its file") {
     std::ofstream(folder / "frame_1.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n";
-    CHECK_THROWS_MATCHES(read_frame_sequence(folder.string(), {.repair = {.defects = deformseg::io::Defect_policy::refuse}}),
-                         invalid_input,
-                         Message((folder / "frame_1.obj").string() + ": frame 0: triangles 0 and 1 have the same vertices"));
+    CHECK_THROWS_MATCHES(
+        read_frame_sequence(folder.string(), {.repair = {.defects = deformseg::io::Defect_policy::refuse}}),
+        invalid_input,
+        Message((folder / "frame_1.obj").string() + ": frame 0: triangles 0 and 1 have the same vertices"));
     // Repaired by default, which does not hide that the other frames have another vertex count.
     CHECK_THROWS_MATCHES(read_frame_sequence(folder.string()), invalid_input,
                          Message((folder / "frame_2.obj").string() + ": frame 1: has 4 vertices instead of 3"));
@@ -192,11 +198,12 @@ TEST_CASE("read_frame_sequence: errors name the file and the frame, the lowest f
   SECTION("a defect refused in a topology file") {
     const fs::path topology = folder.parent_path() / "bad-topology.off";
     std::ofstream(topology) << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n";
-    CHECK_THROWS_MATCHES(read_frame_sequence(folder.string(), {.topology = topology,
-                                                               .repair = {.defects = deformseg::io::Defect_policy::refuse}}),
-                         invalid_input,
-                         Message(topology.string() + ": triangles 0 and 1 are inconsistently oriented: both go from "
-                                                     "vertex 0 to vertex 1 on their shared edge"));
+    CHECK_THROWS_MATCHES(
+        read_frame_sequence(folder.string(),
+                            {.topology = topology, .repair = {.defects = deformseg::io::Defect_policy::refuse}}),
+        invalid_input,
+        Message(topology.string() + ": triangles 0 and 1 are inconsistently oriented: both go from "
+                                    "vertex 0 to vertex 1 on their shared edge"));
     deformseg::io::Repair_report report;
     CHECK(read_frame_sequence(folder.string(), {.topology = topology}, &report).num_faces() == 2);
     CHECK(report.reoriented_triangles == 1);

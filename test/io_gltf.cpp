@@ -62,7 +62,8 @@ int add_triangle_mesh(Gltf_writer& w, const std::string& name = "triangle") {
 
 // A channel of `node`'s `path` with keys at `times` and `values` (of `type`).
 void add_channel(json& animation, Gltf_writer& w, int node, const std::string& path, const std::vector<float>& times,
-                 const std::vector<float>& values, const std::string& type, const std::string& interpolation = "LINEAR") {
+                 const std::vector<float>& values, const std::string& type,
+                 const std::string& interpolation = "LINEAR") {
   const int input = w.floats(times, "SCALAR");
   const int output = w.floats(values, type);
   animation["samplers"].push_back({{"input", input}, {"output", output}, {"interpolation", interpolation}});
@@ -252,9 +253,10 @@ TEST_CASE("gltf: a weighted joint that is negative, fractional or past the skin 
   const auto skinned = [](int joints_type, const std::vector<float>& joints) {
     Gltf_writer w;
     const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
-    const int joint_values = joints_type == Gltf_writer::float_type
-                                 ? w.floats(joints, "VEC4")
-                                 : w.values(std::vector<std::int8_t>(joints.begin(), joints.end()), joints_type, "VEC4");
+    const int joint_values =
+        joints_type == Gltf_writer::float_type
+            ? w.floats(joints, "VEC4")
+            : w.values(std::vector<std::int8_t>(joints.begin(), joints.end()), joints_type, "VEC4");
     // Vertex 0 weighs on its first two joints, the others on their first only.
     const int weights = w.floats({0.5f, 0.5f, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0}, "VEC4");
     w.push("meshes", {{"name", "arm"},
@@ -285,10 +287,11 @@ TEST_CASE("gltf: animated morph target weights, node and mesh weights at rest", 
   const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
   const int lift = w.floats({0, 0, 0, 0, 0, 0, 0, 0, 1}, "VEC3");     // target 0: vertex 2 up
   const int stretch = w.floats({0, 0, 0, 1, 0, 0, 0, 0, 0}, "VEC3");  // target 1: vertex 1 out
-  w.push("meshes", {{"name", "face"},
-                    {"weights", {0.25, 0.75}},
-                    {"primitives", json::array({{{"attributes", {{"POSITION", position}}},
-                                                 {"targets", json::array({{{"POSITION", lift}}, {{"POSITION", stretch}}})}}})}});
+  w.push("meshes",
+         {{"name", "face"},
+          {"weights", {0.25, 0.75}},
+          {"primitives", json::array({{{"attributes", {{"POSITION", position}}},
+                                       {"targets", json::array({{{"POSITION", lift}}, {{"POSITION", stretch}}})}}})}});
   w.push("nodes", {{"mesh", 0}, {"translation", {1, 2, 3}}});
   w.push("scenes", {{"nodes", {0}}});
 
@@ -325,7 +328,8 @@ TEST_CASE("gltf: a matrix node, and a rigid mesh child of an animated node", "[g
   Gltf_writer w;
   const int mesh = add_triangle_mesh(w);
   // Column-major: rotation by 90 degrees about z, scale 2, translation (1,2,3).
-  w.push("nodes", {{"name", "frame"}, {"matrix", {0, 2, 0, 0, -2, 0, 0, 0, 0, 0, 2, 0, 1, 2, 3, 1}}, {"children", {1}}});
+  w.push("nodes",
+         {{"name", "frame"}, {"matrix", {0, 2, 0, 0, -2, 0, 0, 0, 0, 0, 2, 0, 1, 2, 3, 1}}, {"children", {1}}});
   w.push("nodes", {{"name", "arm"}, {"translation", {1, 0, 0}}, {"children", {2}}});
   w.push("nodes", {{"name", "hand"}, {"mesh", mesh}, {"translation", {0, 0, 1}}});
   w.push("scenes", {{"nodes", {0}}});
@@ -361,9 +365,10 @@ TEST_CASE("gltf: normalised, strided and sparse accessors (KHR_mesh_quantization
   const std::vector<std::int16_t> sparse_value = {-32767, -32768, 0};
   const int index_view = w.view(sparse_index.data(), 1);
   const int value_view = w.view(sparse_value.data(), 6);
-  w.doc["accessors"][position]["sparse"] = {{"count", 1},
-                                            {"indices", {{"bufferView", index_view}, {"componentType", Gltf_writer::ubyte_type}}},
-                                            {"values", {{"bufferView", value_view}}}};
+  w.doc["accessors"][position]["sparse"] = {
+      {"count", 1},
+      {"indices", {{"bufferView", index_view}, {"componentType", Gltf_writer::ubyte_type}}},
+      {"values", {{"bufferView", value_view}}}};
   const int indices = w.values(std::vector<std::uint16_t>{0, 1, 2, 0, 2, 3}, Gltf_writer::ushort_type, "SCALAR");
   w.push("meshes", {{"primitives", json::array({{{"attributes", {{"POSITION", position}}}, {"indices", indices}}})}});
   w.push("nodes", {{"mesh", 0}});
@@ -371,7 +376,8 @@ TEST_CASE("gltf: normalised, strided and sparse accessors (KHR_mesh_quantization
   // A rotation stored as normalised shorts: (0,0,1,1) / sqrt 2 after normalisation.
   json turn = new_animation("turn");
   const int input = w.floats({0, 1}, "SCALAR");
-  const int output = w.values(std::vector<std::int16_t>{0, 0, 0, 32767, 0, 0, 32767, 32767}, Gltf_writer::short_type, "VEC4", true);
+  const int output =
+      w.values(std::vector<std::int16_t>{0, 0, 0, 32767, 0, 0, 32767, 32767}, Gltf_writer::short_type, "VEC4", true);
   turn["samplers"].push_back({{"input", input}, {"output", output}});
   turn["channels"].push_back({{"sampler", 0}, {"target", {{"node", 0}, {"path", "rotation"}}}});
   w.push("animations", turn);
@@ -470,7 +476,8 @@ TEST_CASE("gltf: refusals name the file and what is wrong", "[gltf]") {
     w = sampler_scene();
     const int indices = w.indices({0, 1, 3});
     w.doc["meshes"][0]["primitives"][0]["indices"] = indices;
-    CHECK_THROWS_WITH(sample_gltf(write(w, "index.gltf")), Contains("mesh 'triangle' primitive 0") && Contains("index 2"));
+    CHECK_THROWS_WITH(sample_gltf(write(w, "index.gltf")),
+                      Contains("mesh 'triangle' primitive 0") && Contains("index 2"));
     w = sampler_scene();
     w.doc["animations"][0]["samplers"][0]["input"] = 99;
     CHECK_THROWS_WITH(sample_gltf(write(w, "sampler.gltf")), Contains("accessor 99"));
@@ -755,7 +762,8 @@ TEST_CASE("gltf: every clip of a shared character has the file's one mesh, seams
 
 namespace {
 
-bool keep_no_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
+bool keep_no_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
+                   void*) {
   return true;
 }
 

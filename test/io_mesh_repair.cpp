@@ -79,7 +79,8 @@ Soup defective_soup() {
 
 // The repair of a one-frame soup.
 deformseg::io::Repaired_triangles repaired(const Soup& soup, const Repair_options& options = {}) {
-  return repair_triangles(std::span<const double>(soup.points), soup.num_vertices(), std::span(soup.triangles), options);
+  return repair_triangles(std::span<const double>(soup.points), soup.num_vertices(), std::span(soup.triangles),
+                          options);
 }
 
 // An unwelded cube: each face its own 4 vertices (24 in all), two triangles per face, outward.
@@ -155,8 +156,8 @@ TEST_CASE("repair_triangles: a repeated vertex, a non-manifold edge and vertex, 
   CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(std::vector<std::array<double, 3>>(23), result.triangles));
 
   Repair_report report;
-  const auto animation = make_repaired_animation(std::span<const double>(soup.points), 18, std::span(soup.triangles), {},
-                                                 &report);
+  const auto animation =
+      make_repaired_animation(std::span<const double>(soup.points), 18, std::span(soup.triangles), {}, &report);
   CHECK(animation.num_vertices() == 23);
   CHECK(animation.num_faces() == 13);
   CHECK(report.duplicated_vertices == 5);
@@ -251,9 +252,8 @@ TEST_CASE("repair_triangles: welding an unwelded cube in a 2-frame animation", "
     CHECK(slit.report.welded_vertices == 15);
     CHECK(slit.report.vertices == 9);
     CHECK(std::count(slit.source_vertex.begin(), slit.source_vertex.end(), 0u) == 1);
-    CHECK_FALSE(CGAL::is_closed(make_repaired_animation(std::span<const double>(positions), 24, std::span(cube.triangles),
-                                                        weld)
-                                    .face_graph()));
+    CHECK_FALSE(CGAL::is_closed(
+        make_repaired_animation(std::span<const double>(positions), 24, std::span(cube.triangles), weld).face_graph()));
   }
   SECTION("within the tolerance, not beyond") {
     // The box of both frames goes from (0, 0, 0) to (3, 4, 5): its diagonal is sqrt(50).
@@ -343,7 +343,8 @@ TEST_CASE("repair_triangles: random soups against brute force", "[io][repair][we
     const Random_animation a = random_animation(rng);
     const bool weld = trial % 2 == 0;
     const Repair_options options{.weld = weld, .weld_tolerance = 0.1};
-    const auto result = repair_triangles(std::span<const double>(a.positions), a.vertices, std::span(a.triangles), options);
+    const auto result =
+        repair_triangles(std::span<const double>(a.positions), a.vertices, std::span(a.triangles), options);
     INFO("trial " << trial);
     const std::size_t out = result.source_vertex.size();
     REQUIRE(result.report.vertices == out);
@@ -361,8 +362,8 @@ TEST_CASE("repair_triangles: random soups against brute force", "[io][repair][we
     for (std::uint32_t v = 0; v < a.vertices; ++v)
       if (group[v] == v) representatives.push_back(v);
     REQUIRE(out >= representatives.size());
-    CHECK(std::vector<std::uint32_t>(result.source_vertex.begin(), result.source_vertex.begin() + representatives.size()) ==
-          representatives);
+    CHECK(std::vector<std::uint32_t>(result.source_vertex.begin(),
+                                     result.source_vertex.begin() + representatives.size()) == representatives);
     CHECK(result.report.welded_vertices == a.vertices - representatives.size());
 
     // Every output triangle is its input triangle over the same (welded) source vertices.
@@ -455,9 +456,11 @@ TEST_CASE("repair_triangles: parts that cannot be oriented, a Moebius strip and 
   // The projective plane of 6 vertices and 10 triangles, closed: every vertex is inside.
   Soup plane;
   plane.points.assign(18, 0.0);
-  plane.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}, {0, 1, 5}, {1, 2, 4}, {1, 3, 4}, {1, 3, 5}, {2, 3, 5}, {2, 4, 5}};
+  plane.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}, {0, 1, 5},
+                     {1, 2, 4}, {1, 3, 4}, {1, 3, 5}, {2, 3, 5}, {2, 4, 5}};
   const auto cut = repaired(plane);
-  CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(std::vector<std::array<double, 3>>(cut.source_vertex.size()), cut.triangles));
+  CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(std::vector<std::array<double, 3>>(cut.source_vertex.size()),
+                                                          cut.triangles));
   CHECK(cut.report.duplicated_vertices == 4);
   CHECK(cut.report.triangles == 10);
 }
@@ -480,7 +483,8 @@ TEST_CASE("repair_triangles: the check that skips CGAL's pass on an oriented man
   CHECK_FALSE(is_oriented_manifold(Soup_triangles{{0, 1, 2}, {0, 3, 2}}, 4));
 }
 
-TEST_CASE("repair_triangles: the guard after CGAL finds triangles along an edge in the same direction", "[io][repair]") {
+TEST_CASE("repair_triangles: the guard after CGAL finds triangles along an edge in the same direction",
+          "[io][repair]") {
   const std::vector<deformseg::io::internal::Soup_triangle> triangles = {{0, 1, 2}, {0, 1, 3}, {1, 0, 4}, {4, 0, 1}};
   CHECK(deformseg::io::internal::misoriented_triangles(triangles) == std::vector<bool>{false, true, false, true});
   deformseg::io::internal::Oriented_soup soup;
@@ -514,7 +518,8 @@ TEST_CASE("repair_triangles: vertices of no triangle are kept and do not change 
   CHECK(animation.num_faces() == 2);
 
   std::vector<double> square;
-  for (std::size_t t = 0; t < 2; ++t) square.insert(square.end(), positions.begin() + 15 * t, positions.begin() + 15 * t + 12);
+  for (std::size_t t = 0; t < 2; ++t)
+    square.insert(square.end(), positions.begin() + 15 * t, positions.begin() + 15 * t + 12);
   const auto reference =
       make_repaired_animation(std::span<const double>(square), 4, std::span<const std::array<std::uint32_t, 3>>(clean));
   const auto strain = deformseg::strain::compute_strain(animation);
@@ -533,7 +538,8 @@ fs::path obj_sequence(const std::string& name, const Soup& soup, int frames, con
   for (int t = 0; t < frames; ++t) {
     std::ofstream out(folder / ("frame_" + std::to_string(t) + ".obj"));
     for (std::size_t v = 0; v < soup.num_vertices(); ++v)
-      out << "v " << soup.points[3 * v] * (1 + t) << " " << soup.points[3 * v + 1] << " " << soup.points[3 * v + 2] + t << "\n";
+      out << "v " << soup.points[3 * v] * (1 + t) << " " << soup.points[3 * v + 1] << " " << soup.points[3 * v + 2] + t
+          << "\n";
     for (const auto& tri : soup.triangles) out << "f " << tri[0] + 1 << " " << tri[1] + 1 << " " << tri[2] + 1 << "\n";
     out << extra_faces;
   }
@@ -542,7 +548,8 @@ fs::path obj_sequence(const std::string& name, const Soup& soup, int frames, con
 
 }  // namespace
 
-TEST_CASE("read_frame_sequence and read_animation repair, weld on request, and report", "[io][repair][frame_sequence]") {
+TEST_CASE("read_frame_sequence and read_animation repair, weld on request, and report",
+          "[io][repair][frame_sequence]") {
   // The unwelded cube, plus triangle 12 that repeats vertex 4 (as the
   // RobotExpressive robot's triangle 16 does).
   const Soup cube = unwelded_cube();
@@ -570,20 +577,22 @@ TEST_CASE("read_frame_sequence and read_animation repair, weld on request, and r
   CHECK(welded.frame_positions(1)[3 * 2 + 2] == 1);
 
   const fs::path first = folder / "frame_0.obj";
-  CHECK_THROWS_MATCHES(read_frame_sequence(folder.string(), {.repair = {.defects = Defect_policy::refuse}}), invalid_input,
-                       Message(first.string() + ": frame 0: triangle 12 repeats vertex 4"));
-  CHECK_THROWS_MATCHES(read_animation(folder.string(), {.repair = Repair_options{.defects = Defect_policy::refuse}}), invalid_input,
-                       Message(first.string() + ": frame 0: triangle 12 repeats vertex 4"));
+  CHECK_THROWS_MATCHES(read_frame_sequence(folder.string(), {.repair = {.defects = Defect_policy::refuse}}),
+                       invalid_input, Message(first.string() + ": frame 0: triangle 12 repeats vertex 4"));
+  CHECK_THROWS_MATCHES(read_animation(folder.string(), {.repair = Repair_options{.defects = Defect_policy::refuse}}),
+                       invalid_input, Message(first.string() + ": frame 0: triangle 12 repeats vertex 4"));
 
   SECTION("a point cache with a topology") {
     const fs::path cache = folder.parent_path() / "cube.pc2";
     deformseg::io::write_pc2(animation, cache);
-    const auto read = read_animation(cache.string(), {.topology = first, .repair = Repair_options{.weld = true}}, &report);
+    const auto read =
+        read_animation(cache.string(), {.topology = first, .repair = Repair_options{.weld = true}}, &report);
     CHECK(report.welded_vertices == 16);
     CHECK(report.degenerate_triangles == 1);
     CHECK(read.num_vertices() == 8);
     CHECK(read.num_frames() == 3);
-    CHECK_THROWS_MATCHES(read_animation(cache.string(), {.topology = first, .repair = Repair_options{.defects = Defect_policy::refuse}}),
-                         invalid_input, Message(first.string() + ": triangle 12 repeats vertex 4"));
+    CHECK_THROWS_MATCHES(
+        read_animation(cache.string(), {.topology = first, .repair = Repair_options{.defects = Defect_policy::refuse}}),
+        invalid_input, Message(first.string() + ": triangle 12 repeats vertex 4"));
   }
 }

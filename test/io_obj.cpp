@@ -39,7 +39,9 @@ using deformseg::test::Triangles;
 using deformseg::test::tetrahedron_points;
 using deformseg::test::tetrahedron_triangles;
 
-fs::path obj_file(const std::string& name, const std::string& text) { return deformseg::test::write_file("io_obj/" + name, text); }
+fs::path obj_file(const std::string& name, const std::string& text) {
+  return deformseg::test::write_file("io_obj/" + name, text);
+}
 
 using deformseg::test::at;
 
@@ -194,8 +196,9 @@ TEST_CASE("read_obj: each error names the file and the line", "[io][obj][errors]
     CHECK_THROWS_MATCHES(read_obj(relative), invalid_input,
                          Message(at(relative, 4, "a vertex index \"-99999999999999999999999999/1\" is out of range")));
     const fs::path eighteen = obj_file("18-digits.obj", three + "f 1 2 999999999999999999\n");
-    CHECK_THROWS_MATCHES(read_obj(eighteen), invalid_input,
-                         Message(at(eighteen, 4, "vertex index 999999999999999999 out of range: the file has fewer vertices")));
+    CHECK_THROWS_MATCHES(
+        read_obj(eighteen), invalid_input,
+        Message(at(eighteen, 4, "vertex index 999999999999999999 out of range: the file has fewer vertices")));
   }
   SECTION("an unknown statement") {
     const fs::path unknown = obj_file("unknown.obj", three + "vx 1 2 3\n");
@@ -254,7 +257,8 @@ namespace {
 using Cgal_point = CGAL::Simple_cartesian<double>::Point_3;
 
 // CGAL's reading of a mesh file, as a soup.
-void read_with_cgal(const fs::path& path, std::vector<Cgal_point>& points, std::vector<std::vector<std::size_t>>& faces) {
+void read_with_cgal(const fs::path& path, std::vector<Cgal_point>& points,
+                    std::vector<std::vector<std::size_t>>& faces) {
   REQUIRE(CGAL::IO::read_polygon_soup(path.string(), points, faces, CGAL::parameters::verbose(false)));
 }
 
@@ -267,7 +271,8 @@ void check_same_as_cgal(const Triangle_soup& soup, const fs::path& path) {
   std::size_t differing_bits = 0;
   for (std::size_t i = 0; i < points.size(); ++i)
     for (int k = 0; k < 3; ++k)
-      differing_bits += std::bit_cast<std::uint64_t>(soup.points[3 * i + k]) != std::bit_cast<std::uint64_t>(points[i][k]);
+      differing_bits +=
+          std::bit_cast<std::uint64_t>(soup.points[3 * i + k]) != std::bit_cast<std::uint64_t>(points[i][k]);
   CHECK(differing_bits == 0);
   REQUIRE(soup.triangles.size() == faces.size());
   std::size_t differing_faces = 0;

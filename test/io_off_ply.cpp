@@ -108,8 +108,9 @@ TEST_CASE("read_off: each error names the file and the line", "[io][off][errors]
     CHECK_THROWS_MATCHES(read_off(ply), invalid_input,
                          Message(at(ply, 1, "not an OFF file: it starts with \"ply\" instead of OFF")));
     const fs::path four = file("4off.off", "4OFF\n1 0 0\n0 0 0 1\n");
-    CHECK_THROWS_MATCHES(read_off(four), invalid_input,
-                         Message(at(four, 1, "unsupported OFF variant \"4OFF\": deformseg reads OFF, COFF, NOFF and CNOFF")));
+    CHECK_THROWS_MATCHES(
+        read_off(four), invalid_input,
+        Message(at(four, 1, "unsupported OFF variant \"4OFF\": deformseg reads OFF, COFF, NOFF and CNOFF")));
     const fs::path binary = file("binary.off", "OFF BINARY\n");
     CHECK_THROWS_MATCHES(read_off(binary), invalid_input,
                          Message(at(binary, 1, "binary OFF is not supported: write it as text")));
@@ -143,8 +144,9 @@ TEST_CASE("read_off: each error names the file and the line", "[io][off][errors]
   }
   SECTION("fewer lines than the header announces") {
     const fs::path vertices = file("few-vertices.off", "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n");
-    CHECK_THROWS_MATCHES(read_off(vertices), invalid_input,
-                         Message(vertices.string() + ": the file ends after 3 of 4 vertices that its header announces"));
+    CHECK_THROWS_MATCHES(
+        read_off(vertices), invalid_input,
+        Message(vertices.string() + ": the file ends after 3 of 4 vertices that its header announces"));
     const fs::path faces = file("few-faces.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n# the end\n");
     CHECK_THROWS_MATCHES(read_off(faces), invalid_input,
                          Message(faces.string() + ": the file ends after 1 of 2 faces that its header announces"));
@@ -152,17 +154,20 @@ TEST_CASE("read_off: each error names the file and the line", "[io][off][errors]
   SECTION("counts more than the file holds: nothing allocated for them, the file ends first") {
     // Fuzzing found these ending in a bare std::bad_alloc (test/fuzz/regressions/off).
     const fs::path huge = file("huge-count.off", "OFF\n4244444444444444 0 0\n");
-    CHECK_THROWS_MATCHES(read_off(huge), invalid_input,
-                         Message(huge.string() + ": the file ends after 0 of 4244444444444444 vertices that its header announces"));
+    CHECK_THROWS_MATCHES(
+        read_off(huge), invalid_input,
+        Message(huge.string() + ": the file ends after 0 of 4244444444444444 vertices that its header announces"));
     const fs::path vertices = file("3e9-vertices.off", "OFF\n3000000000 1 0\n0 0 0\n");
-    CHECK_THROWS_MATCHES(read_off(vertices), invalid_input,
-                         Message(vertices.string() + ": the file ends after 1 of 3000000000 vertices that its header announces"));
+    CHECK_THROWS_MATCHES(
+        read_off(vertices), invalid_input,
+        Message(vertices.string() + ": the file ends after 1 of 3000000000 vertices that its header announces"));
     std::vector<double> xyz(9);
     CHECK_THROWS_MATCHES(read_mesh_points(vertices, xyz), invalid_input,
                          Message(vertices.string() + ": has 3000000000 vertices instead of 3"));
     const fs::path faces = file("3e9-faces.off", "OFF\n3 3000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-    CHECK_THROWS_MATCHES(read_off(faces), invalid_input,
-                         Message(faces.string() + ": the file ends after 1 of 3000000000 faces that its header announces"));
+    CHECK_THROWS_MATCHES(
+        read_off(faces), invalid_input,
+        Message(faces.string() + ": the file ends after 1 of 3000000000 faces that its header announces"));
   }
   SECTION("the shortest lines still fit the counts") {
     const Triangle_soup soup = read_off(file("shortest.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2"));
@@ -244,7 +249,8 @@ TEST_CASE("read_ply: each error names the file, and the face or vertex", "[io][p
     // (test/fuzz/regressions/ply/segv-property-before-element.ply): deformseg checks the header.
     const std::string found = "ply\nformat ascii 1.0\nele\xdament vertex 3\nproperty float x\n";
     const fs::path mangled = file("mangled.ply", found);
-    CHECK_THROWS_MATCHES(read_ply(mangled), invalid_input, Message(at(mangled, 3, "unknown PLY header line \"ele\xdament\"")));
+    CHECK_THROWS_MATCHES(read_ply(mangled), invalid_input,
+                         Message(at(mangled, 3, "unknown PLY header line \"ele\xdament\"")));
     // And this one, the first version of deformseg's reader reading past the end of the buffer
     // (seen under AddressSanitizer; test/fuzz/regressions/ply/heap-overflow-no-newline.ply): a
     // file without a newline, whose header lines ran into the bytes after its end.
@@ -256,19 +262,24 @@ TEST_CASE("read_ply: each error names the file, and the face or vertex", "[io][p
     CHECK_THROWS_MATCHES(read_ply(before), invalid_input, Message(at(before, 3, "a property before any element")));
     const fs::path type = file("type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty floot x\n");
     CHECK_THROWS_MATCHES(read_ply(type), invalid_input, Message(at(type, 4, "unknown PLY type \"floot\"")));
-    const fs::path list = file("list.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\n");
+    const fs::path list =
+        file("list.ply", "ply\nformat ascii 1.0\nelement face 1\nproperty list float int vertex_indices\n");
     CHECK_THROWS_MATCHES(read_ply(list), invalid_input,
                          Message(at(list, 4, "a list's count must be of an integer type, not \"float\"")));
     const fs::path format = file("format.ply", "ply\nformat binary 1.0\n");
     CHECK_THROWS_MATCHES(read_ply(format), invalid_input, Message(at(format, 2, "unknown PLY format \"binary\"")));
     const fs::path no_end = file("no-end.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n");
-    CHECK_THROWS_MATCHES(read_ply(no_end), invalid_input, Message(no_end.string() + ": the PLY header has no end_header line"));
+    CHECK_THROWS_MATCHES(read_ply(no_end), invalid_input,
+                         Message(no_end.string() + ": the PLY header has no end_header line"));
     const fs::path no_z = file("no-z.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                                "property float y\nend_header\n0 0\n");
-    CHECK_THROWS_MATCHES(read_ply(no_z), invalid_input, Message(no_z.string() + ": the vertex element has no scalar property z"));
-    const fs::path no_list = file("no-list.ply", ascii_ply_header + "element face 1\nproperty int vertex_indices\nend_header\n");
-    CHECK_THROWS_MATCHES(read_ply(no_list), invalid_input,
-                         Message(no_list.string() + ": the face element has no vertex_indices list of an integer type"));
+    CHECK_THROWS_MATCHES(read_ply(no_z), invalid_input,
+                         Message(no_z.string() + ": the vertex element has no scalar property z"));
+    const fs::path no_list =
+        file("no-list.ply", ascii_ply_header + "element face 1\nproperty int vertex_indices\nend_header\n");
+    CHECK_THROWS_MATCHES(
+        read_ply(no_list), invalid_input,
+        Message(no_list.string() + ": the face element has no vertex_indices list of an integer type"));
   }
   SECTION("counts more than the file holds, refused before anything is allocated for them") {
     const fs::path vertices = file("huge-count.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n"
@@ -278,8 +289,10 @@ TEST_CASE("read_ply: each error names the file, and the face or vertex", "[io][p
                                                      "more, more than the 12 bytes of the body hold"));
     // A list's count is read from the body: the items it announces are read one by one, so a
     // count of two billion ends at the end of the file rather than in an allocation.
-    const fs::path list = file("huge-list.ply", ascii_ply_header + "element face 1\nproperty list int int vertex_indices\n"
-                               "end_header\n0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n2000000000 0 1 2\n");
+    const fs::path list =
+        file("huge-list.ply", ascii_ply_header +
+                                  "element face 1\nproperty list int int vertex_indices\n"
+                                  "end_header\n0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n2000000000 0 1 2\n");
     CHECK_THROWS_MATCHES(read_ply(list), invalid_input,
                          Message(list.string() + ": the file ends inside face 0 of the 1 the header announces"));
     const fs::path header_only = file("header-only.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
@@ -292,19 +305,25 @@ TEST_CASE("read_ply: each error names the file, and the face or vertex", "[io][p
                          Message(empty_element.string() + ": element nothing has no property but 1000000 items"));
   }
   SECTION("a malformed or out-of-range value, with its line") {
-    const std::string header = ascii_ply_header + "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
-    const fs::path colour = file("colour.ply", header + "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 256\n0 0 1 1 1 1\n3 0 1 2\n");
-    CHECK_THROWS_MATCHES(read_ply(colour), invalid_input, Message(at(colour, 15, "vertex 2: \"256\" is out of the range of uchar")));
-    const fs::path number = file("number.ply", header + "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 x 1 1 1\n0 0 1 1 1 1\n3 0 1 2\n");
+    const std::string header =
+        ascii_ply_header + "element face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    const fs::path colour =
+        file("colour.ply", header + "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 256\n0 0 1 1 1 1\n3 0 1 2\n");
+    CHECK_THROWS_MATCHES(read_ply(colour), invalid_input,
+                         Message(at(colour, 15, "vertex 2: \"256\" is out of the range of uchar")));
+    const fs::path number =
+        file("number.ply", header + "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 x 1 1 1\n0 0 1 1 1 1\n3 0 1 2\n");
     CHECK_THROWS_MATCHES(read_ply(number), invalid_input, Message(at(number, 15, "malformed number \"x\"")));
     const fs::path count = file("count.ply", header + "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n-3 0 1 2\n");
-    CHECK_THROWS_MATCHES(read_ply(count), invalid_input, Message(at(count, 17, "face 0: \"-3\" is out of the range of uchar")));
+    CHECK_THROWS_MATCHES(read_ply(count), invalid_input,
+                         Message(at(count, 17, "face 0: \"-3\" is out of the range of uchar")));
   }
   SECTION("an index out of range") {
-    const fs::path beyond = file("beyond.ply", ascii_ply_header +
-                                                   "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
-                                                   "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n"
-                                                   "3 0 1 2\n3 0 1 7\n");
+    const fs::path beyond =
+        file("beyond.ply", ascii_ply_header +
+                               "element face 2\nproperty list uchar int vertex_indices\nend_header\n"
+                               "0 0 0 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1\n0 0 1 1 1 1\n"
+                               "3 0 1 2\n3 0 1 7\n");
     CHECK_THROWS_MATCHES(read_ply(beyond), invalid_input,
                          Message(beyond.string() + ": face 1 has vertex index 7 out of range [0, 4)"));
   }
@@ -312,12 +331,14 @@ TEST_CASE("read_ply: each error names the file, and the face or vertex", "[io][p
     std::vector<double> points = tetrahedron_points;
     points[4] = std::numeric_limits<double>::quiet_NaN();
     const fs::path nan = file("nan.ply", binary_ply(points));
-    CHECK_THROWS_MATCHES(read_ply(nan), invalid_input, Message(nan.string() + ": vertex 1 has a non-finite coordinate"));
+    CHECK_THROWS_MATCHES(read_ply(nan), invalid_input,
+                         Message(nan.string() + ": vertex 1 has a non-finite coordinate"));
   }
   SECTION("an empty mesh") {
-    const fs::path empty = file("empty.ply",
-                                "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
-                                "property float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n");
+    const fs::path empty =
+        file("empty.ply",
+             "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n"
+             "property float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n");
     CHECK_THROWS_MATCHES(read_ply(empty), invalid_input, Message(empty.string() + ": no vertex: the mesh is empty"));
   }
 }
@@ -333,11 +354,13 @@ TEST_CASE("read_mesh: the reader chosen by the extension, in any case", "[io][re
     CHECK(soup.triangles == tetrahedron_triangles);
   }
   const fs::path stl = file("tetra.stl", "solid tetra\n");
-  CHECK_THROWS_MATCHES(read_mesh(stl), invalid_input,
-                       Message(stl.string() + ": unknown mesh format \".stl\": deformseg reads .obj, .off and .ply files"));
+  CHECK_THROWS_MATCHES(
+      read_mesh(stl), invalid_input,
+      Message(stl.string() + ": unknown mesh format \".stl\": deformseg reads .obj, .off and .ply files"));
   const fs::path none = file("tetra", tetrahedron_off);
-  CHECK_THROWS_MATCHES(read_mesh(none), invalid_input,
-                       Message(none.string() + ": unknown mesh format \"\": deformseg reads .obj, .off and .ply files"));
+  CHECK_THROWS_MATCHES(
+      read_mesh(none), invalid_input,
+      Message(none.string() + ": unknown mesh format \"\": deformseg reads .obj, .off and .ply files"));
 }
 
 TEST_CASE("read_mesh_points: positions only, from OFF and PLY", "[io][read_mesh]") {

@@ -151,7 +151,8 @@ TEST_CASE("point caches of a double animation hold its coordinates rounded to fl
       io::write_pc2(animation, cache);
     else
       io::write_mdd(animation, cache);
-    const auto read = pc2 ? io::read_pc2(cache, tetrahedron<mesh::Surface_mesh>()) : io::read_mdd(cache, tetrahedron<mesh::Surface_mesh>());
+    const auto read = pc2 ? io::read_pc2(cache, tetrahedron<mesh::Surface_mesh>())
+                          : io::read_mdd(cache, tetrahedron<mesh::Surface_mesh>());
     REQUIRE(read.all_positions().size() == 24);
     for (std::size_t i = 0; i < 24; ++i)
       CHECK(read.all_positions()[i] == double(static_cast<float>(animation.all_positions()[i])));
@@ -236,18 +237,24 @@ TEST_CASE("read_pc2 rejects a bad file with a message naming the problem", "[io]
     Bytes bytes(std::endian::little);
     bytes.text("POINTCACHE3").zeros(21 + 48);
     const fs::path path = bytes.save("signature.pc2");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "not a PC2 point cache: it does not start with the signature \"POINTCACHE2\"")));
-    CHECK_THROWS_MATCHES(io::read_point_cache_info(path), invalid_input, Message(in_file(path, "not a PC2 point cache: it does not start with the signature \"POINTCACHE2\"")));
+    CHECK_THROWS_MATCHES(
+        read(path), invalid_input,
+        Message(in_file(path, "not a PC2 point cache: it does not start with the signature \"POINTCACHE2\"")));
+    CHECK_THROWS_MATCHES(
+        io::read_point_cache_info(path), invalid_input,
+        Message(in_file(path, "not a PC2 point cache: it does not start with the signature \"POINTCACHE2\"")));
   }
   SECTION("a wrong version") {
     const fs::path path = pc2_header(4, 1, 2).floats(12, 0).save("version.pc2");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "PC2 file version 2; deformseg reads version 1")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path, "PC2 file version 2; deformseg reads version 1")));
   }
   SECTION("a header cut short") {
     Bytes bytes(std::endian::little);
     bytes.text(std::string_view("POINTCACHE2\0", 12)).i32(1);
     const fs::path path = bytes.save("short_header.pc2");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "truncated header: the file has 16 bytes, a PC2 header 32")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path, "truncated header: the file has 16 bytes, a PC2 header 32")));
   }
   SECTION("another vertex count than the topology's") {
     const fs::path path = pc2_header(5, 1).floats(15, 0).save("five_points.pc2");
@@ -255,23 +262,31 @@ TEST_CASE("read_pc2 rejects a bad file with a message naming the problem", "[io]
   }
   SECTION("no frame") {
     const fs::path path = pc2_header(4, 0).save("empty.pc2");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "the header gives 0 frames: the cache is empty")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path, "the header gives 0 frames: the cache is empty")));
   }
   SECTION("a truncated file names the incomplete frame and the bytes missing") {
     const fs::path path = pc2_header(4, 3).floats(12 + 5, 0).save("truncated.pc2");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_frame(path, 1, "truncated: the frame has 20 of its 48 bytes; 76 bytes are "
-                                                    "missing for the 3 frames the header gives")));
-    CHECK_THROWS_MATCHES(io::read_point_cache_info(path), invalid_input, Message(in_frame(path, 1, "truncated: the frame has 20 of its 48 bytes; "
-                                                                         "76 bytes are missing for the 3 frames the header gives")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_frame(path, 1,
+                                          "truncated: the frame has 20 of its 48 bytes; 76 bytes are "
+                                          "missing for the 3 frames the header gives")));
+    CHECK_THROWS_MATCHES(io::read_point_cache_info(path), invalid_input,
+                         Message(in_frame(path, 1,
+                                          "truncated: the frame has 20 of its 48 bytes; "
+                                          "76 bytes are missing for the 3 frames the header gives")));
   }
   SECTION("trailing bytes after the last frame") {
     const fs::path path = pc2_header(4, 2).floats(24, 0).zeros(5).save("trailing.pc2");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "5 trailing bytes after the last of the 2 frames the header gives")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path, "5 trailing bytes after the last of the 2 frames the header gives")));
   }
   SECTION("exactly one frame more than the header gives") {
     const fs::path path = pc2_header(4, 1).floats(24, 0).save("one_more.pc2");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "48 trailing bytes after the last of the 1 frames the header gives "
-                                                "(exactly one frame more)")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path,
+                                         "48 trailing bytes after the last of the 1 frames the header gives "
+                                         "(exactly one frame more)")));
   }
   SECTION("a NaN coordinate names its frame and vertex") {
     Bytes bytes = pc2_header(4, 3);
@@ -280,33 +295,51 @@ TEST_CASE("read_pc2 rejects a bad file with a message naming the problem", "[io]
     CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_frame(path, 2, "vertex 1 has a non-finite coordinate")));
   }
   SECTION("an infinite coordinate names its frame and vertex") {
-    const fs::path path = pc2_header(4, 1).floats(9, 0).f32(-std::numeric_limits<float>::infinity()).floats(2, 0).save("inf.pc2");
+    const fs::path path =
+        pc2_header(4, 1).floats(9, 0).f32(-std::numeric_limits<float>::infinity()).floats(2, 0).save("inf.pc2");
     CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_frame(path, 0, "vertex 3 has a non-finite coordinate")));
   }
   SECTION("negative counts") {
     const fs::path points = pc2_header(-4, 1).save("negative_points.pc2");
-    CHECK_THROWS_MATCHES(read(points), invalid_input, Message(in_file(points, "the header gives a negative number of vertices: -4")));
+    CHECK_THROWS_MATCHES(read(points), invalid_input,
+                         Message(in_file(points, "the header gives a negative number of vertices: -4")));
     const fs::path samples = pc2_header(4, -1).save("negative_samples.pc2");
-    CHECK_THROWS_MATCHES(read(samples), invalid_input, Message(in_file(samples, "the header gives a negative number of frames: -1")));
+    CHECK_THROWS_MATCHES(read(samples), invalid_input,
+                         Message(in_file(samples, "the header gives a negative number of frames: -1")));
   }
   SECTION("absurd counts are reported, not allocated") {
     constexpr std::int32_t most = std::numeric_limits<std::int32_t>::max();
     const fs::path frames = pc2_header(4, most).floats(12, 0).save("absurd_frames.pc2");
-    CHECK_THROWS_MATCHES(read(frames), invalid_input, Message(in_frame(frames, 1, "truncated: the frame has 0 of its 48 bytes; 103079215008 "
-                                                        "bytes are missing for the 2147483647 frames the header gives")));
+    CHECK_THROWS_MATCHES(read(frames), invalid_input,
+                         Message(in_frame(frames, 1,
+                                          "truncated: the frame has 0 of its 48 bytes; 103079215008 "
+                                          "bytes are missing for the 2147483647 frames the header gives")));
     const fs::path points = pc2_header(most, 1).floats(12, 0).save("absurd_points.pc2");
-    CHECK_THROWS_MATCHES(read(points), invalid_input, Message(in_file(points, "the cache has 2147483647 vertices, the topology 4")));
-    CHECK_THROWS_MATCHES(io::read_point_cache_info(points), invalid_input, Message(in_frame(points, 0, "truncated: the frame has 48 of its 25769803764 bytes; 25769803716 bytes "
+    CHECK_THROWS_MATCHES(read(points), invalid_input,
+                         Message(in_file(points, "the cache has 2147483647 vertices, the topology 4")));
+    CHECK_THROWS_MATCHES(io::read_point_cache_info(points), invalid_input,
+                         Message(in_frame(points, 0,
+                                          "truncated: the frame has 48 of its 25769803764 bytes; 25769803716 bytes "
                                           "are missing for the 1 frames the header gives")));
     const fs::path both = pc2_header(most, most).save("absurd_both.pc2");
-    CHECK_THROWS_MATCHES(io::read_point_cache_info(both), invalid_input, Message(in_file(both, "the header gives 2147483647 frames of 2147483647 vertices: more bytes than any "
-                                    "file holds")));
+    CHECK_THROWS_MATCHES(
+        io::read_point_cache_info(both), invalid_input,
+        Message(in_file(both,
+                        "the header gives 2147483647 frames of 2147483647 vertices: more bytes than any "
+                        "file holds")));
   }
   SECTION("a non-finite sample rate") {
     Bytes bytes(std::endian::little);
-    bytes.text(std::string_view("POINTCACHE2\0", 12)).i32(1).i32(4).f32(0).f32(std::numeric_limits<float>::infinity()).i32(1).floats(12, 0);
+    bytes.text(std::string_view("POINTCACHE2\0", 12))
+        .i32(1)
+        .i32(4)
+        .f32(0)
+        .f32(std::numeric_limits<float>::infinity())
+        .i32(1)
+        .floats(12, 0);
     const fs::path path = bytes.save("rate.pc2");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "the header's sample rate is not a finite positive number: inf")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path, "the header's sample rate is not a finite positive number: inf")));
   }
 }
 
@@ -316,23 +349,31 @@ TEST_CASE("read_mdd rejects a bad file with a message naming the problem", "[io]
   SECTION("a missing file") {
     const fs::path path = test::scratch_dir() / "io_point_cache" / "missing.mdd";
     CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "cannot open: no such file")));
-    CHECK_THROWS_MATCHES(io::read_point_cache_info(path), invalid_input, Message(in_file(path, "cannot open: no such file")));
+    CHECK_THROWS_MATCHES(io::read_point_cache_info(path), invalid_input,
+                         Message(in_file(path, "cannot open: no such file")));
   }
   SECTION("a header cut short") {
     const fs::path path = Bytes(std::endian::big).i32(3).save("short_header.mdd");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "truncated header: the file has 4 bytes, an MDD header at least 8")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path, "truncated header: the file has 4 bytes, an MDD header at least 8")));
   }
   SECTION("frame times the file does not hold") {
     const fs::path path = Bytes(std::endian::big).i32(1000).i32(4).zeros(12).save("times.mdd");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "truncated header: its 1000 frame times need 4008 bytes, the file has 20")));
-    CHECK_THROWS_MATCHES(io::read_point_cache_info(path), invalid_input, Message(in_file(path, "truncated header: its 1000 frame times need 4008 bytes, the file has 20")));
+    CHECK_THROWS_MATCHES(
+        read(path), invalid_input,
+        Message(in_file(path, "truncated header: its 1000 frame times need 4008 bytes, the file has 20")));
+    CHECK_THROWS_MATCHES(
+        io::read_point_cache_info(path), invalid_input,
+        Message(in_file(path, "truncated header: its 1000 frame times need 4008 bytes, the file has 20")));
   }
   SECTION("a little-endian file: absurd counts, reported") {
     Bytes bytes(std::endian::little);
     bytes.i32(2).i32(4).f32(0).f32(0.1f).floats(24, 0);
     const fs::path path = bytes.save("little_endian.mdd");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "truncated header: its 33554432 frame times need 134217736 bytes, "
-                                                "the file has 112")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path,
+                                         "truncated header: its 33554432 frame times need 134217736 bytes, "
+                                         "the file has 112")));
   }
   SECTION("another vertex count than the topology's") {
     const fs::path path = mdd_header(1, 3).floats(9, 0).save("three_points.mdd");
@@ -340,20 +381,25 @@ TEST_CASE("read_mdd rejects a bad file with a message naming the problem", "[io]
   }
   SECTION("no frame") {
     const fs::path path = mdd_header(0, 4).save("empty.mdd");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "the header gives 0 frames: the cache is empty")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path, "the header gives 0 frames: the cache is empty")));
   }
   SECTION("a truncated file") {
     const fs::path path = mdd_header(2, 4).floats(12 + 11, 0).save("truncated.mdd");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_frame(path, 1, "truncated: the frame has 44 of its 48 bytes; 4 bytes are "
-                                                    "missing for the 2 frames the header gives")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_frame(path, 1,
+                                          "truncated: the frame has 44 of its 48 bytes; 4 bytes are "
+                                          "missing for the 2 frames the header gives")));
   }
   SECTION("trailing bytes") {
     const fs::path path = mdd_header(1, 4).floats(12, 0).zeros(1).save("trailing.mdd");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "1 trailing bytes after the last of the 1 frames the header gives")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path, "1 trailing bytes after the last of the 1 frames the header gives")));
   }
   SECTION("a NaN coordinate and a NaN time") {
     const fs::path coordinate = mdd_header(2, 4).floats(12 + 4, 1).f32(std::nanf("")).floats(7, 1).save("nan.mdd");
-    CHECK_THROWS_MATCHES(read(coordinate), invalid_input, Message(in_frame(coordinate, 1, "vertex 1 has a non-finite coordinate")));
+    CHECK_THROWS_MATCHES(read(coordinate), invalid_input,
+                         Message(in_frame(coordinate, 1, "vertex 1 has a non-finite coordinate")));
     Bytes bytes(std::endian::big);
     bytes.i32(2).i32(4).f32(0).f32(std::nanf("")).floats(24, 0);
     const fs::path time = bytes.save("nan_time.mdd");
@@ -361,13 +407,15 @@ TEST_CASE("read_mdd rejects a bad file with a message naming the problem", "[io]
   }
   SECTION("negative counts") {
     const fs::path path = Bytes(std::endian::big).i32(-2).i32(4).save("negative.mdd");
-    CHECK_THROWS_MATCHES(read(path), invalid_input, Message(in_file(path, "the header gives a negative number of frames: -2")));
+    CHECK_THROWS_MATCHES(read(path), invalid_input,
+                         Message(in_file(path, "the header gives a negative number of frames: -2")));
   }
 }
 
 TEST_CASE("read_point_cache_info needs a .pc2 or .mdd extension", "[io][pc2][mdd][errors]") {
   const fs::path path = pc2_header(4, 1).floats(12, 0).save("cache.bin");
-  CHECK_THROWS_MATCHES(io::read_point_cache_info(path), invalid_input, Message(in_file(path, "not a point cache: the extension is neither .pc2 nor .mdd")));
+  CHECK_THROWS_MATCHES(io::read_point_cache_info(path), invalid_input,
+                       Message(in_file(path, "not a point cache: the extension is neither .pc2 nor .mdd")));
   CHECK(io::read_point_cache_info(pc2_header(4, 1).floats(12, 0).save("upper.PC2")).num_frames == 1);
 }
 
@@ -377,25 +425,35 @@ TEST_CASE("write_pc2 and write_mdd reject what a point cache cannot hold", "[io]
 
   SECTION("an animation without frames") {
     const mesh::Deforming_mesh<mesh::Surface_mesh> empty(tetrahedron<mesh::Surface_mesh>());
-    CHECK_THROWS_MATCHES(io::write_pc2(empty, pc2), invalid_input, Message(in_file(pc2, "the animation has no frame: a point cache needs at least one")));
-    CHECK_THROWS_MATCHES(io::write_mdd(empty, mdd), invalid_input, Message(in_file(mdd, "the animation has no frame: a point cache needs at least one")));
+    CHECK_THROWS_MATCHES(io::write_pc2(empty, pc2), invalid_input,
+                         Message(in_file(pc2, "the animation has no frame: a point cache needs at least one")));
+    CHECK_THROWS_MATCHES(io::write_mdd(empty, mdd), invalid_input,
+                         Message(in_file(mdd, "the animation has no frame: a point cache needs at least one")));
   }
   SECTION("a coordinate beyond the range of float") {
     auto xyz = moving_positions<double>(2);
     xyz[12 + 3 * 2 + 1] = -1e300;
     const mesh::Deforming_mesh<mesh::Surface_mesh> huge(tetrahedron<mesh::Surface_mesh>(), xyz);
-    CHECK_THROWS_MATCHES(io::write_pc2(huge, pc2), invalid_input, Message(in_frame(pc2, 1, "vertex 2 has the coordinate -1e+300, beyond the range of a float32")));
-    CHECK_THROWS_MATCHES(io::write_mdd(huge, mdd), invalid_input, Message(in_frame(mdd, 1, "vertex 2 has the coordinate -1e+300, beyond the range of a float32")));
+    CHECK_THROWS_MATCHES(
+        io::write_pc2(huge, pc2), invalid_input,
+        Message(in_frame(pc2, 1, "vertex 2 has the coordinate -1e+300, beyond the range of a float32")));
+    CHECK_THROWS_MATCHES(
+        io::write_mdd(huge, mdd), invalid_input,
+        Message(in_frame(mdd, 1, "vertex 2 has the coordinate -1e+300, beyond the range of a float32")));
     CHECK_FALSE(fs::exists(pc2));
   }
   SECTION("timing that is not finite or not positive") {
     const auto animation = moving_tetrahedron<mesh::Surface_mesh, double>(1);
-    CHECK_THROWS_MATCHES(io::write_pc2(animation, pc2, {.sample_rate = 0}), invalid_input, Message(in_file(pc2, "sample_rate must be a positive finite float32, not 0")));
-    CHECK_THROWS_MATCHES(io::write_pc2(animation, pc2, {.start_frame = std::numeric_limits<double>::infinity()}), invalid_input, Message(in_file(pc2, "start_frame must be a finite float32, not inf")));
-    CHECK_THROWS_MATCHES(io::write_mdd(animation, mdd, -25.0), invalid_input, Message(in_file(mdd, "frames_per_second must be finite and positive, not -25")));
+    CHECK_THROWS_MATCHES(io::write_pc2(animation, pc2, {.sample_rate = 0}), invalid_input,
+                         Message(in_file(pc2, "sample_rate must be a positive finite float32, not 0")));
+    CHECK_THROWS_MATCHES(io::write_pc2(animation, pc2, {.start_frame = std::numeric_limits<double>::infinity()}),
+                         invalid_input, Message(in_file(pc2, "start_frame must be a finite float32, not inf")));
+    CHECK_THROWS_MATCHES(io::write_mdd(animation, mdd, -25.0), invalid_input,
+                         Message(in_file(mdd, "frames_per_second must be finite and positive, not -25")));
   }
   SECTION("a folder that does not exist") {
     const fs::path nowhere = test::scratch_dir() / "io_point_cache" / "no_such_folder" / "a.pc2";
-    CHECK_THROWS_MATCHES(io::write_pc2(moving_tetrahedron<mesh::Surface_mesh, double>(1), nowhere), invalid_input, Message(in_file(nowhere, "cannot write: " + std::generic_category().message(ENOENT))));
+    CHECK_THROWS_MATCHES(io::write_pc2(moving_tetrahedron<mesh::Surface_mesh, double>(1), nowhere), invalid_input,
+                         Message(in_file(nowhere, "cannot write: " + std::generic_category().message(ENOENT))));
   }
 }

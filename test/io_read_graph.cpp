@@ -83,7 +83,8 @@ TEST_CASE("read_labelled_graph: node order, empty labels, GraphML defaults, stri
 TEST_CASE("read_labelled_graph: errors name the file and the problem", "[io][graph]") {
   using Catch::Contains;
   CHECK_THROWS_WITH(read_labelled_graph("no-such-graph.dot"), Contains("no-such-graph.dot") && Contains("cannot open"));
-  CHECK_THROWS_WITH(read_labelled_graph(write_file("graphs/g.txt", "graph {}")), Contains("unknown graph format '.txt'"));
+  CHECK_THROWS_WITH(read_labelled_graph(write_file("graphs/g.txt", "graph {}")),
+                    Contains("unknown graph format '.txt'"));
   CHECK_THROWS_WITH(from_dot("graph { a [label=x]; b; a -- b }"), Contains("test.dot: node 'b' has no 'label'"));
   CHECK_THROWS_WITH(from_dot("digraph { a [label=x]; b [label=y]; a -> b }"), Contains("test.dot: a directed graph"));
   CHECK_THROWS_WITH(from_dot("graph { a [label=x]; a -- }"), Contains("test.dot: cannot parse the graph"));
@@ -91,16 +92,20 @@ TEST_CASE("read_labelled_graph: errors name the file and the problem", "[io][gra
   CHECK_THROWS_WITH(from_dot("graph { a [label=x]; b [label=x]; a -- b; b -- a }"),
                     Contains("two edges between node 'a' and node 'b'"));
   const auto unlabelled = write_file("graphs/unlabelled.graphml",
-                                     graphml_head + "<graph edgedefault=\"undirected\"><node id=\"p\"><data key=\"k\">x</data>"
-                                                    "</node><node id=\"q\"/></graph></graphml>");
-  CHECK_THROWS_WITH(read_labelled_graph(unlabelled), Contains("unlabelled.graphml: node 1 (in file order, from 0) has no 'label'"));
+                                     graphml_head +
+                                         "<graph edgedefault=\"undirected\"><node id=\"p\"><data key=\"k\">x</data>"
+                                         "</node><node id=\"q\"/></graph></graphml>");
+  CHECK_THROWS_WITH(read_labelled_graph(unlabelled),
+                    Contains("unlabelled.graphml: node 1 (in file order, from 0) has no 'label'"));
   const auto directed = write_file("graphs/directed.graphml",
-                                   graphml_head + "<graph edgedefault=\"directed\"><node id=\"p\"><data key=\"k\">x</data>"
-                                                  "</node><edge source=\"p\" target=\"q\"/></graph></graphml>");
+                                   graphml_head +
+                                       "<graph edgedefault=\"directed\"><node id=\"p\"><data key=\"k\">x</data>"
+                                       "</node><edge source=\"p\" target=\"q\"/></graph></graphml>");
   CHECK_THROWS_WITH(read_labelled_graph(directed), Contains("directed.graphml: a directed graph"));
   const auto broken = write_file("graphs/broken.graphml", graphml_head + "<graph edgedefault=\"undirected\">");
   CHECK_THROWS_WITH(read_labelled_graph(broken), Contains("broken.graphml: cannot parse"));
-  std::istringstream numeric("<graphml><key id=\"k\" for=\"node\" attr.name=\"label\" attr.type=\"int\"/>"
-                             "<graph edgedefault=\"undirected\"><node id=\"a\"><data key=\"k\">3</data></node></graph></graphml>");
+  std::istringstream numeric(
+      "<graphml><key id=\"k\" for=\"node\" attr.name=\"label\" attr.type=\"int\"/>"
+      "<graph edgedefault=\"undirected\"><node id=\"a\"><data key=\"k\">3</data></node></graph></graphml>");
   CHECK_THROWS_WITH(read_labelled_graph(numeric, Graph_format::graphml), Contains("attr.type=\"string\""));
 }

@@ -67,7 +67,9 @@ mesh::Deforming_mesh<Graph, Coordinate> drifting_tetrahedron(std::size_t frames)
 }
 
 // A path for a file a test writes, in a folder of its own, emptied first.
-fs::path output(const std::string& test, const std::string& name) { return test::fresh_dir("io_writers/" + test) / name; }
+fs::path output(const std::string& test, const std::string& name) {
+  return test::fresh_dir("io_writers/" + test) / name;
+}
 
 using deformseg::test::file_text;
 
@@ -100,7 +102,8 @@ void check_points(const std::vector<Point>& points, const Animation& animation, 
 
 // The face lines the animation's triangle table gives, with a suffix each (colours).
 template <class Animation>
-std::string face_lines(const Animation& animation, const char* prefix, int base, const std::vector<std::string>& suffixes) {
+std::string face_lines(const Animation& animation, const char* prefix, int base,
+                       const std::vector<std::string>& suffixes) {
   std::string lines;
   for (std::size_t j = 0; j < animation.num_faces(); ++j) {
     lines += prefix;
@@ -219,8 +222,8 @@ TEST_CASE("write_ply: text PLY, with face colours, exactly", "[io][writers][ply]
   CHECK(file_text(file) == expected + face_lines(animation, "3", 0, {" 255 0 0", " 0 128 0", " 0 0 255", " 12 34 56"}));
 }
 
-TEMPLATE_TEST_CASE("write_ply: binary PLY with face colours, read back by CGAL", "[io][writers][ply]", mesh::Surface_mesh,
-                   Polyhedron) {
+TEMPLATE_TEST_CASE("write_ply: binary PLY with face colours, read back by CGAL", "[io][writers][ply]",
+                   mesh::Surface_mesh, Polyhedron) {
   const auto animation = drifting_tetrahedron<TestType>(3);
   const fs::path file = output("ply_binary_" + graph_name<TestType>(), "frame2.ply");
   io::write_ply(animation, 2, file, four_colors);
@@ -253,7 +256,8 @@ TEMPLATE_TEST_CASE("write_ply: binary PLY with face colours, read back by CGAL",
   check_points(points, animation, 2);
   CHECK(canonical(polygons) == canonical(tetra_polygons()));
   REQUIRE(colors.size() == 4);
-  for (std::size_t j = 0; j < 4; ++j) CHECK(colors[j] == CGAL::IO::Color(four_colors[j].r, four_colors[j].g, four_colors[j].b));
+  for (std::size_t j = 0; j < 4; ++j)
+    CHECK(colors[j] == CGAL::IO::Color(four_colors[j].r, four_colors[j].g, four_colors[j].b));
 }
 
 TEST_CASE("write_ply: a float animation, without colours, as float properties", "[io][writers][ply]") {
@@ -261,7 +265,8 @@ TEST_CASE("write_ply: a float animation, without colours, as float properties", 
   const fs::path file = output("ply_float", "frame1.ply");
   io::write_ply(animation, 1, file);
   const std::string bytes = file_text(file);
-  const std::string header_end = "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string header_end =
+      "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
   REQUIRE(bytes.find(header_end) != std::string::npos);
   const std::size_t body = bytes.find(header_end) + header_end.size();
   CHECK(bytes.size() == body + 4 * 3 * 4 + 4 * (1 + 3 * 4));
@@ -352,7 +357,8 @@ TEST_CASE("write_sequence: per-frame face colours through a callback", "[io][wri
   const auto animation = drifting_tetrahedron<Polyhedron>(3);
   const auto colors_of = [](std::size_t t) {
     std::vector<color::Rgb> colors;
-    for (std::uint8_t j = 0; j < 4; ++j) colors.push_back({std::uint8_t(10 * t), std::uint8_t(50 * j), std::uint8_t(255 - j)});
+    for (std::uint8_t j = 0; j < 4; ++j)
+      colors.push_back({std::uint8_t(10 * t), std::uint8_t(50 * j), std::uint8_t(255 - j)});
     return colors;
   };
   const fs::path folder = test::fresh_dir("io_writers/colors");

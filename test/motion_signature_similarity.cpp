@@ -104,7 +104,8 @@ TEST_CASE("motion_signatures: a uniform translation has the exact rate everywher
       CHECK(s(t, 32 + c) == Approx(rising(0.6)).epsilon(1e-12));
     }
   // Without an up direction, the speeds alone.
-  const Eigen::MatrixXd speeds = signatures::motion_signatures(std::span<const double>(positions), weights, {.up = std::nullopt});
+  const Eigen::MatrixXd speeds =
+      signatures::motion_signatures(std::span<const double>(positions), weights, {.up = std::nullopt});
   REQUIRE(speeds.cols() == 32);
   CHECK(speeds == s.leftCols(32));
   // Frame 0 at lag 16: from frame 0 to frame 16, over 32 frames: half the rate; frame 39 at lag 4:
@@ -113,9 +114,12 @@ TEST_CASE("motion_signatures: a uniform translation has the exact rate everywher
   CHECK(s(39, 8) == Approx(std::log(0.3)).epsilon(1e-12));
   CHECK(s(1, 0) == Approx(std::log(0.6)).epsilon(1e-12));
   // Lags of whole frames read the frames themselves; spans are cut at the ends.
-  CHECK(deformseg::signatures::internal::frame_at(20.0 / 30 - 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(16, 0.0));
-  CHECK(deformseg::signatures::internal::frame_at(1.0 / 30 - 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(0, 0.0));
-  CHECK(deformseg::signatures::internal::frame_at(38.0 / 30 + 4.0 / 30, 30, 40) == std::pair<std::size_t, double>(39, 0.0));
+  CHECK(deformseg::signatures::internal::frame_at(20.0 / 30 - 4.0 / 30, 30, 40) ==
+        std::pair<std::size_t, double>(16, 0.0));
+  CHECK(deformseg::signatures::internal::frame_at(1.0 / 30 - 4.0 / 30, 30, 40) ==
+        std::pair<std::size_t, double>(0, 0.0));
+  CHECK(deformseg::signatures::internal::frame_at(38.0 / 30 + 4.0 / 30, 30, 40) ==
+        std::pair<std::size_t, double>(39, 0.0));
   CHECK(deformseg::signatures::internal::frame_at(0.25, 10, 40) == std::pair<std::size_t, double>(2, 0.5));
   // Standing still gives the floor.
   std::vector<double> still(positions.begin(), positions.begin() + 12);
@@ -152,7 +156,8 @@ TEST_CASE("motion_signatures: the up direction turns with the animation", "[moti
   const Eigen::AngleAxisd turn(0.7, Eigen::Vector3d(1, 2, 3).normalized());
   const auto a = tube(bend_hold_unbend);
   const auto b = tube(bend_hold_unbend, {}, {.scale = 2.5, .rotation = Eigen::Quaterniond(turn)});
-  const Eigen::MatrixXd turned = signatures::motion_signatures(b, {.up = turn * Eigen::Vector3d(0, 3, 0)});  // any length
+  const Eigen::MatrixXd turned =
+      signatures::motion_signatures(b, {.up = turn * Eigen::Vector3d(0, 3, 0)});  // any length
   CHECK((signatures::motion_signatures(a) - turned).cwiseAbs().maxCoeff() < 1e-9);
   // Another up sees other rises and falls.
   CHECK((signatures::motion_signatures(a) - signatures::motion_signatures(b)).cwiseAbs().maxCoeff() > 0.1);
@@ -263,7 +268,8 @@ TEST_CASE("motion_signature_similarity: bad input is refused with a reason", "[m
   CHECK_THROWS_WITH(signatures::motion_signatures(a, {.vertical_weight = -1}), Catch::Contains("vertical weight"));
   CHECK_NOTHROW(signatures::motion_signatures(a, {.up = std::nullopt, .vertical_unit = 0}));  // unused without up
   const std::vector<double> points(24, 1.0), weights(4, 0.25);
-  CHECK_THROWS_WITH(signatures::motion_signatures(std::span<const double>(points), weights), Catch::Contains("no extent"));
+  CHECK_THROWS_WITH(signatures::motion_signatures(std::span<const double>(points), weights),
+                    Catch::Contains("no extent"));
   similarity::Motion_signature_similarity<> coarse;
   coarse.signatures.quantiles = 4;
   const similarity::Motion_signature_similarity<> policy;
@@ -352,8 +358,8 @@ mesh::Surface_mesh_animation joined(const std::vector<const mesh::Surface_mesh_a
 /// Checks that `query` is found first in `long_animation` at `first` (within one frame), as long
 /// as it is (within one frame), with a value of at least 0.95, and that no window is shorter than
 /// `shortest` times the query.
-void check_found(const mesh::Surface_mesh_animation& query, const mesh::Surface_mesh_animation& long_animation, std::size_t first,
-                 double shortest = 0.5) {
+void check_found(const mesh::Surface_mesh_animation& query, const mesh::Surface_mesh_animation& long_animation,
+                 std::size_t first, double shortest = 0.5) {
   const auto found = similarity::find_motion(query, long_animation, {.count = 3, .shortest = shortest});
   REQUIRE(!found.empty());
   const std::size_t n = query.num_frames(), last = first + n - 1;
@@ -392,7 +398,8 @@ TEST_CASE("motion_signature_similarity: a tube's motion sampled at 15, 30 or 60 
   auto faster = at_30;
   faster.set_frames_per_second(60);
   const similarity::Motion_signature_similarity<> policy;
-  const similarity::Similarity slow = similarity::motion_similarity(at_15, at_30, policy), fine = similarity::motion_similarity(at_60, at_30, policy);
+  const similarity::Similarity slow = similarity::motion_similarity(at_15, at_30, policy),
+                               fine = similarity::motion_similarity(at_60, at_30, policy);
   const double played_faster = similarity::motion_similarity(faster, at_30, policy).value;
   WARN("15 fps against 30: " << slow.value << ", 60 fps (another tube) against 30: " << fine.value
                              << ", played twice as fast: " << played_faster);
@@ -436,8 +443,9 @@ TEST_CASE("motion_signature_similarity: a shared clip read at 15, 24, 30 or 60 f
       if (file == "Knight.glb") lowest_self = std::min(lowest_self, value);
     }
   }
-  const double walk_run = similarity::motion_similarity(read("Knight.glb", "Walking_A", 30), read("Knight.glb", "Running_A", 15),
-                                            policy).value;
+  const double walk_run =
+      similarity::motion_similarity(read("Knight.glb", "Walking_A", 30), read("Knight.glb", "Running_A", 15), policy)
+          .value;
   WARN("Knight Walking_A against Running_A at 15 fps: " << walk_run);
   CHECK(walk_run < lowest_self - 0.3);
 }

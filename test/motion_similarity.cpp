@@ -33,9 +33,11 @@ std::vector<std::size_t> reversed_frames(std::size_t count) {
 template <class Policy>
 void check_tubes(const Policy& policy, const char* name) {
   const auto a = tube(bend_hold_unbend);
-  const double same_motion_other_tube = similarity::motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
+  const double same_motion_other_tube =
+      similarity::motion_similarity(a, tube(bend_hold_unbend, other_tube), policy).value;
   const double other_timing =
-      similarity::motion_similarity(a, tube({{5, {0.0}}, {3, {right_angle}}, {22, {}}, {3, {0.0}}, {5, {}}}), policy).value;
+      similarity::motion_similarity(a, tube({{5, {0.0}}, {3, {right_angle}}, {22, {}}, {3, {0.0}}, {5, {}}}), policy)
+          .value;
   const double two_bends = similarity::motion_similarity(
       a, tube({{5, {0.0}}, {5, {right_angle}}, {4, {}}, {5, {0.0}}, {5, {right_angle}}, {4, {}}, {5, {0.0}}, {5, {}}}),
       policy).value;
@@ -47,7 +49,9 @@ void check_tubes(const Policy& policy, const char* name) {
   // A fast bend and a slow unbend, against the same played backwards (a slow bend and a fast
   // unbend): not the same motion, so below 1, yet nearer than a motion of other timing.
   const auto fast_slow = tube({{5, {0.0}}, {3, {right_angle}}, {6, {}}, {15, {0.0}}, {5, {}}});
-  const double reversal = similarity::motion_similarity(fast_slow, frames_of(fast_slow, reversed_frames(fast_slow.num_frames())), policy).value;
+  const double reversal =
+      similarity::motion_similarity(fast_slow, frames_of(fast_slow, reversed_frames(fast_slow.num_frames())), policy)
+          .value;
   WARN(name << ": a schedule against its time reversal " << reversal);
   CHECK(reversal < 0.999);
 }
@@ -114,14 +118,16 @@ void check_self_and_copy(const Policy& policy, const Eigen::Vector3d& turn_axis 
   const similarity::Similarity self = similarity::motion_similarity(a, a, policy);
   CHECK(self.value == Approx(1.0));
   CHECK(self.alignment.size() == a.num_frames());
-  CHECK(similarity::motion_similarity(a, mesh::make_bending_tube(placed).animation, policy).value == Approx(1.0).margin(1e-9));
+  CHECK(similarity::motion_similarity(a, mesh::make_bending_tube(placed).animation, policy).value ==
+        Approx(1.0).margin(1e-9));
   CHECK(!self.compared.empty());
 }
 
 }  // namespace
 
 TEST_CASE("motion similarity: an animation and itself, or a moved, turned, scaled copy, give 1", "[similarity]") {
-  check_self_and_copy(similarity::Motion_signature_similarity<>{}, Eigen::Vector3d::UnitY());  // turned about its up only
+  check_self_and_copy(similarity::Motion_signature_similarity<>{},
+                      Eigen::Vector3d::UnitY());  // turned about its up only
   similarity::Motion_signature_similarity<> directionless;
   directionless.signatures.up = std::nullopt;
   check_self_and_copy(directionless);
@@ -130,12 +136,14 @@ TEST_CASE("motion similarity: an animation and itself, or a moved, turned, scale
   const similarity::Similarity s = similarity::motion_similarity(tube(bend_hold_unbend), tube(bend_hold_unbend));
   CHECK(s.value == Approx(1.0));
   CHECK(s.labels_a.empty());
-  const similarity::Similarity g = similarity::motion_similarity(tube(bend_hold_unbend), tube(bend_hold_unbend), similarity::Evolving_graph_similarity<>{});
+  const similarity::Similarity g = similarity::motion_similarity(tube(bend_hold_unbend), tube(bend_hold_unbend),
+                                                                 similarity::Evolving_graph_similarity<>{});
   CHECK(g.labels_a == g.labels_b);
   CHECK(g.labels_a.size() == tube(bend_hold_unbend).num_frames());
 }
 
-TEST_CASE("motion similarity: tubes, the same schedule on another tube is nearer than other schedules", "[similarity]") {
+TEST_CASE("motion similarity: tubes, the same schedule on another tube is nearer than other schedules",
+          "[similarity]") {
   check_tubes(similarity::Motion_signature_similarity<>{}, "motion signatures");
   check_tubes(similarity::Strain_distribution_similarity<>{}, "strain distribution");
   check_tubes(similarity::Strain_distribution_similarity<alignment::Dtw>{}, "strain distribution, DTW");
@@ -166,7 +174,8 @@ TEST_CASE("motion similarity: the gallop's two cycles are nearer each other than
           "[similarity][data]") {
   // Frames 0-23 and 24-47 of the horse gallop against every 24-frame window of the samba, by the
   // default policy.
-  const auto horse = io::read_frame_sequence((test::unpacked("horse-gallop/horse-gallop.tar.xz") / "horse-gallop").string());
+  const auto horse =
+      io::read_frame_sequence((test::unpacked("horse-gallop/horse-gallop.tar.xz") / "horse-gallop").string());
   const auto samba = io::read_frame_sequence((test::unpacked("samba/samba.tar.xz") / "samba").string());
   REQUIRE(horse.num_frames() == 48);
   const auto window = [](const mesh::Surface_mesh_animation& a, std::size_t first) {
@@ -203,7 +212,8 @@ TEST_CASE("similarity matrix: symmetric, ones on the diagonal, equal to the pair
     for (Eigen::Index i = 0; i < 3; ++i) {
       CHECK(m(i, i) == Approx(1.0));
       for (Eigen::Index j = i + 1; j < 3; ++j)
-        CHECK(m(i, j) == similarity::motion_similarity(animations[std::size_t(i)], animations[std::size_t(j)], policy).value);
+        CHECK(m(i, j) ==
+              similarity::motion_similarity(animations[std::size_t(i)], animations[std::size_t(j)], policy).value);
     }
   };
   check(similarity::Motion_signature_similarity<>{});
@@ -232,12 +242,14 @@ TEST_CASE("motion similarity: a motion found whole inside a longer one, by the s
 TEST_CASE("with_policy_choice: each name gives its policy and alignment, and bad choices are refused", "[similarity]") {
   const auto a = tube(bend_hold_unbend), b = tube(other_timing, other_tube);
   const auto value = [&](const similarity::Policy_choice& choice) {
-    return similarity::with_policy_choice(choice, [&](const auto& policy) { return similarity::motion_similarity(a, b, policy).value; });
+    return similarity::with_policy_choice(
+        choice, [&](const auto& policy) { return similarity::motion_similarity(a, b, policy).value; });
   };
   CHECK(value({}) == similarity::motion_similarity(a, b).value);
   CHECK(value({.policy = "histogram", .alignment = "dtw"}) ==
         similarity::motion_similarity(a, b, similarity::Strain_distribution_similarity<alignment::Dtw>{}).value);
-  CHECK(value({.policy = "self-similarity"}) == similarity::motion_similarity(a, b, similarity::Self_similarity_matching<>{}).value);
+  CHECK(value({.policy = "self-similarity"}) ==
+        similarity::motion_similarity(a, b, similarity::Self_similarity_matching<>{}).value);
   similarity::Evolving_graph_similarity<> graphs;
   graphs.segmentation.threshold = 0.2;
   CHECK(value({.policy = "graph", .threshold = 0.2}) == similarity::motion_similarity(a, b, graphs).value);
@@ -252,13 +264,16 @@ TEST_CASE("with_policy_choice: each name gives its policy and alignment, and bad
   CHECK(similarity::up_direction("+x") == Eigen::Vector3d::UnitX());
   CHECK(!similarity::up_direction("none"));
   CHECK_THROWS_WITH(similarity::up_direction("z"), Catch::Contains("unknown up direction 'z'"));
-  CHECK_THROWS_WITH(similarity::check_policy_choice({.policy = "signatures"}), Catch::Contains("unknown policy 'signatures'"));
-  CHECK_THROWS_WITH(similarity::check_policy_choice({.alignment = "lcss"}), Catch::Contains("unknown alignment 'lcss'"));
+  CHECK_THROWS_WITH(similarity::check_policy_choice({.policy = "signatures"}),
+                    Catch::Contains("unknown policy 'signatures'"));
+  CHECK_THROWS_WITH(similarity::check_policy_choice({.alignment = "lcss"}),
+                    Catch::Contains("unknown alignment 'lcss'"));
   CHECK_THROWS_WITH(similarity::check_policy_choice({.threshold = 0.3}), Catch::Contains("graph policy only"));
   CHECK_THROWS_WITH(similarity::check_policy_choice({.policy = "graph", .threshold = 1.5}), Catch::Contains("[0, 1]"));
   CHECK_THROWS_WITH(similarity::check_policy_choice({.policy = "histogram", .up = "+z"}),
                     Catch::Contains("motion-signature policy only"));
   bool ran = false;
-  CHECK_THROWS_AS(similarity::with_policy_choice({.policy = "nope"}, [&](const auto&) { return ran = true; }), invalid_input);
+  CHECK_THROWS_AS(similarity::with_policy_choice({.policy = "nope"}, [&](const auto&) { return ran = true; }),
+                  invalid_input);
   CHECK(!ran);
 }

@@ -122,7 +122,8 @@ TEST_CASE("evaluate_retrieval: the same clip on the same rig is no candidate / q
 
 TEST_CASE("evaluate_retrieval: distractors are never queried / no candidate, no figure", "[evaluation]") {
   const std::vector<evaluation::Labelled_item> only_distractors{item("-", "A"), item("-", "B")};
-  const evaluation::Retrieval_scores none = evaluation::evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), only_distractors);
+  const evaluation::Retrieval_scores none =
+      evaluation::evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), only_distractors);
   CHECK(none.queries == 0);
   CHECK_FALSE(none.nn_accuracy);
   CHECK_FALSE(none.mean_average_precision);
@@ -141,7 +142,8 @@ TEST_CASE("evaluate_retrieval: distractors are never queried / no candidate, no 
 
   // A walk against a distractor only: a query, no relevant candidate, no same-motion pair.
   const std::vector<evaluation::Labelled_item> against_distractor{item("walk", "A"), item("-", "B")};
-  const evaluation::Retrieval_scores d = evaluation::evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), against_distractor);
+  const evaluation::Retrieval_scores d =
+      evaluation::evaluate_retrieval(Eigen::MatrixXd::Ones(2, 2), against_distractor);
   CHECK(d.queries == 1);
   CHECK(d.queries_without_relevant == 1);
   CHECK(*d.nn_accuracy == 0);
@@ -252,7 +254,8 @@ TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]
     const auto path = test::write_file("labels/" + name, text);
     CHECK_THROWS_WITH(io::read_motion_labels(path), path.string() + message);
   };
-  fails("unknown.csv", "file,clip,motion,colour\n", ":1: unknown column 'colour': the header is file,clip,motion[,rig][,body]");
+  fails("unknown.csv", "file,clip,motion,colour\n",
+        ":1: unknown column 'colour': the header is file,clip,motion[,rig][,body]");
   fails("no_motion.csv", "\nfile,clip\n", ":2: the header has no 'motion' column: it is file,clip,motion[,rig][,body]");
   fails("twice.csv", "file,clip,motion,clip\n", ":1: column 'clip' appears twice");
   fails("fields.csv", "file,clip,motion\na.glb,x,walk\nb.glb,y\n", ":3: 2 fields where the header has 3");
@@ -260,7 +263,8 @@ TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]
   fails("empty_file.csv", "file,clip,motion\n,x,walk\n", ":2: the file field is empty");
   fails("repeated.csv", "file,clip,motion\na.glb,x,walk\na.glb,x,run\n", ":3: clip 'x' of a.glb is listed twice");
   fails("no_rows.csv", "file,clip,motion\n", ": the labels file lists no animation");
-  fails("open_quote.csv", "file,clip,motion\na.glb,\"x,walk\n", ":2: field 2 opens a quote that the line does not close");
+  fails("open_quote.csv", "file,clip,motion\na.glb,\"x,walk\n",
+        ":2: field 2 opens a quote that the line does not close");
   fails("after_quote.csv", "file,clip,motion\na.glb,\"x\"y,walk\n", ":2: field 2 has text after its closing quote");
   CHECK_THROWS_WITH(io::read_motion_labels(test::scratch_dir() / "labels/missing.csv"),
                     Catch::Contains("missing.csv: cannot open the labels file"));
@@ -309,12 +313,14 @@ TEST_CASE("similarity_matrix: progress reports every step and can stop", "[evalu
     return true;
   };
   // 4 descriptions and 10 pairs (i <= j): one batch each (batches hold at least 16 steps).
-  const Eigen::MatrixXd all = similarity::similarity_matrix(tubes, similarity::Strain_distribution_similarity<>{}, record);
+  const Eigen::MatrixXd all =
+      similarity::similarity_matrix(tubes, similarity::Strain_distribution_similarity<>{}, record);
   CHECK(calls == std::vector<std::pair<std::size_t, std::size_t>>{{4, 14}, {14, 14}});
   CHECK(all == similarity::similarity_matrix(tubes, similarity::Strain_distribution_similarity<>{}));
   calls.clear();
   // 2 + 4 descriptions and 8 pairs: the queries', the database's, the pairs' batches.
-  similarity::similarity_matrix(std::span(tubes).first(2), tubes, similarity::Strain_distribution_similarity<>{}, record);
+  similarity::similarity_matrix(std::span(tubes).first(2), tubes, similarity::Strain_distribution_similarity<>{},
+                                record);
   CHECK(calls == std::vector<std::pair<std::size_t, std::size_t>>{{2, 14}, {6, 14}, {14, 14}});
   std::size_t calls_before_stop = 0;
   CHECK_THROWS_MATCHES(similarity::similarity_matrix(tubes, similarity::Strain_distribution_similarity<>{},

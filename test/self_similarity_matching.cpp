@@ -135,7 +135,8 @@ TEST_CASE("self_similarity_matching: descriptions of other quantile counts are r
   similarity::Self_similarity_matching<> coarse;
   coarse.options.quantiles = 4;
   const auto a = tube(bend_hold_unbend);
-  CHECK_THROWS_AS(similarity::Self_similarity_matching<>{}.compare(similarity::Self_similarity_matching<>{}.describe(a), coarse.describe(a)),
+  CHECK_THROWS_AS(similarity::Self_similarity_matching<>{}.compare(similarity::Self_similarity_matching<>{}.describe(a),
+                                                                   coarse.describe(a)),
                   invalid_input);
 }
 
@@ -190,7 +191,8 @@ TEST_CASE("self_similarity_matching: Knight queries against the Barbarian's clip
     if (q->motion == "-") continue;
     std::vector<std::pair<double, bool>> ranked;
     for (const auto* c : barbarian)
-      if (c->clip != q->clip) ranked.push_back({policy.compare(q->description, c->description).value, c->motion == q->motion});
+      if (c->clip != q->clip)
+        ranked.push_back({policy.compare(q->description, c->description).value, c->motion == q->motion});
     if (std::none_of(ranked.begin(), ranked.end(), [](auto& r) { return r.second; })) continue;
     std::stable_sort(ranked.begin(), ranked.end(), [](auto& x, auto& y) { return x.first > y.first; });
     nn += ranked.front().second;

@@ -17,16 +17,17 @@
 namespace deformseg::test {
 
 /// Bend 90 degrees, hold, unbend (39 frames).
-inline const std::vector<mesh::Tube_phase> bend_hold_unbend{{5, {0.0}}, {10, {right_angle}}, {8, {}}, {10, {0.0}}, {5, {}}};
+inline const std::vector<mesh::Tube_phase> bend_hold_unbend{
+    {5, {0.0}}, {10, {right_angle}}, {8, {}}, {10, {0.0}}, {5, {}}};
 /// The same bend, quick, then a long hold.
 inline const std::vector<mesh::Tube_phase> other_timing{{5, {0.0}}, {3, {right_angle}}, {22, {}}, {3, {0.0}}, {5, {}}};
 /// A thicker, longer, coarser tube without caps.
 inline const mesh::Tube_shape other_tube{.radius = 0.16, .length = 1.5, .sectors = 12, .rings = 30, .caps = false};
 
 /// A tube of `shape`, placed, bending its `joints` on `schedule`.
-inline mesh::Surface_mesh_animation tube(const std::vector<mesh::Tube_phase>& schedule, const mesh::Tube_shape& shape = {},
-                                   const mesh::Placement& placement = {},
-                                   std::vector<mesh::Tube_joint> joints = {mesh::Tube_joint{}}) {
+inline mesh::Surface_mesh_animation tube(const std::vector<mesh::Tube_phase>& schedule,
+                                         const mesh::Tube_shape& shape = {}, const mesh::Placement& placement = {},
+                                         std::vector<mesh::Tube_joint> joints = {mesh::Tube_joint{}}) {
   mesh::Bending_tube spec;
   spec.shape = shape;
   spec.joints = std::move(joints);
@@ -36,7 +37,8 @@ inline mesh::Surface_mesh_animation tube(const std::vector<mesh::Tube_phase>& sc
 }
 
 /// The frames of `a` in the order `frames` gives (a frame may repeat).
-inline mesh::Surface_mesh_animation frames_of(const mesh::Surface_mesh_animation& a, const std::vector<std::size_t>& frames) {
+inline mesh::Surface_mesh_animation frames_of(const mesh::Surface_mesh_animation& a,
+                                              const std::vector<std::size_t>& frames) {
   std::vector<double> positions;
   for (std::size_t t : frames) {
     const auto xyz = a.frame_positions(t);

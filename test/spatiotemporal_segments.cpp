@@ -76,7 +76,8 @@ TEST_CASE("spatio-temporal segments: the union-find equals a flood fill on rando
     std::bernoulli_distribution coin(density);
     std::vector<std::uint8_t> deformed(triangles.size() * frames);
     for (auto& d : deformed) d = coin(random);
-    const auto s = spatiotemporal::spatiotemporal_segmentation(field_of(deformed, triangles.size()), triangles, no_clean_up);
+    const auto s =
+        spatiotemporal::spatiotemporal_segmentation(field_of(deformed, triangles.size()), triangles, no_clean_up);
     CHECK(labels_of(s) == flood_fill(deformed, triangles));
   }
 }
@@ -117,7 +118,9 @@ TEST_CASE("spatio-temporal segments: rigid islands enclosed by one segment are a
   // a rigid column 1, so that column 1 touches two segments.
   const Triangles triangles = grid(6);
   std::vector<std::uint8_t> deformed(72, 1);
-  const auto square = [](std::size_t i, std::size_t j) { return std::array<std::size_t, 2>{2 * (i * 6 + j), 2 * (i * 6 + j) + 1}; };
+  const auto square = [](std::size_t i, std::size_t j) {
+    return std::array<std::size_t, 2>{2 * (i * 6 + j), 2 * (i * 6 + j) + 1};
+  };
   for (const auto& [i, j] : {std::pair{4, 3}, {1, 3}, {1, 4}})
     for (std::size_t f : square(std::size_t(i), std::size_t(j))) deformed[f] = 0;
   for (std::size_t i = 0; i < 6; ++i)
@@ -140,7 +143,8 @@ TEST_CASE("spatio-temporal segments: rigid islands enclosed by one segment are a
   CHECK(column.num_segments() == 2);
 }
 
-TEST_CASE("spatio-temporal segments: a tube bending once deforms in its blend zone while it moves", "[spatiotemporal]") {
+TEST_CASE("spatio-temporal segments: a tube bending once deforms in its blend zone while it moves",
+          "[spatiotemporal]") {
   mesh::Bending_tube spec;
   spec.schedule = {{10, {}}, {10, {std::numbers::pi / 2}}, {10, {}}, {10, {0.0}}};
   const auto tube = mesh::make_bending_tube(spec);
@@ -159,14 +163,16 @@ TEST_CASE("spatio-temporal segments: a tube bending once deforms in its blend zo
   placed.placement = {.scale = 4.0,
                       .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(2.0, Eigen::Vector3d(3, 1, -1).normalized())),
                       .translation = Eigen::Vector3d(50, 20, -30)};
-  CHECK(labels_of(spatiotemporal::spatiotemporal_segmentation(mesh::make_bending_tube(placed).animation)) == labels_of(s));
+  CHECK(labels_of(spatiotemporal::spatiotemporal_segmentation(mesh::make_bending_tube(placed).animation)) ==
+        labels_of(s));
   CHECK(labels_of(spatiotemporal::spatiotemporal_segmentation(tube.animation)) == labels_of(s));
 }
 
 TEST_CASE("spatio-temporal segments: bad input is named", "[spatiotemporal]") {
   const Triangles triangles = grid(2);
   const auto field = field_of(std::vector<std::uint8_t>(8, 0), 8);
-  CHECK_THROWS_WITH(spatiotemporal::spatiotemporal_segmentation(field, Triangles(grid(3))), Catch::Contains("18 triangles"));
+  CHECK_THROWS_WITH(spatiotemporal::spatiotemporal_segmentation(field, Triangles(grid(3))),
+                    Catch::Contains("18 triangles"));
   CHECK_THROWS_WITH(spatiotemporal::spatiotemporal_segmentation(field, triangles, {.threshold = std::nan("")}),
                     Catch::Contains("threshold"));
   CHECK_THROWS_WITH(spatiotemporal::Spatiotemporal_segmentation(2, 1, {1, 0}), Catch::Contains("label 1"));

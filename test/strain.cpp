@@ -111,7 +111,8 @@ double largest(const strain::Strain_field<Value>& field) {
 // The largest |a - b| / max(|b|, floor) over two fields: their relative difference, where strains
 // below `floor` (the rounding of rigid triangles) count as that large.
 template <class A, class B>
-double largest_relative_difference(const strain::Strain_field<A>& a, const strain::Strain_field<B>& b, double floor = 1e-9) {
+double largest_relative_difference(const strain::Strain_field<A>& a, const strain::Strain_field<B>& b,
+                                   double floor = 1e-9) {
   double m = 0;
   for (std::size_t t = 0; t < a.num_frames(); ++t)
     for (std::size_t j = 0; j < a.num_faces(); ++j)
@@ -200,7 +201,8 @@ TEST_CASE("strain math: vectorisable sqrt and 1 - exp(-y) within 2 ulp", "[strai
   }
   for (std::uint32_t bits = 0; bits < std::bit_cast<std::uint32_t>(100.0f); bits += 4099) {
     const float y = std::bit_cast<float>(bits);
-    worst_exp = std::max(worst_exp, ulps(deformseg::strain::internal::one_minus_exp_neg(y), float(-std::expm1(-double(y)))));
+    worst_exp =
+        std::max(worst_exp, ulps(deformseg::strain::internal::one_minus_exp_neg(y), float(-std::expm1(-double(y)))));
   }
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> mantissa(1, 2);
@@ -246,8 +248,10 @@ TEST_CASE("strain: a uniform scale of the whole sequence gives the same field", 
     const auto b = strain::compute_strain(scaled.animation, {.reference = reference});
     CHECK(*a.sigma() == Approx(*b.sigma()).epsilon(1e-6));
     CHECK(largest_relative_difference(a, b) < 1e-5);
-    const auto c = strain::compute_strain(plain.animation, strain::Strain_options{.reference = reference, .measure = strain::Area_ratio_strain{}});
-    const auto d = strain::compute_strain(scaled.animation, strain::Strain_options{.reference = reference, .measure = strain::Area_ratio_strain{}});
+    const auto c = strain::compute_strain(
+        plain.animation, strain::Strain_options{.reference = reference, .measure = strain::Area_ratio_strain{}});
+    const auto d = strain::compute_strain(
+        scaled.animation, strain::Strain_options{.reference = reference, .measure = strain::Area_ratio_strain{}});
     CHECK(largest_relative_difference(c, d) < 1e-5);
   }
 }
@@ -455,7 +459,8 @@ TEST_CASE("strain: one thread and all threads give bit-identical fields", "[stra
            a.sigma() == b.sigma() && a.degenerate_count() == b.degenerate_count();
   };
   for (auto reference : {strain::Strain_reference::rest_pose, strain::Strain_reference::previous_pose})
-    for (auto statistic : {strain::Sigma_statistic::percentile, strain::Sigma_statistic::standard_deviation, strain::Sigma_statistic::scaled_mad}) {
+    for (auto statistic : {strain::Sigma_statistic::percentile, strain::Sigma_statistic::standard_deviation,
+                           strain::Sigma_statistic::scaled_mad}) {
       const auto one = strain::compute_strain(tube.animation, {.reference = reference,
                                                         .normalization = Gaussian{.statistic = statistic},
                                                         .principal_directions = true,
@@ -466,7 +471,8 @@ TEST_CASE("strain: one thread and all threads give bit-identical fields", "[stra
                                                            .principal_directions = true,
                                                            .threads = threads});
         CHECK(same(one, many));
-        for (std::size_t t = 0; t < one.num_frames(); t += 7) CHECK(one.principal_directions(t) == many.principal_directions(t));
+        for (std::size_t t = 0; t < one.num_frames(); t += 7)
+          CHECK(one.principal_directions(t) == many.principal_directions(t));
       }
       const auto exact_one = strain::compute_strain<double>(tube.animation, {.reference = reference, .threads = 1});
       const auto exact_two = strain::compute_strain<double>(tube.animation, {.reference = reference, .threads = 2});
@@ -483,8 +489,9 @@ TEST_CASE("strain: one thread and all threads give bit-identical fields", "[stra
 
 TEST_CASE("strain: previous-pose strain of a sequence that holds still is 0", "[strain]") {
   const auto animation = animate(tube_shape(), std::vector<Map>(5, rigid(0.3, {1, 0, 0}, {10, 20, 30})));
-  const auto raw_field = strain::compute_strain(animation, strain::Strain_options{.reference = strain::Strain_reference::previous_pose,
-                                                                  .normalization = strain::No_normalization{}});
+  const auto raw_field =
+      strain::compute_strain(animation, strain::Strain_options{.reference = strain::Strain_reference::previous_pose,
+                                                               .normalization = strain::No_normalization{}});
   CHECK(largest(raw_field) < 1e-12);
   const auto field = strain::compute_strain(animation, {.reference = strain::Strain_reference::previous_pose});
   CHECK(largest(field) < 1e-12);
@@ -499,12 +506,13 @@ TEST_CASE("strain: a degenerate reference triangle gives 0, never NaN, and is co
   Grid shape;
   shape.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 2, 0}};
   shape.triangles = {{0, 1, 2}, {0, 2, 3}};
-  const auto animation = animate(shape, {identity(),
-                                         [](const Vector3& p) { return Vector3(p + Vector3(0, p.x() == 2 ? -1.5 : 0, 0)); },
-                                         [](const Vector3& p) { return Vector3(2 * p); }});
-  for (const auto& field : {strain::compute_strain(animation, {.principal_directions = true}),
-                            strain::compute_strain(animation, strain::Strain_options{.measure = strain::Area_ratio_strain{},
-                                                                     .principal_directions = true})}) {
+  const auto animation =
+      animate(shape, {identity(), [](const Vector3& p) { return Vector3(p + Vector3(0, p.x() == 2 ? -1.5 : 0, 0)); },
+                      [](const Vector3& p) { return Vector3(2 * p); }});
+  for (const auto& field :
+       {strain::compute_strain(animation, {.principal_directions = true}),
+        strain::compute_strain(
+            animation, strain::Strain_options{.measure = strain::Area_ratio_strain{}, .principal_directions = true})}) {
     CHECK(field.degenerate_count() == 2);  // triangle 1 in frames 1 and 2 (frame 0 is the rest)
     for (std::size_t t = 0; t < 3; ++t) {
       CHECK(field(1, t) == 0.0f);
@@ -532,8 +540,8 @@ TEST_CASE("strain: a triangle collapsed onto a segment or a point has l2 = 0", "
   shape.triangles = {{0, 1, 2}};
   const auto animation = animate(shape, {identity(), [](const Vector3& p) { return Vector3(p.x(), 0, 0); },
                                          [](const Vector3&) { return Vector3(5, 6, 7); }});
-  const auto max_principal = strain::compute_strain(animation, strain::Strain_options{.normalization = strain::No_normalization{},
-                                                                      .principal_directions = true});
+  const auto max_principal = strain::compute_strain(
+      animation, strain::Strain_options{.normalization = strain::No_normalization{}, .principal_directions = true});
   const auto green = strain::compute_strain(animation, raw_with(strain::Green_lagrange_strain{}));
   const auto frobenius = strain::compute_strain<double>(animation, raw_with(strain::Frobenius_strain{}));
   const auto area = strain::compute_strain(animation, raw_with(strain::Area_ratio_strain{}));
@@ -553,11 +561,13 @@ TEST_CASE("strain: absurd coordinates saturate, never NaN or inf", "[strain]") {
   Grid shape;
   shape.points = {{0, 0, 0}, {1e-150, 0, 0}, {0, 1e-150, 0}, {1, 1, 1}};
   shape.triangles = {{0, 1, 2}, {0, 2, 3}};
-  const auto animation = animate(shape, {identity(), [](const Vector3& p) { return Vector3(1e150 * p); },
-                                         [](const Vector3& p) { return Vector3(p + Vector3(1e300, -1e300, 0) * (p.x() > 0 ? 1.0 : 0.0)); }});
+  const auto animation = animate(
+      shape, {identity(), [](const Vector3& p) { return Vector3(1e150 * p); },
+              [](const Vector3& p) { return Vector3(p + Vector3(1e300, -1e300, 0) * (p.x() > 0 ? 1.0 : 0.0)); }});
   for (bool directions : {false, true}) {
-    const auto field =
-        strain::compute_strain(animation, strain::Strain_options{.normalization = strain::No_normalization{}, .principal_directions = directions});
+    const auto field = strain::compute_strain(
+        animation,
+        strain::Strain_options{.normalization = strain::No_normalization{}, .principal_directions = directions});
     for (float v : field.values()) CHECK(std::isfinite(v));
     const auto normalised = strain::compute_strain(animation, {.principal_directions = directions});
     for (float v : normalised.values()) CHECK((v >= 0 && v <= 1));
@@ -586,8 +596,10 @@ TEST_CASE("strain: the Gaussian normalisation and its sigma statistics", "[strai
   SECTION("default: the 95th percentile, nearest rank") {
     const auto field = strain::compute_strain(tube.animation);
     CHECK(*field.sigma() == nearest_rank(95));
-    CHECK(*strain::compute_strain(tube.animation, {.normalization = Gaussian{.percentile = 50}}).sigma() == nearest_rank(50));
-    CHECK(*strain::compute_strain(tube.animation, {.normalization = Gaussian{.percentile = 100}}).sigma() == samples.back());
+    CHECK(*strain::compute_strain(tube.animation, {.normalization = Gaussian{.percentile = 50}}).sigma() ==
+          nearest_rank(50));
+    CHECK(*strain::compute_strain(tube.animation, {.normalization = Gaussian{.percentile = 100}}).sigma() ==
+          samples.back());
     const double sigma = *field.sigma();
     for (std::size_t t = 0; t < field.num_frames(); ++t)
       for (std::size_t j = 0; j < field.num_faces(); ++j) {
@@ -600,19 +612,22 @@ TEST_CASE("strain: the Gaussian normalisation and its sigma statistics", "[strai
     for (float v : samples) mean += v;
     mean /= double(samples.size());
     for (float v : samples) square += (v - mean) * (v - mean);
-    const auto std_field = strain::compute_strain(tube.animation, {.normalization = Gaussian{.statistic = strain::Sigma_statistic::standard_deviation}});
+    const auto std_field = strain::compute_strain(
+        tube.animation, {.normalization = Gaussian{.statistic = strain::Sigma_statistic::standard_deviation}});
     CHECK(*std_field.sigma() == Approx(std::sqrt(square / double(samples.size()))).epsilon(1e-12));
     const double median = nearest_rank(50);
     std::vector<double> deviations;
     for (float v : samples) deviations.push_back(std::abs(double(v) - median));
     std::sort(deviations.begin(), deviations.end());
-    const auto mad_field = strain::compute_strain(tube.animation, {.normalization = Gaussian{.statistic = strain::Sigma_statistic::scaled_mad}});
+    const auto mad_field = strain::compute_strain(
+        tube.animation, {.normalization = Gaussian{.statistic = strain::Sigma_statistic::scaled_mad}});
     CHECK(*mad_field.sigma() == Approx(1.4826 * deviations[(deviations.size() + 1) / 2 - 1]).epsilon(1e-6));
   }
   SECTION("a given sigma, and none") {
     const auto given = strain::compute_strain(tube.animation, {.normalization = Gaussian{.sigma = 0.05}});
     CHECK(*given.sigma() == 0.05);
-    CHECK(given(100, 8) == Approx(-std::expm1(-double(raw_field(100, 8)) * raw_field(100, 8) / (2 * 0.05 * 0.05))).epsilon(1e-6));
+    CHECK(given(100, 8) ==
+          Approx(-std::expm1(-double(raw_field(100, 8)) * raw_field(100, 8) / (2 * 0.05 * 0.05))).epsilon(1e-6));
     const auto none = strain::compute_strain(tube.animation, raw());
     CHECK(!none.sigma());
   }
@@ -654,7 +669,8 @@ TEST_CASE("strain: a reference mesh of its own", "[strain]") {
   CHECK(largest(with_mesh) == largest(with_frame));
   // A Polyhedron_3 reference for a Surface_mesh animation.
   std::vector<std::array<double, 3>> points;
-  for (std::size_t i = 0; i < a.num_vertices(); ++i) points.push_back({a.frame_positions(0)[3 * i], a.frame_positions(0)[3 * i + 1], a.frame_positions(0)[3 * i + 2]});
+  for (std::size_t i = 0; i < a.num_vertices(); ++i)
+    points.push_back({a.frame_positions(0)[3 * i], a.frame_positions(0)[3 * i + 1], a.frame_positions(0)[3 * i + 2]});
   const auto polyhedron = mesh::make_face_graph<Polyhedron>(points, a.triangles());
   const auto with_polyhedron = strain::compute_strain(a, polyhedron, {.normalization = Gaussian{.sigma = 0.1}});
   CHECK(std::ranges::equal(with_polyhedron.values(), with_mesh.values()));
@@ -720,13 +736,18 @@ TEST_CASE("strain: bad input throws invalid_input with a clear message", "[strai
   const auto& a = tube.animation;
   using Catch::Contains;
 
-  CHECK_THROWS_WITH(strain::compute_strain(mesh::Deforming_mesh<mesh::Surface_mesh>(a.face_graph())), Contains("has no frame"));
-  CHECK_THROWS_WITH(strain::compute_strain(a, {.rest_frame = 4}), Contains("rest frame 4 out of range") && Contains("4 frames"));
+  CHECK_THROWS_WITH(strain::compute_strain(mesh::Deforming_mesh<mesh::Surface_mesh>(a.face_graph())),
+                    Contains("has no frame"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.rest_frame = 4}),
+                    Contains("rest frame 4 out of range") && Contains("4 frames"));
   CHECK_THROWS_WITH(strain::compute_strain(a, {.threads = -1}), Contains("threads must be"));
   CHECK_THROWS_WITH(strain::compute_strain(a, {.degenerate_tolerance = 1.5}), Contains("degenerate_tolerance"));
-  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.sigma = 0.0}}), Contains("sigma must be finite and > 0"));
-  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.sigma = std::nan("")}}), Contains("sigma must be"));
-  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.percentile = 0}}), Contains("percentile must be in (0, 100]"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.sigma = 0.0}}),
+                    Contains("sigma must be finite and > 0"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.sigma = std::nan("")}}),
+                    Contains("sigma must be"));
+  CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.percentile = 0}}),
+                    Contains("percentile must be in (0, 100]"));
   CHECK_THROWS_WITH(strain::compute_strain(a, {.normalization = Gaussian{.noise_level = -1}}), Contains("noise_level"));
 
   SECTION("a reference mesh that does not match") {
@@ -754,7 +775,9 @@ TEST_CASE("strain: bad input throws invalid_input with a clear message", "[strai
     CGAL::Euler::remove_face(halfedge(*faces(smaller).begin(), smaller), smaller);
     smaller.collect_garbage();
     auto map = smaller.add_property_map<mesh::Surface_mesh::Face_index, float>("f:strain").first;
-    CHECK_THROWS_WITH(strain::put_strain_frame(field, 0, smaller, map), Contains("the graph has 1567 faces, the strain field 1568"));
-    CHECK_THROWS_AS(strain::Strain_field<float>(3, 2, strain::Strain_field<float>::Storage(5), {}, {}, 0), invalid_input);
+    CHECK_THROWS_WITH(strain::put_strain_frame(field, 0, smaller, map),
+                      Contains("the graph has 1567 faces, the strain field 1568"));
+    CHECK_THROWS_AS(strain::Strain_field<float>(3, 2, strain::Strain_field<float>::Storage(5), {}, {}, 0),
+                    invalid_input);
   }
 }

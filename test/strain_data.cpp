@@ -23,11 +23,13 @@ mesh::Surface_mesh_animation horse_gallop() {
 }
 
 // The same animation scaled, turned and moved far from the origin, every frame in double.
-mesh::Surface_mesh_animation placed(const mesh::Surface_mesh_animation& a, double scale, const Eigen::Vector3d& translation) {
+mesh::Surface_mesh_animation placed(const mesh::Surface_mesh_animation& a, double scale,
+                                    const Eigen::Vector3d& translation) {
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(2.2, Eigen::Vector3d(1, -3, 2).normalized()).toRotationMatrix();
   std::vector<double> positions(a.all_positions().begin(), a.all_positions().end());
   for (std::size_t i = 0; i < positions.size(); i += 3) {
-    const Eigen::Vector3d p = scale * (turn * Eigen::Vector3d(positions[i], positions[i + 1], positions[i + 2])) + translation;
+    const Eigen::Vector3d p =
+        scale * (turn * Eigen::Vector3d(positions[i], positions[i + 1], positions[i + 2])) + translation;
     for (int k = 0; k < 3; ++k) positions[i + std::size_t(k)] = p[k];
   }
   return mesh::Surface_mesh_animation(a.face_graph(), std::move(positions));
@@ -165,7 +167,8 @@ TEST_CASE("strain data: the same poses on a cat and a lion give alike frame dist
   };
   const double normalised = correlation(strain::Strain_options{.rest_frame = 9}, 10);
   const double poses_only = correlation(strain::Strain_options{.rest_frame = 9}, 9);
-  const double raw = correlation(strain::Strain_options{.rest_frame = 9, .normalization = strain::No_normalization{}}, 10);
+  const double raw =
+      correlation(strain::Strain_options{.rest_frame = 9, .normalization = strain::No_normalization{}}, 10);
   const double deviation = correlation(
       strain::Strain_options{.rest_frame = 9, .normalization = strain::Gaussian_normalization{
                                                   .statistic = strain::Sigma_statistic::standard_deviation}},

@@ -85,7 +85,8 @@ TEST_CASE("strain_histograms: a hand-made field, values on edges in the bin abov
 TEST_CASE("strain_histograms: zero weights count for nothing, degenerate strain is rigid", "[strain_histograms]") {
   const strain::Histogram_options options{.bins = 1, .min_strain = 0.1, .max_strain = 1};
   // Triangle 1 has no area (a degenerate one: its strain is 0 by compute_strain's convention).
-  const auto h = strain::strain_histograms(field_of<float>(3, {0.5f, 0.0f, 2.0f}), std::vector<double>{1, 0, 3}, options);
+  const auto h =
+      strain::strain_histograms(field_of<float>(3, {0.5f, 0.0f, 2.0f}), std::vector<double>{1, 0, 3}, options);
   CHECK(h(0, 0) == 0.0);
   CHECK(h(0, 1) == 0.25);
   CHECK(h(0, 2) == 0.75);
@@ -95,7 +96,8 @@ TEST_CASE("strain_histograms: zero weights count for nothing, degenerate strain 
 TEST_CASE("strain_histograms: bad input is rejected, naming the problem", "[strain_histograms]") {
   const auto field = field_of<float>(2, {0.1f, 0.2f, 0.3f, std::numeric_limits<float>::quiet_NaN()});
   const std::vector<double> weights{1, 1};
-  CHECK_THROWS_WITH(strain::strain_histograms(field, weights), Catch::Contains("frame 1") && Catch::Contains("triangle 1"));
+  CHECK_THROWS_WITH(strain::strain_histograms(field, weights),
+                    Catch::Contains("frame 1") && Catch::Contains("triangle 1"));
   const auto good = field_of<float>(2, {0.1f, 0.2f});
   CHECK_THROWS_WITH(strain::strain_histograms(good, std::vector<double>{1}), Catch::Contains("1 weights for 2"));
   CHECK_THROWS_WITH(strain::strain_histograms(good, std::vector<double>{1, -1}), Catch::Contains("triangle 1"));
@@ -122,7 +124,8 @@ TEST_CASE("strain_histograms: random fields agree with binning by search, rows s
   const strain::Strain_histograms h = strain::strain_histograms(field, weights, options);
   double total = 0;
   for (double w : weights) total += w;
-  strain::Strain_histograms expected = strain::Strain_histograms::Zero(Eigen::Index(frames), Eigen::Index(options.bins + 2));
+  strain::Strain_histograms expected =
+      strain::Strain_histograms::Zero(Eigen::Index(frames), Eigen::Index(options.bins + 2));
   for (std::size_t t = 0; t < frames; ++t)
     for (std::size_t j = 0; j < faces; ++j)
       expected(Eigen::Index(t), Eigen::Index(column_by_search(edges, values[t * faces + j]))) += weights[j] / total;
@@ -130,8 +133,10 @@ TEST_CASE("strain_histograms: random fields agree with binning by search, rows s
   for (Eigen::Index t = 0; t < h.rows(); ++t) CHECK(h.row(t).sum() == Approx(1.0).epsilon(1e-14));
   CHECK((h.array() >= 0).all());
   // The same for any number of threads, bit for bit.
-  CHECK(strain::strain_histograms(field, weights, {.bins = 13, .min_strain = 2e-4, .max_strain = 5, .threads = 1}) == h);
-  CHECK(strain::strain_histograms(field, weights, {.bins = 13, .min_strain = 2e-4, .max_strain = 5, .threads = 2}) == h);
+  CHECK(strain::strain_histograms(field, weights, {.bins = 13, .min_strain = 2e-4, .max_strain = 5, .threads = 1}) ==
+        h);
+  CHECK(strain::strain_histograms(field, weights, {.bins = 13, .min_strain = 2e-4, .max_strain = 5, .threads = 2}) ==
+        h);
 }
 
 TEST_CASE("strain_histograms: a rigidly moved, uniformly scaled copy has the same histograms", "[strain_histograms]") {
@@ -155,8 +160,10 @@ TEST_CASE("strain_histograms: a rigidly moved, uniformly scaled copy has the sam
 }
 
 TEST_CASE("strain_histograms: another mesh of the same tube gives alike histograms", "[strain_histograms]") {
-  const auto coarse = strain::strain_histograms(mesh::make_bending_tube(two_joint_tube({.sectors = 16, .rings = 48})).animation);
-  const auto fine = strain::strain_histograms(mesh::make_bending_tube(two_joint_tube({.sectors = 24, .rings = 80})).animation);
+  const auto coarse =
+      strain::strain_histograms(mesh::make_bending_tube(two_joint_tube({.sectors = 16, .rings = 48})).animation);
+  const auto fine =
+      strain::strain_histograms(mesh::make_bending_tube(two_joint_tube({.sectors = 24, .rings = 80})).animation);
   // The same frames compared with other frames of the same motion: the mesh matters less.
   const Eigen::MatrixXd d = strain::histogram_distances(coarse, fine);
   REQUIRE(d.rows() == d.cols());
@@ -187,8 +194,9 @@ TEST_CASE("strain_histograms: which of two alike joints bends first is invisible
 
 TEST_CASE("strain_histograms: the options choose the strain", "[strain_histograms]") {
   const auto animation = mesh::make_bending_tube(two_joint_tube({})).animation;
-  const auto field = strain::compute_strain(animation, strain::Strain_options{.reference = strain::Strain_reference::previous_pose,
-                                                              .normalization = strain::No_normalization{}});
+  const auto field =
+      strain::compute_strain(animation, strain::Strain_options{.reference = strain::Strain_reference::previous_pose,
+                                                               .normalization = strain::No_normalization{}});
   std::vector<double> areas(animation.num_faces());
   const auto rest = animation.frame_matrix(0);
   for (std::size_t j = 0; j < areas.size(); ++j) {
@@ -196,12 +204,14 @@ TEST_CASE("strain_histograms: the options choose the strain", "[strain_histogram
     areas[j] = 0.5 * (rest.col(t[1]) - rest.col(t[0])).cross(rest.col(t[2]) - rest.col(t[0])).norm();
   }
   CHECK(strain::strain_histograms(animation) == strain::strain_histograms(field, areas));
-  const auto normalised = strain::strain_histograms(animation, strain::Strain_histogram_options{
-                                                           .strain = strain::Strain_options{.normalization = strain::Gaussian_normalization{}},
-                                                           .histogram = {.bins = 8, .min_strain = 1e-3}});
+  const auto normalised = strain::strain_histograms(
+      animation, strain::Strain_histogram_options{
+                     .strain = strain::Strain_options{.normalization = strain::Gaussian_normalization{}},
+                     .histogram = {.bins = 8, .min_strain = 1e-3}});
   CHECK(normalised.cols() == 10);
   CHECK(normalised(0, 0) == 1.0);  // the rest frame
-  CHECK_THROWS_WITH(strain::strain_histograms(animation, {.strain = {.rest_frame = 99}}), Catch::Contains("rest frame 99"));
+  CHECK_THROWS_WITH(strain::strain_histograms(animation, {.strain = {.rest_frame = 99}}),
+                    Catch::Contains("rest frame 99"));
 }
 
 TEST_CASE("strain_histograms: Surface_mesh, Polyhedron_3 and any DeformingMesh give the same histograms",
@@ -211,7 +221,8 @@ TEST_CASE("strain_histograms: Surface_mesh, Polyhedron_3 and any DeformingMesh g
   const auto on_polyhedron = mesh::make_bending_tube<Polyhedron>(spec);
   using View = test::Deforming_mesh_view<Polyhedron>;
   static_assert(mesh::DeformingMesh<View>);
-  const strain::Strain_histograms expected = strain::strain_histograms(mesh::make_bending_tube<mesh::Surface_mesh>(spec).animation);
+  const strain::Strain_histograms expected =
+      strain::strain_histograms(mesh::make_bending_tube<mesh::Surface_mesh>(spec).animation);
   CHECK(strain::strain_histograms(on_polyhedron.animation) == expected);
   CHECK(strain::strain_histograms(View{&on_polyhedron.animation}) == expected);
 }
@@ -242,7 +253,8 @@ TEST_CASE("strain_histograms data: the cat and lion poses match pose by pose", "
   const strain::Strain_histogram_options poses{.strain = {.reference = strain::Strain_reference::rest_pose,
                                                           .rest_frame = 9,
                                                           .normalization = strain::No_normalization{}}};
-  const Eigen::MatrixXd d = strain::histogram_distances(strain::strain_histograms(cat, poses), strain::strain_histograms(lion, poses));
+  const Eigen::MatrixXd d =
+      strain::histogram_distances(strain::strain_histograms(cat, poses), strain::strain_histograms(lion, poses));
   std::size_t nearest_is_same = 0;
   double same = 0, other = 0;
   for (Eigen::Index t = 0; t < 9; ++t) {

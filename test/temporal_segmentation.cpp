@@ -37,7 +37,8 @@ bool in_a_transition(std::size_t frame, const mesh::Synthetic_animation<>& tube)
 }
 
 template <class Policy>
-void check_boundaries(const Policy& policy, const mesh::Synthetic_animation<>& tube, const strain::Strain_field<float>& field) {
+void check_boundaries(const Policy& policy, const mesh::Synthetic_animation<>& tube,
+                      const strain::Strain_field<float>& field) {
   const auto result = temporal::temporal_segmentation(field, policy);
   std::vector<std::size_t> starts;
   for (const auto& s : result.segments) starts.push_back(s.first);
@@ -58,7 +59,8 @@ std::vector<std::size_t> starts_of(const temporal::Temporal_segmentation& s) {
 
 // The least sum of weighted costs (plus `penalty` per segment) over every partition with
 // segments of at least `min_length` frames and, if `count` is not 0, exactly `count` segments.
-double brute_force_optimum(const temporal::Segment_cost& cost, double penalty, std::size_t count, std::size_t min_length) {
+double brute_force_optimum(const temporal::Segment_cost& cost, double penalty, std::size_t count,
+                           std::size_t min_length) {
   const std::size_t frames = cost.num_frames();
   double best = std::numeric_limits<double>::infinity();
   for (std::uint32_t cuts = 0; cuts < (1u << (frames - 1)); ++cuts) {
@@ -77,7 +79,8 @@ double brute_force_optimum(const temporal::Segment_cost& cost, double penalty, s
   return best;
 }
 
-double partition_cost(const temporal::Segment_cost& cost, const std::vector<temporal::Frame_interval>& intervals, double penalty) {
+double partition_cost(const temporal::Segment_cost& cost, const std::vector<temporal::Frame_interval>& intervals,
+                      double penalty) {
   double total = 0;
   for (const auto& [first, last] : intervals) total += cost.weighted(first, last) + penalty;
   return total;
@@ -101,12 +104,14 @@ TEST_CASE("temporal segmentation: three held poses are cut in the transitions, b
 
 TEST_CASE("temporal segmentation: the same motion on another tube segments the same way", "[temporal]") {
   const auto tube = three_poses();
-  const auto other = three_poses({.radius = 0.25, .length = 2.0, .sectors = 11, .rings = 37, .caps = false},
-                                 {.scale = 3.0,
-                                  .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, 2, 3).normalized())),
-                                  .translation = Eigen::Vector3d(10, -4, 2)});
+  const auto other =
+      three_poses({.radius = 0.25, .length = 2.0, .sectors = 11, .rings = 37, .caps = false},
+                  {.scale = 3.0,
+                   .rotation = Eigen::Quaterniond(Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, 2, 3).normalized())),
+                   .translation = Eigen::Vector3d(10, -4, 2)});
   REQUIRE(other.animation.num_faces() != tube.animation.num_faces());
-  CHECK(starts_of(temporal::temporal_segmentation(tube.animation)) == starts_of(temporal::temporal_segmentation(other.animation)));
+  CHECK(starts_of(temporal::temporal_segmentation(tube.animation)) ==
+        starts_of(temporal::temporal_segmentation(other.animation)));
   CHECK(starts_of(temporal::temporal_segmentation(tube.animation, temporal::Binary_split{})) ==
         starts_of(temporal::temporal_segmentation(other.animation, temporal::Binary_split{})));
   CHECK(starts_of(temporal::temporal_segmentation(tube.animation, temporal::Thesis_greedy{})) ==
@@ -129,7 +134,8 @@ TEST_CASE("Optimal_partition equals brute force over all partitions, T <= 12", "
     const std::size_t min_length = 1 + std::size_t(trial % 3);
     if (std::size_t(frames) < min_length) continue;
     const double penalty = 0.2 * double(trial % 5);
-    const auto free = temporal::Optimal_partition{.penalty = {.value = penalty, .relative = false}, .min_length = min_length}(cost);
+    const auto free =
+        temporal::Optimal_partition{.penalty = {.value = penalty, .relative = false}, .min_length = min_length}(cost);
     CHECK(partition_cost(cost, free, penalty) == Approx(brute_force_optimum(cost, penalty, 0, min_length)));
     for (std::size_t count = 1; count * min_length <= std::size_t(frames); ++count) {
       const auto fixed = temporal::Optimal_partition{.segments = count, .min_length = min_length}(cost);
@@ -146,7 +152,8 @@ TEST_CASE("temporal segmentation: a lower threshold never gives fewer segments (
   std::size_t split_before = 0, optimum_before = 0;
   for (double threshold = 2.0; threshold > 0.001; threshold *= 0.7) {
     const auto split = temporal::segment_frames(cost, temporal::Binary_split{.threshold = {threshold}}).segments.size();
-    const auto optimum = temporal::segment_frames(cost, temporal::Optimal_partition{.penalty = {threshold * 0.1}}).segments.size();
+    const auto optimum =
+        temporal::segment_frames(cost, temporal::Optimal_partition{.penalty = {threshold * 0.1}}).segments.size();
     CHECK(split >= split_before);
     CHECK(optimum >= optimum_before);
     split_before = split, optimum_before = optimum;
@@ -168,13 +175,19 @@ TEST_CASE("temporal segmentation: results cover the frames / segment_of / bad pa
   }
   CHECK_THROWS_WITH(result.segment_of(66), Catch::Contains("frame 66"));
   const temporal::Segment_cost cost(frame_distances(field));
-  CHECK_THROWS_WITH(temporal::segment_frames(cost, temporal::Optimal_partition{.segments = 67}), Catch::Contains("cannot make 67"));
-  CHECK_THROWS_WITH(temporal::segment_frames(cost, temporal::Optimal_partition{.min_length = 0}), Catch::Contains("min_length"));
-  CHECK_THROWS_WITH(temporal::segment_frames(cost, temporal::Binary_split{.min_length = 0}), Catch::Contains("min_length"));
+  CHECK_THROWS_WITH(temporal::segment_frames(cost, temporal::Optimal_partition{.segments = 67}),
+                    Catch::Contains("cannot make 67"));
+  CHECK_THROWS_WITH(temporal::segment_frames(cost, temporal::Optimal_partition{.min_length = 0}),
+                    Catch::Contains("min_length"));
+  CHECK_THROWS_WITH(temporal::segment_frames(cost, temporal::Binary_split{.min_length = 0}),
+                    Catch::Contains("min_length"));
   CHECK_THROWS_WITH(temporal::segment_frames(cost, temporal::Barbic_pca{.window = 1}), Catch::Contains("window >= 2"));
-  CHECK_THROWS_WITH(temporal::segment_frames(cost, temporal::Barbic_pca{.energy = 1.5}), Catch::Contains("energy in (0, 1]"));
+  CHECK_THROWS_WITH(temporal::segment_frames(cost, temporal::Barbic_pca{.energy = 1.5}),
+                    Catch::Contains("energy in (0, 1]"));
   // A user's policy that leaves a gap is caught.
-  const auto gap = [](const temporal::Segment_cost& c) { return std::vector<temporal::Frame_interval>{{0, 10}, {12, c.num_frames() - 1}}; };
+  const auto gap = [](const temporal::Segment_cost& c) {
+    return std::vector<temporal::Frame_interval>{{0, 10}, {12, c.num_frames() - 1}};
+  };
   CHECK_THROWS_WITH(temporal::segment_frames(cost, gap), Catch::Contains("frame 11"));
 }
 
@@ -199,7 +212,8 @@ TEST_CASE("temporal segmentation: the horse gallop's two cycles segment alike", 
       io::read_frame_sequence((test::unpacked("horse-gallop/horse-gallop.tar.xz") / "horse-gallop").string());
   REQUIRE(horse.num_frames() == 48);
   const Eigen::MatrixXf distances = frame_distances(strain::compute_strain(horse));
-  const temporal::Segment_cost first_cycle(distances.topLeftCorner(24, 24)), second_cycle(distances.bottomRightCorner(24, 24));
+  const temporal::Segment_cost first_cycle(distances.topLeftCorner(24, 24)),
+      second_cycle(distances.bottomRightCorner(24, 24));
   const auto compare = [&](const auto& policy, const char* name, std::size_t fewest_segments) {
     const auto a = starts_of(temporal::segment_frames(first_cycle, policy));
     const auto b = starts_of(temporal::segment_frames(second_cycle, policy));
@@ -216,7 +230,8 @@ TEST_CASE("temporal segmentation: the horse gallop's two cycles segment alike", 
   compare(temporal::Barbic_pca{}, "Barbic PCA", 1);
 
   // The optimum of the whole gallop repeats itself from one cycle to the next.
-  const auto whole = starts_of(temporal::segment_frames(temporal::Segment_cost(distances), temporal::Optimal_partition{}));
+  const auto whole =
+      starts_of(temporal::segment_frames(temporal::Segment_cost(distances), temporal::Optimal_partition{}));
   INFO("whole gallop: " << Catch::Detail::stringify(whole));
   REQUIRE(whole.size() % 2 == 0);
   for (std::size_t k = 0; k < whole.size() / 2; ++k) CHECK(whole[k + whole.size() / 2] == whole[k] + 24);

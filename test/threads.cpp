@@ -117,15 +117,17 @@ TEST_CASE("threads: the default follows set_default_threads, then the environmen
 
 TEST_CASE("threads: every threads option refuses a count above max_threads", "[threads]") {
   const auto tube = bending_tube();
-  CHECK_THROWS_WITH(strain::compute_strain(tube, {.threads = 30000}), Catch::Contains("compute_strain: threads must be 0 "
-                                                                              "(the default) to 1024, not 30000"));
+  CHECK_THROWS_WITH(strain::compute_strain(tube, {.threads = 30000}),
+                    Catch::Contains("compute_strain: threads must be 0 "
+                                    "(the default) to 1024, not 30000"));
   CHECK_THROWS_AS(strain::compute_strain(tube, {.threads = -1}), invalid_input);
   const auto field = strain::compute_strain(tube, {.threads = 1});
   CHECK_THROWS_WITH(frame_distances(field, {.threads = 70000}), Catch::Contains("not 70000"));
   CHECK_THROWS_WITH(strain::strain_histograms(field, std::vector<double>(field.num_faces(), 1.0), {.threads = 40000}),
                     Catch::Contains("not 40000"));
   const Eigen::MatrixXd h = Eigen::MatrixXd::Constant(3, 4, 0.25);
-  CHECK_THROWS_WITH(strain::histogram_distances(h, h, strain::Histogram_metric::earth_movers, 1025), Catch::Contains("not 1025"));
+  CHECK_THROWS_WITH(strain::histogram_distances(h, h, strain::Histogram_metric::earth_movers, 1025),
+                    Catch::Contains("not 1025"));
 }
 
 TEST_CASE("parallel_for: every index once, the lowest index's exception, on any threads", "[threads]") {
@@ -276,16 +278,18 @@ TEST_CASE("threads: histograms, their distances, segments and graphs are the sam
   const Eigen::MatrixXd distances = strain::histogram_distances(one, one, strain::Histogram_metric::earth_movers, 1);
   set_default_threads(1);
   const spatiotemporal::Spatiotemporal_options options{.threshold = 0.01, .max_island = 8};
-  const spatiotemporal::Spatiotemporal_segmentation segments = spatiotemporal::spatiotemporal_segmentation(field, tube.triangles(), options);
+  const spatiotemporal::Spatiotemporal_segmentation segments =
+      spatiotemporal::spatiotemporal_segmentation(field, tube.triangles(), options);
   const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(tube, options);
   for (const int threads : thread_counts) {
     INFO(threads << " threads");
-    CHECK(strain::compute_strain(tube, {.reference = strain::Strain_reference::previous_pose, .threads = threads}).matrix() ==
-          field.matrix());
+    CHECK(strain::compute_strain(tube, {.reference = strain::Strain_reference::previous_pose, .threads = threads})
+              .matrix() == field.matrix());
     CHECK(strain::strain_histograms(field, weights, {.threads = threads}) == one);
     CHECK(strain::histogram_distances(one, one, strain::Histogram_metric::earth_movers, threads) == distances);
     set_default_threads(threads);
-    const spatiotemporal::Spatiotemporal_segmentation other = spatiotemporal::spatiotemporal_segmentation(field, tube.triangles(), options);
+    const spatiotemporal::Spatiotemporal_segmentation other =
+        spatiotemporal::spatiotemporal_segmentation(field, tube.triangles(), options);
     for (std::size_t t = 0; t < field.num_frames(); ++t)
       CHECK(std::ranges::equal(other.frame_labels(t), segments.frame_labels(t)));
     const spatiotemporal::Evolving_graph other_graph = spatiotemporal::evolving_graph(tube, options);

@@ -84,8 +84,8 @@ TEST_CASE("write_strain_binary: a JSON header line, then the values little-endia
 TEST_CASE("write_strain_binary: double fields and no sigma", "[io][strain]") {
   mesh::Bending_tube spec;
   spec.schedule = {{3, {1.0}}};
-  const auto field =
-      strain::compute_strain<double>(mesh::make_bending_tube(spec).animation, strain::Strain_options{.normalization = strain::No_normalization{}});
+  const auto field = strain::compute_strain<double>(
+      mesh::make_bending_tube(spec).animation, strain::Strain_options{.normalization = strain::No_normalization{}});
   const auto path = test::scratch_dir() / "field64.bin";
   io::write_strain_binary(field, path);
   const std::string bytes = file_text(path);

@@ -70,7 +70,8 @@ Animation animation_of_state(const py::object& state) {
 
 void bind_animation(py::module_& m) {
   using namespace pybind11::literals;
-  py::class_<Animation>(m, "Animation", R"doc(An animation of one triangle mesh: fixed connectivity, vertex positions per frame.
+  py::class_<Animation>(m, "Animation",
+                        R"doc(An animation of one triangle mesh: fixed connectivity, vertex positions per frame.
 
 Animation(faces, frames, fps=30): from an (F, 3) integer array of vertex indices (each triangle
 counter-clockwise seen from outside; together an oriented 2-manifold, with or without boundary)
@@ -104,15 +105,16 @@ Complexity O(T V + F).)doc")
             return view(indices, {py::ssize_t(a.num_faces()), py::ssize_t(3)}, self);
           },
           "The (F, 3) uint32 vertex indices of the triangles: a read-only view (no copy).")
-      .def_property_readonly("num_frames", [](const Animation& a) { return a.mesh.num_frames(); },
-                             "T, the number of frames.")
-      .def_property_readonly("fps", [](const Animation& a) { return a.mesh.frames_per_second(); },
-                             "The frame rate, in frames per second: the motion signatures measure rates per "
-                             "second, so that the same motion sampled at any rate compares as the same.")
-      .def_property_readonly("num_vertices", [](const Animation& a) { return a.mesh.num_vertices(); },
-                             "V, the number of vertices.")
-      .def_property_readonly("num_faces", [](const Animation& a) { return a.mesh.num_faces(); },
-                             "F, the number of triangles.")
+      .def_property_readonly(
+          "num_frames", [](const Animation& a) { return a.mesh.num_frames(); }, "T, the number of frames.")
+      .def_property_readonly(
+          "fps", [](const Animation& a) { return a.mesh.frames_per_second(); },
+          "The frame rate, in frames per second: the motion signatures measure rates per "
+          "second, so that the same motion sampled at any rate compares as the same.")
+      .def_property_readonly(
+          "num_vertices", [](const Animation& a) { return a.mesh.num_vertices(); }, "V, the number of vertices.")
+      .def_property_readonly(
+          "num_faces", [](const Animation& a) { return a.mesh.num_faces(); }, "F, the number of triangles.")
       .def_property_readonly(
           "repair",
           [](const Animation& a) { return a.repair ? py::object(repair_dict(*a.repair)) : py::object(py::none()); },
@@ -121,7 +123,8 @@ Complexity O(T V + F).)doc")
           "None for an animation made from arrays.")
       .def("__repr__", [](const Animation& a) {
         return "<deformseg.Animation: " + std::to_string(a.mesh.num_frames()) + " frames, " +
-               std::to_string(a.mesh.num_vertices()) + " vertices, " + std::to_string(a.mesh.num_faces()) + " triangles>";
+               std::to_string(a.mesh.num_vertices()) + " vertices, " + std::to_string(a.mesh.num_faces()) +
+               " triangles>";
       });
 
   m.def("read_animation", &read_input, "path"_a, "clip"_a = py::none(), "fps"_a = 30.0, "topology"_a = py::none(),

@@ -54,7 +54,8 @@ evaluation::Labelled_item labelled_item(const py::handle& item, std::size_t inde
   return l;
 }
 
-evaluation::Retrieval_scores evaluate(const py::array_t<double, py::array::forcecast>& similarity, const py::sequence& labels) {
+evaluation::Retrieval_scores evaluate(const py::array_t<double, py::array::forcecast>& similarity,
+                                      const py::sequence& labels) {
   if (similarity.ndim() != 2 || similarity.shape(0) != similarity.shape(1))
     throw py::value_error("similarity: expected a square (N, N) array, got " + shape_of(similarity));
   if (std::size_t(similarity.shape(0)) != labels.size())
@@ -146,15 +147,22 @@ void bind_evaluation(py::module_& m) {
                     "Queries with no candidate of their motion.")
       .def_readonly("queries_without_candidate", &evaluation::Retrieval_scores::queries_without_candidate,
                     "Items left out for having no candidate at all.")
-      .def_readonly("nn_accuracy", &evaluation::Retrieval_scores::nn_accuracy, "Fraction of queries whose nearest candidate has their motion, or None.")
+      .def_readonly("nn_accuracy", &evaluation::Retrieval_scores::nn_accuracy,
+                    "Fraction of queries whose nearest candidate has their motion, or None.")
       .def_readonly("mean_average_precision", &evaluation::Retrieval_scores::mean_average_precision, "mAP, or None.")
-      .def_readonly("roc_auc", &evaluation::Retrieval_scores::roc_auc, "ROC-AUC over same- vs different-motion pairs, or None.")
-      .def_readonly("median_same", &evaluation::Retrieval_scores::median_same, "Median similarity of same-motion pairs, or None.")
-      .def_readonly("median_different", &evaluation::Retrieval_scores::median_different, "Median of different-motion pairs, or None.")
+      .def_readonly("roc_auc", &evaluation::Retrieval_scores::roc_auc,
+                    "ROC-AUC over same- vs different-motion pairs, or None.")
+      .def_readonly("median_same", &evaluation::Retrieval_scores::median_same,
+                    "Median similarity of same-motion pairs, or None.")
+      .def_readonly("median_different", &evaluation::Retrieval_scores::median_different,
+                    "Median of different-motion pairs, or None.")
       .def_readonly("same_pairs", &evaluation::Retrieval_scores::same_pairs, "Number of same-motion pairs.")
-      .def_readonly("different_pairs", &evaluation::Retrieval_scores::different_pairs, "Number of different-motion pairs.")
-      .def_readonly("labels", &evaluation::Retrieval_scores::labels, "Every motion, sorted: the rows and columns of confusion.")
-      .def_readonly("confusion", &evaluation::Retrieval_scores::confusion, "confusion[r][c]: queries of labels[r] whose nearest has labels[c].")
+      .def_readonly("different_pairs", &evaluation::Retrieval_scores::different_pairs,
+                    "Number of different-motion pairs.")
+      .def_readonly("labels", &evaluation::Retrieval_scores::labels,
+                    "Every motion, sorted: the rows and columns of confusion.")
+      .def_readonly("confusion", &evaluation::Retrieval_scores::confusion,
+                    "confusion[r][c]: queries of labels[r] whose nearest has labels[c].")
       .def_property_readonly(
           "per_motion",
           [](const evaluation::Retrieval_scores& s) {

@@ -42,7 +42,8 @@ similarity::Motion_match motion_match_of_state(const py::object& state) {
 
 void bind_find_motion(py::module_& m) {
   using namespace pybind11::literals;
-  py::class_<similarity::Motion_match>(m, "MotionMatch", "A window of a long animation that matches a query (find_motion).")
+  py::class_<similarity::Motion_match>(m, "MotionMatch",
+                                       "A window of a long animation that matches a query (find_motion).")
       .def(py::pickle(&motion_match_state, &motion_match_of_state))
       .def_readonly("first", &similarity::Motion_match::first, "The window's first frame in the long animation.")
       .def_readonly("last", &similarity::Motion_match::last, "Its last frame (inclusive).")

@@ -83,7 +83,8 @@ std::optional<Reference_mesh> reference_mesh_of(const std::optional<std::filesys
   return Reference_mesh{path->string(), mesh::make_face_graph<mesh::Surface_mesh>(io::points_of(soup), soup.triangles)};
 }
 
-strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference,
+strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& a,
+                                     const std::optional<Reference_mesh>& reference,
                                      const strain::Strain_options& options) {
   if (!reference) return strain::compute_strain(a, options);
   try {

@@ -56,7 +56,8 @@ void check_rest(const std::optional<std::filesystem::path>& reference_mesh, std:
 
 // The strain field of `a` with `options`, against `reference` when there is one; its errors then
 // name the reference mesh's file, as the tool's do: a mismatch of connectivity is that file's.
-strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& a, const std::optional<Reference_mesh>& reference,
+strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& a,
+                                     const std::optional<Reference_mesh>& reference,
                                      const strain::Strain_options& options);
 
 }  // namespace deformseg::python

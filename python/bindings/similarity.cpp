@@ -86,7 +86,8 @@ struct Animation_list {
   }
   auto range() const {
     return meshes |
-           std::views::transform([](const mesh::Surface_mesh_animation* m) -> const mesh::Surface_mesh_animation& { return *m; });
+           std::views::transform(
+               [](const mesh::Surface_mesh_animation* m) -> const mesh::Surface_mesh_animation& { return *m; });
   }
 };
 

@@ -31,15 +31,20 @@ py::tuple evolving(const Animation& a, double threshold, const std::optional<std
   if (!(threshold >= 0 && threshold <= 1)) refuse("threshold must be in [0, 1]");
   if (reference_mesh && reference == "previous")
     refuse("reference_mesh is a rest pose: it excludes reference='previous'");
-  const spatiotemporal::Spatiotemporal_options options{.reference = reference_of(reference.value_or(reference_mesh ? "rest" : "previous")),
-                                       .threshold = threshold, .min_triangles = min_triangles,
-                                       .min_frames = min_frames, .max_island = max_island};
+  const spatiotemporal::Spatiotemporal_options options{
+      .reference = reference_of(reference.value_or(reference_mesh ? "rest" : "previous")),
+      .threshold = threshold,
+      .min_triangles = min_triangles,
+      .min_frames = min_frames,
+      .max_island = max_island};
   const spatiotemporal::Evolving_graph graph = [&] {
     Interruptible_call call;
     if (!reference_mesh) return spatiotemporal::evolving_graph(a.mesh, options);
-    const strain::Strain_field<float> field = field_of(a.mesh, reference_mesh_of(reference_mesh), strain::Strain_options{});
+    const strain::Strain_field<float> field =
+        field_of(a.mesh, reference_mesh_of(reference_mesh), strain::Strain_options{});
     const std::vector<double> areas = mesh::face_areas(a.mesh, 0);
-    const spatiotemporal::Spatiotemporal_segmentation segmentation = spatiotemporal::spatiotemporal_segmentation(field, a.mesh.triangles(), options);
+    const spatiotemporal::Spatiotemporal_segmentation segmentation =
+        spatiotemporal::spatiotemporal_segmentation(field, a.mesh.triangles(), options);
     return spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segmentation, a.mesh.triangles(), areas));
   }();
   py::list key_frames;

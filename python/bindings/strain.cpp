@@ -67,8 +67,8 @@ py::array strain(const Animation& a, const std::string& reference, std::size_t r
 void bind_strain(py::module_& m) {
   using namespace pybind11::literals;
   m.def("strain", &strain, "animation"_a, py::kw_only(), "reference"_a = "rest", "rest_frame"_a = 0,
-        "reference_mesh"_a = py::none(), "measure"_a = "max-principal", "normalize"_a = "gaussian", "sigma"_a = py::none(),
-        "degenerate_tolerance"_a = 1e-12, "threads"_a = 0,
+        "reference_mesh"_a = py::none(), "measure"_a = "max-principal", "normalize"_a = "gaussian",
+        "sigma"_a = py::none(), "degenerate_tolerance"_a = 1e-12, "threads"_a = 0,
         R"doc(The strain of every triangle at every frame: a (T, F) float32 array, row t the frame t
 (compute_strain; Strain_options' defaults).
 

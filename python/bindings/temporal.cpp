@@ -35,8 +35,8 @@ strain::Frame_metric metric_of(const std::string& name) {
 // against the reference mesh.
 Eigen::MatrixXf distances_of(const mesh::Surface_mesh_animation& a, strain::Frame_metric metric, std::size_t rest_frame,
                              const std::optional<std::filesystem::path>& reference_mesh, int threads) {
-  const strain::Strain_field<float> field =
-      field_of(a, reference_mesh_of(reference_mesh), strain::Strain_options{.rest_frame = rest_frame, .threads = threads});
+  const strain::Strain_field<float> field = field_of(
+      a, reference_mesh_of(reference_mesh), strain::Strain_options{.rest_frame = rest_frame, .threads = threads});
   return frame_distances(field, {.metric = metric, .threads = threads});
 }
 
@@ -77,14 +77,18 @@ std::vector<std::pair<std::size_t, std::size_t>> temporal(const Animation& a, co
     const temporal::Segment_cost cost(distances_of(a.mesh, m, rest_frame, reference_mesh, threads));
     if (method == "binary-split")
       result = temporal::segment_frames(
-          cost, temporal::Binary_split{.threshold = threshold_or(temporal::Binary_split{}.threshold), .min_length = min_length});
+          cost, temporal::Binary_split{.threshold = threshold_or(temporal::Binary_split{}.threshold),
+                                       .min_length = min_length});
     else if (method == "greedy")
-      result = temporal::segment_frames(cost, temporal::Thesis_greedy{.threshold = threshold_or(temporal::Thesis_greedy{}.threshold)});
+      result = temporal::segment_frames(
+          cost, temporal::Thesis_greedy{.threshold = threshold_or(temporal::Thesis_greedy{}.threshold)});
     else if (method == "barbic")
       result = temporal::segment_frames(cost, temporal::Barbic_pca{});
     else
-      result = temporal::segment_frames(cost, temporal::Optimal_partition{.penalty = threshold_or(temporal::Optimal_partition{}.penalty),
-                                                      .segments = segments, .min_length = min_length});
+      result = temporal::segment_frames(
+          cost, temporal::Optimal_partition{.penalty = threshold_or(temporal::Optimal_partition{}.penalty),
+                                            .segments = segments,
+                                            .min_length = min_length});
   }
   std::vector<std::pair<std::size_t, std::size_t>> out;
   for (const temporal::Temporal_segment& s : result.segments) out.emplace_back(s.first, s.last);

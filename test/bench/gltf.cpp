@@ -75,14 +75,15 @@ void add_geometry(tinygltf::Model& model) {
       positions.insert(positions.end(), {float(0.05 * std::cos(a)), float(y), float(0.05 * std::sin(a))});
       const auto clamp = [](int i) { return std::uint16_t(std::clamp(i, 0, joint_count - 1)); };
       joints.insert(joints.end(), {clamp(j - 1), clamp(j), clamp(j + 1), clamp(j + 2)});
-      weights.insert(weights.end(), {float(0.2 * (1 - f)), float(0.6 * (1 - f) + 0.2 * f), float(0.2 * (1 - f) + 0.6 * f),
-                                     float(0.2 * f)});
+      weights.insert(weights.end(), {float(0.2 * (1 - f)), float(0.6 * (1 - f) + 0.2 * f),
+                                     float(0.2 * (1 - f) + 0.6 * f), float(0.2 * f)});
     }
   }
   std::vector<std::uint32_t> indices;
   for (int r = 0; r + 1 < rings; ++r)
     for (int k = 0; k < ring_vertices; ++k) {
-      const auto a = std::uint32_t(r * ring_vertices + k), b = std::uint32_t(r * ring_vertices + (k + 1) % ring_vertices);
+      const auto a = std::uint32_t(r * ring_vertices + k),
+                 b = std::uint32_t(r * ring_vertices + (k + 1) % ring_vertices);
       indices.insert(indices.end(), {a, b + ring_vertices, b, a, a + ring_vertices, b + ring_vertices});
     }
   tinygltf::Primitive primitive;

@@ -58,7 +58,8 @@ void distances(benchmark::State& state) {
     for (Eigen::Index i = 0; i < h->size(); ++i) h->data()[i] = mass(rng);
     for (Eigen::Index i = 0; i < h->rows(); ++i) h->row(i) /= h->row(i).sum();
   }
-  const auto metric = state.range(0) == 0 ? strain::Histogram_metric::total_variation : strain::Histogram_metric::earth_movers;
+  const auto metric =
+      state.range(0) == 0 ? strain::Histogram_metric::total_variation : strain::Histogram_metric::earth_movers;
   for (auto _ : state) benchmark::DoNotOptimize(strain::histogram_distances(a, b, metric, int(state.range(1))).data());
   state.SetItemsProcessed(std::int64_t(state.iterations()) * 500 * 500);
 }

@@ -60,7 +60,8 @@ void write_generated_frame(const fs::path& path, int frame, int rows, int column
 const fs::path& frames_folder() {
   static const fs::path folder = [] {
     const char* from_environment = std::getenv("DEFORMSEG_DATA_DIR");
-    const fs::path data = from_environment && *from_environment ? fs::path(from_environment) : fs::path(DEFORMSEG_DATA_DIR);
+    const fs::path data =
+        from_environment && *from_environment ? fs::path(from_environment) : fs::path(DEFORMSEG_DATA_DIR);
     const fs::path archive = data / "horse-gallop" / "horse-gallop.tar.xz";
     const fs::path target = fs::temp_directory_path() / "deformseg-bench-read_obj";
     fs::remove_all(target);
@@ -73,7 +74,8 @@ const fs::path& frames_folder() {
     }
     std::fprintf(stderr, "%s not found: reading a generated animation in %s\n", archive.c_str(), target.c_str());
     for (int t = 0; t < generated_frames; ++t)
-      write_generated_frame(target / ("frame_" + std::to_string(t) + ".obj"), t, 136, 62);  // 8432 vertices, 16864 triangles
+      write_generated_frame(target / ("frame_" + std::to_string(t) + ".obj"), t, 136,
+                            62);  // 8432 vertices, 16864 triangles
     return target;
   }();
   return folder;

@@ -171,7 +171,8 @@ void report(const std::vector<Clip>& clips, const Eigen::MatrixXd& value) {
     }
   }
   for (auto& [body, f] : per_body)
-    std::printf("  %-18s queries %3d  NN %.3f  mAP %.3f\n", body.c_str(), f.queries, f.nn / f.queries, f.map / f.queries);
+    std::printf("  %-18s queries %3d  NN %.3f  mAP %.3f\n", body.c_str(), f.queries, f.nn / f.queries,
+                f.map / f.queries);
   std::printf("ALL queries %d  NN %.3f  mAP %.3f  AUC %.3f  median same %.3f  different %.3f\n", all.queries,
               all.nn / all.queries, all.map / all.queries, roc_auc(pooled), median(same), median(different));
 }
@@ -216,7 +217,9 @@ int main(int argc, char** argv) {
     else if (key == "--quantiles") policy.options.quantiles = std::stoul(value);
     else if (key == "--tolerance") policy.options.tolerance = std::stod(value);
     else if (key == "--profile") temporal = value == "temporal";
-    else if (key == "--normalize") policy.normalization.length = value == "longer" ? similarity::Normalize_by::longer : similarity::Normalize_by::shorter;
+    else if (key == "--normalize")
+      policy.normalization.length =
+          value == "longer" ? similarity::Normalize_by::longer : similarity::Normalize_by::shorter;
     else if (key == "--baseline") baseline = value == "default";
     else if (key == "--leave-out") leave_out = value;
     else if (key == "--cache") cache = value;
@@ -234,8 +237,10 @@ int main(int argc, char** argv) {
   std::erase_if(clips, [&](const Clip& c) { return c.file == leave_out; });
   std::vector<similarity::Self_similarity_description> described;
   for (const Clip& c : clips)
-    described.push_back({c.distances, temporal ? deformseg::similarity::internal::temporal_profiles(c.distances, policy.options.window, policy.options.quantiles)
-                                               : deformseg::similarity::internal::row_profiles(c.distances, policy.options.window, policy.options.quantiles)});
+    described.push_back({c.distances, temporal ? deformseg::similarity::internal::temporal_profiles(
+                                                     c.distances, policy.options.window, policy.options.quantiles)
+                                               : deformseg::similarity::internal::row_profiles(
+                                                     c.distances, policy.options.window, policy.options.quantiles)});
   const auto profiled = std::chrono::steady_clock::now();
   std::printf("window %zu, quantiles %zu, tolerance %g, left out: %s\n", policy.options.window,
               policy.options.quantiles, policy.options.tolerance, leave_out.empty() ? "none" : leave_out.c_str());

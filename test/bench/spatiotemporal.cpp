@@ -32,12 +32,14 @@ const mesh::Surface_mesh_animation& tube() {
 }
 
 const strain::Strain_field<float>& field() {
-  static const strain::Strain_field<float> strain = strain::compute_strain(tube(), {.reference = strain::Strain_reference::previous_pose});
+  static const strain::Strain_field<float> strain =
+      strain::compute_strain(tube(), {.reference = strain::Strain_reference::previous_pose});
   return strain;
 }
 
 const spatiotemporal::Spatiotemporal_segmentation& segments() {
-  static const spatiotemporal::Spatiotemporal_segmentation s = spatiotemporal::spatiotemporal_segmentation(field(), tube().triangles());
+  static const spatiotemporal::Spatiotemporal_segmentation s =
+      spatiotemporal::spatiotemporal_segmentation(field(), tube().triangles());
   return s;
 }
 
@@ -46,19 +48,24 @@ void report(benchmark::State& state) {
 }
 
 void strain(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(strain::compute_strain(tube(), {.reference = strain::Strain_reference::previous_pose}));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(strain::compute_strain(tube(), {.reference = strain::Strain_reference::previous_pose}));
   report(state);
 }
 
 void labels_and_segments(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(spatiotemporal::spatiotemporal_segmentation(field(), tube().triangles()));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(spatiotemporal::spatiotemporal_segmentation(field(), tube().triangles()));
   report(state);
 }
 
 void evolving_graph_of_segments(benchmark::State& state) {
   const std::vector<double> areas = mesh::face_areas(tube(), 0);
-  for (auto _ : state) benchmark::DoNotOptimize(spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segments(), tube().triangles(), areas)));
-  state.counters["key_frames"] = double(spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segments(), tube().triangles(), areas)).size());
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segments(), tube().triangles(), areas)));
+  state.counters["key_frames"] = double(
+      spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segments(), tube().triangles(), areas)).size());
   report(state);
 }
 

@@ -41,9 +41,11 @@ const mesh::Surface_mesh_animation& tube() {
 }
 
 const std::optional<mesh::Surface_mesh_animation>& horse() {
-  static const std::optional<mesh::Surface_mesh_animation> animation = []() -> std::optional<mesh::Surface_mesh_animation> {
+  static const std::optional<mesh::Surface_mesh_animation> animation =
+      []() -> std::optional<mesh::Surface_mesh_animation> {
     const char* from_environment = std::getenv("DEFORMSEG_DATA_DIR");
-    const fs::path data = from_environment && *from_environment ? fs::path(from_environment) : fs::path(DEFORMSEG_DATA_DIR);
+    const fs::path data =
+        from_environment && *from_environment ? fs::path(from_environment) : fs::path(DEFORMSEG_DATA_DIR);
     const fs::path archive = data / "horse-gallop" / "horse-gallop.tar.xz";
     if (!fs::exists(archive)) {
       std::fprintf(stderr, "%s not found: no horse benchmarks\n", archive.c_str());
@@ -73,7 +75,8 @@ void run(benchmark::State& state, const mesh::Surface_mesh_animation& a) {
     if (normalised)
       benchmark::DoNotOptimize(strain::compute_strain(a, {.threads = threads}));
     else
-      benchmark::DoNotOptimize(strain::compute_strain(a, strain::Strain_options{.normalization = strain::No_normalization{}, .threads = threads}));
+      benchmark::DoNotOptimize(strain::compute_strain(
+          a, strain::Strain_options{.normalization = strain::No_normalization{}, .threads = threads}));
   }
   report(state, a);
 }
@@ -93,7 +96,8 @@ void horse_strain(benchmark::State& state) {
 void previous_pose_strain(benchmark::State& state) {
   const auto& a = tube();
   for (auto _ : state)
-    benchmark::DoNotOptimize(strain::compute_strain(a, {.reference = strain::Strain_reference::previous_pose, .threads = int(state.range(0))}));
+    benchmark::DoNotOptimize(strain::compute_strain(
+        a, {.reference = strain::Strain_reference::previous_pose, .threads = int(state.range(0))}));
   report(state, a);
 }
 
@@ -115,8 +119,8 @@ void double_strain(benchmark::State& state) {
 void stage(benchmark::State& state) {
   const auto& a = tube();
   const auto triangles = deformseg::strain::internal::canonical_triangles(a.triangles());
-  const auto bases = deformseg::strain::internal::reference_bases(a.frame_positions(0).data(), std::span<const deformseg::strain::internal::Triangle_indices>(triangles),
-                                               1e-12, 1);
+  const auto bases = deformseg::strain::internal::reference_bases(
+      a.frame_positions(0).data(), std::span<const deformseg::strain::internal::Triangle_indices>(triangles), 1e-12, 1);
   const auto stages = state.range(0);
   deformseg::strain::internal::Edge_block edges;
   deformseg::strain::internal::Cauchy_green_block<float> green;
@@ -128,8 +132,11 @@ void stage(benchmark::State& state) {
         const std::size_t n = std::min(deformseg::strain::internal::strain_block, triangles.size() - j);
         deformseg::strain::internal::gather_edges(xyz, triangles.data() + j, n, edges);
         if (stages >= 2)
-          deformseg::strain::internal::cauchy_green<false>(edges, bases.alpha.data() + j, bases.beta.data() + j, bases.gamma.data() + j, n, green);
-        if (stages >= 3) deformseg::strain::internal::measure_block<false>(green, n, strain::Max_principal_strain{}, {strain.data() + j});
+          deformseg::strain::internal::cauchy_green<false>(edges, bases.alpha.data() + j, bases.beta.data() + j,
+                                                           bases.gamma.data() + j, n, green);
+        if (stages >= 3)
+          deformseg::strain::internal::measure_block<false>(green, n, strain::Max_principal_strain{},
+                                                            {strain.data() + j});
         benchmark::ClobberMemory();
       }
     }
@@ -154,8 +161,16 @@ void normalisation(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(tube_strain)->ArgsProduct({{1, 2}, {0, 1}})->ArgNames({"threads", "normalised"})->UseRealTime()->Unit(benchmark::kMillisecond);
-BENCHMARK(horse_strain)->ArgsProduct({{1, 2}, {0, 1}})->ArgNames({"threads", "normalised"})->UseRealTime()->Unit(benchmark::kMillisecond);
+BENCHMARK(tube_strain)
+    ->ArgsProduct({{1, 2}, {0, 1}})
+    ->ArgNames({"threads", "normalised"})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(horse_strain)
+    ->ArgsProduct({{1, 2}, {0, 1}})
+    ->ArgNames({"threads", "normalised"})
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(previous_pose_strain)->Arg(1)->Arg(2)->ArgName("threads")->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(strain_with_directions)->Arg(1)->Arg(2)->ArgName("threads")->UseRealTime()->Unit(benchmark::kMillisecond);
 BENCHMARK(double_strain)->Arg(1)->Arg(2)->ArgName("threads")->UseRealTime()->Unit(benchmark::kMillisecond);

@@ -85,13 +85,38 @@ void policy(benchmark::State& state, Policy p) {
 }  // namespace
 
 BENCHMARK(plain_product)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
-BENCHMARK(distances)->Arg(int(strain::Frame_metric::euclidean))->Arg(int(strain::Frame_metric::cosine))->ArgName("metric")
-    ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
+BENCHMARK(distances)
+    ->Arg(int(strain::Frame_metric::euclidean))
+    ->Arg(int(strain::Frame_metric::cosine))
+    ->ArgName("metric")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(2);
 BENCHMARK(cost_table)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
-BENCHMARK_CAPTURE(policy, optimal_partition, temporal::Optimal_partition{})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK_CAPTURE(policy, optimal_50_segments, temporal::Optimal_partition{.segments = 50})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK_CAPTURE(policy, binary_split, temporal::Binary_split{})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK_CAPTURE(policy, thesis_greedy, temporal::Thesis_greedy{})->Arg(10000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK_CAPTURE(policy, barbic_pca, temporal::Barbic_pca{})->Arg(1000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK_CAPTURE(policy, optimal_partition, temporal::Optimal_partition{})
+    ->Arg(10000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK_CAPTURE(policy, optimal_50_segments, temporal::Optimal_partition{.segments = 50})
+    ->Arg(10000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK_CAPTURE(policy, binary_split, temporal::Binary_split{})
+    ->Arg(10000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK_CAPTURE(policy, thesis_greedy, temporal::Thesis_greedy{})
+    ->Arg(10000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK_CAPTURE(policy, barbic_pca, temporal::Barbic_pca{})
+    ->Arg(1000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 BENCHMARK_MAIN();

@@ -7,7 +7,9 @@
 #include <vector>
 
 struct Labels_only {  // returns std::vector, not deformseg::clustering::Clustering
-  std::vector<std::size_t> operator()(const Eigen::MatrixXd& d) const { return std::vector<std::size_t>(std::size_t(d.rows())); }
+  std::vector<std::size_t> operator()(const Eigen::MatrixXd& d) const {
+    return std::vector<std::size_t>(std::size_t(d.rows()));
+  }
 };
 
 struct Everything_together {

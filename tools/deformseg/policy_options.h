@@ -29,7 +29,9 @@ inline void add_policy_options(CLI::App& command, Policy_options& o) {
                      "smith-waterman (local), dtw (global) or subsequence-dtw (open begin and end). Default: dtw for "
                      "motion-signature, smith-waterman for the others")
       ->check(CLI::IsMember(names(similarity::alignment_names)));
-  command.add_option("--threshold", o.threshold, "graph: the deformed threshold of the segmentation, in [0, 1]. Default: 0.5")
+  command
+      .add_option("--threshold", o.threshold,
+                  "graph: the deformed threshold of the segmentation, in [0, 1]. Default: 0.5")
       ->check(CLI::Range(0.0, 1.0));
   command.add_option("--up", o.up,
                      "motion-signature: the animations' up axis, whose rises and falls the signatures tell apart; "

@@ -55,7 +55,8 @@ inline std::vector<Merge> dendrogram(Eigen::MatrixXd d, std::vector<double> size
     const std::size_t a = chain.back();
     const bool has_previous = chain.size() > 1;
     std::size_t nearest = has_previous ? chain[chain.size() - 2] : n;
-    double distance = has_previous ? d(Eigen::Index(nearest), Eigen::Index(a)) : std::numeric_limits<double>::infinity();
+    double distance =
+        has_previous ? d(Eigen::Index(nearest), Eigen::Index(a)) : std::numeric_limits<double>::infinity();
     for (std::size_t c = 0; c < n; ++c)
       if (active[c] && c != a && d(Eigen::Index(c), Eigen::Index(a)) < distance) {
         nearest = c;

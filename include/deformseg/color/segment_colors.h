@@ -67,9 +67,11 @@ inline std::vector<Rgb> segment_face_colors(const spatiotemporal::Frame_segments
 /// @throws invalid_input when `t` is out of range or the graph has another number of faces.
 /// @par Complexity O(F + E), as `Frame_segments::face_nodes`.
 template <mesh::FaceGraph Graph, class FacePropertyMap>
-void put_face_segments(const spatiotemporal::Frame_segments& frames, std::size_t t, const Graph& graph, FacePropertyMap map) {
+void put_face_segments(const spatiotemporal::Frame_segments& frames, std::size_t t, const Graph& graph,
+                       FacePropertyMap map) {
   const std::vector<std::uint32_t> nodes = frames.face_nodes(t);
-  deformseg::strain::internal::for_each_face_index(graph, nodes.size(), [&](auto f, std::size_t j) { put(map, f, nodes[j]); });
+  deformseg::strain::internal::for_each_face_index(graph, nodes.size(),
+                                                   [&](auto f, std::size_t j) { put(map, f, nodes[j]); });
 }
 
 }  // namespace deformseg::color

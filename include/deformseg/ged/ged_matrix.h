@@ -132,10 +132,12 @@ Ged_matrix_result ged_matrix_results(const Graphs& graphs, const Policy& policy 
                     ? internal::combined(std::move(forward), policy(b, a, costs), boost::num_vertices(a))
                     : std::move(forward);
   });
-  Ged_matrix_result result{.distance = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
-                           .lower = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
-                           .upper = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
-                           .pairs = {}, .exact = true};
+  Ged_matrix_result result{
+      .distance = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
+      .lower = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
+      .upper = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)),
+      .pairs = {},
+      .exact = true};
   for (std::size_t at = 0; at < todo.size(); ++at) {
     const auto i = static_cast<Eigen::Index>(todo[at].first), j = static_cast<Eigen::Index>(todo[at].second);
     const Ged_result& r = pairs[at];

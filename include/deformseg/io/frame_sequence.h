@@ -211,7 +211,8 @@ inline std::vector<std::filesystem::path> list_frame_files(const std::string& di
   const std::filesystem::path input(directory_or_glob);
   std::error_code error;
   const bool is_folder = std::filesystem::is_directory(input, error);
-  std::vector<std::filesystem::path> files = is_folder ? internal::frame_files_in(input) : internal::files_matching(input);
+  std::vector<std::filesystem::path> files =
+      is_folder ? internal::frame_files_in(input) : internal::files_matching(input);
   if (files.empty())
     throw invalid_input(is_folder ? "no frame file (.obj, .off or .ply) in the folder" : "no file matches the pattern",
                         {.file = directory_or_glob});
@@ -298,8 +299,8 @@ mesh::Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& d
   Repaired_triangles repaired;
   if (!options.repair.weld)
     repaired = internal::repaired_topology(std::span<const Coordinate>(), soup.num_vertices(),
-                                           std::span<const std::array<std::uint32_t, 3>>(soup.triangles), options.repair,
-                                           topology_location);
+                                           std::span<const std::array<std::uint32_t, 3>>(soup.triangles),
+                                           options.repair, topology_location);
 
   // The first frame's positions are those just read, unless they come from elsewhere or are to
   // be rounded to another type, when reading them again rounds each number once.
@@ -316,8 +317,8 @@ mesh::Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& d
 
   if (options.repair.weld)
     repaired = internal::repaired_topology(std::span<const Coordinate>(positions), block / 3,
-                                           std::span<const std::array<std::uint32_t, 3>>(soup.triangles), options.repair,
-                                           topology_location);
+                                           std::span<const std::array<std::uint32_t, 3>>(soup.triangles),
+                                           options.repair, topology_location);
   auto animation = internal::repaired_animation<Graph, Coordinate>(std::move(positions), block / 3, repaired, report);
   animation.set_frames_per_second(options.fps);
   return animation;

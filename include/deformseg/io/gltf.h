@@ -177,7 +177,8 @@ inline void check_extensions(const tinygltf::Model& model) {
       throw invalid_input("the file requires KHR_draco_mesh_compression (Draco-compressed geometry), which deformseg "
                           "does not decode");
     if (name == "EXT_meshopt_compression" || name == "KHR_meshopt_compression")
-      throw invalid_input("the file requires " + name + " (meshopt-compressed buffers), which deformseg does not decode");
+      throw invalid_input("the file requires " + name +
+                          " (meshopt-compressed buffers), which deformseg does not decode");
     // Extensions that change only the look of a file, or that deformseg reads.
     const bool known = name == "KHR_mesh_quantization" || name == "KHR_texture_transform" ||
                        name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name == "KHR_lights_punctual" ||
@@ -286,7 +287,8 @@ inline io::Gltf_mesh_info mesh_info(const tinygltf::Model& model, std::size_t me
     const tinygltf::Primitive& primitive = model.meshes[mesh].primitives[p];
     const std::string name = primitive_name(model, mesh, p);
     io::Gltf_primitive_info pi{.mode = mode_name(primitive_mode(primitive)), .morph_targets = primitive.targets.size()};
-    if (attribute(primitive, "POSITION") >= 0) pi.vertices = accessor_count(model, attribute(primitive, "POSITION"), name);
+    if (attribute(primitive, "POSITION") >= 0)
+      pi.vertices = accessor_count(model, attribute(primitive, "POSITION"), name);
     if (primitive_mode(primitive) == TINYGLTF_MODE_TRIANGLES)
       pi.triangles = (primitive.indices >= 0 ? accessor_count(model, primitive.indices, name) : pi.vertices) / 3;
     info.primitives.push_back(pi);
@@ -306,14 +308,16 @@ inline io::Gltf_contents contents(const std::filesystem::path& path, double fps)
                             .duration = clip.end - clip.start, .frames = frame_count(clip.start, clip.end, fps),
                             .channels = clip.channels.size()});
   }
-  for (const tinygltf::Skin& skin : model.skins) result.skins.push_back({.name = skin.name, .joints = skin.joints.size()});
+  for (const tinygltf::Skin& skin : model.skins)
+    result.skins.push_back({.name = skin.name, .joints = skin.joints.size()});
   for (std::size_t m = 0; m < model.meshes.size(); ++m) result.meshes.push_back(mesh_info(model, m));
   const Node_forest forest = node_forest(model);
   for (std::size_t node : forest.scene_nodes) {
     const int mesh = model.nodes[node].mesh;
     if (mesh < 0) continue;
     if (std::size_t(mesh) >= model.meshes.size())
-      throw invalid_input(node_name(model, node) + " refers to mesh " + std::to_string(mesh) + ", which does not exist");
+      throw invalid_input(node_name(model, node) + " refers to mesh " + std::to_string(mesh) +
+                          ", which does not exist");
     io::Gltf_mesh_info& info = result.meshes[std::size_t(mesh)];
     ++info.instances;
     info.skinned = info.skinned || model.nodes[node].skin >= 0;
@@ -515,8 +519,9 @@ inline Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_re
 /// @par Complexity that of `sample_gltf`, plus the repair's O(V + F log F) and a copy of the positions.
 /// @sa sample_gltf, gltf_contents, Gltf_file, Gltf_file::repair
 template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
-mesh::Deforming_mesh<Graph, Coordinate> read_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {},
-                                            Gltf_read_report* report = nullptr) {
+mesh::Deforming_mesh<Graph, Coordinate> read_gltf(const std::filesystem::path& path,
+                                                  const Gltf_read_options& options = {},
+                                                  Gltf_read_report* report = nullptr) {
   return Gltf_file(path).read<Graph, Coordinate>(options, report);
 }
 

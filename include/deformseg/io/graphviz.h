@@ -98,7 +98,8 @@ inline bool is_strict(const std::string& text) {
   }
   if (at >= text.size()) return false;
   std::string word = text.substr(at, 6);
-  std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(word.begin(), word.end(), word.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return word == "strict" && (at + 6 >= text.size() || !std::isalnum(static_cast<unsigned char>(text[at + 6])));
 }
 
@@ -222,9 +223,9 @@ inline std::string dot_node_attributes(const spatiotemporal::Segment_node& n) {
   char color[8];
   std::snprintf(color, sizeof color, "#%02x%02x%02x", unsigned(c.r), unsigned(c.g), unsigned(c.b));
   const std::string segment = rigid ? "" : "segment=\"" + std::to_string(n.segment) + "\", ";
-  return "[label=\"" + spatiotemporal::node_label(n) + "\", kind=\"" + (rigid ? "rigid" : "deformed") + "\", " + segment +
-         "triangles=\"" + std::to_string(n.triangles) + "\", area=\"" +
-         shortest_text(n.area) + "\", style=filled, fillcolor=\"" + color + "\"]";
+  return "[label=\"" + spatiotemporal::node_label(n) + "\", kind=\"" + (rigid ? "rigid" : "deformed") + "\", " +
+         segment + "triangles=\"" + std::to_string(n.triangles) + "\", area=\"" + shortest_text(n.area) +
+         "\", style=filled, fillcolor=\"" + color + "\"]";
 }
 
 }  // namespace deformseg::io::internal

@@ -129,7 +129,8 @@ void check_repair_input(std::span<const T> positions, std::size_t num_vertices,
         throw invalid_input(join("triangle ", std::to_string(j), " has vertex index ", std::to_string(v),
                                  " out of range [0, ", std::to_string(num_vertices), ")"));
   if (!std::isfinite(options.weld_tolerance) || options.weld_tolerance < 0)
-    throw invalid_input(join("weld_tolerance must be finite and at least 0, not ", shortest_text(options.weld_tolerance)));
+    throw invalid_input(
+        join("weld_tolerance must be finite and at least 0, not ", shortest_text(options.weld_tolerance)));
 }
 
 /// Which welded vertex each input vertex became, and which input vertex names each welded one
@@ -239,8 +240,9 @@ inline void refuse_non_manifold_edges(const Oriented_soup& soup, std::span<const
   const std::vector<std::uint32_t>& triangles = on_edge[*first];
   std::string list;
   for (const std::uint32_t j : triangles) list += (list.empty() ? "" : ", ") + std::to_string(j);
-  throw invalid_input(join("edge (", std::to_string(name[*first >> 32]), ", ", std::to_string(name[*first & 0xffffffffu]),
-                           ") is shared by ", std::to_string(triangles.size()), " triangles (", list, ")"));
+  throw invalid_input(join("edge (", std::to_string(name[*first >> 32]), ", ",
+                           std::to_string(name[*first & 0xffffffffu]), ") is shared by ",
+                           std::to_string(triangles.size()), " triangles (", list, ")"));
 }
 
 /// Throws for the first triangle of `soup` that runs along an edge in the same direction as an
@@ -253,7 +255,8 @@ inline void refuse_inconsistent_orientation(const Oriented_soup& soup, std::span
       const std::uint32_t b = soup.triangles[j][(k + 1) % 3];
       const auto [found, inserted] = first_along.emplace(directed_edge_key(a, b), soup.source_triangle[j]);
       if (!inserted)
-        throw invalid_input(join("triangles ", std::to_string(found->second), " and ", std::to_string(soup.source_triangle[j]),
+        throw invalid_input(join("triangles ", std::to_string(found->second), " and ",
+                                 std::to_string(soup.source_triangle[j]),
                                  " are inconsistently oriented: both go from vertex ", std::to_string(name[a]),
                                  " to vertex ", std::to_string(name[b]), " on their shared edge"));
     }
@@ -411,8 +414,8 @@ std::vector<Coordinate> positions_of_sources(std::span<const T> positions, std::
 
 /// The animation of repaired triangles whose positions are given per output vertex.
 template <mesh::FaceGraph Graph, std::floating_point Coordinate>
-mesh::Deforming_mesh<Graph, Coordinate> animation_of(const io::Repaired_triangles& repaired, std::vector<Coordinate> positions,
-                                               io::Repair_report* report) {
+mesh::Deforming_mesh<Graph, Coordinate> animation_of(const io::Repaired_triangles& repaired,
+                                                     std::vector<Coordinate> positions, io::Repair_report* report) {
   const std::size_t vertices = repaired.source_vertex.size();
   std::vector<std::array<double, 3>> first_frame(vertices, std::array<double, 3>{});
   for (std::size_t i = 0; i < vertices && !positions.empty(); ++i)
@@ -426,8 +429,10 @@ mesh::Deforming_mesh<Graph, Coordinate> animation_of(const io::Repaired_triangle
 /// `make_repaired_animation` for readers that own the positions: when the repair keeps every
 /// vertex they become the animation's without a copy.
 template <mesh::FaceGraph Graph, std::floating_point Coordinate>
-mesh::Deforming_mesh<Graph, Coordinate> repaired_animation(std::vector<Coordinate>&& positions, std::size_t num_vertices,
-                                                     const io::Repaired_triangles& repaired, io::Repair_report* report) {
+mesh::Deforming_mesh<Graph, Coordinate> repaired_animation(std::vector<Coordinate>&& positions,
+                                                           std::size_t num_vertices,
+                                                           const io::Repaired_triangles& repaired,
+                                                           io::Repair_report* report) {
   if (keeps_input_vertices(repaired, num_vertices))
     return animation_of<Graph, Coordinate>(repaired, std::move(positions), report);
   std::vector<Coordinate> moved = positions_of_sources<Coordinate>(std::span<const Coordinate>(positions), num_vertices,

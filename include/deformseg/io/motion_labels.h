@@ -127,7 +127,8 @@ inline Labelled_clip read_row(const std::string& line, const Columns& columns, c
                     .item = {.motion = field(2), .body = field(4), .rig = field(3), .clip = field(1)}};
   if (field(0).empty()) throw invalid_input("the file field is empty", where);
   if (row.item.motion.empty())
-    throw invalid_input(std::string("the motion field is empty (a distractor is '") + evaluation::distractor_label + "')", where);
+    throw invalid_input(
+        std::string("the motion field is empty (a distractor is '") + evaluation::distractor_label + "')", where);
   if (row.item.body.empty()) row.item.body = field(0);
   return row;
 }
@@ -172,7 +173,8 @@ inline std::vector<Labelled_clip> read_motion_labels(const std::filesystem::path
     }
     Labelled_clip row = l::read_row(line, *columns, folder, where);
     if (!seen.emplace(row.file.string(), row.item.clip).second)
-      throw invalid_input("clip '" + row.item.clip + "' of " + row.file.filename().string() + " is listed twice", where);
+      throw invalid_input("clip '" + row.item.clip + "' of " + row.file.filename().string() + " is listed twice",
+                          where);
     rows.push_back(std::move(row));
   }
   if (rows.empty()) throw invalid_input("the labels file lists no animation", {.file = path.string()});

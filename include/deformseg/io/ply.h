@@ -120,7 +120,9 @@ inline Ply_property read_ply_property(Text_scanner& scanner) {
 inline void read_ply_lines(Text_scanner& scanner, Ply_header& header) {
   scanner.next_line();  // "ply", checked by check_ply_magic
   const char* start = scanner.position();
-  if (scanner.word() != "format") scanner.fail_at(start, "expected the line \"format ascii 1.0\" (or binary_little_endian, binary_big_endian) after \"ply\"");
+  if (scanner.word() != "format")
+    scanner.fail_at(
+        start, "expected the line \"format ascii 1.0\" (or binary_little_endian, binary_big_endian) after \"ply\"");
   const char* at = (scanner.skip_blanks(), scanner.position());
   const std::string_view format = scanner.word();
   if (format == "ascii") header.format = Ply_format::ascii;
@@ -184,7 +186,8 @@ inline void locate_ply_mesh(const Text_file& file, Ply_header& header) {
     header.xyz[k] = *found;
   }
   if (header.elements[*vertex].count > std::numeric_limits<std::uint32_t>::max())
-    file.fail(join(std::to_string(header.elements[*vertex].count), " vertices: more than deformseg's 32-bit indices hold"));
+    file.fail(
+        join(std::to_string(header.elements[*vertex].count), " vertices: more than deformseg's 32-bit indices hold"));
   if (!header.face_element) return;
   const Ply_element& faces = header.elements[*header.face_element];
   auto list = find_ply_property(faces, "vertex_indices", true);
@@ -364,7 +367,8 @@ private:
 
   void add_vertex(const std::array<double, 3>& xyz) {
     for (const double c : xyz)
-      if (!std::isfinite(c)) file_.fail(join("vertex ", std::to_string(soup_.num_vertices()), " has a non-finite coordinate"));
+      if (!std::isfinite(c))
+        file_.fail(join("vertex ", std::to_string(soup_.num_vertices()), " has a non-finite coordinate"));
     soup_.points.insert(soup_.points.end(), xyz.begin(), xyz.end());
   }
 
@@ -485,7 +489,8 @@ template <class Coordinate>
 void append_ply_header(std::string& out, std::size_t vertices, std::size_t faces, bool colored,
                        io::Ply_encoding encoding, std::size_t frame, std::size_t num_frames) {
   const char* type = std::same_as<Ply_coordinate<Coordinate>, float> ? "float" : "double";
-  out.append(encoding == io::Ply_encoding::binary ? "ply\nformat binary_little_endian 1.0\n" : "ply\nformat ascii 1.0\n");
+  out.append(encoding == io::Ply_encoding::binary ? "ply\nformat binary_little_endian 1.0\n"
+                                                  : "ply\nformat ascii 1.0\n");
   out.append(join("comment deformseg: frame ", std::to_string(frame), " of ", std::to_string(num_frames), "\n"));
   out.append(join("element vertex ", std::to_string(vertices), "\n"));
   for (const char* axis : {"x", "y", "z"}) out.append(join("property ", type, " ", axis, "\n"));

@@ -107,19 +107,23 @@ inline io::Point_cache_info parse_pc2_header(const File_bytes& bytes, const std:
   if (!std::isfinite(info.start_frame))
     fail_cache(path, join("the header's start frame is not finite: ", shortest_text(info.start_frame)));
   if (!std::isfinite(info.sample_rate) || info.sample_rate <= 0)
-    fail_cache(path, join("the header's sample rate is not a finite positive number: ", shortest_text(info.sample_rate)));
+    fail_cache(path,
+               join("the header's sample rate is not a finite positive number: ", shortest_text(info.sample_rate)));
   return info;
 }
 
 /// The bytes before the first frame of an MDD file of `frames` frames: counts and times.
-constexpr std::uint64_t mdd_header_size(std::size_t frames) noexcept { return mdd_counts_size + 4 * std::uint64_t(frames); }
+constexpr std::uint64_t mdd_header_size(std::size_t frames) noexcept {
+  return mdd_counts_size + 4 * std::uint64_t(frames);
+}
 
 /// The counts of an MDD header, from the first bytes of the file; checks that the file holds
 /// the frame times they announce, which `read_mdd_times` then reads.
 inline io::Point_cache_info parse_mdd_counts(const File_bytes& bytes, const std::filesystem::path& path) {
   constexpr auto big = std::endian::big;
   if (bytes.size < mdd_counts_size)
-    fail_cache(path, join("truncated header: the file has ", std::to_string(bytes.size), " bytes, an MDD header at least 8"));
+    fail_cache(path,
+               join("truncated header: the file has ", std::to_string(bytes.size), " bytes, an MDD header at least 8"));
   io::Point_cache_info info{.format = io::Point_cache_format::mdd};
   info.num_frames = header_count(load<big, std::int32_t>(bytes.begin()), "frames", path);
   info.num_vertices = header_count(load<big, std::int32_t>(bytes.begin() + 4), "vertices", path);
@@ -148,7 +152,8 @@ inline std::uint64_t header_size(const io::Point_cache_info& info) noexcept {
 
 /// Checks that a file of `file_size` bytes holds exactly the frames its header announces:
 /// names the first incomplete frame of a truncated file, counts the bytes after the last frame.
-inline void check_cache_size(const io::Point_cache_info& info, std::uint64_t file_size, const std::filesystem::path& path) {
+inline void check_cache_size(const io::Point_cache_info& info, std::uint64_t file_size,
+                             const std::filesystem::path& path) {
   const std::uint64_t frame_size = bytes_per_point * info.num_vertices;  // < 2^35: no overflow
   const std::uint64_t body = file_size - header_size(info);              // header checked before
   if (info.num_frames > std::numeric_limits<std::uint64_t>::max() / frame_size)
@@ -255,7 +260,8 @@ inline io::Point_cache_format point_cache_format(const std::filesystem::path& pa
 template <class Graph, class Coordinate>
 void check_cache_counts(const mesh::Deforming_mesh<Graph, Coordinate>& animation, const std::filesystem::path& path) {
   if (animation.num_frames() == 0) fail_cache(path, "the animation has no frame: a point cache needs at least one");
-  for (const auto& [count, what] : {std::pair{animation.num_vertices(), "vertices"}, std::pair{animation.num_frames(), "frames"}})
+  for (const auto& [count, what] :
+       {std::pair{animation.num_vertices(), "vertices"}, std::pair{animation.num_frames(), "frames"}})
     if (count > std::size_t(max_cache_count))
       fail_cache(path, join(std::to_string(count), " ", what, " are more than a point cache holds (",
                             std::to_string(max_cache_count), ")"));
@@ -273,7 +279,8 @@ float to_float32(Coordinate x, std::size_t frame, std::size_t index, const std::
 
 /// Stores every frame's positions as float32 from `out` on, in the byte order `order`.
 template <std::endian order, class Graph, class Coordinate>
-void encode_frames(const mesh::Deforming_mesh<Graph, Coordinate>& animation, char* out, const std::filesystem::path& path) {
+void encode_frames(const mesh::Deforming_mesh<Graph, Coordinate>& animation, char* out,
+                   const std::filesystem::path& path) {
   for (std::size_t t = 0; t < animation.num_frames(); ++t) {
     const std::span<const Coordinate> xyz = animation.frame_positions(t);
     for (std::size_t i = 0; i < xyz.size(); ++i, out += 4) store<order>(out, to_float32(xyz[i], t, i, path));
@@ -398,9 +405,11 @@ void write_pc2(const mesh::Deforming_mesh<Graph, Coordinate>& animation, const s
   constexpr auto little = std::endian::little;
   internal::check_cache_counts(animation, cache);
   if (!std::isfinite(options.start_frame) || std::abs(options.start_frame) > std::numeric_limits<float>::max())
-    internal::fail_cache(cache, internal::join("start_frame must be a finite float32, not ", internal::shortest_text(options.start_frame)));
+    internal::fail_cache(cache, internal::join("start_frame must be a finite float32, not ",
+                                               internal::shortest_text(options.start_frame)));
   if (!(options.sample_rate > 0) || options.sample_rate > std::numeric_limits<float>::max())
-    internal::fail_cache(cache, internal::join("sample_rate must be a positive finite float32, not ", internal::shortest_text(options.sample_rate)));
+    internal::fail_cache(cache, internal::join("sample_rate must be a positive finite float32, not ",
+                                               internal::shortest_text(options.sample_rate)));
 
   std::string bytes(internal::cache_size(animation, internal::pc2_header_size), '\0');
   char* out = bytes.data();

@@ -89,8 +89,9 @@ namespace deformseg::io::internal {
 
 /// `read_animation` of a glTF file: `read_gltf` with the options that apply to it.
 template <class Graph, class Coordinate>
-mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input, const io::Animation_read_options& options,
-                                                  io::Repair_report* report) {
+mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input,
+                                                        const io::Animation_read_options& options,
+                                                        io::Repair_report* report) {
   if (options.topology)
     throw invalid_input("a glTF file has its own connectivity: no topology mesh applies", {.file = input});
 #if DEFORMSEG_HAS_GLTF
@@ -143,8 +144,9 @@ namespace deformseg::io {
 /// `Defect_policy::refuse`, the first defect of the connectivity, located at its file.
 /// @par Complexity linear in the size of the input, plus the repair's (see `repair_triangles`).
 template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
-mesh::Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input, const Animation_read_options& options = {},
-                                                 Repair_report* report = nullptr) {
+mesh::Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input,
+                                                       const Animation_read_options& options = {},
+                                                       Repair_report* report = nullptr) {
   thread_count(options.threads);
   if (const auto [file, clip] = split_clip_suffix(input); clip) {
     if (!options.clip.empty())

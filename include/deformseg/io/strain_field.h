@@ -77,12 +77,12 @@ void write_strain_csv(const strain::Strain_field<Value>& field, const std::files
 template <std::floating_point Value>
 void write_strain_binary(const strain::Strain_field<Value>& field, const std::filesystem::path& path) {
   static_assert(sizeof(Value) == 4 || sizeof(Value) == 8, "IEEE-754 binary32 or binary64 values");
-  std::string header = internal::join(
-      R"({"format": "deformseg strain field", "version": 1, "value_type": ")", sizeof(Value) == 4 ? "float32" : "float64",
-      R"(", "byte_order": "little", "frames": )", std::to_string(field.num_frames()),
-      R"(, "triangles": )", std::to_string(field.num_faces()), R"(, "layout": "frame-major", "sigma": )",
-      internal::json_number_or_null(field.sigma()), R"(, "degenerate_count": )",
-      std::to_string(field.degenerate_count()), "}");
+  std::string header =
+      internal::join(R"({"format": "deformseg strain field", "version": 1, "value_type": ")",
+                     sizeof(Value) == 4 ? "float32" : "float64", R"(", "byte_order": "little", "frames": )",
+                     std::to_string(field.num_frames()), R"(, "triangles": )", std::to_string(field.num_faces()),
+                     R"(, "layout": "frame-major", "sigma": )", internal::json_number_or_null(field.sigma()),
+                     R"(, "degenerate_count": )", std::to_string(field.degenerate_count()), "}");
   constexpr std::size_t alignment = 64;
   header.append(alignment - 1 - header.size() % alignment, ' ');  // with the newline, a multiple of 64
   header += '\n';

@@ -213,8 +213,8 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
       const auto after = internal::frame_at(instants[r] + lag, frames_per_second, frames);
       const double unit = 1.0 / (2.0 * lag * radius);
       for (std::size_t v = 0; v < vertices; ++v) {
-        const Eigen::Vector3d d =
-            internal::point_at(positions.data(), vertices, after, v) - internal::point_at(positions.data(), vertices, before, v);
+        const Eigen::Vector3d d = internal::point_at(positions.data(), vertices, after, v) -
+                                  internal::point_at(positions.data(), vertices, before, v);
         speeds[v] = {d.norm() * unit, weights[v]};
         if (up) rises[v] = {d.dot(*up) * unit, weights[v]};
       }

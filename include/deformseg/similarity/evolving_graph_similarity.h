@@ -53,8 +53,9 @@ enum class Label_dissimilarity {
 /// @par Complexity `describe`: the evolving graph, O(T F), and the GEDs among its K key frames;
 /// `compare`: Ka Kb GEDs, the clustering of Ka + Kb graphs, and the alignment's O(Ta Tb).
 template <class Ged = ged::Bipartite_ged, class Costs = Segment_costs, class Clustering = clustering::K_medoids,
-          alignment::AlignmentPolicy Alignment = alignment::Smith_waterman, class Normalization = Best_score_normalization>
-  requires ged::GedPolicy<Ged, spatiotemporal::Segment_graph, Costs> && clustering::ClusteringPolicy<Clustering>
+          alignment::AlignmentPolicy Alignment = alignment::Smith_waterman,
+          class Normalization = Best_score_normalization>
+requires ged::GedPolicy<Ged, spatiotemporal::Segment_graph, Costs> && clustering::ClusteringPolicy<Clustering>
 struct Evolving_graph_similarity {
   /// @brief The spatio-temporal segmentation. Default: `Spatiotemporal_options` (previous pose,
   /// threshold 0.5).
@@ -82,7 +83,8 @@ struct Evolving_graph_similarity {
   /// edit distances among themselves.
   struct Description {
     spatiotemporal::Evolving_graph graph;               ///< the evolving graph
-    std::vector<spatiotemporal::Segment_graph> graphs;  ///< its key frames' graphs, in order (compacted with `compact_graphs`)
+    std::vector<spatiotemporal::Segment_graph>
+        graphs;                         ///< its key frames' graphs, in order (compacted with `compact_graphs`)
     Eigen::MatrixXd distances;          ///< their pairwise edit distances (`ged::ged_matrix`)
   };
 
@@ -92,7 +94,8 @@ struct Evolving_graph_similarity {
   template <mesh::DeformingMesh Mesh>
   Description describe(const Mesh& animation) const {
     Description d{spatiotemporal::evolving_graph(animation, segmentation), {}, {}};
-    for (const spatiotemporal::Key_frame& k : d.graph) d.graphs.push_back(compact_graphs ? spatiotemporal::compact_segment_graph(k.graph) : k.graph);
+    for (const spatiotemporal::Key_frame& k : d.graph)
+      d.graphs.push_back(compact_graphs ? spatiotemporal::compact_segment_graph(k.graph) : k.graph);
     d.distances = ged::ged_matrix(d.graphs, ged, costs);
     return d;
   }
@@ -141,11 +144,12 @@ private:
 
   // Per frame, the cluster of its key frame's graph (graph `offset + k` of the clustering for
   // key frame k).
-  static std::vector<std::size_t> frame_labels(const spatiotemporal::Evolving_graph& graph, const std::vector<std::size_t>& clusters,
-                                               std::size_t offset) {
+  static std::vector<std::size_t> frame_labels(const spatiotemporal::Evolving_graph& graph,
+                                               const std::vector<std::size_t>& clusters, std::size_t offset) {
     std::vector<std::size_t> labels;
     labels.reserve(graph.num_frames());
-    for (std::size_t k = 0; k < graph.size(); ++k) labels.insert(labels.end(), graph[k].num_frames(), clusters[offset + k]);
+    for (std::size_t k = 0; k < graph.size(); ++k)
+      labels.insert(labels.end(), graph[k].num_frames(), clusters[offset + k]);
     return labels;
   }
 

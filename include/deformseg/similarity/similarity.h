@@ -48,7 +48,7 @@ concept SimilarityPolicy = std::copy_constructible<P> && requires(const P& p, co
 /// @brief Which length `Best_score_normalization` measures a maximising alignment against.
 enum class Normalize_by {
   shorter,  ///< the shorter sequence's self-score (@ref method_similarity): a motion found whole inside a longer one scores 1
-  longer    ///< the longer one's: a motion scores 1 only against one of its own length
+  longer  ///< the longer one's: a motion scores 1 only against one of its own length
 };
 
 /// @brief The default normalisation of an alignment into a similarity in [0, 1].

@@ -103,14 +103,15 @@ public:
   /// `face_areas` empty or of that size with finite entries >= 0 and a positive sum. Else throws
   /// `invalid_input`.
   /// @par Complexity O(F log F) for the triangles' adjacency.
-  Frame_segments(const Spatiotemporal_segmentation& segmentation, std::span<const std::array<std::uint32_t, 3>> triangles,
-                 std::span<const double> face_areas = {})
-      : segmentation_(&segmentation), adjacency_(internal::face_adjacency(triangles)),
-        area_share_(area_shares(face_areas, triangles.size())) {
-    if (triangles.size() != segmentation.num_faces())
-      throw invalid_input("Frame_segments: " + std::to_string(triangles.size()) +
-                          " triangles for a segmentation of " + std::to_string(segmentation.num_faces()));
-  }
+ Frame_segments(const Spatiotemporal_segmentation& segmentation,
+                std::span<const std::array<std::uint32_t, 3>> triangles, std::span<const double> face_areas = {})
+     : segmentation_(&segmentation),
+       adjacency_(internal::face_adjacency(triangles)),
+       area_share_(area_shares(face_areas, triangles.size())) {
+   if (triangles.size() != segmentation.num_faces())
+     throw invalid_input("Frame_segments: " + std::to_string(triangles.size()) + " triangles for a segmentation of " +
+                         std::to_string(segmentation.num_faces()));
+ }
 
   /// @brief Deleted: the object would refer to a temporary segmentation.
   Frame_segments(Spatiotemporal_segmentation&&, std::span<const std::array<std::uint32_t, 3>>,

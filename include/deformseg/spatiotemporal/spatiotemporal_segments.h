@@ -280,7 +280,8 @@ Spatiotemporal_segmentation spatiotemporal_segmentation(const strain::Strain_fie
 /// @throws invalid_input as `compute_strain` and the other overload.
 /// @par Complexity O(F T) for the strain, then as the other overload.
 template <mesh::DeformingMesh Mesh>
-Spatiotemporal_segmentation spatiotemporal_segmentation(const Mesh& animation, const Spatiotemporal_options& options = {}) {
+Spatiotemporal_segmentation spatiotemporal_segmentation(const Mesh& animation,
+                                                        const Spatiotemporal_options& options = {}) {
   if constexpr (mesh::is_deforming_mesh_v<Mesh>) {
     const auto field = strain::compute_strain(animation, {.reference = options.reference});
     return spatiotemporal_segmentation(field, animation.triangles(), options);

@@ -101,7 +101,8 @@ private:
     std::vector<double> error, growth;
     for (std::size_t i = s + window - 1; i < cost.num_frames(); ++i) {
       const Eigen::VectorXd values = scatter_eigenvalues(cost, s, i);
-      error.push_back(values.tail(values.size() - Eigen::Index(std::min<std::size_t>(r, std::size_t(values.size())))).sum());
+      error.push_back(
+          values.tail(values.size() - Eigen::Index(std::min<std::size_t>(r, std::size_t(values.size())))).sum());
       if (error.size() <= lag) continue;
       const double d = error.back() - error[error.size() - 1 - lag];
       if (growth.size() >= 2 && d > floor && d > mean(growth) + deviations * deviation(growth)) return i;

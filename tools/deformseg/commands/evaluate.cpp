@@ -62,7 +62,8 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
                      const std::vector<io::Labelled_clip>& rows, const Evaluate_options& o, Read_clips& out) {
   const auto skip_or_throw = [&](const std::vector<std::size_t>& lost, const invalid_input& e) {
     if (!o.skip_unreadable) throw;
-    for (const std::size_t i : lost) out.skipped.push_back(file.string() + " clip '" + rows[i].item.clip + "': " + e.what());
+    for (const std::size_t i : lost)
+      out.skipped.push_back(file.string() + " clip '" + rows[i].item.clip + "': " + e.what());
   };
   if (!is_gltf(file)) {
     try {
@@ -138,7 +139,8 @@ void write_grouped_heat_map(const Eigen::MatrixXd& m, const std::vector<io::Labe
   std::vector<double> sorted(m.data(), m.data() + m.size());
   std::ranges::sort(sorted);
   const auto rank = [&](double v) {
-    return sorted.size() < 2 ? 1.0 : double(std::ranges::lower_bound(sorted, v) - sorted.begin()) / double(sorted.size() - 1);
+    return sorted.size() < 2 ? 1.0
+                             : double(std::ranges::lower_bound(sorted, v) - sorted.begin()) / double(sorted.size() - 1);
   };
   const auto value_at_rank = [&](double fraction) {
     return sorted.empty() ? 0.0 : sorted[std::size_t(std::lround(fraction * double(sorted.size() - 1)))];
@@ -282,11 +284,19 @@ void run_evaluate(const Evaluate_options& o) {
       rows.push_back(nlohmann::json::array());
       for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
     }
-    document = {{"labels", o.labels}, {"policy", o.policy.policy}, {"alignment_policy", similarity::alignment_name(o.policy)},
-                {"fps", o.fps}, {"inputs", inputs}, {"skipped", read.skipped}, {"scores", scores_json(scores)},
-                {"figure_order", order}, {"similarity", rows},
-                {"seconds", {{"reading", read_seconds}, {"describing", report.describe_seconds},
-                             {"comparing", matrix_seconds - report.describe_seconds}}}};
+    document = {{"labels", o.labels},
+                {"policy", o.policy.policy},
+                {"alignment_policy", similarity::alignment_name(o.policy)},
+                {"fps", o.fps},
+                {"inputs", inputs},
+                {"skipped", read.skipped},
+                {"scores", scores_json(scores)},
+                {"figure_order", order},
+                {"similarity", rows},
+                {"seconds",
+                 {{"reading", read_seconds},
+                  {"describing", report.describe_seconds},
+                  {"comparing", matrix_seconds - report.describe_seconds}}}};
   }
   write_outputs(document, o.json, [&] {
     print_scores(scores, items.size());

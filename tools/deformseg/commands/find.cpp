@@ -49,10 +49,14 @@ void add_find_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "find", "Where a short motion occurs in a long animation: the best non-overlapping windows, by motion "
               "signatures; a window's value is the query against its frames described alone (1 for a copy)");
-  command->add_option("query", o->query.input, "The short motion (a glTF file, FILE.glb#CLIP, a folder, a quoted glob or a point cache)")->required();
+  command
+      ->add_option("query", o->query.input,
+                   "The short motion (a glTF file, FILE.glb#CLIP, a folder, a quoted glob or a point cache)")
+      ->required();
   command->add_option("long", o->long_animation.input, "The long animation to search")->required();
   command->add_option("--topology-query", o->query.topology, "Connectivity of the query, for a point cache");
-  command->add_option("--topology-long", o->long_animation.topology, "Connectivity of the long animation, for a point cache");
+  command->add_option("--topology-long", o->long_animation.topology,
+                      "Connectivity of the long animation, for a point cache");
   command->add_option("--clip-query", o->query.clip, "glTF: the query's clip, by name or index (default: the first)");
   command->add_option("--clip-long", o->long_animation.clip, "glTF: the long animation's clip (default: the first)");
   command->add_option("--fps", o->query.fps,

@@ -56,7 +56,9 @@ auto with_policy(const Ged_method_options& o, const Work& work) {
   return work(ged::Exact_ged{.max_expanded = o.max_expanded, .max_seconds = o.max_seconds});
 }
 
-nlohmann::json number_or_null(double value) { return std::isinf(value) ? nlohmann::json(nullptr) : nlohmann::json(value); }
+nlohmann::json number_or_null(double value) {
+  return std::isinf(value) ? nlohmann::json(nullptr) : nlohmann::json(value);
+}
 
 io::Labelled_graph read_graph(const std::string& path) {
   progress("reading " + path);
@@ -119,8 +121,9 @@ void run_ged_matrix(const Ged_matrix_command_options& o) {
     progress(std::to_string(done) + " of " + std::to_string(total) + " pairs");
     return true;
   }};
-  const ged::Ged_matrix_result r = with_policy(
-      o.method, [&](const auto& policy) { return ged::ged_matrix_results(graphs, policy, ged::Unit_costs{}, options); });
+  const ged::Ged_matrix_result r = with_policy(o.method, [&](const auto& policy) {
+    return ged::ged_matrix_results(graphs, policy, ged::Unit_costs{}, options);
+  });
   if (!o.csv.empty()) write_csv(r.distance, o.csv);
   const nlohmann::json document = {{"files", o.files}, {"method", o.method.method}, {"exact", r.exact},
                                    {"distance", rows_of(r.distance)}, {"lower", rows_of(r.lower)},

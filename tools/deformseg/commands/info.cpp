@@ -89,7 +89,8 @@ void print_gltf(const nlohmann::json& gltf) {
   std::cout << "\nmeshes        " << gltf["meshes"].size() << '\n';
   for (const auto& m : gltf["meshes"]) {
     std::size_t vertices = 0, triangles = 0;
-    for (const auto& p : m["primitives"]) vertices += p["vertices"].get<std::size_t>(), triangles += p["triangles"].get<std::size_t>();
+    for (const auto& p : m["primitives"])
+      vertices += p["vertices"].get<std::size_t>(), triangles += p["triangles"].get<std::size_t>();
     std::cout << "  " << std::left << std::setw(34) << m["name"].get<std::string>() << std::right
               << (m["skinned"].get<bool>() ? " skinned " : " rigid   ") << std::setw(6) << vertices << " vertices "
               << std::setw(6) << triangles << " triangles\n";

@@ -69,12 +69,14 @@ void write_alignment_figure(const similarity::Similarity& s, const Similarity_co
   Axis rows = frame_axis("frame of A: " + short_name(o.a.input), frames_a, cell);
   Axis columns = frame_axis("frame of B: " + short_name(o.b.input), frames_b, cell);
   for (Axis* axis : {&rows, &columns})
-    for (std::size_t k = 1; k < axis->labels.size(); ++k) axis->separators.push_back(std::size_t(axis->labels[k].first));
+    for (std::size_t k = 1; k < axis->labels.size(); ++k)
+      axis->separators.push_back(std::size_t(axis->labels[k].first));
   char value[32];
   std::snprintf(value, sizeof value, "%.3f", s.value);
-  Matrix_figure figure(frames_a, frames_b, cell,
-                       "similarity " + std::string(value) + " (" + o.policy.policy + ", " + similarity::alignment_name(o.policy) + ")",
-                       rows, columns, std::nullopt);
+  Matrix_figure figure(
+      frames_a, frames_b, cell,
+      "similarity " + std::string(value) + " (" + o.policy.policy + ", " + similarity::alignment_name(o.policy) + ")",
+      rows, columns, std::nullopt);
   for (std::size_t i = 0; i < frames_a; ++i)
     for (std::size_t j = 0; j < frames_b; ++j) figure.fill_cell(i, j, {245, 245, 245});
   figure.draw_separators(rows, columns, {205, 205, 205});
@@ -173,8 +175,9 @@ void run_matrix(const Matrix_command_options& o) {
   }
   progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
   Matrix_progress report{.descriptions = animations.size()};
-  const Eigen::MatrixXd m = similarity::with_policy_choice(
-      o.policy, [&](const auto& policy) { return similarity::similarity_matrix(animations, policy, std::ref(report)); });
+  const Eigen::MatrixXd m = similarity::with_policy_choice(o.policy, [&](const auto& policy) {
+    return similarity::similarity_matrix(animations, policy, std::ref(report));
+  });
   if (!o.csv.empty()) write_csv(m, o.inputs, o.csv);
   if (!o.png.empty()) write_heat_map(m, o, o.png);
   nlohmann::json rows = nlohmann::json::array();
@@ -199,7 +202,10 @@ void add_similarity_command(CLI::App& app) {
   auto o = std::make_shared<Similarity_command_options>();
   CLI::App* command = app.add_subcommand("similarity", "How alike two animations move: a value in [0, 1], the "
                                                        "score and the frame-to-frame alignment");
-  command->add_option("a", o->a.input, "The first animation (a glTF file, FILE.glb#CLIP, a folder, a quoted glob or a point cache)")->required();
+  command
+      ->add_option("a", o->a.input,
+                   "The first animation (a glTF file, FILE.glb#CLIP, a folder, a quoted glob or a point cache)")
+      ->required();
   command->add_option("b", o->b.input, "The second animation")->required();
   command->add_option("--topology-a", o->a.topology, "Connectivity of A, for a point cache");
   command->add_option("--topology-b", o->b.topology, "Connectivity of B, for a point cache");
@@ -228,7 +234,9 @@ void add_similarity_command(CLI::App& app) {
 void add_matrix_command(CLI::App& app) {
   auto o = std::make_shared<Matrix_command_options>();
   CLI::App* command = app.add_subcommand("matrix", "The similarity of every pair of a set of animations");
-  command->add_option("inputs", o->inputs, "Two or more animations (glTF clips as FILE.glb#CLIP, folders, quoted globs, point caches)")
+  command
+      ->add_option("inputs", o->inputs,
+                   "Two or more animations (glTF clips as FILE.glb#CLIP, folders, quoted globs, point caches)")
       ->required()
       ->expected(2, -1);
   command->add_option("--topology", o->topology, "Connectivity for point caches (all inputs share it)");

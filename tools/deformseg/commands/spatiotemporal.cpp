@@ -37,7 +37,8 @@ nlohmann::json key_frame_json(const spatiotemporal::Key_frame& k) {
                      {"area", g[v].area}});
   }
   for (auto e : boost::make_iterator_range(boost::edges(g)))
-    edges.push_back({std::min(boost::source(e, g), boost::target(e, g)), std::max(boost::source(e, g), boost::target(e, g))});
+    edges.push_back(
+        {std::min(boost::source(e, g), boost::target(e, g)), std::max(boost::source(e, g), boost::target(e, g))});
   return {{"first", k.first_frame}, {"last", k.last_frame}, {"nodes", nodes}, {"edges", edges}};
 }
 
@@ -95,7 +96,8 @@ void run(const Spatiotemporal_command_options& o) {
 void add_spatiotemporal_command(CLI::App& app) {
   auto options = std::make_shared<Spatiotemporal_command_options>();
   CLI::App* command = app.add_subcommand(
-      "spatiotemporal", "Spatio-temporal segments and the evolving graph of their key frames: JSON, DOT, coloured meshes");
+      "spatiotemporal",
+      "Spatio-temporal segments and the evolving graph of their key frames: JSON, DOT, coloured meshes");
   add_input_options(*command, options->input);
   command->add_option("--reference", options->reference,
                       "previous: deformed while it moves (default); rest: deformed while away from frame 0, or "

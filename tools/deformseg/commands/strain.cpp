@@ -42,24 +42,27 @@ const std::map<std::string, strain::Strain_measure_choice> measures{{"max-princi
                                                                     {"area-ratio", strain::Area_ratio_strain{}}};
 
 // The strain field the options ask for, against a frame or against the reference mesh when there is one.
-strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& animation, const mesh::Surface_mesh* reference_mesh,
-                             const Strain_command_options& o) {
+strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& animation,
+                                     const mesh::Surface_mesh* reference_mesh, const Strain_command_options& o) {
   const strain::Strain_options options{
-      .reference = o.reference == "rest" ? strain::Strain_reference::rest_pose : strain::Strain_reference::previous_pose,
+      .reference =
+          o.reference == "rest" ? strain::Strain_reference::rest_pose : strain::Strain_reference::previous_pose,
       .rest_frame = o.rest_frame,
       .measure = measures.at(o.measure),
       .normalization = o.normalize == "none" ? strain::Strain_normalization_choice(strain::No_normalization{})
                                              : strain::Gaussian_normalization{.sigma = o.sigma},
       .threads = o.input.threads};
   if (!reference_mesh) return strain::compute_strain(animation, options);
-  return naming_reference_mesh(o.reference_mesh, [&] { return strain::compute_strain(animation, *reference_mesh, options); });
+  return naming_reference_mesh(o.reference_mesh,
+                               [&] { return strain::compute_strain(animation, *reference_mesh, options); });
 }
 
 // The colours of frame t: of the normalised strain, or, for a raw field, of the strain normalised
 // the default way for the picture only.
 std::vector<float> colour_values(const strain::Strain_field<float>& field) {
   std::vector<float> values(field.values().begin(), field.values().end());
-  if (!field.sigma()) strain::Gaussian_normalization{}.normalize(strain::Raw_strain_field<float>{values, field.num_faces()});
+  if (!field.sigma())
+    strain::Gaussian_normalization{}.normalize(strain::Raw_strain_field<float>{values, field.num_faces()});
   return values;
 }
 
@@ -146,8 +149,9 @@ nlohmann::json summary(const Strain_command_options& o, const strain::Strain_fie
 }
 
 void print(const nlohmann::json& s) {
-  std::cout << std::setprecision(6) << "frames      " << s["frames"] << "\ntriangles   " << s["triangles"] << "\nsigma       "
-            << s["sigma"].dump() << "\ndegenerate  " << s["degenerate_count"] << "\nframe  min  max  mean\n";
+  std::cout << std::setprecision(6) << "frames      " << s["frames"] << "\ntriangles   " << s["triangles"]
+            << "\nsigma       " << s["sigma"].dump() << "\ndegenerate  " << s["degenerate_count"]
+            << "\nframe  min  max  mean\n";
   for (const auto& f : s["per_frame"])
     std::cout << f["frame"] << "  " << f["min"].get<double>() << "  " << f["max"].get<double>() << "  "
               << f["mean"].get<double>() << '\n';
@@ -161,7 +165,8 @@ void run(const Strain_command_options& o) {
     throw invalid_input("--reference-mesh takes the place of the rest frame: it excludes --reference previous and "
                         "--rest-frame");
   const mesh::Surface_mesh_animation animation = read_input(o.input);
-  const std::vector<std::size_t> drawn = o.png.empty() ? std::vector<std::size_t>{} : frames_to_draw(o, animation.num_frames());
+  const std::vector<std::size_t> drawn =
+      o.png.empty() ? std::vector<std::size_t>{} : frames_to_draw(o, animation.num_frames());
   std::optional<mesh::Surface_mesh> reference_mesh;
   if (!o.reference_mesh.empty()) reference_mesh = read_reference_mesh(o.reference_mesh);
   progress("computing the strain of " + std::to_string(animation.num_faces()) + " triangles x " +

@@ -30,7 +30,8 @@ struct Temporal_command_options {
 };
 
 // The threshold (or penalty) the options give, or the policy's default.
-temporal::Segmentation_threshold threshold_of(const Temporal_command_options& o, temporal::Segmentation_threshold fallback) {
+temporal::Segmentation_threshold threshold_of(const Temporal_command_options& o,
+                                              temporal::Segmentation_threshold fallback) {
   if (!o.threshold) return fallback;
   return {.value = *o.threshold, .relative = !o.absolute};
 }
@@ -39,7 +40,8 @@ temporal::Segmentation_threshold threshold_of(const Temporal_command_options& o,
 temporal::Temporal_segmentation segment(const Temporal_command_options& o, const temporal::Segment_cost& cost,
                               temporal::Segmentation_threshold& used) {
   if (o.method == "binary-split") {
-    const temporal::Binary_split policy{.threshold = threshold_of(o, temporal::Binary_split{}.threshold), .min_length = o.min_length};
+    const temporal::Binary_split policy{.threshold = threshold_of(o, temporal::Binary_split{}.threshold),
+                                        .min_length = o.min_length};
     used = policy.threshold;
     return temporal::segment_frames(cost, policy);
   }
@@ -49,8 +51,9 @@ temporal::Temporal_segmentation segment(const Temporal_command_options& o, const
     return temporal::segment_frames(cost, policy);
   }
   if (o.method == "barbic") return temporal::segment_frames(cost, temporal::Barbic_pca{});
-  const temporal::Optimal_partition policy{
-      .penalty = threshold_of(o, temporal::Optimal_partition{}.penalty), .segments = o.segments, .min_length = o.min_length};
+  const temporal::Optimal_partition policy{.penalty = threshold_of(o, temporal::Optimal_partition{}.penalty),
+                                           .segments = o.segments,
+                                           .min_length = o.min_length};
   used = policy.penalty;
   return temporal::segment_frames(cost, policy);
 }
@@ -83,11 +86,12 @@ void write_figure(const Eigen::MatrixXf& d, const temporal::Temporal_segmentatio
     const auto level = std::uint8_t(std::lround(255 * std::clamp(fraction, 0.0, 1.0)));
     return color::Rgb{level, level, level};
   };
-  Matrix_figure figure(frames, frames, cell,
-                       std::to_string(s.segments.size()) + " segments of " + short_name(input), frame_axis("frame", frames, cell),
-                       frame_axis("frame", frames, cell), Color_bar{"frame distance", 0, largest, grey});
+  Matrix_figure figure(frames, frames, cell, std::to_string(s.segments.size()) + " segments of " + short_name(input),
+                       frame_axis("frame", frames, cell), frame_axis("frame", frames, cell),
+                       Color_bar{"frame distance", 0, largest, grey});
   for (std::size_t i = 0; i < frames; ++i)
-    for (std::size_t j = 0; j < frames; ++j) figure.fill_cell(i, j, grey(d(Eigen::Index(i), Eigen::Index(j)) / largest));
+    for (std::size_t j = 0; j < frames; ++j)
+      figure.fill_cell(i, j, grey(d(Eigen::Index(i), Eigen::Index(j)) / largest));
   for (const auto& segment : s.segments)
     figure.outline_diagonal_block(segment.first, segment.last, {230, 30, 30}, std::max(1, cell / 3));
   figure.write(path);

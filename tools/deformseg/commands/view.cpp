@@ -51,14 +51,16 @@ void run(const View_command_options& o) {
     animations.push_back(evenly_sampled(read_input(read), o.max_frames, numbers[k]));
   }
   // The page plays at the input's pace: a sampled animation's frames are further apart in time.
-  nlohmann::json document = {{"title", "deformseg view: " + short_name(o.inputs.front()) +
-                                           (o.inputs.size() == 2 ? " and " + short_name(o.inputs.back()) : "")},
-                             {"fps", o.fps * double(numbers[0].size() - 1) / double(std::max<std::size_t>(numbers[0].back(), 1))},
-                             {"animations", nlohmann::json::array()},
-                             {"alignment", nullptr}};
+  nlohmann::json document = {
+      {"title", "deformseg view: " + short_name(o.inputs.front()) +
+                    (o.inputs.size() == 2 ? " and " + short_name(o.inputs.back()) : "")},
+      {"fps", o.fps * double(numbers[0].size() - 1) / double(std::max<std::size_t>(numbers[0].back(), 1))},
+      {"animations", nlohmann::json::array()},
+      {"alignment", nullptr}};
   for (std::size_t k = 0; k < animations.size(); ++k) {
     progress("describing " + o.inputs[k] + ": " + std::to_string(animations[k].num_frames()) + " frames shown");
-    document["animations"].push_back(view_json(animations[k], short_name(o.inputs[k]), numbers[k], coloring, o.threads));
+    document["animations"].push_back(
+        view_json(animations[k], short_name(o.inputs[k]), numbers[k], coloring, o.threads));
   }
   if (animations.size() == 2) {
     progress("aligning the two animations");
@@ -86,7 +88,9 @@ void add_view_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "view", "A web page that plays one animation, or two side by side in step through their alignment, "
               "coloured by strain or segments, with its timeline and key-frame graphs");
-  command->add_option("inputs", o->inputs, "One or two animations (glTF clips as FILE.glb#CLIP, folders, quoted globs, point caches)")
+  command
+      ->add_option("inputs", o->inputs,
+                   "One or two animations (glTF clips as FILE.glb#CLIP, folders, quoted globs, point caches)")
       ->required()
       ->expected(1, 2);
   command->add_option("--out", o->out,
@@ -97,7 +101,8 @@ void add_view_command(CLI::App& app) {
                       "strain: against frame 0 (default); previous-strain: against the frame before; temporal: by "
                       "temporal segment; segments: by spatio-temporal segment, as the graph's nodes; none")
       ->check(CLI::IsMember({"strain", "previous-strain", "temporal", "segments", "none"}));
-  command->add_option("--max-frames", o->max_frames, "At most this many frames, evenly spaced, are shown. Default: 1000");
+  command->add_option("--max-frames", o->max_frames,
+                      "At most this many frames, evenly spaced, are shown. Default: 1000");
   command->add_option("--topology", o->topology, "Connectivity for point caches (the inputs share it)");
   command->add_option("--fps", o->fps,
                       "Frames per second of the inputs: glTF clips are sampled at it, frame files and point caches "

@@ -54,7 +54,8 @@ int text_width(const std::string& text, int scale) {
 
 int text_height(int scale) { return 12 * scale; }
 
-void draw_text(Image& image, const std::string& text, int x, int y, int scale, color::Rgb color, Text_direction direction) {
+void draw_text(Image& image, const std::string& text, int x, int y, int scale, color::Rgb color,
+               Text_direction direction) {
   std::string glyphs = printable(text);
   // Each quad is 4 vertices of 3 floats and 4 colour bytes; stb_easy_font needs about 270 bytes a
   // character at most.
@@ -100,7 +101,8 @@ std::string number_text(double value) {
 Axis frame_axis(std::string title, std::size_t frames, int cell) {
   Axis axis{.title = std::move(title)};
   const std::size_t step = round_step(40.0 / double(std::max(cell, 1)));
-  for (std::size_t frame = 0; frame < frames; frame += step) axis.labels.emplace_back(double(frame) + 0.5, std::to_string(frame));
+  for (std::size_t frame = 0; frame < frames; frame += step)
+    axis.labels.emplace_back(double(frame) + 0.5, std::to_string(frame));
   return axis;
 }
 
@@ -170,11 +172,12 @@ void draw_color_bar(Image& image, int x, int top, int height, const Color_bar& b
   for (const auto& [fraction, text] : bar_ticks(bar)) {
     const int y = top + int(std::lround((1.0 - fraction) * (height - 1)));
     image.fill(x + bar_width, y, tick, 1, black);
-    draw_text(image, text, x + bar_width + tick + gap, std::clamp(y - text_height() / 2 + 2, top - 4, top + height - 8));
+    draw_text(image, text, x + bar_width + tick + gap,
+              std::clamp(y - text_height() / 2 + 2, top - 4, top + height - 8));
     widest_tick = std::max(widest_tick, text_width(text));
   }
-  draw_text(image, bar.title, x + bar_width + tick + 2 * gap + widest_tick, top + (height + text_width(bar.title)) / 2, 1,
-            black, Text_direction::up);
+  draw_text(image, bar.title, x + bar_width + tick + 2 * gap + widest_tick, top + (height + text_width(bar.title)) / 2,
+            1, black, Text_direction::up);
 }
 
 Matrix_figure::Matrix_figure(std::size_t rows, std::size_t columns, int cell, const std::string& title,
@@ -190,7 +193,8 @@ Matrix_figure::Matrix_figure(std::size_t rows, std::size_t columns, int cell, co
   // Below the cells, room for half a row label, which is centred on its row.
   const int height = top_ + std::max({plot_h, text_width(row_axis.title), bar ? text_width(bar->title) : 0}) +
                      text_height() / 2 + padding;
-  const int width = std::max(left_ + plot_w + (bar ? 2 * padding + color_bar_width(*bar) : 0) + padding, text_width(title, title_scale) + 2 * padding);
+  const int width = std::max(left_ + plot_w + (bar ? 2 * padding + color_bar_width(*bar) : 0) + padding,
+                             text_width(title, title_scale) + 2 * padding);
   image_ = Image(width, height);
 
   draw_text(image_, title, padding, padding, title_scale);
@@ -233,7 +237,8 @@ void Matrix_figure::outline_diagonal_block(std::size_t first, std::size_t last, 
 }
 
 void Matrix_figure::draw_separators(const Axis& row_axis, const Axis& column_axis, color::Rgb color) {
-  for (std::size_t row : row_axis.separators) image_.fill(left_, top_ + int(row) * cell_, int(columns_) * cell_, 1, color);
+  for (std::size_t row : row_axis.separators)
+    image_.fill(left_, top_ + int(row) * cell_, int(columns_) * cell_, 1, color);
   for (std::size_t column : column_axis.separators)
     image_.fill(left_ + int(column) * cell_, top_, 1, int(rows_) * cell_, color);
 }

@@ -48,7 +48,8 @@ Image render_frame(const mesh::Surface_mesh_animation& animation, std::size_t t,
     const Eigen::Vector3d p = frame.col(Eigen::Index(v)) - centre;
     screen[v] = {image.width / 2.0 + p.dot(view.right) * scale, image.height / 2.0 - p.dot(view.up) * scale};
   }
-  std::vector<double> depth(std::size_t(image.width) * std::size_t(image.height), -std::numeric_limits<double>::infinity());
+  std::vector<double> depth(std::size_t(image.width) * std::size_t(image.height),
+                            -std::numeric_limits<double>::infinity());
   const auto& triangles = animation.triangles();
   for (std::size_t j = 0; j < triangles.size(); ++j) {
     const auto [i0, i1, i2] = triangles[j];
@@ -59,9 +60,11 @@ Image render_frame(const mesh::Surface_mesh_animation& animation, std::size_t t,
     const color::Rgb color = shaded(colors[j], 0.35 + 0.65 * std::abs(normal.normalized().dot(view.toward_viewer)));
     const double d0 = p0.dot(view.toward_viewer), d1 = p1.dot(view.toward_viewer), d2 = p2.dot(view.toward_viewer);
     const int x0 = std::max(0, int(std::floor(std::min({screen[i0].x(), screen[i1].x(), screen[i2].x()}))));
-    const int x1 = std::min(image.width - 1, int(std::ceil(std::max({screen[i0].x(), screen[i1].x(), screen[i2].x()}))));
+    const int x1 =
+        std::min(image.width - 1, int(std::ceil(std::max({screen[i0].x(), screen[i1].x(), screen[i2].x()}))));
     const int y0 = std::max(0, int(std::floor(std::min({screen[i0].y(), screen[i1].y(), screen[i2].y()}))));
-    const int y1 = std::min(image.height - 1, int(std::ceil(std::max({screen[i0].y(), screen[i1].y(), screen[i2].y()}))));
+    const int y1 =
+        std::min(image.height - 1, int(std::ceil(std::max({screen[i0].y(), screen[i1].y(), screen[i2].y()}))));
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x) {
         const Eigen::Vector2d pixel(x + 0.5, y + 0.5);

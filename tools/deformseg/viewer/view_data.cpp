@@ -74,7 +74,8 @@ struct Face_colors {
 Face_colors strain_colors_of(const strain::Strain_field<float>& field, strain::Strain_reference reference) {
   Face_colors out;
   for (int k = 0; k < 256; ++k) out.palette.push_back(color::strain_color(k / 255.0));
-  for (float v : field.values()) out.indices.push_back(std::uint16_t(std::lround(255 * std::clamp(double(v), 0.0, 1.0))));
+  for (float v : field.values())
+    out.indices.push_back(std::uint16_t(std::lround(255 * std::clamp(double(v), 0.0, 1.0))));
   out.legend = {{"kind", "scale"},
                 {"title", reference == strain::Strain_reference::rest_pose ? "normalised strain against frame 0"
                                                                     : "normalised strain against the frame before"},
@@ -92,14 +93,16 @@ Face_colors temporal_colors(const temporal::Temporal_segmentation& segments, std
                                                 std::to_string(segments.segments[k].last)},
                                    {"color", k}});
   }
-  for (std::size_t t = 0; t < segments.frames; ++t) out.indices.insert(out.indices.end(), faces, std::uint16_t(segments.segment_of(t)));
+  for (std::size_t t = 0; t < segments.frames; ++t)
+    out.indices.insert(out.indices.end(), faces, std::uint16_t(segments.segment_of(t)));
   return out;
 }
 
 // Each face in its spatio-temporal segment's colour (rigid: grey), as the meshes of
 // `spatiotemporal --mesh-dir` and the graph's nodes.
 Face_colors segment_colors_of(const spatiotemporal::Spatiotemporal_segmentation& segmentation) {
-  Face_colors out{.legend = {{"kind", "list"}, {"title", "spatio-temporal segment"}, {"items", nlohmann::json::array()}}};
+  Face_colors out{
+      .legend = {{"kind", "list"}, {"title", "spatio-temporal segment"}, {"items", nlohmann::json::array()}}};
   std::map<std::int32_t, std::uint16_t> index_of;
   for (std::size_t t = 0; t < segmentation.num_frames(); ++t)
     for (std::int32_t label : segmentation.frame_labels(t)) {
@@ -109,9 +112,10 @@ Face_colors segment_colors_of(const spatiotemporal::Spatiotemporal_segmentation&
     }
   for (const auto& [label, index] : index_of)
     if (out.legend["items"].size() < 16)
-      out.legend["items"].push_back({{"name", spatiotemporal::node_label(spatiotemporal::Segment_node{.kind = label < 0 ? spatiotemporal::Segment_kind::rigid
-                                                                                      : spatiotemporal::Segment_kind::deformed,
-                                                                      .segment = label})},
+      out.legend["items"].push_back({{"name", spatiotemporal::node_label(spatiotemporal::Segment_node{
+                                                  .kind = label < 0 ? spatiotemporal::Segment_kind::rigid
+                                                                    : spatiotemporal::Segment_kind::deformed,
+                                                  .segment = label})},
                                      {"color", index}});
   return out;
 }
@@ -158,7 +162,8 @@ nlohmann::json key_frames_json(const spatiotemporal::Evolving_graph& graph) {
                        {"area", g[v].area},
                        {"color", rgb(color::segment_color(g[v].segment))}});
     }
-    for (auto e : boost::make_iterator_range(boost::edges(g))) edges.push_back({boost::source(e, g), boost::target(e, g)});
+    for (auto e : boost::make_iterator_range(boost::edges(g)))
+      edges.push_back({boost::source(e, g), boost::target(e, g)});
     key_frames.push_back({{"first", k.first_frame}, {"last", k.last_frame}, {"nodes", nodes}, {"edges", edges}});
   }
   return key_frames;
@@ -175,13 +180,17 @@ nlohmann::json view_json(const mesh::Surface_mesh_animation& animation, const st
   const strain::Strain_field<float> previous =
       strain::compute_strain(animation, {.reference = strain::Strain_reference::previous_pose, .threads = threads});
   const temporal::Temporal_segmentation segments = temporal::temporal_segmentation(rest);
-  const spatiotemporal::Spatiotemporal_segmentation segmentation = spatiotemporal::spatiotemporal_segmentation(previous, animation.triangles());
+  const spatiotemporal::Spatiotemporal_segmentation segmentation =
+      spatiotemporal::spatiotemporal_segmentation(previous, animation.triangles());
   const std::vector<double> areas = mesh::face_areas(animation, 0);
-  const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segmentation, animation.triangles(), areas));
+  const spatiotemporal::Evolving_graph graph =
+      spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segmentation, animation.triangles(), areas));
   Face_colors colors;
   switch (coloring) {
     case View_coloring::strain: colors = strain_colors_of(rest, strain::Strain_reference::rest_pose); break;
-    case View_coloring::previous_strain: colors = strain_colors_of(previous, strain::Strain_reference::previous_pose); break;
+    case View_coloring::previous_strain:
+      colors = strain_colors_of(previous, strain::Strain_reference::previous_pose);
+      break;
     case View_coloring::temporal: colors = temporal_colors(segments, faces); break;
     case View_coloring::segments: colors = segment_colors_of(segmentation); break;
     case View_coloring::none:

@@ -51,7 +51,8 @@ inline std::size_t morph_target_count(const tinygltf::Model& model, int mesh) {
 
 inline Clip read_clip(const tinygltf::Model& model, std::size_t index) {
   const tinygltf::Animation& animation = model.animations[index];
-  const std::string name = "animation " + std::to_string(index) + (animation.name.empty() ? "" : " '" + animation.name + "'");
+  const std::string name =
+      "animation " + std::to_string(index) + (animation.name.empty() ? "" : " '" + animation.name + "'");
   Clip clip{.name = animation.name};
   for (std::size_t c = 0; c < animation.channels.size(); ++c) {
     const tinygltf::AnimationChannel& source = animation.channels[c];
@@ -68,7 +69,8 @@ inline Clip read_clip(const tinygltf::Model& model, std::size_t index) {
     else if (source.target_path == "weights") target.path = Path::weights;
     else continue;  // a path of an extension (KHR_animation_pointer): not geometry of a node
     if (target.path != Path::weights && !model.nodes[node].matrix.empty())
-      throw invalid_input(channel + " animates " + node_name(model, node) + ", which has a matrix; glTF animates TRS nodes only");
+      throw invalid_input(channel + " animates " + node_name(model, node) +
+                          ", which has a matrix; glTF animates TRS nodes only");
     target.sampler = read_sampler(model, animation, source.sampler, width, target.path == Path::rotation, channel);
     if (target.path == Path::weights && target.sampler.width != morph_target_count(model, model.nodes[node].mesh))
       throw invalid_input(channel + " animates " + std::to_string(target.sampler.width) + " weights of " +

@@ -154,7 +154,8 @@ public:
   explicit Halfedge_table(const std::vector<Soup_triangle>& triangles) {
     halfedges_.reserve(3 * triangles.size());
     for (std::uint32_t j = 0; j < triangles.size(); ++j)
-      for (std::size_t k = 0; k < 3; ++k) halfedges_.emplace_back(directed_edge_key(triangles[j][k], triangles[j][(k + 1) % 3]), j);
+      for (std::size_t k = 0; k < 3; ++k)
+        halfedges_.emplace_back(directed_edge_key(triangles[j][k], triangles[j][(k + 1) % 3]), j);
     std::sort(halfedges_.begin(), halfedges_.end());
   }
   /// Whether some directed edge belongs to two triangles.
@@ -165,7 +166,8 @@ public:
   /// The triangle that runs from `a` to `b`, if any.
   std::optional<std::uint32_t> triangle_along(std::uint32_t a, std::uint32_t b) const {
     const std::uint64_t key = directed_edge_key(a, b);
-    const auto found = std::lower_bound(halfedges_.begin(), halfedges_.end(), std::pair<std::uint64_t, std::uint32_t>(key, 0));
+    const auto found =
+        std::lower_bound(halfedges_.begin(), halfedges_.end(), std::pair<std::uint64_t, std::uint32_t>(key, 0));
     if (found == halfedges_.end() || found->first != key) return std::nullopt;
     return found->second;
   }
@@ -175,8 +177,12 @@ private:
 };
 
 /// The vertex after `v` in triangle `t`, and the one before it.
-inline std::uint32_t after(const Soup_triangle& t, std::uint32_t v) { return t[0] == v ? t[1] : t[1] == v ? t[2] : t[0]; }
-inline std::uint32_t before(const Soup_triangle& t, std::uint32_t v) { return t[0] == v ? t[2] : t[1] == v ? t[0] : t[1]; }
+inline std::uint32_t after(const Soup_triangle& t, std::uint32_t v) {
+  return t[0] == v ? t[1] : t[1] == v ? t[2] : t[0];
+}
+inline std::uint32_t before(const Soup_triangle& t, std::uint32_t v) {
+  return t[0] == v ? t[2] : t[1] == v ? t[0] : t[1];
+}
 
 /// The number of triangles around `v` reached from triangle `start` through edges, turning both ways.
 /// @pre no directed edge belongs to two triangles.
@@ -186,7 +192,8 @@ inline std::size_t fan_size(const std::vector<Soup_triangle>& triangles, const H
   std::optional<std::uint32_t> t = table.triangle_along(after(triangles[start], v), v);
   for (; t && *t != start; t = table.triangle_along(after(triangles[*t], v), v)) ++count;
   if (t) return count;  // back to `start`: closed around v
-  for (t = table.triangle_along(v, before(triangles[start], v)); t; t = table.triangle_along(v, before(triangles[*t], v)))
+  for (t = table.triangle_along(v, before(triangles[start], v)); t;
+       t = table.triangle_along(v, before(triangles[*t], v)))
     ++count;
   return count;
 }

@@ -131,7 +131,8 @@ std::vector<std::size_t> digit_histogram(const Sample_runs<Value>& runs, int thr
     }
   };
   std::vector<std::size_t> histogram(selection_bins, 0);
-  for (const Counts& counts : deformseg::internal::parallel_for_with_locals(blocks, threads, 1, make_counts, count_block))
+  for (const Counts& counts :
+       deformseg::internal::parallel_for_with_locals(blocks, threads, 1, make_counts, count_block))
     for (std::size_t i = 0; i < selection_bins; ++i)
       histogram[i] += counts.mine[i] + (counts.odd.empty() ? 0 : counts.odd[i]);
   return histogram;
