@@ -396,15 +396,6 @@ inline std::string sequence_file_name(std::size_t frame, std::size_t num_frames,
 
 namespace deformseg::io::internal {
 
-/// Creates `directory` and its parents when missing; throws invalid_input naming it otherwise.
-inline void create_folder(const std::filesystem::path& directory) {
-  std::error_code error;
-  if (std::filesystem::exists(directory, error) && !std::filesystem::is_directory(directory, error))
-    throw invalid_input("cannot write into it: it is not a folder", {.file = directory.string()});
-  std::filesystem::create_directories(directory, error);
-  if (error) throw invalid_input(join("cannot create the folder: ", error.message()), {.file = directory.string()});
-}
-
 /// Frame `frame` as the bytes of a file of `options.format`, in `bytes`, reused between frames.
 template <class Graph, class Coordinate>
 void format_frame(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std::size_t frame,

@@ -136,6 +136,15 @@ inline void write_file_bytes(const std::filesystem::path& path, std::string_view
   file.close();
 }
 
+/// Creates `directory` and its parents when missing; throws invalid_input naming it otherwise.
+inline void create_folder(const std::filesystem::path& directory) {
+  std::error_code error;
+  if (std::filesystem::exists(directory, error) && !std::filesystem::is_directory(directory, error))
+    throw invalid_input("cannot write into it: it is not a folder", {.file = directory.string()});
+  std::filesystem::create_directories(directory, error);
+  if (error) throw invalid_input(join("cannot create the folder: ", error.message()), {.file = directory.string()});
+}
+
 /// Throws invalid_input naming `path` unless `frame < num_frames`.
 inline void check_frame_to_write(std::size_t frame, std::size_t num_frames, const std::filesystem::path& path) {
   if (frame >= num_frames)

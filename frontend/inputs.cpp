@@ -1,0 +1,125 @@
+#include "inputs.h"
+
+#include <deformseg/io/read_animation.h>
+#include <deformseg/io/read_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
+#include <deformseg/threads.h>
+
+#include <utility>
+
+namespace deformseg::frontend {
+
+void check(const Input_options& options, Front front) {
+  try {
+    mesh::check_frames_per_second(options.fps, spelled("fps", front));
+    thread_count(options.threads, spelled("threads", front));
+  } catch (const invalid_input& e) {
+    throw invalid_input(e.what());  // the option named, without the library's own context
+  }
+}
+
+Input_name input_name(const std::string& input, const Input_options& options, Front front) {
+  auto [file, clip] = io::split_clip_suffix(input);
+  const auto refuse_for = [&](const std::string& message) { throw invalid_input(message, {.file = file}); };
+  if (clip && !options.clip.empty())
+    refuse_for("the clip is given twice: after '#' and by " + spelled("clip", front));
+  const bool gltf = io::is_gltf(file);
+  if (!gltf && !options.clip.empty())
+    refuse_for(spelled("clip", front) + " applies to glTF files only");
+  if (gltf && !options.topology.empty())
+    refuse_for(spelled("topology", front) + " does not apply to a glTF file: it has its own");
+  return {std::move(file), clip.value_or(options.clip)};
+}
+
+namespace {
+
+io::Repair_options repair_options(const Input_name& name, const Input_options& options) {
+  return {.weld = options.weld.value_or(io::is_gltf(name.file)),
+          .defects = options.refuse_defects ? io::Defect_policy::refuse : io::Defect_policy::repair};
+}
+
+Read_input read_gltf(Input_name name, const Input_options& options, bool first_clip_by_default) {
+  const io::Gltf_file file(name.file);
+  if (!first_clip_by_default) io::require_clip_choice(file, name.clip);
+  io::Gltf_read_report report;
+  mesh::Surface_mesh_animation animation = file.read(
+      {.clip = name.clip, .fps = options.fps, .repair = repair_options(name, options), .threads = options.threads},
+      &report);
+  io::Repair_report repair = report.repair;
+  return {std::move(animation), std::move(name), std::move(repair), std::move(report)};
+}
+
+}  // namespace
+
+Read_input read_input(const std::string& input, const Input_options& options, Front front,
+                      bool first_clip_by_default) {
+  check(options, front);
+  Input_name name = input_name(input, options, front);
+  if (io::is_gltf(name.file)) return read_gltf(std::move(name), options, first_clip_by_default);
+  io::Animation_read_options read{.triangulate = options.triangulate, .threads = options.threads,
+                                  .repair = repair_options(name, options), .fps = options.fps};
+  if (!options.topology.empty()) read.topology = options.topology;
+  io::Repair_report repair;
+  mesh::Surface_mesh_animation animation = io::read_animation(name.file, read, &repair);
+  return {std::move(animation), std::move(name), repair, std::nullopt};
+}
+
+void require_motion(const mesh::Surface_mesh_animation& animation, const std::string& input) {
+  if (animation.num_frames() < 2)
+    throw invalid_input("an animation of " + std::to_string(animation.num_frames()) +
+                            " frame: a motion needs at least 2 (an unquoted glob gives one input per file: quote it)",
+                        {.file = input});
+}
+
+nlohmann::json input_record(const Read_input& read, double fps) {
+  return {{"file", read.name.file},
+          {"clip", read.gltf ? nlohmann::json(read.gltf->clip) : nlohmann::json()},
+          {"fps", fps}};
+}
+
+nlohmann::json clips_record(const io::Gltf_contents& contents) {
+  nlohmann::json clips = nlohmann::json::array();
+  for (std::size_t k = 0; k < contents.clips.size(); ++k) {
+    const io::Gltf_clip_info& clip = contents.clips[k];
+    clips.push_back({{"name", clip.name}, {"index", k}, {"start", clip.start}, {"end", clip.end},
+                     {"duration", clip.duration}, {"frames", clip.frames}, {"channels", clip.channels}});
+  }
+  return clips;
+}
+
+nlohmann::json clips_of(const std::string& path, double fps) {
+  mesh::check_frames_per_second(fps, "fps", {.file = path});
+  if (!io::is_gltf(path)) throw invalid_input("clips are listed for glTF files (.glb, .gltf) only", {.file = path});
+  return clips_record(io::gltf_contents(path, fps));
+}
+
+nlohmann::json repair_record(const io::Repair_report& report) {
+  nlohmann::json counts = nlohmann::json::object();
+  for (const auto& [name, count] : report.counts()) counts[std::string(name)] = count;
+  return counts;
+}
+
+std::string describe(const io::Repair_report& r) {
+  std::string words;
+  const auto add = [&](std::size_t count, const char* what) {
+    if (count == 0) return;
+    if (!words.empty()) words += ", ";
+    words += std::to_string(count) + " " + what;
+  };
+  add(r.welded_vertices, "vertices welded");
+  add(r.degenerate_triangles, "degenerate triangles dropped");
+  add(r.duplicate_triangles, "duplicate triangles dropped");
+  add(r.non_manifold_edges, "non-manifold edges");
+  add(r.non_manifold_vertices, "non-manifold vertices");
+  add(r.duplicated_vertices, "vertices duplicated to make them manifold");
+  add(r.reoriented_triangles, "triangles reoriented");
+  add(r.unrepairable_triangles, "unrepairable triangles dropped");
+  return words.empty() ? "nothing" : words;
+}
+
+mesh::Surface_mesh read_reference_mesh(const std::string& path) {
+  const io::Triangle_soup soup = io::read_mesh(path);
+  return mesh::make_face_graph<mesh::Surface_mesh>(io::points_of(soup), soup.triangles);
+}
+
+}  // namespace deformseg::frontend

@@ -1,0 +1,112 @@
+// How every command and every Python function reads an animation: the input options, the same
+// under the same names everywhere, and the rules of which applies to which format.
+#pragma once
+
+#include "parameters.h"
+
+#include <deformseg/io/gltf.h>
+#include <deformseg/io/mesh_repair.h>
+#include <deformseg/mesh/default_mesh.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace deformseg::frontend {
+
+/// How to read the inputs of a command or a function; one set for all its inputs.
+struct Input_options {
+  std::string clip{};         ///< glTF: a clip's name or index; empty: the input's own ("FILE#CLIP"), or the only one
+  double fps = 30;            ///< glTF's sampling rate; frame files' and point caches' playing rate
+  std::string topology{};     ///< the connectivity of point caches; empty: none
+  bool triangulate = false;   ///< fan-triangulate polygons instead of refusing them
+  std::optional<bool> weld{};  ///< none: the format's rule (glTF welded, others not)
+  bool refuse_defects = false;  ///< fail on degenerate or non-manifold triangles instead of repairing them
+  int threads = 0;              ///< 0: all
+};
+
+/// The input options' table.
+inline constexpr std::tuple input_parameters{
+    Parameter<Input_options, std::string>{
+        "clip", &Input_options::clip,
+        "glTF: the clip to read, by name or index, for every input that names none after '#' (FILE.glb#CLIP); "
+        "required for a file of several clips",
+        Parameter_kind::clip},
+    Parameter<Input_options, double>{
+        "fps", &Input_options::fps,
+        "Frames per second: glTF clips are sampled at it; frame files and point caches play at it. Default: 30"},
+    Parameter<Input_options, std::string>{"topology", &Input_options::topology,
+                                          "A mesh file giving the connectivity of point caches (required for them)",
+                                          Parameter_kind::file},
+    Parameter<Input_options, bool>{"triangulate", &Input_options::triangulate,
+                                   "Fan-triangulate polygons instead of refusing them"},
+    Parameter<Input_options, std::optional<bool>>{
+        "weld", &Input_options::weld,
+        "Weld the vertices that coincide in every frame. Default: glTF files welded (every clip of a file then has "
+        "one mesh), frame sequences and point caches not"},
+    Parameter<Input_options, bool>{"refuse_defects", &Input_options::refuse_defects,
+                                   "Fail on degenerate, duplicate or non-manifold triangles instead of repairing them"},
+    Parameter<Input_options, int>{"threads", &Input_options::threads, "Threads to use (0: all); results do not "
+                                                                      "depend on it"},
+};
+
+/// Checks the options before any input is read (fps, threads).
+/// @throws invalid_input naming the option as `front` spells it.
+void check(const Input_options& options, Front front);
+
+/// An input and the clip it names: "Fox.glb#Walk" is the file Fox.glb and the clip Walk.
+struct Input_name {
+  std::string file;
+  std::string clip;  ///< empty: none named
+};
+
+/// `input` split into its file and its clip (after '#', or `options.clip`), refusing what does not
+/// apply to its format: a clip for a file that is not glTF, a topology for a glTF file, a clip given
+/// twice.
+/// @throws invalid_input naming the input.
+Input_name input_name(const std::string& input, const Input_options& options, Front front);
+
+/// An animation read, with what reading it found.
+struct Read_input {
+  mesh::Surface_mesh_animation animation;
+  Input_name name;
+  io::Repair_report repair{};
+  std::optional<io::Gltf_read_report> gltf{};  ///< for a glTF input
+};
+
+/// Reads `input` as `options` say; a glTF file of several clips needs one named, unless
+/// `first_clip_by_default`.
+/// @throws invalid_input naming the file, the clip, the frame or the option.
+Read_input read_input(const std::string& input, const Input_options& options, Front front,
+                      bool first_clip_by_default = false);
+
+/// Refuses an animation of fewer than 2 frames, which has no motion to compare.
+/// @throws invalid_input naming `input`.
+void require_motion(const mesh::Surface_mesh_animation& animation, const std::string& input);
+
+/// What an input was, for a report: {"file", "clip" (its name as read, or null), "fps"}.
+nlohmann::json input_record(const Read_input& read, double fps);
+
+/// The clips of a glTF file as a report: [{"name", "index", "start", "end", "duration", "frames",
+/// "channels"}], frames counted at `fps`.
+nlohmann::json clips_record(const io::Gltf_contents& contents);
+
+/// The clips of the glTF file `path` (one without '#'), as `clips_record`.
+/// @throws invalid_input naming the file, when it is not a glTF file or cannot be read.
+nlohmann::json clips_of(const std::string& path, double fps);
+
+/// The repair report as JSON: every count, by name.
+nlohmann::json repair_record(const io::Repair_report& report);
+
+/// The repair report in words, "12 vertices welded, 3 degenerate triangles dropped", or "nothing".
+std::string describe(const io::Repair_report& report);
+
+/// The mesh of a reference-mesh file: a rest pose kept apart from the frames, with the
+/// connectivity of the animation as read.
+mesh::Surface_mesh read_reference_mesh(const std::string& path);
+
+}  // namespace deformseg::frontend

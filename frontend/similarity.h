@@ -1,0 +1,101 @@
+// The motion similarity as a command and a Python function ask for it: a policy and its
+// alignment by name, and the z-score against frame-shuffled copies.
+#pragma once
+
+#include "parameters.h"
+
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/similarity/policy_choice.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <tuple>
+
+namespace deformseg::frontend {
+
+/// The similarity policies, in the order of `similarity::policy_names`.
+inline constexpr std::array similarity_policies{
+    Choice{"motion-signature", "per-frame distributions of how fast, and how fast up or down, the surface moves at "
+                               "several time scales, no correspondence needed (default)"},
+    Choice{"histogram", "per-frame histograms of the strain, no correspondence needed; its values crowd near 1: "
+                        "read the z-score or a rank, not the value"},
+    Choice{"graph", "the thesis' evolving graphs, graph edit distances, clustering and label alignment"},
+    Choice{"self-similarity", "each animation's own frame x frame distances after rigid alignment"},
+};
+
+/// The alignments, in the order of `similarity::alignment_names`; none given: the policy's own
+/// (dtw for motion-signature, smith-waterman for the others).
+inline constexpr std::array alignments{
+    Choice{"smith-waterman", "local: the best matching parts"},
+    Choice{"dtw", "global: both whole"},
+    Choice{"subsequence-dtw", "open begin and end"},
+};
+
+/// The up directions of the motion signatures, in the order of `similarity::up_names`; none
+/// given: +y (glTF's up).
+inline constexpr std::array up_directions{
+    Choice{"+x", "x up"},     Choice{"-x", "x down"}, Choice{"+y", "y up (default, glTF's)"}, Choice{"-y", "y down"},
+    Choice{"+z", "z up"},     Choice{"-z", "z down"}, Choice{"none", "speeds alone, blind to direction"},
+};
+
+/// The policy choice's table.
+inline constexpr std::tuple policy_parameters{
+    choice_parameter("policy", &similarity::Policy_choice::policy, "The similarity policy", similarity_policies),
+    choice_parameter("alignment", &similarity::Policy_choice::alignment,
+                     "The alignment of the frames. Default: dtw for motion-signature, smith-waterman for the others",
+                     alignments),
+    Parameter<similarity::Policy_choice, std::optional<double>>{
+        "threshold", &similarity::Policy_choice::threshold,
+        "graph: the deformed threshold of the segmentation, in [0, 1]. Default: 0.5"},
+    choice_parameter("up", &similarity::Policy_choice::up,
+                     "motion-signature: the animations' up axis, whose rises and falls the signatures tell apart. "
+                     "Default: +y",
+                     up_directions),
+};
+
+/// The significance of a similarity: its z-score against frame-shuffled copies of the second.
+struct Significance_request {
+  std::optional<std::size_t> significance{};  ///< copies; none: 20, or 0 for the graph policy
+  unsigned seed = 1;
+};
+
+/// The significance request's table.
+inline constexpr std::tuple significance_parameters{
+    Parameter<Significance_request, std::optional<std::size_t>>{
+        "significance", &Significance_request::significance,
+        "The z-score of the value against this many copies of the second animation with frames shuffled (0: "
+        "none). Default: 20, none for the graph policy"},
+    Parameter<Significance_request, unsigned>{"seed", &Significance_request::seed,
+                                              "The seed of the shuffles. Default: 1"},
+};
+
+/// Checks a policy choice before any input is read.
+/// @throws invalid_input naming the parameter as `front` spells it.
+void check(const similarity::Policy_choice& choice, Front front);
+
+/// Checks a significance request, for `choice`, before any input is read.
+/// @throws invalid_input naming the parameter as `front` spells it.
+void check(const Significance_request& request, const similarity::Policy_choice& choice, Front front);
+
+/// A similarity and its significance.
+struct Compared {
+  similarity::Similarity similarity;
+  std::optional<double> z_score;
+  std::size_t shuffled_copies = 0;
+};
+
+/// How alike `a` and `b` move under `choice` and, for a policy whose frames can be shuffled,
+/// the z-score of the value against shuffled copies of `b` as `significance` asks.
+Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
+                 const similarity::Policy_choice& choice, const Significance_request& significance);
+
+/// A similarity as a report: {"policy", "alignment_policy", "similarity", "score", "labels_a",
+/// "labels_b", "alignment": [[i, j], ...], "compared", "z_score" (or null), "shuffled_copies"}.
+nlohmann::json similarity_record(const Compared& compared, const similarity::Policy_choice& choice);
+
+}  // namespace deformseg::frontend

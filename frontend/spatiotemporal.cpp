@@ -1,0 +1,64 @@
+#include "spatiotemporal.h"
+
+#include <deformseg/mesh/face_areas.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace deformseg::frontend {
+
+void check(const Spatiotemporal_request& r, Front front) {
+  if (!r.reference.empty()) check_choice("reference", r.reference, segmentation_references, front);
+  if (!(r.threshold >= 0 && r.threshold <= 1)) refuse(spelled("threshold", front) + " must be in [0, 1]");
+  if (!r.reference_mesh.empty() && r.reference == "previous")
+    refuse(spelled("reference_mesh", front) + " is a rest pose: it excludes " +
+           spelled("reference", "previous", front));
+}
+
+Spatiotemporal_result spatiotemporal_segments(const mesh::Surface_mesh_animation& animation,
+                                              const Spatiotemporal_request& r, int threads) {
+  const std::string reference = r.reference.empty() ? (r.reference_mesh.empty() ? "previous" : "rest") : r.reference;
+  const spatiotemporal::Spatiotemporal_options options{
+      .reference = reference == "rest" ? strain::Strain_reference::rest_pose : strain::Strain_reference::previous_pose,
+      .threshold = r.threshold,
+      .min_triangles = r.min_triangles,
+      .min_frames = r.min_frames,
+      .max_island = r.max_island};
+  const auto field = strain_against(animation, r.reference_mesh,
+                                    {.reference = options.reference, .threads = threads});
+  const std::vector<double> areas = mesh::face_areas(animation, 0);
+  auto segmentation = std::make_unique<const spatiotemporal::Spatiotemporal_segmentation>(
+      spatiotemporal::spatiotemporal_segmentation(field, animation.triangles(), options));
+  spatiotemporal::Frame_segments frames(*segmentation, animation.triangles(), areas);
+  spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(frames);
+  return {std::move(segmentation), std::move(frames), std::move(graph)};
+}
+
+namespace {
+
+nlohmann::json key_frame_record(const spatiotemporal::Key_frame& k) {
+  nlohmann::json nodes = nlohmann::json::array(), edges = nlohmann::json::array();
+  const spatiotemporal::Segment_graph& g = k.graph;
+  for (std::size_t v = 0; v < boost::num_vertices(g); ++v) {
+    const bool rigid = g[v].kind == spatiotemporal::Segment_kind::rigid;
+    nodes.push_back({{"id", v},
+                     {"kind", rigid ? "rigid" : "deformed"},
+                     {"segment", rigid ? nlohmann::json(nullptr) : nlohmann::json(g[v].segment)},
+                     {"triangles", g[v].triangles},
+                     {"area", g[v].area}});
+  }
+  for (auto e : boost::make_iterator_range(boost::edges(g)))
+    edges.push_back(
+        {std::min(boost::source(e, g), boost::target(e, g)), std::max(boost::source(e, g), boost::target(e, g))});
+  return {{"first", k.first_frame}, {"last", k.last_frame}, {"nodes", nodes}, {"edges", edges}};
+}
+
+}  // namespace
+
+nlohmann::json evolving_graph_record(const spatiotemporal::Evolving_graph& graph) {
+  nlohmann::json key_frames = nlohmann::json::array();
+  for (const spatiotemporal::Key_frame& k : graph) key_frames.push_back(key_frame_record(k));
+  return {{"frames", graph.num_frames()}, {"segments", graph.num_segments()}, {"key_frames", key_frames}};
+}
+
+}  // namespace deformseg::frontend

@@ -1,0 +1,74 @@
+// The spatio-temporal segmentation and its evolving graph as a command and a Python function ask
+// for them.
+#pragma once
+
+#include "parameters.h"
+#include "strain.h"
+
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
+
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <tuple>
+
+namespace deformseg::frontend {
+
+/// What a cell's strain is measured against, for the spatio-temporal segmentation.
+inline constexpr std::array segmentation_references{
+    Choice{"previous", "deformed while it moves (default without a reference mesh)"},
+    Choice{"rest", "deformed while away from frame 0, or from the reference mesh (the default with one)"},
+};
+
+/// A spatio-temporal segmentation as the user asks for it.
+struct Spatiotemporal_request {
+  double threshold = spatiotemporal::Spatiotemporal_options{}.threshold;
+  std::string reference{};  ///< empty: previous, or rest with a reference mesh
+  std::string reference_mesh{};
+  std::size_t min_triangles = spatiotemporal::Spatiotemporal_options{}.min_triangles;
+  std::size_t min_frames = spatiotemporal::Spatiotemporal_options{}.min_frames;
+  std::size_t max_island = spatiotemporal::Spatiotemporal_options{}.max_island;
+};
+
+/// The spatio-temporal request's table.
+inline constexpr std::tuple spatiotemporal_parameters{
+    Parameter<Spatiotemporal_request, double>{
+        "threshold", &Spatiotemporal_request::threshold,
+        "A cell is deformed above this normalised strain, in [0, 1]. Default: 0.5"},
+    choice_parameter("reference", &Spatiotemporal_request::reference, "What the strain is measured against",
+                     segmentation_references),
+    reference_mesh_parameter<Spatiotemporal_request>(),
+    Parameter<Spatiotemporal_request, std::size_t>{
+        "min_triangles", &Spatiotemporal_request::min_triangles,
+        "Segments whose largest slice has fewer triangles become rigid. Default: 10"},
+    Parameter<Spatiotemporal_request, std::size_t>{"min_frames", &Spatiotemporal_request::min_frames,
+                                                   "Segments lasting fewer frames become rigid. Default: 2"},
+    Parameter<Spatiotemporal_request, std::size_t>{
+        "max_island", &Spatiotemporal_request::max_island,
+        "Rigid islands of at most this many triangles inside one segment join it (0: none). Default: 30"},
+};
+
+/// Checks a request before any input is read.
+/// @throws invalid_input naming the parameter as `front` spells it.
+void check(const Spatiotemporal_request& request, Front front);
+
+/// The segments of every frame and the evolving graph of their key frames.
+struct Spatiotemporal_result {
+  std::unique_ptr<const spatiotemporal::Spatiotemporal_segmentation> segmentation;  ///< what `frames` refers to
+  spatiotemporal::Frame_segments frames;
+  spatiotemporal::Evolving_graph graph;
+};
+
+/// The spatio-temporal segmentation of `animation` as `request` asks.
+Spatiotemporal_result spatiotemporal_segments(const mesh::Surface_mesh_animation& animation,
+                                              const Spatiotemporal_request& request, int threads);
+
+/// An evolving graph as a report: {"frames", "segments", "key_frames": [{"first", "last", "nodes":
+/// [{"id", "kind", "segment" (null for rigid), "triangles", "area"}], "edges": [[u, v], ...]}]}.
+nlohmann::json evolving_graph_record(const spatiotemporal::Evolving_graph& graph);
+
+}  // namespace deformseg::frontend

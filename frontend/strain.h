@@ -1,0 +1,91 @@
+// The strain as a command and a Python function ask for it: measures, normalisations and
+// references by name, against a frame or a reference mesh read from a file.
+#pragma once
+
+#include "parameters.h"
+
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/strain/strain.h>
+
+#include <array>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <tuple>
+
+namespace deformseg::frontend {
+
+/// The built-in strain measures.
+inline constexpr std::array strain_measures{
+    Choice{"max-principal", "max |l - 1| over the principal stretches l (default)"},
+    Choice{"green-lagrange", "the Green-Lagrange strain of largest magnitude, max |l^2 - 1| / 2"},
+    Choice{"frobenius", "the Frobenius norm of U - I, U the right stretch tensor"},
+    Choice{"area-ratio", "the change of area |J - 1|, J = l1 l2: blind to shape"},
+};
+
+/// The normalisations of the strain.
+inline constexpr std::array strain_normalizations{
+    Choice{"gaussian", "1 - exp(-s^2 / 2 sigma^2), sigma the 95th percentile of the strains unless given (default)"},
+    Choice{"none", "the raw strains"},
+};
+
+/// What the strain is measured against.
+inline constexpr std::array strain_references{
+    Choice{"rest", "one pose: a frame (the rest frame) or the reference mesh (default)"},
+    Choice{"previous", "the frame before (frame 0's strain is 0)"},
+};
+
+/// A strain as the user asks for it.
+struct Strain_request {
+  std::string reference = "rest";
+  std::size_t rest_frame = 0;
+  std::string reference_mesh{};  ///< a mesh file in the place of the rest frame; empty: none
+  std::string measure = "max-principal";
+  std::string normalize = "gaussian";
+  std::optional<double> sigma{};
+  double degenerate_tolerance = 1e-12;
+};
+
+/// The reference-mesh parameter, which the strain, the temporal and the spatio-temporal
+/// segmentation share.
+template <class Request>
+constexpr Parameter<Request, std::string> reference_mesh_parameter() {
+  return {"reference_mesh", &Request::reference_mesh,
+          "A mesh file (.obj, .off, .ply) with the animation's connectivity in another pose: a rest pose kept "
+          "apart from the frames, in the place of the rest frame",
+          Parameter_kind::file};
+}
+
+/// The strain request's table.
+inline constexpr std::tuple strain_parameters{
+    choice_parameter("reference", &Strain_request::reference, "What the strain is measured against",
+                     strain_references),
+    Parameter<Strain_request, std::size_t>{"rest_frame", &Strain_request::rest_frame,
+                                           "The rest frame, with reference rest. Default: 0"},
+    reference_mesh_parameter<Strain_request>(),
+    choice_parameter("measure", &Strain_request::measure, "The strain measure", strain_measures),
+    choice_parameter("normalize", &Strain_request::normalize, "The normalisation", strain_normalizations),
+    Parameter<Strain_request, std::optional<double>>{
+        "sigma", &Strain_request::sigma, "The Gaussian normalisation's sigma. Default: the 95th percentile"},
+    Parameter<Strain_request, double>{"degenerate_tolerance", &Strain_request::degenerate_tolerance,
+                                      "Reference triangles thinner than this have strain 0. Default: 1e-12"},
+};
+
+/// Checks a request before any input is read.
+/// @throws invalid_input naming the parameter as `front` spells it.
+void check(const Strain_request& request, Front front);
+
+/// The library's options of a checked request.
+strain::Strain_options strain_options(const Strain_request& request, int threads);
+
+/// The strain field of `animation` as `request` asks, against its reference mesh when it names
+/// one (read from its file; an error of connectivity then names that file).
+strain::Strain_field<float> strain_field(const mesh::Surface_mesh_animation& animation,
+                                         const Strain_request& request, int threads);
+
+/// The strain field of `animation` with `options`, against `reference_mesh` (read from the file
+/// `path`) when `path` is not empty; an error of connectivity then names that file.
+strain::Strain_field<float> strain_against(const mesh::Surface_mesh_animation& animation, const std::string& path,
+                                           const strain::Strain_options& options);
+
+}  // namespace deformseg::frontend
