@@ -21,14 +21,20 @@ void check(const Input_options& options, Front front) {
 Input_name input_name(const std::string& input, const Input_options& options, Front front) {
   auto [file, clip] = io::split_clip_suffix(input);
   const auto refuse_for = [&](const std::string& message) { throw invalid_input(message, {.file = file}); };
-  if (clip && !options.clip.empty())
-    refuse_for("the clip is given twice: after '#' and by " + spelled("clip", front));
   const bool gltf = io::is_gltf(file);
   if (!gltf && !options.clip.empty())
     refuse_for(spelled("clip", front) + " applies to glTF files only");
   if (gltf && !options.topology.empty())
     refuse_for(spelled("topology", front) + " does not apply to a glTF file: it has its own");
   return {std::move(file), clip.value_or(options.clip)};
+}
+
+void check_clip_applies(const std::vector<std::string>& inputs, const Input_options& options, Front front) {
+  if (options.clip.empty() || inputs.empty()) return;
+  for (const std::string& input : inputs)
+    if (!io::split_clip_suffix(input).second) return;
+  throw invalid_input("the clip is given twice: after '#' and by " + spelled("clip", front),
+                      {.file = io::split_clip_suffix(inputs.front()).first});
 }
 
 namespace {

@@ -64,11 +64,14 @@ struct Input_name {
   std::string clip;  ///< empty: none named
 };
 
-/// `input` split into its file and its clip (after '#', or `options.clip`), refusing what does not
-/// apply to its format: a clip for a file that is not glTF, a topology for a glTF file, a clip given
-/// twice.
+/// `input` split into its file and its clip (after '#', else `options.clip`), refusing what does
+/// not apply to its format: a clip for a file that is not glTF, a topology for a glTF file.
 /// @throws invalid_input naming the input.
 Input_name input_name(const std::string& input, const Input_options& options, Front front);
+
+/// Refuses a clip option that applies to none of `inputs`: each names its own after '#'.
+/// @throws invalid_input "the clip is given twice", naming the first input.
+void check_clip_applies(const std::vector<std::string>& inputs, const Input_options& options, Front front);
 
 /// An animation read, with what reading it found.
 struct Read_input {
@@ -78,7 +81,8 @@ struct Read_input {
   std::optional<io::Gltf_read_report> gltf{};  ///< for a glTF input
 };
 
-/// Reads `input` as `options` say; a glTF file of several clips needs one named, unless
+/// Reads `input` as `options` say (the one input of a command or a function: see
+/// `check_clip_applies`); a glTF file of several clips needs one named, unless
 /// `first_clip_by_default`.
 /// @throws invalid_input naming the file, the clip, the frame or the option.
 Read_input read_input(const std::string& input, const Input_options& options, Front front,

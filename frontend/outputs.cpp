@@ -3,6 +3,7 @@
 #include <deformseg/io/files.h>
 
 #include <iostream>
+#include <optional>
 
 namespace deformseg::frontend {
 
@@ -19,30 +20,44 @@ void write_json(const nlohmann::json& document, const std::string& path) { write
 namespace {
 
 template <class Matrix>
-std::string csv_of(const Matrix& m, const std::vector<std::string>& names) {
-  std::string text;
+void write_csv(const Matrix& m, const std::string& path, const std::vector<std::string>& names) {
+  std::optional<io::Atomic_file> file;
+  if (path != "-") file.emplace(path);
+  const auto write = [&](const std::string& text) {
+    if (file)
+      file->write(text);
+    else
+      std::cout << text;
+  };
+  std::string line;
   if (!names.empty()) {
-    text = "animation";
-    for (const std::string& name : names) text += "," + name;
-    text += '\n';
+    line = "animation";
+    for (const std::string& name : names) line.append(",").append(name);
+    line += '\n';
+    write(line);
   }
   for (Eigen::Index i = 0; i < m.rows(); ++i) {
-    if (!names.empty()) text += names[std::size_t(i)] + ",";
+    line.clear();
+    if (!names.empty()) line.append(names[std::size_t(i)]).append(",");
     for (Eigen::Index j = 0; j < m.cols(); ++j) {
-      if (j > 0) text += ',';
-      io::append_shortest(text, m(i, j));
+      if (j > 0) line += ',';
+      io::append_shortest(line, m(i, j));
     }
-    text += '\n';
+    line += '\n';
+    write(line);
   }
-  return text;
+  if (file)
+    file->commit();
+  else
+    std::cout << std::flush;
 }
 
 }  // namespace
 
-std::string matrix_csv(const Eigen::MatrixXd& matrix, const std::vector<std::string>& names) {
-  return csv_of(matrix, names);
+void write_matrix_csv(const Eigen::MatrixXd& matrix, const std::string& path, const std::vector<std::string>& names) {
+  write_csv(matrix, path, names);
 }
 
-std::string matrix_csv(const Eigen::MatrixXf& matrix) { return csv_of(matrix, {}); }
+void write_matrix_csv(const Eigen::MatrixXf& matrix, const std::string& path) { write_csv(matrix, path, {}); }
 
 }  // namespace deformseg::frontend

@@ -18,11 +18,14 @@ void write_text(std::string_view text, const std::string& path);
 /// Writes `document` to `path` as JSON, indented; "-": standard output.
 void write_json(const nlohmann::json& document, const std::string& path);
 
-/// A matrix as CSV text, each value in the shortest text that reads back to it exactly; with
-/// `names` (one per row and column), a header row "animation,NAME..." and each row's name first.
-std::string matrix_csv(const Eigen::MatrixXd& matrix, const std::vector<std::string>& names = {});
+/// Writes a matrix to `path` as CSV, a row at a time (no copy of the whole text in memory),
+/// whole or not at all; "-": standard output. Each value is the shortest text that reads back to
+/// it exactly. With `names` (one per row and column), a header row "animation,NAME..." and each
+/// row's name first.
+void write_matrix_csv(const Eigen::MatrixXd& matrix, const std::string& path,
+                      const std::vector<std::string>& names = {});
 
-/// A float matrix as CSV text, each value in the shortest text that reads back to the float.
-std::string matrix_csv(const Eigen::MatrixXf& matrix);
+/// The same for a float matrix, without names.
+void write_matrix_csv(const Eigen::MatrixXf& matrix, const std::string& path);
 
 }  // namespace deformseg::frontend

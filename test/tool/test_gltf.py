@@ -191,3 +191,24 @@ def test_evaluate_needs_clip(tool, scratch, fox):
 
 def test_clip_given_twice(tool, fox_walk):
     fails(tool("strain", fox_walk, "--clip", "Run"), "the clip is given twice")
+
+
+# Two-input commands take the clip after '#' or by one --clip, for every input that names none;
+# their JSON records the clip each input was read as.
+def test_similarity_clip_for_every_input(tool, fox):
+    both = tool("similarity", fox, fox, "--clip", "Walk", "--significance", "0", "--json", "-").json()
+    assert both["similarity"] == 1
+    assert [s["clip"] for s in both["sources"]] == ["Walk", "Walk"]
+    mixed = tool("similarity", fox, f"{fox}#Run", "--clip", "Walk", "--significance", "0", "--json", "-").json()
+    assert [s["clip"] for s in mixed["sources"]] == ["Walk", "Run"] and mixed["similarity"] < 1
+
+
+def test_find_clip_by_index(tool, fox):
+    found = tool("find", f"{fox}#1", f"{fox}#Walk", "--json", "-").json()
+    assert [s["clip"] for s in found["sources"]] == ["Walk", "Walk"]
+    assert found["matches"][0]["similarity"] == pytest.approx(1)
+
+
+def test_strain_records_the_clip_and_fps(tool, fox):
+    summary = tool("strain", f"{fox}#Run", "--fps", "12", "--json", "-").json()
+    assert summary["sources"] == [{"file": str(fox), "clip": "Run", "fps": 12}]

@@ -1,7 +1,5 @@
 #include "command.h"
 
-#include <deformseg/io/internal/file_io.h>
-#include <deformseg/io/read_mesh.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,139 +9,65 @@
 
 namespace deformseg::tool {
 
-void add_input_options(CLI::App& command, Input_options& options) {
-  command.add_option("input", options.input,
-                     "A glTF file (.glb, .gltf) with --clip (or as FILE.glb#CLIP), a folder of frames (.obj, "
-                     ".off, .ply; natural order), a quoted glob pattern, or a point cache (.pc2, .mdd) with --topology")
-      ->required();
-  command.add_option("--topology", options.topology,
-                     "Mesh file giving the connectivity (required for a point cache)");
-  command.add_flag("--triangulate", options.triangulate,
-                   "Fan-triangulate polygons instead of rejecting them");
-  command.add_option("--threads", options.threads, "Threads to use (0: all)")
-      ->check(thread_counts);
-  command.add_option("--clip", options.clip,
-                     "glTF: the clip to read, by name or index (or as FILE.glb#CLIP); required when the file "
-                     "holds several");
-  command.add_option("--fps", options.fps,
-                     "Frames per second: a glTF clip is sampled at it; frame files and point caches play at it")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  CLI::Option* weld = command.add_flag(
-      "--weld", options.weld,
-      "Weld the vertices that coincide in every frame (glTF files are always welded, by the rule that gives "
-      "every clip of a file one mesh: the same rest position, skin weights and morph deltas)");
-  command.add_flag("--no-weld", options.no_weld, "glTF: keep the file's vertices, in its order, unwelded")
-      ->excludes(weld);
-  command.add_flag("--refuse-defects", options.refuse_defects,
-                   "Fail on degenerate, duplicate or non-manifold triangles instead of repairing them");
+namespace {
+
+const char* const input_help =
+    "a glTF file (.glb, .gltf; a clip as FILE.glb#CLIP or by --clip), a folder of frames (.obj, .off, .ply; natural "
+    "order), a quoted glob pattern, or a point cache (.pc2, .mdd) with --topology";
+
+}  // namespace
+
+void add_inputs(CLI::App& command, const std::string& name, std::vector<std::string>& inputs, int fewest, int most,
+                Input_options& options, const std::string& help) {
+  command.add_option(name, inputs, help + ", each " + input_help)->required()->expected(fewest, most);
+  add_parameters(command, frontend::input_parameters, options);
+}
+
+void add_input(CLI::App& command, std::string& input, Input_options& options) {
+  command.add_option("input", input, std::string("The animation: ") + input_help)->required();
+  add_parameters(command, frontend::input_parameters, options);
 }
 
 namespace {
 
-// --clip and --no-weld apply to glTF only, --weld and --topology to the other formats.
-void check_input_options(const Input_options& options) {
-  const auto refuse = [&](const char* message) { throw invalid_input(message, {.file = options.input}); };
-  const bool gltf = io::is_gltf(options.input);
-  if (!gltf && !options.clip.empty()) refuse("--clip applies to glTF files only");
-  if (!gltf && options.no_weld) refuse("--no-weld applies to glTF files only (others are welded only with --weld)");
-  if (gltf && options.weld) refuse("--weld: glTF files are welded already (--no-weld keeps their vertices)");
-  if (gltf && !options.topology.empty()) refuse("--topology does not apply to a glTF file: it has its own");
-}
-
-io::Repair_options repair_options(const Input_options& options) {
-  return {.weld = io::is_gltf(options.input) ? !options.no_weld : options.weld,
-          .defects = options.refuse_defects ? io::Defect_policy::refuse : io::Defect_policy::repair};
+frontend::Read_input read_one(const std::string& input, const Input_options& options, bool first_clip_by_default) {
+  progress("reading " + input);
+  frontend::Read_input read = frontend::read_input(input, options, frontend::Front::command_line,
+                                                   first_clip_by_default);
+  if (read.gltf)
+    progress("clip \"" + read.gltf->clip + "\", " + std::to_string(read.gltf->frames) + " frames at " +
+             nlohmann::json(options.fps).dump() + " fps");
+  if (read.repair.changed()) progress("repaired: " + frontend::describe(read.repair));
+  return read;
 }
 
 }  // namespace
 
-Input_options with_clip_of_name(Input_options options) {
-  auto [file, clip] = io::split_clip_suffix(options.input);
-  if (!clip) return options;
-  if (!options.clip.empty())
-    throw invalid_input("the clip is given twice: by --clip and after '#'", {.file = options.input});
-  options.input = std::move(file);
-  options.clip = std::move(*clip);
-  return options;
+frontend::Read_input read_input(const std::string& input, const Input_options& options, bool first_clip_by_default) {
+  frontend::check_clip_applies({input}, options, frontend::Front::command_line);
+  return read_one(input, options, first_clip_by_default);
 }
 
-mesh::Surface_mesh_animation read_input(const Input_options& given, Input_report* report) {
-  const Input_options options = with_clip_of_name(given);
-  check_input_options(options);
-  progress("reading " + options.input);
-  Input_report found;
-  mesh::Surface_mesh_animation animation = [&] {
-    if (io::is_gltf(options.input)) {
-      found.gltf.emplace();
-      const io::Gltf_file file(options.input);
-      if (!options.first_clip_by_default) io::require_clip_choice(file, options.clip);
-      mesh::Surface_mesh_animation read = file.read({.clip = options.clip, .fps = options.fps,
-                                               .repair = repair_options(options), .threads = options.threads},
-                                              &*found.gltf);
-      found.repair = found.gltf->repair;
-      return read;
-    }
-    io::Animation_read_options read{.triangulate = options.triangulate, .threads = options.threads,
-                                    .repair = repair_options(options), .fps = options.fps};
-    if (!options.topology.empty()) read.topology = options.topology;
-    return io::read_animation(options.input, read, &found.repair);
-  }();
-  if (found.gltf)
-    progress("clip \"" + found.gltf->clip + "\", " + std::to_string(found.gltf->frames) + " frames at " +
-             nlohmann::json(options.fps).dump() + " fps");
-  if (found.repair.changed()) progress("repaired: " + describe(found.repair));
-  if (report) *report = std::move(found);
-  return animation;
-}
-
-void add_reference_mesh_option(CLI::App& command, std::string& path) {
-  command.add_option("--reference-mesh", path,
-                     "Measure strain against this mesh (.obj, .off, .ply: the animation's connectivity, in "
-                     "another pose) in place of a frame: a rest pose kept apart from the frames");
-}
-
-mesh::Surface_mesh read_reference_mesh(const std::string& path) {
-  progress("reading the reference mesh " + path);
-  const io::Triangle_soup soup = io::read_mesh(path);
-  return mesh::make_face_graph<mesh::Surface_mesh>(io::points_of(soup), soup.triangles);
-}
-
-nlohmann::json to_json(const io::Repair_report& r) {
-  nlohmann::json counts = nlohmann::json::object();
-  for (const auto& [name, count] : r.counts()) counts[std::string(name)] = count;
-  return counts;
-}
-
-std::string describe(const io::Repair_report& r) {
-  std::string words;
-  const auto add = [&](std::size_t count, const char* what) {
-    if (count == 0) return;
-    if (!words.empty()) words += ", ";
-    words += std::to_string(count) + " " + what;
-  };
-  add(r.welded_vertices, "vertices welded");
-  add(r.degenerate_triangles, "degenerate triangles dropped");
-  add(r.duplicate_triangles, "duplicate triangles dropped");
-  add(r.non_manifold_edges, "non-manifold edges");
-  add(r.non_manifold_vertices, "non-manifold vertices");
-  add(r.duplicated_vertices, "vertices duplicated to make them manifold");
-  add(r.reoriented_triangles, "triangles reoriented");
-  add(r.unrepairable_triangles, "unrepairable triangles dropped");
-  return words.empty() ? "nothing" : words;
-}
-
-void write_json(const nlohmann::json& document, const std::string& path) {
-  if (path == "-") {
-    std::cout << document.dump(2) << '\n';
-    return;
+std::vector<frontend::Read_input> read_inputs(const std::vector<std::string>& inputs, const Input_options& options,
+                                              bool motions_only) {
+  frontend::check_clip_applies(inputs, options, frontend::Front::command_line);
+  std::vector<frontend::Read_input> read;
+  for (const std::string& input : inputs) {
+    read.push_back(read_one(input, options, false));
+    if (motions_only) frontend::require_motion(read.back().animation, input);
   }
-  deformseg::io::internal::write_file_bytes(path, document.dump(2) + '\n');  // names the file and the system's reason
+  return read;
+}
+
+nlohmann::json sources(std::span<const frontend::Read_input> inputs, const Input_options& options) {
+  nlohmann::json records = nlohmann::json::array();
+  for (const frontend::Read_input& input : inputs) records.push_back(frontend::input_record(input, options.fps));
+  return records;
 }
 
 void write_outputs(const nlohmann::json& document, const std::string& json_path,
                    const std::function<void()>& print_summary, bool standard_output_taken) {
-  if (!json_path.empty()) write_json(document, json_path);
+  if (!json_path.empty()) frontend::write_json(document, json_path);
   if (json_path != "-" && !standard_output_taken) print_summary();
 }
 

@@ -3,6 +3,10 @@
 #pragma once
 
 #include "figures/figure.h"
+#include "parameters.h"
+
+#include <frontend/inputs.h>
+#include <frontend/outputs.h>
 
 #include <deformseg/color/color.h>
 #include <deformseg/mesh/default_mesh.h>
@@ -19,76 +23,41 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 namespace deformseg::tool {
 
-/// The input of a sub-command that reads an animation, and how to read it.
-struct Input_options {
-  std::string input;
-  std::string topology;
-  bool triangulate = false;
-  int threads = 0;
-  std::string clip;         // glTF: a clip's name or index; empty: the only one (several refused)
-  double fps = 30;          // frames per second: glTF's sampling, frame files' and point caches' rate
-  bool weld = false;        // --weld: weld a frame sequence's or a point cache's vertices
-  bool no_weld = false;     // --no-weld: keep a glTF file's vertices as they are
-  bool refuse_defects = false;  // --refuse-defects: fail on degenerate or non-manifold triangles
-  bool first_clip_by_default = false;  // info: a glTF file of several clips, none named, gives its first
-};
+/// The inputs of a command that reads animations and how to read them: the front end's input
+/// options, the same for every command and every input.
+using Input_options = frontend::Input_options;
 
 /// The check of every `--threads`: 0 (all) to max_threads, refused when the command line is read,
 /// before any work.
 inline const CLI::Range thread_counts(0, max_threads);
 
-/// What reading the input found besides the animation.
-struct Input_report {
-  io::Repair_report repair;
-  std::optional<io::Gltf_read_report> gltf;  // for a glTF input
-};
+/// Adds a positional argument `name` taking from `fewest` to `most` animations (-1: any number)
+/// into `inputs`, with the input options: --clip, --fps, --topology, --triangulate, --weld and
+/// --no-weld, --refuse-defects, --threads.
+void add_inputs(CLI::App& command, const std::string& name, std::vector<std::string>& inputs, int fewest, int most,
+                Input_options& options, const std::string& help);
 
-/// Adds INPUT, --topology, --triangulate, --threads, --clip, --fps, --weld, --no-weld and
-/// --refuse-defects to a sub-command.
-void add_input_options(CLI::App& command, Input_options& options);
+/// Adds INPUT (one animation) and the input options.
+void add_input(CLI::App& command, std::string& input, Input_options& options);
 
-/// The options with the clip of an input "Fox.glb#Walk" moved to `clip` (Walk) and the input
-/// made the file's name (Fox.glb); others as they are.
-/// @throws invalid_input when a clip is given by `--clip` and after '#' both.
-Input_options with_clip_of_name(Input_options options);
+/// Reads the one animation `input` of a command as `options` say, saying on standard error what it reads
+/// and, when the repair changed the mesh, what it changed.
+frontend::Read_input read_input(const std::string& input, const Input_options& options,
+                                bool first_clip_by_default = false);
 
-/// Reads the animation the options name, saying on standard error what it reads and, when the
-/// repair changed the mesh, what it changed; what it found goes to `report` when not null.
-mesh::Surface_mesh_animation read_input(const Input_options& options, Input_report* report = nullptr);
+/// Reads every input, as `read_input`, `--clip` applying to those that name no clip after '#';
+/// with `motions_only`, refuses those of fewer than 2 frames.
+std::vector<frontend::Read_input> read_inputs(const std::vector<std::string>& inputs, const Input_options& options,
+                                              bool motions_only = true);
 
-/// Adds `--reference-mesh FILE` to a command that measures strain against a rest pose.
-void add_reference_mesh_option(CLI::App& command, std::string& path);
-
-/// The mesh of `--reference-mesh`: a rest pose kept apart from the frames (the cat folder's
-/// `cat-reference.obj`), with the connectivity of the animation as read.
-mesh::Surface_mesh read_reference_mesh(const std::string& path);
-
-/// The result of `compute()`, a strain against the reference mesh read from `path`, its
-/// errors naming that file: a mismatch of connectivity is the user's file's.
-template <class ComputeStrain>
-auto naming_reference_mesh(const std::string& path, const ComputeStrain& compute) {
-  try {
-    return compute();
-  } catch (const invalid_input& error) {
-    throw invalid_input(std::string(error.what()) + " (the reference mesh must have the connectivity of the "
-                        "animation as read: `deformseg info` gives its counts)", {.file = path});
-  }
-}
-
-/// The repair report as JSON: every count, by name.
-nlohmann::json to_json(const io::Repair_report& report);
-
-/// The repair report in words, "welded 1438 vertices, dropped 3 degenerate triangles", or
-/// "nothing" when it changed nothing.
-std::string describe(const io::Repair_report& report);
-
-/// Writes `document` to `path` ("-": standard output), indented.
-void write_json(const nlohmann::json& document, const std::string& path);
+/// What the inputs were, for a command's JSON: [{"file", "clip", "fps"}].
+nlohmann::json sources(std::span<const frontend::Read_input> inputs, const Input_options& options);
 
 /// The tool's one rule for what a command prints: its summary in words on standard output, and,
 /// with `--json FILE`, the JSON document written to FILE as well; `--json -` puts the JSON on

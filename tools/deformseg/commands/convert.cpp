@@ -4,6 +4,7 @@
 
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/obj.h>
+#include <deformseg/io/files.h>
 #include <deformseg/io/frame_sequence.h>
 
 #include <filesystem>
@@ -13,7 +14,8 @@ namespace deformseg::tool {
 namespace {
 
 struct Convert_options {
-  Input_options input;
+  std::string input;
+  Input_options read;
   std::string out;
   std::string format = "ply";
   std::string json;
@@ -35,8 +37,8 @@ std::vector<std::filesystem::path> write(const mesh::Surface_mesh_animation& ani
         o.format == "obj" ? io::Mesh_format::obj : o.format == "off" ? io::Mesh_format::off : io::Mesh_format::ply;
     return io::write_sequence(animation, out, {.format = format});
   }
-  deformseg::io::internal::create_folder(out);
-  const std::string stem = input_stem(with_clip_of_name(o.input).input);
+  io::create_folder(out);
+  const std::string stem = input_stem(io::split_clip_suffix(o.input).first);
   const auto topology = out / (stem + ".obj");
   const auto cache = out / (stem + "." + o.format);
   io::write_obj(animation, 0, topology);
@@ -54,7 +56,7 @@ void add_convert_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "convert", "Write an animation (a glTF clip, a point cache, frames) as a frame sequence, or as "
                  "a point cache with its topology mesh");
-  add_input_options(*command, o->input);
+  add_input(*command, o->input, o->read);
   command->add_option("out", o->out, "Folder to write into (created when missing)")->required()->check(output_folder());
   command->add_option("--format", o->format,
                       "obj, off or ply: a file per frame (frame_0000.ply, ...); pc2 or mdd: a point "
@@ -63,8 +65,8 @@ void add_convert_command(CLI::App& app) {
       ->capture_default_str();
   add_json_option(*command, o->json, "what was written");
   command->callback([o] {
-    Input_report report;
-    const mesh::Surface_mesh_animation animation = read_input(o->input, &report);
+    const frontend::Read_input read = read_input(o->input, o->read);
+    const mesh::Surface_mesh_animation& animation = read.animation;
     progress("writing " + std::to_string(animation.num_frames()) + " frames to " + o->out);
     const auto files = write(animation, *o);
     nlohmann::json written = nlohmann::json::array();
@@ -72,7 +74,7 @@ void add_convert_command(CLI::App& app) {
     const nlohmann::json summary = {{"frames", animation.num_frames()},
                                     {"vertices", animation.num_vertices()},
                                     {"triangles", animation.num_faces()},
-                                    {"repair", to_json(report.repair)},
+                                    {"repair", frontend::repair_record(read.repair)},
                                     {"files", written}};
     write_outputs(summary, o->json, [&] { print_written(summary); });
   });

@@ -12,7 +12,8 @@ namespace deformseg::tool {
 namespace {
 
 struct Find_command_options {
-  Input_options query, long_animation;
+  std::vector<std::string> inputs;  // the query, then the long animation
+  Input_options read;
   std::size_t count = 3;
   double shortest = similarity::Find_motion_options{}.shortest;
   std::string json;
@@ -21,9 +22,8 @@ struct Find_command_options {
 void run_find(const Find_command_options& o) {
   if (o.count == 0) throw invalid_input("--count must be at least 1");
   if (!(o.shortest > 0 && o.shortest <= 1)) throw invalid_input("--shortest must be in (0, 1]");
-  Input_options long_options = o.long_animation;
-  long_options.threads = o.query.threads, long_options.fps = o.query.fps;  // given once for both
-  const mesh::Surface_mesh_animation query = read_input(o.query), long_animation = read_input(long_options);
+  const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
+  const mesh::Surface_mesh_animation &query = inputs[0].animation, &long_animation = inputs[1].animation;
   progress("looking for " + std::to_string(query.num_frames()) + " frames in " +
            std::to_string(long_animation.num_frames()));
   const auto matches = similarity::find_motion(query, long_animation, {.count = o.count, .shortest = o.shortest});
@@ -34,7 +34,8 @@ void run_find(const Find_command_options& o) {
     found.push_back({{"first", m.first}, {"last", m.last}, {"similarity", m.value}, {"alignment", pairs}});
   }
   const nlohmann::json document = {
-      {"query", o.query.input}, {"long", o.long_animation.input}, {"policy", "motion-signature"}, {"matches", found}};
+      {"query", o.inputs[0]}, {"long", o.inputs[1]}, {"sources", sources(inputs, o.read)},
+      {"policy", "motion-signature"}, {"matches", found}};
   write_outputs(document, o.json, [&] {
     for (const similarity::Motion_match& m : matches)
       std::cout << "frames " << m.first << " to " << m.last << "  similarity " << std::fixed << std::setprecision(3)
@@ -49,22 +50,7 @@ void add_find_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "find", "Where a short motion occurs in a long animation: the best non-overlapping windows, by motion "
               "signatures; a window's value is the query against its frames described alone (1 for a copy)");
-  command
-      ->add_option("query", o->query.input,
-                   "The short motion (a glTF file, FILE.glb#CLIP, a folder, a quoted glob or a point cache)")
-      ->required();
-  command->add_option("long", o->long_animation.input, "The long animation to search")->required();
-  command->add_option("--topology-query", o->query.topology, "Connectivity of the query, for a point cache");
-  command->add_option("--topology-long", o->long_animation.topology,
-                      "Connectivity of the long animation, for a point cache");
-  command->add_option("--clip-query", o->query.clip, "glTF: the query's clip, by name or index (default: the first)");
-  command->add_option("--clip-long", o->long_animation.clip, "glTF: the long animation's clip (default: the first)");
-  command->add_option("--fps", o->query.fps,
-                      "Frames per second of both inputs: glTF clips are sampled at it, frame files and point caches "
-                      "play at it")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  command->add_option("--threads", o->query.threads, "Threads for reading (0: all)")->check(thread_counts);
+  add_inputs(*command, "inputs", o->inputs, 2, 2, o->read, "The short motion (the query), then the long animation");
   command->add_option("--count", o->count, "How many windows at most")->capture_default_str();
   command->add_option("--shortest", o->shortest,
                       "A window lasts from this fraction of the query's duration to its inverse, in (0, 1] "

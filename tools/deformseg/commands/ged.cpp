@@ -2,10 +2,11 @@
 // labelled graphs (Graphviz DOT or GraphML, nodes with a `label` attribute).
 #include "command.h"
 
+#include <frontend/outputs.h>
+
 #include <deformseg/ged/exact_ged.h>
 #include <deformseg/ged/ged_matrix.h>
 #include <deformseg/ged/lower_bound.h>
-#include <deformseg/io/internal/file_io.h>
 #include <deformseg/io/graphviz.h>
 
 #include <cmath>
@@ -93,22 +94,8 @@ nlohmann::json rows_of(const Eigen::MatrixXd& m) {
 }
 
 void write_csv(const Eigen::MatrixXd& d, const std::string& path) {
-  std::string text;
-  for (Eigen::Index i = 0; i < d.rows(); ++i) {
-    for (Eigen::Index j = 0; j < d.cols(); ++j) {
-      if (j > 0) text += ',';
-      deformseg::io::internal::append_shortest(text, d(i, j));
-    }
-    text += '\n';
-  }
-  if (path == "-") {
-    std::cout << text;
-    return;
-  }
-  progress("writing the distance matrix to " + path);
-  deformseg::io::internal::Streamed_file file(path);
-  file.write(text);
-  file.close();
+  if (path != "-") progress("writing the distance matrix to " + path);
+  frontend::write_matrix_csv(d, path);
 }
 
 void run_ged_matrix(const Ged_matrix_command_options& o) {

@@ -13,7 +13,8 @@ namespace deformseg::tool {
 namespace {
 
 struct Info_options {
-  Input_options input;
+  std::string input;
+  Input_options read;
   bool files = false;
   std::string json;
 };
@@ -21,11 +22,10 @@ struct Info_options {
 // --files lists a frame sequence's files; a glTF file or a point cache has none.
 void check_files_option(const Info_options& o) {
   if (!o.files) return;
-  const std::string extension = deformseg::io::internal::lower_extension(o.input.input);  // no listing of a folder here
-  if (io::is_gltf(o.input.input) || extension == ".pc2" || extension == ".mdd")
-    throw invalid_input("--files lists the frame files of a folder or glob; this input is one " + extension.substr(1) +
-                            " file",
-                        {.file = o.input.input});
+  const std::string format = io::animation_format(o.input);
+  if (format == "gltf" || format == "glb" || format == "pc2" || format == "mdd")
+    throw invalid_input("--files lists the frame files of a folder or glob; this input is one " + format + " file",
+                        {.file = io::split_clip_suffix(o.input).first});
 }
 
 nlohmann::json bounding_box(const mesh::Surface_mesh_animation& animation) {
@@ -34,12 +34,9 @@ nlohmann::json bounding_box(const mesh::Surface_mesh_animation& animation) {
 }
 
 // The clips, skins and meshes of a glTF file, and the clip read.
-nlohmann::json gltf_json(const Input_options& input, const io::Gltf_read_report& read) {
-  const io::Gltf_contents contents = io::gltf_contents(input.input, input.fps);
-  nlohmann::json clips = nlohmann::json::array();
-  for (const auto& clip : contents.clips)
-    clips.push_back({{"name", clip.name}, {"start", clip.start}, {"end", clip.end},
-                     {"duration", clip.duration}, {"frames", clip.frames}, {"channels", clip.channels}});
+nlohmann::json gltf_json(const std::string& file, double fps, const io::Gltf_read_report& read) {
+  const io::Gltf_contents contents = io::gltf_contents(file, fps);
+  const nlohmann::json clips = frontend::clips_record(contents);
   nlohmann::json skins = nlohmann::json::array();
   for (const auto& skin : contents.skins) skins.push_back({{"name", skin.name}, {"joints", skin.joints}});
   nlohmann::json meshes = nlohmann::json::array();
@@ -51,24 +48,25 @@ nlohmann::json gltf_json(const Input_options& input, const io::Gltf_read_report&
     meshes.push_back({{"name", mesh.name}, {"skinned", mesh.skinned}, {"instances", mesh.instances},
                       {"primitives", primitives}});
   }
-  return {{"clip", {{"name", read.clip}, {"start", read.start}, {"end", read.end}, {"fps", input.fps}}},
+  return {{"clip", {{"name", read.clip}, {"start", read.start}, {"end", read.end}, {"fps", fps}}},
           {"clips", clips}, {"skins", skins}, {"meshes", meshes}, {"skipped", read.skipped}};
 }
 
-nlohmann::json describe(const Info_options& options, Input_report& report) {
-  const mesh::Surface_mesh_animation animation = read_input(options.input, &report);
-  nlohmann::json info = {{"input", options.input.input},
-                         {"format", io::animation_format(options.input.input)},
+nlohmann::json describe(const Info_options& options, const frontend::Read_input& read) {
+  const mesh::Surface_mesh_animation& animation = read.animation;
+  nlohmann::json info = {{"input", read.name.file},
+                         {"sources", sources({&read, 1}, options.read)},
+                         {"format", io::animation_format(read.name.file)},
                          {"frames", animation.num_frames()},
                          {"vertices", animation.num_vertices()},
                          {"triangles", animation.num_faces()},
                          {"bounding_box", bounding_box(animation)},
                          {"memory_bytes", animation.memory_bytes()},
-                         {"repair", to_json(report.repair)}};
-  if (report.gltf) info["gltf"] = gltf_json(options.input, *report.gltf);
+                         {"repair", frontend::repair_record(read.repair)}};
+  if (read.gltf) info["gltf"] = gltf_json(read.name.file, options.read.fps, *read.gltf);
   if (options.files) {
     nlohmann::json files = nlohmann::json::array();
-    for (const auto& file : io::list_frame_files(options.input.input)) files.push_back(file.string());
+    for (const auto& file : io::list_frame_files(read.name.file)) files.push_back(file.string());
     info["files"] = files;
   }
   return info;
@@ -107,7 +105,7 @@ void print(const nlohmann::json& info, const io::Repair_report& repair) {
             << "triangles     " << info["triangles"] << '\n'
             << "bounding box  " << box["min"].dump() << " to " << box["max"].dump() << '\n'
             << "memory        " << info["memory_bytes"].get<std::size_t>() / 1024 << " KiB\n"
-            << "repair        " << tool::describe(repair) << " (read " << repair.input_vertices
+            << "repair        " << frontend::describe(repair) << " (read " << repair.input_vertices
             << " vertices, " << repair.input_triangles << " triangles)\n";
   if (info.contains("gltf")) print_gltf(info["gltf"]);
   if (info.contains("files")) {
@@ -125,17 +123,16 @@ void add_info_command(CLI::App& app) {
       "info", "Frames, vertices, triangles, bounding box over all frames, format, memory used and what "
               "the repair of the mesh changed; for glTF also the clips, skins and meshes (of a file of several "
               "clips with none named, the first clip is read, and named)");
-  add_input_options(*command, options->input);
+  add_input(*command, options->input, options->read);
   command->add_flag("--files", options->files,
                     "List the frame files of a folder or glob in the order they are read, frame by frame");
   add_json_option(*command, options->json, "the answer");
   command->callback([options] {
-    options->input = with_clip_of_name(options->input);  // "Fox.glb#Walk": the file is Fox.glb
-    options->input.first_clip_by_default = true;  // info lists the clips of a file whichever it reads
     check_files_option(*options);
-    Input_report report;
-    const nlohmann::json info = describe(*options, report);
-    write_outputs(info, options->json, [&] { print(info, report.repair); });
+    // info lists the clips of a file whichever it reads: of several, none named, the first.
+    const frontend::Read_input read = read_input(options->input, options->read, true);
+    const nlohmann::json info = describe(*options, read);
+    write_outputs(info, options->json, [&] { print(info, read.repair); });
   });
 }
 

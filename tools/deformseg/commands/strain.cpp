@@ -3,6 +3,8 @@
 #include "command.h"
 #include "figures/render.h"
 
+#include <frontend/strain.h>
+
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/strain_field.h>
 #include <deformseg/strain/strain.h>
@@ -13,7 +15,6 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <map>
 #include <memory>
 #include <optional>
 
@@ -21,41 +22,15 @@ namespace deformseg::tool {
 namespace {
 
 struct Strain_command_options {
-  Input_options input;
-  std::string reference = "rest";
-  std::size_t rest_frame = 0;
-  std::string measure = "max-principal";
-  std::string normalize = "gaussian";
-  std::optional<double> sigma;
-  std::string reference_mesh;
+  std::string input;
+  Input_options read;
+  frontend::Strain_request strain;
   std::string out;
   std::string mesh_dir;
   std::string png;
   std::vector<std::size_t> png_frames;  // none given: up to 6, evenly spaced
   std::string json;
 };
-
-// The built-in measures by their names on the command line.
-const std::map<std::string, strain::Strain_measure_choice> measures{{"max-principal", strain::Max_principal_strain{}},
-                                                                    {"green-lagrange", strain::Green_lagrange_strain{}},
-                                                                    {"frobenius", strain::Frobenius_strain{}},
-                                                                    {"area-ratio", strain::Area_ratio_strain{}}};
-
-// The strain field the options ask for, against a frame or against the reference mesh when there is one.
-strain::Strain_field<float> field_of(const mesh::Surface_mesh_animation& animation,
-                                     const mesh::Surface_mesh* reference_mesh, const Strain_command_options& o) {
-  const strain::Strain_options options{
-      .reference =
-          o.reference == "rest" ? strain::Strain_reference::rest_pose : strain::Strain_reference::previous_pose,
-      .rest_frame = o.rest_frame,
-      .measure = measures.at(o.measure),
-      .normalization = o.normalize == "none" ? strain::Strain_normalization_choice(strain::No_normalization{})
-                                             : strain::Gaussian_normalization{.sigma = o.sigma},
-      .threads = o.input.threads};
-  if (!reference_mesh) return strain::compute_strain(animation, options);
-  return naming_reference_mesh(o.reference_mesh,
-                               [&] { return strain::compute_strain(animation, *reference_mesh, options); });
-}
 
 // The colours of frame t: of the normalised strain, or, for a raw field, of the strain normalised
 // the default way for the picture only.
@@ -82,7 +57,7 @@ std::vector<std::size_t> frames_to_draw(const Strain_command_options& o, std::si
   for (std::size_t t : o.png_frames)
     if (t >= frames)
       throw invalid_input("--png-frames: frame " + std::to_string(t) + " is past the last, " +
-                          std::to_string(frames - 1), {.file = o.input.input});
+                          std::to_string(frames - 1), {.file = o.input});
   return o.png_frames.empty() ? evenly_spaced_frames(frames, 6) : o.png_frames;
 }
 
@@ -105,7 +80,7 @@ void write_picture(const mesh::Surface_mesh_animation& animation, const strain::
   const int height = pictures.front().height;
   Image image(padding + int(frames.size()) * (pictures.front().width + gap) + padding + color_bar_width(bar) + padding,
               padding + title_height + label_height + height + padding);
-  draw_text(image, o.measure + " strain of " + short_name(o.input.input), padding, padding, 2);
+  draw_text(image, o.strain.measure + " strain of " + short_name(o.input), padding, padding, 2);
   int x = padding;
   for (std::size_t k = 0; k < frames.size(); ++k) {
     draw_text(image, "frame " + std::to_string(frames[k]), x, padding + title_height);
@@ -124,7 +99,8 @@ void write_field(const strain::Strain_field<float>& field, const std::string& pa
     io::write_strain_binary(field, path);
 }
 
-nlohmann::json summary(const Strain_command_options& o, const strain::Strain_field<float>& field) {
+nlohmann::json summary(const Strain_command_options& o, const frontend::Read_input& input,
+                       const strain::Strain_field<float>& field) {
   nlohmann::json frames = nlohmann::json::array();
   for (std::size_t t = 0; t < field.num_frames(); ++t) {
     const auto values = field.frame(t);
@@ -133,17 +109,19 @@ nlohmann::json summary(const Strain_command_options& o, const strain::Strain_fie
     for (float v : values) sum += v;
     frames.push_back({{"frame", t}, {"min", *low}, {"max", *high}, {"mean", sum / double(values.size())}});
   }
-  nlohmann::json document = {{"input", o.input.input},
+  const frontend::Strain_request& r = o.strain;
+  nlohmann::json document = {{"input", o.input},
+                             {"sources", sources({&input, 1}, o.read)},
                              {"frames", field.num_frames()},
                              {"triangles", field.num_faces()},
-                             {"reference", o.reference},
-                             {"measure", o.measure},
-                             {"normalize", o.normalize},
+                             {"reference", r.reference},
+                             {"measure", r.measure},
+                             {"normalize", r.normalize},
                              {"sigma", nullptr},
                              {"degenerate_count", field.degenerate_count()},
                              {"per_frame", frames}};
-  if (o.reference == "rest" && o.reference_mesh.empty()) document["rest_frame"] = o.rest_frame;
-  if (!o.reference_mesh.empty()) document["reference_mesh"] = o.reference_mesh;
+  if (r.reference == "rest" && r.reference_mesh.empty()) document["rest_frame"] = r.rest_frame;
+  if (!r.reference_mesh.empty()) document["reference_mesh"] = r.reference_mesh;
   if (field.sigma()) document["sigma"] = *field.sigma();
   return document;
 }
@@ -158,24 +136,19 @@ void print(const nlohmann::json& s) {
 }
 
 void run(const Strain_command_options& o) {
-  if (o.sigma && o.normalize == "none") throw invalid_input("--sigma asks for --normalize gaussian");
-  if (o.reference == "previous" && o.rest_frame != 0) throw invalid_input("--rest-frame asks for --reference rest");
+  frontend::check(o.strain, frontend::Front::command_line);
   if (!o.png_frames.empty() && o.png.empty()) throw invalid_input("--png-frames asks for --png");
-  if (!o.reference_mesh.empty() && (o.reference == "previous" || o.rest_frame != 0))
-    throw invalid_input("--reference-mesh takes the place of the rest frame: it excludes --reference previous and "
-                        "--rest-frame");
-  const mesh::Surface_mesh_animation animation = read_input(o.input);
+  const frontend::Read_input input = read_input(o.input, o.read);
+  const mesh::Surface_mesh_animation& animation = input.animation;
   const std::vector<std::size_t> drawn =
       o.png.empty() ? std::vector<std::size_t>{} : frames_to_draw(o, animation.num_frames());
-  std::optional<mesh::Surface_mesh> reference_mesh;
-  if (!o.reference_mesh.empty()) reference_mesh = read_reference_mesh(o.reference_mesh);
   progress("computing the strain of " + std::to_string(animation.num_faces()) + " triangles x " +
            std::to_string(animation.num_frames()) + " frames");
-  const strain::Strain_field<float> field = field_of(animation, reference_mesh ? &*reference_mesh : nullptr, o);
+  const strain::Strain_field<float> field = frontend::strain_field(animation, o.strain, o.read.threads);
   if (!o.out.empty()) write_field(field, o.out);
   if (!o.mesh_dir.empty()) write_meshes(animation, field, o.mesh_dir);
   if (!o.png.empty()) write_picture(animation, field, drawn, o);
-  const nlohmann::json document = summary(o, field);
+  const nlohmann::json document = summary(o, input, field);
   write_outputs(document, o.json, [&] { print(document); });
 }
 
@@ -185,21 +158,8 @@ void add_strain_command(CLI::App& app) {
   auto options = std::make_shared<Strain_command_options>();
   CLI::App* command = app.add_subcommand(
       "strain", "Per-triangle strain of every frame: a field file, meshes coloured by strain, a JSON summary");
-  add_input_options(*command, options->input);
-  command->add_option("--reference", options->reference, "rest: against one frame (the pose); previous: "
-                                                         "against the frame before (the motion). Default: rest")
-      ->check(CLI::IsMember({"rest", "previous"}));
-  command->add_option("--rest-frame", options->rest_frame, "The rest frame, with --reference rest. Default: 0");
-  add_reference_mesh_option(*command, options->reference_mesh);
-  command->add_option("--measure", options->measure,
-                      "max-principal: max |l - 1| over the principal stretches l (default); green-lagrange: "
-                      "max |l^2 - 1| / 2; frobenius: |U - I|; area-ratio: |l1 l2 - 1|")
-      ->check(CLI::IsMember({"max-principal", "green-lagrange", "frobenius", "area-ratio"}));
-  command->add_option("--normalize", options->normalize,
-                      "gaussian: 1 - exp(-s^2 / 2 sigma^2), sigma the 95th percentile of the strains unless "
-                      "--sigma gives it (default); none: raw strains")
-      ->check(CLI::IsMember({"gaussian", "none"}));
-  command->add_option("--sigma", options->sigma, "The Gaussian normalisation's sigma")->check(CLI::PositiveNumber);
+  add_input(*command, options->input, options->read);
+  add_parameters(*command, frontend::strain_parameters, options->strain);
   command->add_option("--out", options->out,
                       "Write the field: FILE.csv (a line per frame, a column per triangle) or any other "
                       "name for a one-line JSON header and little-endian float32 values, frame after frame")

@@ -144,7 +144,7 @@ void add_synth_command(CLI::App& app) {
     const auto tube = mesh::make_bending_tube(specification(*o));
     progress("writing " + std::to_string(tube.animation.num_frames()) + " frames to " + o->out);
     const nlohmann::json truth = ground_truth(tube, write(tube, *o));
-    write_json(truth, (std::filesystem::path(o->out) / "ground_truth.json").string());
+    frontend::write_json(truth, (std::filesystem::path(o->out) / "ground_truth.json").string());
     write_outputs(truth, o->json, [&] { print_written(truth); });
   });
 }

@@ -6,7 +6,7 @@
 #include "viewer/view_data.h"
 #include "viewer_assets.h"
 
-#include <deformseg/io/internal/file_io.h>
+#include <deformseg/io/files.h>
 #include <deformseg/similarity/motion_similarity.h>
 
 #include <filesystem>
@@ -18,9 +18,7 @@ namespace {
 
 struct View_command_options {
   std::vector<std::string> inputs;
-  std::string topology;
-  int threads = 0;
-  double fps = 30;
+  Input_options read;
   std::string out;
   std::string color = "strain";
   std::size_t max_frames = 1000;
@@ -45,22 +43,20 @@ void run(const View_command_options& o) {
   const auto three_js = three_js_files();
   std::vector<mesh::Surface_mesh_animation> animations;
   std::vector<std::vector<std::size_t>> numbers(o.inputs.size());
-  for (std::size_t k = 0; k < o.inputs.size(); ++k) {
-    Input_options read;
-    read.input = o.inputs[k], read.topology = o.topology, read.threads = o.threads, read.fps = o.fps;
-    animations.push_back(evenly_sampled(read_input(read), o.max_frames, numbers[k]));
-  }
+  const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read, false);
+  for (std::size_t k = 0; k < inputs.size(); ++k)
+    animations.push_back(evenly_sampled(inputs[k].animation, o.max_frames, numbers[k]));
   // The page plays at the input's pace: a sampled animation's frames are further apart in time.
   nlohmann::json document = {
       {"title", "deformseg view: " + short_name(o.inputs.front()) +
                     (o.inputs.size() == 2 ? " and " + short_name(o.inputs.back()) : "")},
-      {"fps", o.fps * double(numbers[0].size() - 1) / double(std::max<std::size_t>(numbers[0].back(), 1))},
+      {"fps", o.read.fps * double(numbers[0].size() - 1) / double(std::max<std::size_t>(numbers[0].back(), 1))},
       {"animations", nlohmann::json::array()},
       {"alignment", nullptr}};
   for (std::size_t k = 0; k < animations.size(); ++k) {
     progress("describing " + o.inputs[k] + ": " + std::to_string(animations[k].num_frames()) + " frames shown");
     document["animations"].push_back(
-        view_json(animations[k], short_name(o.inputs[k]), numbers[k], coloring, o.threads));
+        view_json(animations[k], short_name(o.inputs[k]), numbers[k], coloring, o.read.threads));
   }
   if (animations.size() == 2) {
     progress("aligning the two animations");
@@ -70,12 +66,12 @@ void run(const View_command_options& o) {
     document["alignment"] = {{"value", s.value}, {"policy", "motion signatures, DTW"}, {"pairs", pairs}};
   }
   const std::filesystem::path out(o.out);
-  std::filesystem::create_directories(out);
+  io::create_folder(out);
   progress("writing the page into " + o.out);
-  deformseg::io::internal::write_file_bytes(out / "data.js", "window.DEFORMSEG_VIEW = " + document.dump() + ";\n");
-  deformseg::io::internal::write_file_bytes(out / "index.html", std::string(viewer_assets::index_html));
-  deformseg::io::internal::write_file_bytes(out / "viewer.js", std::string(viewer_assets::viewer_js));
-  deformseg::io::internal::write_file_bytes(out / "viewer_core.js", std::string(viewer_assets::viewer_core_js));
+  io::write_file(out / "data.js", "window.DEFORMSEG_VIEW = " + document.dump() + ";\n");
+  io::write_file(out / "index.html", viewer_assets::index_html);
+  io::write_file(out / "viewer.js", viewer_assets::viewer_js);
+  io::write_file(out / "viewer_core.js", viewer_assets::viewer_core_js);
   for (const auto& [source, name] : three_js)
     std::filesystem::copy_file(source, out / name, std::filesystem::copy_options::overwrite_existing);
   std::cout << "open " << (std::filesystem::absolute(out) / "index.html").string() << '\n';
@@ -88,11 +84,7 @@ void add_view_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "view", "A web page that plays one animation, or two side by side in step through their alignment, "
               "coloured by strain or segments, with its timeline and key-frame graphs");
-  command
-      ->add_option("inputs", o->inputs,
-                   "One or two animations (glTF clips as FILE.glb#CLIP, folders, quoted globs, point caches)")
-      ->required()
-      ->expected(1, 2);
+  add_inputs(*command, "inputs", o->inputs, 1, 2, o->read, "One or two animations");
   command->add_option("--out", o->out,
                       "The folder to write index.html and what it needs into (created when missing)")
       ->required()
@@ -103,13 +95,6 @@ void add_view_command(CLI::App& app) {
       ->check(CLI::IsMember({"strain", "previous-strain", "temporal", "segments", "none"}));
   command->add_option("--max-frames", o->max_frames,
                       "At most this many frames, evenly spaced, are shown. Default: 1000");
-  command->add_option("--topology", o->topology, "Connectivity for point caches (the inputs share it)");
-  command->add_option("--fps", o->fps,
-                      "Frames per second of the inputs: glTF clips are sampled at it, frame files and point caches "
-                      "play at it; the page plays at it")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(thread_counts);
   command->callback([o] { run(*o); });
 }
 
