@@ -7,6 +7,7 @@
 #if DEFORMSEG_HAS_GLTF
 #include <deformseg/io/gltf.h>
 #endif
+#include <deformseg/io/files.h>
 #include <deformseg/io/graphviz.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/motion_labels.h>
