@@ -1,9 +1,12 @@
-// Animation (from arrays, pickled, read) and read_animation.
+// Animation (from arrays, pickled, read), read_animation and clips.
 #include "bindings.h"
 
 #include "arrays.h"
 #include "inputs.h"
+#include "parameters.h"
 #include "pickling.h"
+
+#include "frontend/inputs.h"
 
 #include <deformseg/io/mesh_repair.h>
 
@@ -13,6 +16,7 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -127,23 +131,40 @@ Complexity O(T V + F).)doc")
                " triangles>";
       });
 
-  m.def("read_animation", &read_input, "path"_a, "clip"_a = py::none(), "fps"_a = 30.0, "topology"_a = py::none(),
-        "triangulate"_a = false, "weld"_a = py::none(), "refuse_defects"_a = false, "threads"_a = 0,
-        R"doc(Reads an animation: a glTF clip (.glb, .gltf; clip by name or index, or "FILE.glb#CLIP";
+  define_function<frontend::input_parameters, Types<const std::filesystem::path&>, Types<>, frontend::Input_options>(
+      m, "read_animation",
+      R"doc(Reads an animation: a glTF clip (.glb, .gltf; "FILE.glb#CLIP" or `clip`, by name or index:
 needed when the file holds several, which are then listed in the error; a file of one clip gives
-it), a folder of frame files (.obj, .off, .ply, in natural order), a glob pattern, or a point
-cache (.pc2, .mdd) with `topology` (a mesh file). `fps` (default 30) is the frame rate of every
-format (`Animation.fps`): a glTF clip is sampled at it; frame files and point caches, whose files
-do not say their rate, are taken to be sampled at it.
+it; `clips` lists them), a folder of frame files (.obj, .off, .ply, in natural order), a glob
+pattern, or a point cache (.pc2, .mdd) with `topology` (a mesh file). `fps` is the frame rate of
+every format (`Animation.fps`). glTF vertices are welded by what the file fixes (the same rest
+position, skin weights and morph deltas), so that every clip of a file has one mesh.
+`Animation.repair` says what the repair changed. Raises InvalidInput naming the file, line and
+frame of the first problem, or for an option that does not apply (clip for frames, topology for
+glTF), as the tool does: the rules are the front end's (frontend/inputs.h) that the tool follows.
+Complexity linear in the input's size. Releases the GIL.)doc",
+      [](const std::filesystem::path& path, const frontend::Input_options& options) {
+        Interruptible_call call;
+        frontend::Read_input read = frontend::read_input(path.string(), options, frontend::Front::python);
+        return Animation{std::move(read.animation), read.repair};
+      },
+      std::tuple{py::arg("path")});
 
-`triangulate` (default False) fans polygons; `weld` (default: True for glTF, False otherwise)
-merges vertices that coincide in every frame (for glTF, by what the file fixes: the same rest
-position, skin weights and morph deltas, so that every clip of a file has one mesh, the same
-vertices and triangles); degenerate, duplicate and non-manifold triangles
-are repaired unless `refuse_defects` (default False); `threads` (default 0: all, at most 1024) read
-in parallel. `Animation.repair` says what the repair changed. Raises InvalidInput naming the file,
-line and frame of the first problem, or for an option that does not apply (clip for frames,
-topology for glTF), as the tool does. Complexity linear in the input's size. Releases the GIL.)doc");
+  m.def(
+      "clips",
+      [](const std::filesystem::path& path, double fps) {
+        nlohmann::json clips;
+        {
+          Interruptible_call call;
+          clips = frontend::clips_of(path.string(), fps);
+        }
+        return python_of(clips);
+      },
+      "path"_a, "fps"_a = frontend::Input_options{}.fps,
+      R"doc(The clips of a glTF file (.glb, .gltf), in the file's order: a list of dicts with name, index
+(what `read_animation`'s `clip` takes, as does the name), start, end and duration (seconds),
+frames (sampled at `fps`, default 30) and channels. Raises InvalidInput naming the file when it is
+not a glTF file or cannot be read. Complexity linear in the file's size. Releases the GIL.)doc");
 }
 
 }  // namespace deformseg::python

@@ -14,6 +14,28 @@ bool no_signal_raised() {
 
 void refuse(const std::string& message) { throw invalid_input(message); }
 
+py::object python_of(const nlohmann::json& value) {
+  switch (value.type()) {
+    case nlohmann::json::value_t::null: return py::none();
+    case nlohmann::json::value_t::boolean: return py::bool_(value.get<bool>());
+    case nlohmann::json::value_t::number_integer: return py::int_(value.get<long long>());
+    case nlohmann::json::value_t::number_unsigned: return py::int_(value.get<unsigned long long>());
+    case nlohmann::json::value_t::number_float: return py::float_(value.get<double>());
+    case nlohmann::json::value_t::string: return py::str(value.get_ref<const std::string&>());
+    case nlohmann::json::value_t::array: {
+      py::list list;
+      for (const nlohmann::json& item : value) list.append(python_of(item));
+      return list;
+    }
+    case nlohmann::json::value_t::object: {
+      py::dict dict;
+      for (const auto& [key, item] : value.items()) dict[py::str(key)] = python_of(item);
+      return dict;
+    }
+    default: refuse("a report holds a value that is not JSON data");  // binary or discarded: never made
+  }
+}
+
 std::string type_name(const py::handle& value) {
   return py::str(py::type::of(value).attr("__name__")).cast<std::string>();
 }

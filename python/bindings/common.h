@@ -1,8 +1,10 @@
 // What every part of deformseg._deformseg shares: long calls that release the GIL and stop on
-// Ctrl-C, the refusal of a bad argument.
+// Ctrl-C, the refusal of a bad argument, the front end's reports as Python values.
 #pragma once
 
 #include <deformseg/threads.h>
+
+#include <nlohmann/json.hpp>
 
 #include <pybind11/pybind11.h>
 
@@ -23,6 +25,10 @@ struct Interruptible_call {
 
 // Throws invalid_input (InvalidInput in Python) with `message`.
 [[noreturn]] void refuse(const std::string& message);
+
+// A JSON value (the front end's reports) as the Python value of the same shape: dict, list, str,
+// int, float, bool or None.
+pybind11::object python_of(const nlohmann::json& value);
 
 // The name of the Python type of `value`, for messages.
 std::string type_name(const pybind11::handle& value);

@@ -3,12 +3,43 @@
 // names and adds the evolving graph's classes, networkx conversions and `ged` on networkx graphs.
 //
 // One file per topic adds its part (bindings.h lists them); what they share is in common.h (long
-// calls), arrays.h (NumPy arrays in and out), inputs.h (animations and strain references) and
-// pickling.h. Every call that can take long releases the GIL and can be interrupted by Ctrl-C; the
-// arguments it reads stay referenced by Python objects held for the call. Option names, defaults
-// and checks are those of the C++ options and of the `deformseg` tool, whose names the string
-// options take.
+// calls, JSON reports as Python values), arrays.h (NumPy arrays in and out), inputs.h (animations)
+// and pickling.h. The functions that do what the tool's commands do are made from the front end's
+// tables (frontend/, through parameters.h): the same names, defaults, checks, messages and
+// dispatch as the tool's. Every call that can take long releases the GIL and can be interrupted by
+// Ctrl-C; the arguments it reads stay referenced by Python objects held for the call.
 #include "bindings.h"
+
+#include "frontend/similarity.h"
+#include "frontend/spatiotemporal.h"
+#include "frontend/strain.h"
+#include "frontend/temporal.h"
+
+#include <span>
+#include <utility>
+
+namespace {
+
+// The front end's choices by parameter, for the stub's test (python/tests/test_stub.py), which
+// checks every Literal[...] of the stub against them.
+pybind11::dict choices() {
+  using namespace deformseg::frontend;
+  const std::pair<const char*, std::span<const Choice>> tables[] = {
+      {"measure", strain_measures},     {"normalize", strain_normalizations},
+      {"reference", strain_references}, {"method", temporal_methods},
+      {"metric", frame_metrics},        {"policy", similarity_policies},
+      {"alignment", alignments},        {"up", up_directions},
+      {"segmentation_reference", segmentation_references}};
+  pybind11::dict out;
+  for (const auto& [parameter, table] : tables) {
+    pybind11::list names;
+    for (const Choice& choice : table) names.append(pybind11::str(choice.name.data(), choice.name.size()));
+    out[parameter] = names;
+  }
+  return out;
+}
+
+}  // namespace
 
 PYBIND11_MODULE(_deformseg, m) {
   m.doc() = "The compiled half of deformseg; import `deformseg`, which re-exports it.";
@@ -22,5 +53,6 @@ PYBIND11_MODULE(_deformseg, m) {
   bind_find_motion(m);
   bind_evaluation(m);
   bind_ged(m);
+  m.attr("_choices") = choices();
   m.attr("__version__") = DEFORMSEG_VERSION;
 }

@@ -3,11 +3,13 @@
 
 #include "arrays.h"
 #include "inputs.h"
+#include "parameters.h"
 #include "pickling.h"
+
+#include "frontend/similarity.h"
 
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/policy_choice.h>
-#include <deformseg/similarity/significance.h>
 
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -15,10 +17,10 @@
 
 #include <cstddef>
 #include <optional>
-#include <random>
 #include <ranges>
 #include <span>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -27,43 +29,16 @@ namespace py = pybind11;
 namespace deformseg::python {
 namespace {
 
-struct Similarity_result {
-  similarity::Similarity similarity;
-  std::optional<double> z_score;
-  std::size_t shuffled_copies = 0;
-};
+constexpr auto similarity_table = std::tuple_cat(frontend::policy_parameters, frontend::significance_parameters);
 
-// The keywords policy, alignment, threshold and up, as the library's Policy_choice.
-similarity::Policy_choice policy_choice(const std::string& policy, const std::optional<std::string>& alignment,
-                            std::optional<double> threshold, const std::optional<std::string>& up) {
-  return {.policy = policy, .alignment = alignment.value_or(""), .threshold = threshold, .up = up.value_or("")};
-}
-
-Similarity_result similarity(const Animation& a, const Animation& b, const std::string& policy,
-                             const std::optional<std::string>& alignment, std::optional<double> threshold,
-                             const std::optional<std::string>& up, std::optional<std::size_t> significance,
-                             unsigned seed) {
-  const similarity::Policy_choice choice = policy_choice(policy, alignment, threshold, up);
-  similarity::check_policy_choice(choice);
-  if (significance == 1) refuse("significance needs 0 (none) or at least 2 shuffled copies");
-  if (significance.value_or(0) >= 2 && policy == "graph")
-    refuse("significance does not apply to the graph policy, whose frames are key-frame labels");
-  const std::size_t copies = significance.value_or(policy == "graph" ? 0 : 20);
+frontend::Compared similarity(const Animation& a, const Animation& b, const similarity::Policy_choice& choice,
+                              const frontend::Significance_request& significance) {
+  frontend::check(choice, frontend::Front::python);
+  frontend::check(significance, choice, frontend::Front::python);
   require_motion(a.mesh, "a");
   require_motion(b.mesh, "b");
-  return similarity::with_policy_choice(choice, [&](const auto& p) {
-    Interruptible_call call;
-    const auto da = p.describe(a.mesh), db = p.describe(b.mesh);
-    Similarity_result out{p.compare(da, db), std::nullopt, 0};
-    if constexpr (similarity::ReorderableDescription<std::remove_cvref_t<decltype(db)>>) {
-      if (copies >= 2) {
-        std::mt19937 random(seed);
-        out.z_score = similarity::similarity_significance(p, da, db, copies, random);
-        out.shuffled_copies = copies;
-      }
-    }
-    return out;
-  });
+  Interruptible_call call;
+  return frontend::compare(a.mesh, b.mesh, choice, significance);
 }
 
 // The animations of a Python sequence, as a random-access range of references (no copy); the
@@ -91,11 +66,9 @@ struct Animation_list {
   }
 };
 
-py::array matrix(const py::sequence& animations, const std::optional<py::sequence>& database, const std::string& policy,
-                 const std::optional<std::string>& alignment, std::optional<double> threshold,
-                 const std::optional<std::string>& up, const std::optional<py::function>& progress) {
-  const similarity::Policy_choice choice = policy_choice(policy, alignment, threshold, up);
-  similarity::check_policy_choice(choice);
+py::array matrix(const py::sequence& animations, const std::optional<py::sequence>& database,
+                 const similarity::Policy_choice& choice, const std::optional<py::function>& progress) {
+  frontend::check(choice, frontend::Front::python);
   const Animation_list rows(animations, "animations");
   const std::optional<Animation_list> columns =
       database ? std::optional<Animation_list>(std::in_place, *database, "database") : std::nullopt;
@@ -116,17 +89,17 @@ py::array matrix(const py::sequence& animations, const std::optional<py::sequenc
 }
 
 // Similarity: (1, value, score, alignment, labels_a, labels_b, compared, z_score, shuffled_copies).
-py::object similarity_state(const Similarity_result& r) {
+py::object similarity_state(const frontend::Compared& r) {
   const similarity::Similarity& s = r.similarity;
   return py::make_tuple(pickle_version, s.value, s.score, s.alignment, s.labels_a, s.labels_b, s.compared, r.z_score,
                         r.shuffled_copies);
 }
 
-Similarity_result similarity_of_state(const py::object& state) {
+frontend::Compared similarity_of_state(const py::object& state) {
   constexpr const char* type = "Similarity";
   const py::tuple f = state_fields(
       state, type, 8, "(1, value, score, alignment, labels_a, labels_b, compared, z_score, shuffled_copies)");
-  Similarity_result r;
+  frontend::Compared r{};
   r.similarity.value = state_field<double>(f, 0, type, "value");
   r.similarity.score = state_field<double>(f, 1, type, "score");
   r.similarity.alignment = state_field<decltype(r.similarity.alignment)>(f, 2, type, "alignment");
@@ -142,59 +115,56 @@ Similarity_result similarity_of_state(const py::object& state) {
 
 void bind_similarity(py::module_& m) {
   using namespace pybind11::literals;
-  py::class_<Similarity_result>(m, "Similarity", "What `similarity` gives: how alike two animations move.")
+  py::class_<frontend::Compared>(m, "Similarity", "What `similarity` gives: how alike two animations move.")
       .def(py::pickle(&similarity_state, &similarity_of_state))
-      .def_property_readonly("value", [](const Similarity_result& s) { return s.similarity.value; },
+      .def_property_readonly("value", [](const frontend::Compared& s) { return s.similarity.value; },
                              "The similarity in [0, 1]: 1 for an animation and itself (or a moved, scaled copy).")
-      .def_property_readonly("score", [](const Similarity_result& s) { return s.similarity.score; },
+      .def_property_readonly("score", [](const frontend::Compared& s) { return s.similarity.score; },
                              "The alignment's raw score (its sense is the alignment policy's).")
-      .def_property_readonly("alignment", [](const Similarity_result& s) { return s.similarity.alignment; },
+      .def_property_readonly("alignment", [](const frontend::Compared& s) { return s.similarity.alignment; },
                              "The aligned frames: a list of (frame of a, frame of b), increasing in both.")
-      .def_property_readonly("labels_a", [](const Similarity_result& s) { return s.similarity.labels_a; },
+      .def_property_readonly("labels_a", [](const frontend::Compared& s) { return s.similarity.labels_a; },
                              "Per frame of a, the label aligned (graph policy: its key frame's cluster); else [].")
-      .def_property_readonly("labels_b", [](const Similarity_result& s) { return s.similarity.labels_b; },
+      .def_property_readonly("labels_b", [](const frontend::Compared& s) { return s.similarity.labels_b; },
                              "Per frame of b, as labels_a.")
-      .def_property_readonly("compared", [](const Similarity_result& s) { return s.similarity.compared; },
+      .def_property_readonly("compared", [](const frontend::Compared& s) { return s.similarity.compared; },
                              "What the policy compared, in words.")
-      .def_property_readonly("z_score", [](const Similarity_result& s) { return s.z_score; },
+      .def_property_readonly("z_score", [](const frontend::Compared& s) { return s.z_score; },
                              "The z-score of value against frame-shuffled copies of b, or None.")
-      .def_property_readonly("shuffled_copies", [](const Similarity_result& s) { return s.shuffled_copies; },
+      .def_property_readonly("shuffled_copies", [](const frontend::Compared& s) { return s.shuffled_copies; },
                              "How many shuffled copies the z-score was computed against (0: none).")
-      .def("__repr__", [](const Similarity_result& s) {
+      .def("__repr__", [](const frontend::Compared& s) {
         return "<deformseg.Similarity value=" + std::to_string(s.similarity.value) + ", " +
                std::to_string(s.similarity.alignment.size()) + " aligned pairs>";
       });
 
-  m.def("similarity", &similarity, "a"_a, "b"_a, py::kw_only(), "policy"_a = "motion-signature",
-        "alignment"_a = py::none(), "threshold"_a = py::none(), "up"_a = py::none(), "significance"_a = py::none(),
-        "seed"_a = 1u,
-        R"doc(How alike two animations move (motion_similarity), as the tool's `similarity` command.
+  define_function<similarity_table, Types<const Animation&, const Animation&>, Types<>, similarity::Policy_choice,
+                  frontend::Significance_request>(
+      m, "similarity",
+      R"doc(How alike two animations move (motion_similarity), as the tool's `similarity` command.
 
-policy: "motion-signature" (default, Default_similarity: per-frame distributions of how fast,
-and how fast up or down, the surface moves), "histogram" (strain histograms; its values crowd near
-1: the Knight's Walking_A against a frozen copy of itself 0.997, against its Death_A 0.996, so
-read the z-score or a rank, not the value), "graph" (the thesis' evolving graphs) or
-"self-similarity". alignment: "smith-waterman", "dtw" or
-"subsequence-dtw" (default: dtw for motion-signature, smith-waterman otherwise). threshold: the
-graph policy's deformed threshold in [0, 1] (default 0.5). up: the motion signatures' up axis,
-"+x", "-x", "+y", "-y", "+z", "-z" or "none" for speeds alone (default "+y"). significance: the number of frame-shuffled copies of b the z-score is
-computed against (default 20, none for the graph policy; 0 none), shuffled by a std::mt19937
-seeded with `seed` (default 1). Returns a Similarity (value, score, alignment, z_score, ...).
-Complexity: the policy's describe of each, one compare, plus one compare per shuffled copy
-(motion-signature with DTW: O(T V) to describe, O(Ta Tb) to compare). Releases the GIL.)doc");
+The histogram policy's values crowd near 1 (the Knight's Walking_A against a frozen copy of itself
+0.997, against its Death_A 0.996): read the z-score or a rank, not the value. The z-score is
+computed against frame-shuffled copies of b, shuffled by a std::mt19937 seeded with `seed`.
+Returns a Similarity (value, score, alignment, z_score, ...). Complexity: the policy's describe of
+each, one compare, plus one compare per shuffled copy (motion-signature with DTW: O(T V) to
+describe, O(Ta Tb) to compare). Releases the GIL.)doc",
+      &similarity, std::tuple{py::arg("a"), py::arg("b"), py::kw_only()});
 
-  m.def("similarity_matrix", &matrix, "animations"_a, "database"_a = py::none(), py::kw_only(),
-        "policy"_a = "motion-signature", "alignment"_a = py::none(), "threshold"_a = py::none(), "up"_a = py::none(),
-        "progress"_a = py::none(),
-        R"doc(The similarity of every pair of `animations`: an (N, N) float64 array, symmetric, entry (i, j)
+  define_function<frontend::policy_parameters, Types<const py::sequence&, const std::optional<py::sequence>&>,
+                  Types<const std::optional<py::function>&>, similarity::Policy_choice>(
+      m, "similarity_matrix",
+      R"doc(The similarity of every pair of `animations`: an (N, N) float64 array, symmetric, entry (i, j)
 equal to similarity(animations[i], animations[j], ...).value; or, with `database`, the (Q, D)
 array of each animation against each of the database. Each animation is described once, then
 pairs are compared in parallel; the result does not depend on the number of threads.
-policy (default "motion-signature"), alignment (default: the policy's), threshold (default: the
-graph policy's), up (default "+y"): as `similarity`. progress (default None): called as progress(done, total) on the
-calling thread (with the GIL) as the work advances, N + N (N + 1) / 2 steps (Q + D + Q D with a
-database); returning False stops the work and raises SimilarityStopped. The animations are not
-copied. Complexity N describes and N (N + 1) / 2 compares. Releases the GIL.)doc");
+policy, alignment, threshold, up: as `similarity`. progress (default None): called as
+progress(done, total) on the calling thread (with the GIL) as the work advances, N + N (N + 1) / 2
+steps (Q + D + Q D with a database); returning False stops the work and raises SimilarityStopped.
+The animations are not copied. Complexity N describes and N (N + 1) / 2 compares. Releases the
+GIL.)doc",
+      &matrix, std::tuple{py::arg("animations"), py::arg_v("database", py::none()), py::kw_only()},
+      std::tuple{py::arg_v("progress", py::none())});
 }
 
 }  // namespace deformseg::python

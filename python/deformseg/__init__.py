@@ -3,7 +3,7 @@
 A thin, typed layer over the C++ library's default types (``Surface_mesh_animation``, float32
 strains): the compiled functions come from ``deformseg._deformseg``; the evolving graph's classes,
 their networkx conversion and ``ged`` on graphs are pure Python (``deformseg._graphs``). Option
-names, defaults and errors are the C++ options' and the ``deformseg`` tool's; every long call
+names, defaults, checks and errors are those of the front end the ``deformseg`` tool is made of; every long call
 releases the GIL and stops on Ctrl-C (``KeyboardInterrupt``), and no thread of the library lives
 between calls, so fork-based process pools work after any call. Every result pickles, and so do the
 functions (by name), so that both go to and come back from worker processes.
@@ -19,6 +19,7 @@ from ._deformseg import (
     RetrievalScores,
     Similarity,
     SimilarityStopped,
+    clips,
     evaluate,
     find_motion,
     frame_distances,
@@ -57,6 +58,7 @@ __all__ = [
     "RetrievalScores",
     "Similarity",
     "SimilarityStopped",
+    "clips",
     "evaluate",
     "evolving_graph",
     "find_motion",

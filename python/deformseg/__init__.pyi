@@ -1,8 +1,9 @@
 # Type stubs of the deformseg package (the compiled deformseg._deformseg and deformseg._graphs).
 # Written by hand, kept in step by python/tests/test_stub.py, which checks it against the built
-# package both ways: every public name and member, every parameter with its kind and default.
+# package both ways: every public name and member, every parameter with its kind and default, and
+# every Literal[...] against the front end's choices for that parameter (_deformseg._choices).
 import os
-from typing import Any, Callable, Iterator, List, Mapping, Optional, Protocol, Sequence, Tuple, Union
+from typing import Any, Callable, Iterator, List, Literal, Mapping, Optional, Protocol, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -40,7 +41,7 @@ class Animation:
 
 def read_animation(
     path: _Path,
-    clip: Optional[str] = None,
+    clip: Union[str, int, None] = None,  # a name, or an index in the file (see clips)
     fps: float = 30.0,
     topology: Optional[_Path] = None,
     triangulate: bool = False,
@@ -48,14 +49,16 @@ def read_animation(
     refuse_defects: bool = False,
     threads: int = 0,
 ) -> Animation: ...
+# A glTF file's clips: dicts of name, index, start, end, duration, frames and channels.
+def clips(path: _Path, fps: float = 30.0) -> List[dict[str, Any]]: ...
 def strain(
     animation: Animation,
     *,
-    reference: str = "rest",
+    reference: Literal["rest", "previous"] = "rest",
     rest_frame: int = 0,
     reference_mesh: Optional[_Path] = None,
-    measure: str = "max-principal",
-    normalize: str = "gaussian",
+    measure: Literal["max-principal", "green-lagrange", "frobenius", "area-ratio"] = "max-principal",
+    normalize: Literal["gaussian", "none"] = "gaussian",
     sigma: Optional[float] = None,
     degenerate_tolerance: float = 1e-12,
     threads: int = 0,
@@ -63,7 +66,7 @@ def strain(
 def frame_distances(
     animation: Animation,
     *,
-    metric: str = "euclidean",
+    metric: Literal["euclidean", "l1", "cosine"] = "euclidean",
     rest_frame: int = 0,
     reference_mesh: Optional[_Path] = None,
     threads: int = 0,
@@ -71,12 +74,12 @@ def frame_distances(
 def temporal_segmentation(
     animation: Animation,
     *,
-    method: str = "optimal",
+    method: Literal["optimal", "binary-split", "greedy", "barbic"] = "optimal",
     threshold: Optional[float] = None,
     absolute: bool = False,
     segments: Optional[int] = None,
     min_length: int = 1,
-    metric: str = "euclidean",
+    metric: Literal["euclidean", "l1", "cosine"] = "euclidean",
     rest_frame: int = 0,
     reference_mesh: Optional[_Path] = None,
     threads: int = 0,
@@ -116,7 +119,7 @@ def evolving_graph(
     animation: Animation,
     *,
     threshold: float = 0.5,
-    reference: Optional[str] = None,
+    reference: Optional[Literal["previous", "rest"]] = None,
     reference_mesh: Optional[_Path] = None,
     min_triangles: int = 10,
     min_frames: int = 2,
@@ -145,10 +148,10 @@ def similarity(
     a: Animation,
     b: Animation,
     *,
-    policy: str = "motion-signature",
-    alignment: Optional[str] = None,
+    policy: Literal["motion-signature", "histogram", "graph", "self-similarity"] = "motion-signature",
+    alignment: Optional[Literal["smith-waterman", "dtw", "subsequence-dtw"]] = None,
     threshold: Optional[float] = None,
-    up: Optional[str] = None,
+    up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
     significance: Optional[int] = None,
     seed: int = 1,
 ) -> Similarity: ...
@@ -156,10 +159,10 @@ def similarity_matrix(
     animations: Sequence[Animation],
     database: Optional[Sequence[Animation]] = None,
     *,
-    policy: str = "motion-signature",
-    alignment: Optional[str] = None,
+    policy: Literal["motion-signature", "histogram", "graph", "self-similarity"] = "motion-signature",
+    alignment: Optional[Literal["smith-waterman", "dtw", "subsequence-dtw"]] = None,
     threshold: Optional[float] = None,
-    up: Optional[str] = None,
+    up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
     progress: Optional[Callable[[int, int], Optional[bool]]] = None,
 ) -> npt.NDArray[np.float64]: ...  # (N, N), or (Q, D) with a database
 

@@ -122,11 +122,12 @@ def evolving_graph(animation: _deformseg.Animation, *, threshold: float = 0.5, r
     it (0: none). Node areas are shares of the mesh's area in frame 0. Raises InvalidInput as the
     library does. Complexity O(T F) besides the strain's O(T F). Releases the GIL.
     """
-    frames, segments, key_frames = _deformseg._evolving_graph(
-        animation, threshold, reference, reference_mesh, min_triangles, min_frames, max_island)
-    return EvolvingGraph(frames, segments, [
-        KeyFrame(first, last, [Node(*node) for node in nodes], [tuple(edge) for edge in edges])
-        for first, last, nodes, edges in key_frames])
+    record = _deformseg._evolving_graph(animation, threshold, reference, reference_mesh, min_triangles, min_frames,
+                                        max_island)
+    return EvolvingGraph(record["frames"], record["segments"], [
+        KeyFrame(k["first"], k["last"], [Node(n["kind"], n["segment"], n["triangles"], n["area"]) for n in k["nodes"]],
+                 [tuple(edge) for edge in k["edges"]])
+        for k in record["key_frames"]])
 
 
 GraphLike = Union[KeyFrame, "networkx.Graph"]

@@ -1,5 +1,6 @@
 """What each function accepts is what its stub and docstring say: evaluate's labels (motion names,
-dicts, objects; bodies optional), paths as str or os.PathLike, sequences as lists or tuples."""
+dicts, objects; bodies optional), paths as str or os.PathLike, sequences as lists or tuples, glTF
+clips by name or index (and `clips`, which lists them), reference meshes with their rules."""
 import pathlib
 from types import SimpleNamespace
 
@@ -94,3 +95,69 @@ def test_sequences_may_be_lists_or_tuples(grid):
     animations = [deformseg.Animation(*grid(3, 3, 6, seed=k)) for k in range(3)]
     by_list = deformseg.similarity_matrix(animations, animations[:2])
     assert np.array_equal(deformseg.similarity_matrix(tuple(animations), tuple(animations[:2])), by_list)
+
+
+# ---- glTF clips --------------------------------------------------------------------------------
+
+def test_read_animation_needs_a_clip_of_a_file_of_several(fox):
+    """A clip is named ("FILE.glb#CLIP" or clip=) for a file of several, as the tool asks; without
+    one, the file's clips are listed where the first was read unsaid."""
+    walk = deformseg.read_animation(f"{fox}#Walk")
+    assert np.array_equal(walk.frames, deformseg.read_animation(fox, clip="Walk").frames)
+    with pytest.raises(deformseg.InvalidInput, match=r"holds 3 clips: .*'Survey', 'Walk', 'Run'"):
+        deformseg.read_animation(fox)
+    with pytest.raises(deformseg.InvalidInput, match="the clip is given twice: after '#' and by clip"):
+        deformseg.read_animation(f"{fox}#Walk", clip="Run")
+    # Every clip of the file has its one mesh.
+    survey, run = deformseg.read_animation(fox, clip="Survey"), deformseg.read_animation(fox, clip="Run")
+    assert np.array_equal(survey.faces, run.faces) and np.array_equal(walk.faces, run.faces)
+
+
+def test_a_clip_is_named_or_indexed(fox):
+    """clip= takes a name or an index (an int, or its digits after '#'), 0 included."""
+    survey = deformseg.read_animation(fox, clip="Survey")
+    assert np.array_equal(deformseg.read_animation(fox, clip=0).frames, survey.frames)
+    assert np.array_equal(deformseg.read_animation(fox, clip=2).frames, deformseg.read_animation(f"{fox}#Run").frames)
+    walk = deformseg.read_animation(fox, clip="Walk")
+    assert np.array_equal(deformseg.read_animation(f"{fox}#1").frames, walk.frames)
+    with pytest.raises(deformseg.InvalidInput, match="clip must be a name or an index from 0, got -1"):
+        deformseg.read_animation(fox, clip=-1)
+    with pytest.raises(deformseg.InvalidInput, match=r"no clip '3'.*'Survey', 'Walk', 'Run'"):
+        deformseg.read_animation(fox, clip=3)
+    with pytest.raises(TypeError):
+        deformseg.read_animation(fox, clip=1.0)
+
+
+def test_clips_lists_a_gltf_files_clips(fox, tmp_path):
+    clips = deformseg.clips(fox)
+    assert [(c["name"], c["index"]) for c in clips] == [("Survey", 0), ("Walk", 1), ("Run", 2)]
+    assert set(clips[0]) == {"name", "index", "start", "end", "duration", "frames", "channels"}
+    for c in clips:
+        assert c["duration"] == pytest.approx(c["end"] - c["start"]) and c["channels"] > 0
+        assert c["frames"] == deformseg.read_animation(fox, clip=c["index"]).num_frames
+    # The frames at another rate: those read at it.
+    at_12 = deformseg.clips(pathlib.Path(fox), fps=12)
+    assert at_12[2]["frames"] == deformseg.read_animation(fox, clip="Run", fps=12).num_frames < clips[2]["frames"]
+    with pytest.raises(deformseg.InvalidInput, match="glTF files .* only") as error:
+        deformseg.clips(tmp_path)
+    assert error.value.file == str(tmp_path)
+    with pytest.raises(deformseg.InvalidInput, match="fps"):
+        deformseg.clips(fox, fps=0)
+
+
+# ---- reference meshes --------------------------------------------------------------------------
+
+def test_reference_mesh_errors_name_the_file_and_the_parameters(tubes, tmp_path):
+    a = deformseg.read_animation(tubes[0])
+    other = tmp_path / "triangle.obj"
+    other.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+    with pytest.raises(deformseg.InvalidInput, match="the reference mesh must have the connectivity") as error:
+        deformseg.strain(a, reference_mesh=other)
+    assert error.value.file == str(other)
+    rest = tubes[0] / "frame_0000.ply"
+    with pytest.raises(deformseg.InvalidInput, match="excludes reference='previous'"):
+        deformseg.strain(a, reference_mesh=rest, reference="previous")
+    with pytest.raises(deformseg.InvalidInput, match="excludes rest_frame"):
+        deformseg.temporal_segmentation(a, reference_mesh=rest, rest_frame=3)
+    with pytest.raises(deformseg.InvalidInput, match="excludes reference='previous'"):
+        deformseg.evolving_graph(a, reference_mesh=rest, reference="previous")

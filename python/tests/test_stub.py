@@ -187,3 +187,70 @@ def test_a_drifted_stub_is_caught():
         with pytest.raises(AssertionError):
             assert_same_parameters(ast.parse(drifted).body[0], deformseg.strain, "strain")
     assert_same_parameters(good, deformseg.strain, "strain")
+
+
+# ---- the choices -------------------------------------------------------------------------------
+
+# The parameters the stub gives a Literal[...], and the front end's table of choices for each
+# (_deformseg._choices): every name a parameter takes is the front end's, which the tool takes too.
+CHOICES = {
+    ("strain", "reference"): "reference",
+    ("strain", "measure"): "measure",
+    ("strain", "normalize"): "normalize",
+    ("frame_distances", "metric"): "metric",
+    ("temporal_segmentation", "method"): "method",
+    ("temporal_segmentation", "metric"): "metric",
+    ("evolving_graph", "reference"): "segmentation_reference",
+    ("similarity", "policy"): "policy",
+    ("similarity", "alignment"): "alignment",
+    ("similarity", "up"): "up",
+    ("similarity_matrix", "policy"): "policy",
+    ("similarity_matrix", "alignment"): "alignment",
+    ("similarity_matrix", "up"): "up",
+}
+
+
+def literal_values(annotation):
+    """The values of the Literal[...] in an annotation (also inside Optional[...]), or None."""
+    for node in ast.walk(annotation):
+        if isinstance(node, ast.Subscript) and isinstance(node.value, ast.Name) and node.value.id == "Literal":
+            values = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
+            return [ast.literal_eval(v) for v in values]
+    return None
+
+
+def stub_literals():
+    """(function, parameter) -> the values of its Literal[...], for every parameter that has one."""
+    out = {}
+    for node in stub_members(STUB.body).values():
+        if isinstance(node, ast.FunctionDef):
+            for argument in node.args.posonlyargs + node.args.args + node.args.kwonlyargs:
+                values = literal_values(argument.annotation) if argument.annotation else None
+                if values is not None:
+                    out[(node.name, argument.arg)] = values
+    return out
+
+
+def test_every_literal_of_the_stub_is_the_front_ends_choices():
+    literals = stub_literals()
+    assert set(literals) == set(CHOICES)
+    tables = deformseg._deformseg._choices
+    assert set(tables) == set(CHOICES.values())
+    for (function, parameter), table in CHOICES.items():
+        assert literals[(function, parameter)] == tables[table], (function, parameter)
+
+
+def test_every_choice_is_taken_and_every_other_name_refused(grid):
+    """The choices are those the functions take: each one accepted, a name outside them refused
+    with the list."""
+    a = deformseg.Animation(*grid(3, 3, 6))
+    tables = deformseg._deformseg._choices
+    for measure in tables["measure"]:
+        assert deformseg.strain(a, measure=measure).shape == (6, a.num_faces)
+    for method in tables["method"]:
+        assert deformseg.temporal_segmentation(a, method=method)[0][0] == 0
+    for up in tables["up"]:
+        assert 0 <= deformseg.similarity(a, a, up=up, significance=0).value <= 1
+    with pytest.raises(deformseg.InvalidInput, match="measure must be 'max-principal', 'green-lagrange', "
+                                                     "'frobenius' or 'area-ratio', got 'max'"):
+        deformseg.strain(a, measure="max")
