@@ -144,6 +144,7 @@ frame of the first problem, or for an option that does not apply (clip for frame
 glTF), as the tool does: the rules are the front end's (frontend/inputs.h) that the tool follows.
 Complexity linear in the input's size. Releases the GIL.)doc",
       [](const std::filesystem::path& path, const frontend::Input_options& options) {
+        frontend::check_clip_applies({path.string()}, options, frontend::Front::python);
         Interruptible_call call;
         frontend::Read_input read = frontend::read_input(path.string(), options, frontend::Front::python);
         return Animation{std::move(read.animation), read.repair};

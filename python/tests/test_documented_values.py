@@ -6,7 +6,7 @@ import deformseg
 
 def test_the_histogram_policy_says_its_values_crowd_near_1():
     doc = " ".join(deformseg.similarity.__doc__.split())
-    assert "'histogram': per-frame histograms of the strain, no correspondence needed; its values crowd near 1:" in doc
+    assert "'histogram': per-frame histograms of the strain, no correspondence needed; its values crowd near 1" in doc
     assert "frozen copy of itself 0.997, against its Death_A 0.996" in doc
 
 
