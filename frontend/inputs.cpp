@@ -37,19 +37,19 @@ void check_clip_applies(const std::vector<std::string>& inputs, const Input_opti
                       {.file = io::split_clip_suffix(inputs.front()).first});
 }
 
-namespace {
-
-io::Repair_options repair_options(const Input_name& name, const Input_options& options) {
-  return {.weld = options.weld.value_or(io::is_gltf(name.file)),
+io::Repair_options repair_options(const std::string& file, const Input_options& options) {
+  return {.weld = options.weld.value_or(io::is_gltf(file)),
           .defects = options.refuse_defects ? io::Defect_policy::refuse : io::Defect_policy::repair};
 }
+
+namespace {
 
 Read_input read_gltf(Input_name name, const Input_options& options, bool first_clip_by_default) {
   const io::Gltf_file file(name.file);
   if (!first_clip_by_default) io::require_clip_choice(file, name.clip);
   io::Gltf_read_report report;
   mesh::Surface_mesh_animation animation = file.read(
-      {.clip = name.clip, .fps = options.fps, .repair = repair_options(name, options), .threads = options.threads},
+      {.clip = name.clip, .fps = options.fps, .repair = repair_options(name.file, options), .threads = options.threads},
       &report);
   io::Repair_report repair = report.repair;
   return {std::move(animation), std::move(name), std::move(repair), std::move(report)};
@@ -63,7 +63,7 @@ Read_input read_input(const std::string& input, const Input_options& options, Fr
   Input_name name = input_name(input, options, front);
   if (io::is_gltf(name.file)) return read_gltf(std::move(name), options, first_clip_by_default);
   io::Animation_read_options read{.triangulate = options.triangulate, .threads = options.threads,
-                                  .repair = repair_options(name, options), .fps = options.fps};
+                                  .repair = repair_options(name.file, options), .fps = options.fps};
   if (!options.topology.empty()) read.topology = options.topology;
   io::Repair_report repair;
   mesh::Surface_mesh_animation animation = io::read_animation(name.file, read, &repair);

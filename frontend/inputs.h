@@ -73,6 +73,10 @@ Input_name input_name(const std::string& input, const Input_options& options, Fr
 /// @throws invalid_input "the clip is given twice", naming the first input.
 void check_clip_applies(const std::vector<std::string>& inputs, const Input_options& options, Front front);
 
+/// The repair `options` ask of the input file `file`: welded by the format's rule unless `weld`
+/// says, defects repaired unless `refuse_defects`.
+io::Repair_options repair_options(const std::string& file, const Input_options& options);
+
 /// An animation read, with what reading it found.
 struct Read_input {
   mesh::Surface_mesh_animation animation;
@@ -96,7 +100,7 @@ void require_motion(const mesh::Surface_mesh_animation& animation, const std::st
 nlohmann::json input_record(const Read_input& read, double fps);
 
 /// The clips of a glTF file as a report: [{"name", "index", "start", "end", "duration", "frames",
-/// "channels"}], frames counted at `fps`.
+/// "channels"}], frames counted at the rate `contents` were listed at.
 nlohmann::json clips_record(const io::Gltf_contents& contents);
 
 /// The clips of the glTF file `path` (one without '#'), as `clips_record`.

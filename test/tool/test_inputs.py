@@ -11,7 +11,8 @@ from conftest import fails, succeeds
 
 INPUT_OPTIONS = ["--clip", "--fps", "--topology", "--triangulate", "--weld", "--no-weld", "--refuse-defects",
                  "--threads"]
-READING_COMMANDS = ["info", "convert", "strain", "temporal", "spatiotemporal", "similarity", "matrix", "find", "view"]
+READING_COMMANDS = ["info", "convert", "strain", "temporal", "spatiotemporal", "similarity", "matrix", "find", "view",
+                    "evaluate"]
 
 
 @pytest.mark.parametrize("command", READING_COMMANDS)

@@ -5,6 +5,7 @@
 
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/motion_labels.h>
+#include <deformseg/io/read_animation.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/evaluation/retrieval_evaluation.h>
 #include <deformseg/color/strain_colors.h>
@@ -24,8 +25,7 @@ namespace {
 struct Evaluate_options {
   std::string labels;
   Policy_options policy;
-  double fps = 30;
-  int threads = 0;
+  Input_options read;
   bool skip_unreadable = false;
   std::string json;
   std::string png;
@@ -51,13 +51,8 @@ struct Read_clips {
   std::vector<std::string> skipped;  // "FILE clip NAME: MESSAGE"
 };
 
-bool is_gltf(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  std::ranges::transform(extension, extension.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return extension == ".glb" || extension == ".gltf";
-}
-
-// Reads the clips of `rows` that come from `file` (rows[i] for i in `of_file`), parsing it once.
+// Reads the clips of `rows` that come from `file` (rows[i] for i in `of_file`), parsing it once;
+// a row without a clip takes --clip's.
 void read_file_clips(const std::filesystem::path& file, const std::vector<std::size_t>& of_file,
                      const std::vector<io::Labelled_clip>& rows, const Evaluate_options& o, Read_clips& out) {
   const auto skip_or_throw = [&](const std::vector<std::size_t>& lost, const invalid_input& e) {
@@ -65,9 +60,11 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
     for (const std::size_t i : lost)
       out.skipped.push_back(file.string() + " clip '" + rows[i].item.clip + "': " + e.what());
   };
-  if (!is_gltf(file)) {
+  if (!io::is_gltf(file)) {
     try {
-      out.animations.push_back(io::read_animation(file.string(), {.threads = o.threads, .fps = o.fps}));
+      Input_options frames = o.read;
+      frames.clip.clear();  // --clip is for the glTF rows
+      out.animations.push_back(frontend::read_input(file.string(), frames, frontend::Front::command_line).animation);
       out.clips.push_back(rows[of_file.front()]);
     } catch (const invalid_input& e) {
       skip_or_throw(of_file, e);
@@ -82,8 +79,11 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
   }
   for (const std::size_t i : of_file) {
     try {
-      io::require_clip_choice(*gltf, rows[i].item.clip);  // an empty clip names a file's only one
-      out.animations.push_back(gltf->read({.clip = rows[i].item.clip, .fps = o.fps, .threads = o.threads}));
+      const std::string clip = rows[i].item.clip.empty() ? o.read.clip : rows[i].item.clip;
+      io::require_clip_choice(*gltf, clip);  // an empty clip names a file's only one
+      out.animations.push_back(gltf->read({.clip = clip, .fps = o.read.fps,
+                                           .repair = frontend::repair_options(file.string(), o.read),
+                                           .threads = o.read.threads}));
       out.clips.push_back(rows[i]);
     } catch (const invalid_input& e) {
       skip_or_throw({i}, e);
@@ -100,7 +100,7 @@ Read_clips read_clips(const std::vector<io::Labelled_clip>& rows, const Evaluate
     std::vector<std::size_t> of_file;
     for (std::size_t i = 0; i < rows.size(); ++i)
       if (rows[i].file == file) of_file.push_back(i);
-    if (!is_gltf(file) && of_file.size() > 1)
+    if (!io::is_gltf(file) && of_file.size() > 1)
       throw invalid_input("lists " + std::to_string(of_file.size()) + " clips of " + file.string() +
                           ", which is not a glTF file and holds one animation", {.file = o.labels});
     progress("reading " + std::to_string(of_file.size()) + " clip(s) of " + file.string());
@@ -257,9 +257,9 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
 }
 
 void run_evaluate(const Evaluate_options& o) {
-  similarity::check_policy_choice(o.policy);
-  mesh::check_frames_per_second(o.fps, "--fps");
-  set_default_threads(o.threads);  // the matrix's threads; the readers take theirs
+  frontend::check(o.policy, frontend::Front::command_line);
+  frontend::check(o.read, frontend::Front::command_line);
+  set_default_threads(o.read.threads);  // the matrix's threads; the readers take theirs
   const auto start = Clock::now();
   Read_clips read = read_clips(io::read_motion_labels(o.labels), o);
   const double read_seconds = seconds_since(start);
@@ -287,7 +287,7 @@ void run_evaluate(const Evaluate_options& o) {
     document = {{"labels", o.labels},
                 {"policy", o.policy.policy},
                 {"alignment_policy", similarity::alignment_name(o.policy)},
-                {"fps", o.fps},
+                {"fps", o.read.fps},
                 {"inputs", inputs},
                 {"skipped", read.skipped},
                 {"scores", scores_json(scores)},
@@ -316,9 +316,7 @@ void add_evaluate_command(CLI::App& app) {
                       "motion '-': a distractor; fields may be in double quotes)")
       ->required();
   add_policy_options(*command, o->policy);
-  command->add_option("--fps", o->fps,
-                      "Frames per second: glTF clips are sampled at it, frame folders play at it. Default: 30");
-  command->add_option("--threads", o->threads, "Threads to use (0: all)")->check(thread_counts);
+  add_parameters(*command, frontend::input_parameters, o->read);
   command->add_flag("--skip-unreadable", o->skip_unreadable,
                     "Leave out, with a line on standard error, the clips that cannot be read or described (a "
                     "pose of one frame), instead of stopping");
