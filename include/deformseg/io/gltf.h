@@ -312,17 +312,12 @@ inline io::Gltf_contents contents(const std::filesystem::path& path, double fps)
     result.skins.push_back({.name = skin.name, .joints = skin.joints.size()});
   for (std::size_t m = 0; m < model.meshes.size(); ++m) result.meshes.push_back(mesh_info(model, m));
   const Node_forest forest = node_forest(model);
-  for (std::size_t node : forest.scene_nodes) {
-    const int mesh = model.nodes[node].mesh;
-    if (mesh < 0) continue;
-    if (std::size_t(mesh) >= model.meshes.size())
-      throw invalid_input(node_name(model, node) + " refers to mesh " + std::to_string(mesh) +
-                          ", which does not exist");
-    io::Gltf_mesh_info& info = result.meshes[std::size_t(mesh)];
+  for (const auto [node, mesh] : mesh_instances(model, forest)) {
+    io::Gltf_mesh_info& info = result.meshes[mesh];
     ++info.instances;
     info.skinned = info.skinned || model.nodes[node].skin >= 0;
     for (std::size_t p = 0; p < info.primitives.size(); ++p)
-      if (skip_reason(model.meshes[std::size_t(mesh)].primitives[p]).empty()) {
+      if (skip_reason(model.meshes[mesh].primitives[p]).empty()) {
         result.vertices += info.primitives[p].vertices;
         result.triangles += info.primitives[p].triangles;
       }
