@@ -123,6 +123,8 @@ inline void set_default_threads(int threads) {
 /// waits for the steps in progress and throws `cancelled`. An exception the callback throws
 /// stops the call too and comes out of it. An empty function (the default) is never called.
 /// What a step is and how often the callback is called, each call says.
+/// @par Example
+/// @include progress.cpp
 using Progress = std::function<bool(std::size_t done, std::size_t total)>;
 
 namespace internal {
