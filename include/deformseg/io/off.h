@@ -217,6 +217,8 @@ namespace deformseg::io {
 /// written; no partial file is left then.
 /// @par Complexity O(V + F).
 /// @sa write_obj, write_ply, write_sequence
+/// @par Example
+/// @include write_off.cpp
 template <mesh::FaceGraph Graph, std::floating_point Coordinate>
 void write_off(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std::size_t frame,
                const std::filesystem::path& file) {
