@@ -471,6 +471,8 @@ private:
 /// @throws invalid_input naming the file when `clip` is empty and the file holds two clips or
 /// more: the message lists them.
 /// @par Complexity O(clips).
+/// @par Example
+/// @include sample_gltf.cpp
 inline void require_clip_choice(const Gltf_file& file, const std::string& clip) {
   const std::vector<std::string> names = file.clip_names();
   if (!clip.empty() || names.size() < 2) return;
@@ -494,6 +496,8 @@ inline void require_clip_choice(const Gltf_file& file, const std::string& clip) 
 /// @throws invalid_input naming the file, as `Gltf_file` and `Gltf_file::sample`.
 /// @par Complexity O(file size + T (N + J + V I)): see `Gltf_file::sample`.
 /// @sa read_gltf, Gltf_file
+/// @par Example
+/// @include sample_gltf.cpp
 inline Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {}) {
   return Gltf_file(path).sample(options);
 }
