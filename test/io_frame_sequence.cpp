@@ -306,7 +306,7 @@ TEST_CASE("read_frame_sequence: the cat poses, with normals in their files", "[i
   check_frame_as_cgal(all, 9, folder / "cat-reference.obj");
 }
 
-// ---- The writer: write_sequence (tests moved from io_writers.cpp; helpers in writer_support.h) ----
+// ---- The writer: write_sequence (helpers shared with the other writers' tests: writer_support.h) ----
 
 namespace color = deformseg::color;
 namespace io = deformseg::io;

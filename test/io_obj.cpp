@@ -325,7 +325,7 @@ TEST_CASE("read_obj on the cat poses: faces a//a b//b c//c, vn lines, header com
   }
 }
 
-// ---- The writer: write_obj (tests moved from io_writers.cpp; helpers in writer_support.h) ----
+// ---- The writer: write_obj (helpers shared with the other writers' tests: writer_support.h) ----
 
 namespace color = deformseg::color;
 namespace io = deformseg::io;

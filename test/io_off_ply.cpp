@@ -392,7 +392,7 @@ TEST_CASE("read_mesh_points: positions only, from OFF and PLY", "[io][read_mesh]
                        Message(beyond_float.string() + ": vertex 1 has a coordinate out of the range of float"));
 }
 
-// ---- The writers: write_off and write_ply (tests moved from io_writers.cpp; helpers in writer_support.h) ----
+// ---- The writers: write_off and write_ply (helpers shared with the other writers' tests: writer_support.h) ----
 
 namespace io = deformseg::io;
 namespace mesh = deformseg::mesh;
