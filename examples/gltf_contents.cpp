@@ -17,7 +17,10 @@ namespace {
 // (0,0,0) and (0,0,1) (24), as little-endian floats in base64.
 const char* small_gltf = R"({
   "asset": {"version": "2.0"},
-  "buffers": [{"byteLength": 68, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAD8AAAAAAAAAAAAAAAAAAAAAAAAAAAAAgD8="}],
+  "buffers": [{"byteLength": 68, "uri": "data:application/octet-stream;base64,)"
+                         "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAAAAAAAAD8"
+                         "AAAAAAAAAAAAAAAAAAAAAAAAAAAAAgD8="
+                         R"("}],
   "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
                   {"buffer": 0, "byteOffset": 36, "byteLength": 8},
                   {"buffer": 0, "byteOffset": 44, "byteLength": 24}],

@@ -1,7 +1,9 @@
 // Tests of io/frame_sequence.h: list_frame_files (folders, patterns, natural order) and
 // read_frame_sequence (connectivity from the first frame or a topology file, positions of every
-// frame, threads, errors), on small sequences made here and, tagged [data], on the shared ones.
+// frame, threads, errors), on small sequences made here and, tagged [data], on the shared ones;
+// sequence_file_name and write_sequence (names, formats, colours, errors, read back).
 #include "test_support.h"
+#include "writer_support.h"
 
 #include <deformseg/mesh/default_mesh.h>
 #include <deformseg/exceptions.h>
@@ -15,10 +17,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <cerrno>
 #include <cstdio>
 #include <cstdint>
 #include <fstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 using deformseg::invalid_input;
@@ -300,4 +304,129 @@ TEST_CASE("read_frame_sequence: the cat poses, with normals in their files", "[i
   const auto all = read_frame_sequence(folder.string());
   CHECK(all.num_frames() == 10);
   check_frame_as_cgal(all, 9, folder / "cat-reference.obj");
+}
+
+// ---- The writer: write_sequence (helpers shared with the other writers' tests: writer_support.h) ----
+
+namespace color = deformseg::color;
+namespace io = deformseg::io;
+namespace mesh = deformseg::mesh;
+namespace test = deformseg::test;
+
+namespace {
+
+using deformseg::test::Polygons;
+using deformseg::test::check_points;
+using deformseg::test::drifting_tetrahedron;
+using deformseg::test::file_text;
+using deformseg::test::four_colors;
+using deformseg::test::read_ply_colored;
+using deformseg::test::tetrahedron;
+using deformseg::test::writer_output;
+using Point = deformseg::test::Point_3;
+using Polyhedron = CGAL::Polyhedron_3<deformseg::mesh::Kernel>;
+
+}  // namespace
+
+TEST_CASE("sequence_file_name: zero-padded to the width of the last frame", "[io][writers][sequence]") {
+  CHECK(io::sequence_file_name(7, 10) == "frame_0007.ply");
+  CHECK(io::sequence_file_name(7, 100001) == "frame_000007.ply");
+  CHECK(io::sequence_file_name(99999, 100000) == "frame_99999.ply");
+  CHECK(io::sequence_file_name(3, 12, {.format = io::Mesh_format::obj, .prefix = "m", .min_digits = 1}) == "m03.obj");
+  CHECK(io::sequence_file_name(0, 1, {.min_digits = 0}) == "frame_0.ply");
+  CHECK(io::sequence_file_name(2, 3, {.format = io::Mesh_format::off}) == "frame_0002.off");
+}
+
+TEST_CASE("write_sequence: names that sort the same plainly and naturally", "[io][writers][sequence]") {
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh>(12);
+  const fs::path folder = test::fresh_dir("writers/names") / "new" / "folder";
+  const auto files = io::write_sequence(animation, folder, {.min_digits = 1});
+  REQUIRE(files.size() == 12);
+  CHECK(files.front().filename() == "frame_00.ply");
+  CHECK(files[9].filename() == "frame_09.ply");
+  CHECK(files.back().filename() == "frame_11.ply");
+  auto sorted = files;
+  std::sort(sorted.begin(), sorted.end());
+  CHECK(sorted == files);
+  CHECK(io::list_frame_files(folder.string()) == files);
+}
+
+TEMPLATE_TEST_CASE("write_sequence then read_frame_sequence: the same positions", "[io][writers][sequence]", float,
+                   double) {
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh, TestType>(5);
+  for (const auto format : {io::Mesh_format::obj, io::Mesh_format::off, io::Mesh_format::ply}) {
+    const std::string extension = deformseg::io::internal::file_extension(format);
+    const fs::path folder = test::fresh_dir(std::string("writers/round_trip_") +
+                                            (sizeof(TestType) == 4 ? "float" : "double") + extension);
+    const auto files = io::write_sequence(animation, folder, {.format = format});
+    REQUIRE(files.size() == 5);
+    CHECK(files[4].filename() == "frame_0004" + extension);
+    const auto read = io::read_frame_sequence<mesh::Surface_mesh, TestType>(folder.string());
+    REQUIRE(read.num_frames() == 5);
+    CHECK(std::ranges::equal(read.all_positions(), animation.all_positions()));
+  }
+}
+
+TEST_CASE("write_sequence: per-frame face colours through a callback", "[io][writers][sequence]") {
+  const auto animation = drifting_tetrahedron<Polyhedron>(3);
+  const auto colors_of = [](std::size_t t) {
+    std::vector<color::Rgb> colors;
+    for (std::uint8_t j = 0; j < 4; ++j)
+      colors.push_back({std::uint8_t(10 * t), std::uint8_t(50 * j), std::uint8_t(255 - j)});
+    return colors;
+  };
+  const fs::path folder = test::fresh_dir("writers/colors");
+  const auto files = io::write_sequence(animation, folder, {.face_colors = colors_of});
+  REQUIRE(files.size() == 3);
+  for (std::size_t t = 0; t < 3; ++t) {
+    std::vector<Point> points;
+    Polygons polygons;
+    std::vector<CGAL::IO::Color> colors;
+    REQUIRE(read_ply_colored(files[t], points, polygons, colors));
+    check_points(points, animation, t);
+    REQUIRE(colors.size() == 4);
+    for (std::size_t j = 0; j < 4; ++j) {
+      const color::Rgb expected = colors_of(t)[j];
+      CHECK(colors[j] == CGAL::IO::Color(expected.r, expected.g, expected.b));
+    }
+  }
+}
+
+TEST_CASE("write_sequence rejects bad options, naming the folder or the file", "[io][writers][sequence][errors]") {
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh>(3);
+  const fs::path folder = test::fresh_dir("writers/sequence_errors");
+
+  SECTION("colours asked of OBJ") {
+    const auto none = [](std::size_t) { return std::vector<color::Rgb>{}; };
+    CHECK_THROWS_MATCHES(io::write_sequence(animation, folder, {.format = io::Mesh_format::obj, .face_colors = none}),
+                         invalid_input,
+                         Message(folder.string() + ": face colours need the PLY format: OBJ and OFF files have none"));
+  }
+  SECTION("a frame with a wrong number of colours") {
+    const auto colors = [](std::size_t t) {
+      return t == 1 ? std::vector<color::Rgb>(four_colors.begin(), four_colors.begin() + 2) : four_colors;
+    };
+    const fs::path second = folder / "frame_0001.ply";
+    CHECK_THROWS_MATCHES(io::write_sequence(animation, folder, {.face_colors = colors}), invalid_input,
+                         Message(second.string() + ": frame 1: 2 face colours for 4 faces"));
+    CHECK(fs::exists(folder / "frame_0000.ply"));
+    CHECK_FALSE(fs::exists(second));
+  }
+  SECTION("a prefix with a folder in it") {
+    CHECK_THROWS_MATCHES(io::write_sequence(animation, folder, {.prefix = "sub/frame_"}), invalid_input,
+                         Message(folder.string() + ": the prefix \"sub/frame_\" holds a folder separator"));
+  }
+  SECTION("a folder that is a file") {
+    const fs::path file = test::write_file("writers/sequence_errors/a_file", "not a folder");
+    CHECK_THROWS_MATCHES(io::write_sequence(animation, file), invalid_input,
+                         Message(file.string() + ": cannot write into it: it is not a folder"));
+    CHECK_THROWS_MATCHES(io::write_sequence(animation, file / "sub"), invalid_input,
+                         Message((file / "sub").string() + ": cannot create the folder: " +
+                                 std::generic_category().message(ENOTDIR)));
+  }
+  SECTION("an animation without frames writes nothing") {
+    const mesh::Deforming_mesh<mesh::Surface_mesh> empty(tetrahedron<mesh::Surface_mesh>());
+    CHECK(io::write_sequence(empty, folder / "empty").empty());
+    CHECK(fs::is_empty(folder / "empty"));
+  }
 }

@@ -392,6 +392,36 @@ TEST_CASE("gltf: normalised, strided and sparse accessors (KHR_mesh_quantization
   check_point(s, 1, 3, 1, -1, 0);
 }
 
+TEST_CASE("gltf: an accessor without buffer view is zeros, at most one element per byte of the buffers", "[gltf]") {
+  // Target 0 lifts vertex 2: an accessor of zeros without buffer view, its vertex 2 substituted.
+  Gltf_writer w;
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  const int lift = w.accessor(-1, Gltf_writer::float_type, 3, "VEC3");
+  const std::vector<std::uint8_t> sparse_index = {2};
+  const std::vector<float> sparse_value = {0, 0, 1};
+  w.doc["accessors"][lift]["sparse"] = {
+      {"count", 1},
+      {"indices", {{"bufferView", w.view(sparse_index.data(), 1)}, {"componentType", Gltf_writer::ubyte_type}}},
+      {"values", {{"bufferView", w.view(sparse_value.data(), 12)}}}};
+  w.push("meshes", {{"name", "face"},
+                    {"weights", {1}},
+                    {"primitives", json::array({{{"attributes", {{"POSITION", position}}},
+                                                 {"targets", json::array({{{"POSITION", lift}}})}}})}});
+  w.push("nodes", {{"mesh", 0}});
+  w.push("scenes", {{"nodes", {0}}});
+  const Sampled_gltf s = sample_gltf(write(w, "zeros.gltf"));
+  check_point(s, 0, 1, 1, 0, 0);
+  check_point(s, 0, 2, 0, 1, 1);
+
+  // The fuzzer's input (test/fuzz/regressions/gltf): 3,777,777 zeros from a file of 636 bytes,
+  // which the reader would weld and sample, vertex after vertex. The buffers hold 52 bytes.
+  w.doc["accessors"][lift]["count"] = 3777777;
+  const fs::path path = write(w, "many_zeros.gltf");
+  CHECK_THROWS_WITH(sample_gltf(path), Contains(path.string()) && Contains("target 0 POSITION") &&
+                                           Contains("no buffer view and 3777777 elements") &&
+                                           Contains("per byte of the file's buffers (52 bytes)"));
+}
+
 TEST_CASE("gltf: the frame count rule", "[gltf]") {
   const auto frames_for = [](float end, const std::string& name) {
     Gltf_writer w;

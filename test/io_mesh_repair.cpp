@@ -33,6 +33,11 @@ using deformseg::io::make_repaired_animation;
 using deformseg::io::Repair_options;
 using deformseg::io::Repair_report;
 using deformseg::io::repair_triangles;
+using deformseg::io::internal::Oriented_soup;
+using deformseg::io::internal::Soup_triangle;
+using deformseg::io::internal::drop_triangles;
+using deformseg::io::internal::misoriented_triangles;
+using deformseg::io::internal::weld_vertices;
 using Catch::Matchers::Message;
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 namespace fs = std::filesystem;
@@ -153,7 +158,7 @@ TEST_CASE("repair_triangles: a repeated vertex, a non-manifold edge and vertex, 
   for (std::uint32_t i = 0; i < 18; ++i) CHECK(result.source_vertex[i] == i);
   std::multiset<std::uint32_t> copied(result.source_vertex.begin() + 18, result.source_vertex.end());
   CHECK(copied == std::multiset<std::uint32_t>{4, 4, 5, 5, 9});
-  CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(std::vector<std::array<double, 3>>(23), result.triangles));
+  CHECK_NOTHROW(make_face_graph<Surface_mesh>(std::vector<std::array<double, 3>>(23), result.triangles));
 
   Repair_report report;
   const auto animation =
@@ -352,8 +357,8 @@ TEST_CASE("repair_triangles: random soups against brute force", "[io][repair][we
 
     // A halfedge mesh accepts it, of both graph types.
     std::vector<std::array<double, 3>> points(out);
-    CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(points, result.triangles));
-    CHECK_NOTHROW(mesh::make_face_graph<CGAL::Polyhedron_3<CGAL::Simple_cartesian<double>>>(points, result.triangles));
+    CHECK_NOTHROW(make_face_graph<Surface_mesh>(points, result.triangles));
+    CHECK_NOTHROW(make_face_graph<CGAL::Polyhedron_3<CGAL::Simple_cartesian<double>>>(points, result.triangles));
 
     // The welding is brute force's, numbered in the order of the smallest vertex of each group.
     const std::vector<std::uint32_t> group =
@@ -413,7 +418,7 @@ TEST_CASE("weld_vertices: many vertices on one trajectory are one vertex / 0 and
   positions[3 * n + 3 * 2] = 1.0;   // x only: the diagonal is 1, the welding distance 1e-3
   positions[3 * n + 3 * 3] = 5e-4;  // within it of the origin, not of vertex 2
   const std::vector<std::uint32_t> welded =
-      deformseg::io::internal::weld_vertices(std::span<const double>(positions), n, 1e-3);
+      weld_vertices(std::span<const double>(positions), n, 1e-3);
   REQUIRE(welded.size() == n);
   CHECK(welded[0] == 0);
   CHECK(welded[1] == 0);
@@ -443,7 +448,7 @@ TEST_CASE("repair_triangles: parts that cannot be oriented, a Moebius strip and 
     }
   const auto result = repaired(strip);
   std::vector<std::array<double, 3>> points(result.source_vertex.size());
-  CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(points, result.triangles));
+  CHECK_NOTHROW(make_face_graph<Surface_mesh>(points, result.triangles));
   // CGAL cuts it along a seam of 4 copied vertices, every triangle kept.
   CHECK(result.report.non_manifold_vertices == 4);
   CHECK(result.report.duplicated_vertices == 4);
@@ -459,7 +464,7 @@ TEST_CASE("repair_triangles: parts that cannot be oriented, a Moebius strip and 
   plane.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}, {0, 1, 5},
                      {1, 2, 4}, {1, 3, 4}, {1, 3, 5}, {2, 3, 5}, {2, 4, 5}};
   const auto cut = repaired(plane);
-  CHECK_NOTHROW(mesh::make_face_graph<mesh::Surface_mesh>(std::vector<std::array<double, 3>>(cut.source_vertex.size()),
+  CHECK_NOTHROW(make_face_graph<Surface_mesh>(std::vector<std::array<double, 3>>(cut.source_vertex.size()),
                                                           cut.triangles));
   CHECK(cut.report.duplicated_vertices == 4);
   CHECK(cut.report.triangles == 10);
@@ -467,7 +472,7 @@ TEST_CASE("repair_triangles: parts that cannot be oriented, a Moebius strip and 
 
 TEST_CASE("repair_triangles: the check that skips CGAL's pass on an oriented manifold", "[io][repair]") {
   using deformseg::io::internal::is_oriented_manifold;
-  using Soup_triangles = std::vector<deformseg::io::internal::Soup_triangle>;
+  using Soup_triangles = std::vector<Soup_triangle>;
   Soup cube = unwelded_cube();
   const auto welded = repaired(Soup{two_frames(cube.points), cube.triangles}, {.weld = true});
   CHECK(is_oriented_manifold(Soup_triangles(welded.triangles.begin(), welded.triangles.end()), 8));
@@ -485,14 +490,14 @@ TEST_CASE("repair_triangles: the check that skips CGAL's pass on an oriented man
 
 TEST_CASE("repair_triangles: the guard after CGAL finds triangles along an edge in the same direction",
           "[io][repair]") {
-  const std::vector<deformseg::io::internal::Soup_triangle> triangles = {{0, 1, 2}, {0, 1, 3}, {1, 0, 4}, {4, 0, 1}};
-  CHECK(deformseg::io::internal::misoriented_triangles(triangles) == std::vector<bool>{false, true, false, true});
-  deformseg::io::internal::Oriented_soup soup;
+  const std::vector<Soup_triangle> triangles = {{0, 1, 2}, {0, 1, 3}, {1, 0, 4}, {4, 0, 1}};
+  CHECK(misoriented_triangles(triangles) == std::vector<bool>{false, true, false, true});
+  Oriented_soup soup;
   soup.triangles = triangles;
   soup.source_triangle = {0, 1, 2, 3};
   soup.reversed = {false, true, false, false};
-  deformseg::io::internal::drop_triangles(soup, {false, true, false, true});
-  CHECK(soup.triangles == std::vector<deformseg::io::internal::Soup_triangle>{{0, 1, 2}, {1, 0, 4}});
+  drop_triangles(soup, {false, true, false, true});
+  CHECK(soup.triangles == std::vector<Soup_triangle>{{0, 1, 2}, {1, 0, 4}});
   CHECK(soup.source_triangle == std::vector<std::uint32_t>{0, 2});
   CHECK(soup.reversed == std::vector<bool>{false, false});
   CHECK(soup.unrepairable_triangles == 2);

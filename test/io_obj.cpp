@@ -1,19 +1,28 @@
-// Tests of io/obj.h (read_obj) and of the OBJ path of read_mesh_points, on small files made here
-// and, tagged [data], on the shared real animations against CGAL's reader.
+// Tests of io/obj.h (read_obj, write_obj) and of the OBJ path of read_mesh_points, on small files
+// made here and, tagged [data], on the shared real animations against CGAL's reader; with
+// write_ply, the writers' refusals.
 #include "tetrahedron.h"
+#include "writer_support.h"
 
 #include <deformseg/exceptions.h>
 #include <deformseg/io/obj.h>
+#include <deformseg/io/ply.h>
 #include <deformseg/io/read_mesh.h>
 
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <array>
 #include <bit>
+#include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 using deformseg::invalid_input;
@@ -313,5 +322,115 @@ TEST_CASE("read_obj on the cat poses: faces a//a b//b c//c, vn lines, header com
     CHECK(soup.triangles.size() == 14410);
     CHECK(soup.triangles.front() == std::array<std::uint32_t, 3>{7206, 0, 1});  // "f 7207//7207 1//1 2//2"
     check_same_as_cgal(soup, cats / name);
+  }
+}
+
+// ---- The writer: write_obj (helpers shared with the other writers' tests: writer_support.h) ----
+
+namespace color = deformseg::color;
+namespace io = deformseg::io;
+namespace mesh = deformseg::mesh;
+namespace test = deformseg::test;
+
+namespace {
+
+using deformseg::test::Polygons;
+using deformseg::test::canonical_triangles;
+using deformseg::test::check_points;
+using deformseg::test::drifting_tetrahedron;
+using deformseg::test::face_lines;
+using deformseg::test::file_text;
+using deformseg::test::graph_name;
+using deformseg::test::tetra_polygons;
+using deformseg::test::tetrahedron;
+using deformseg::test::writer_output;
+using Point = deformseg::test::Point_3;
+using Polyhedron = CGAL::Polyhedron_3<deformseg::mesh::Kernel>;
+
+}  // namespace
+
+TEST_CASE("write_obj: the vertices as their shortest exact text, the triangles 1-based", "[io][writers][obj]") {
+  // Frame 1 holds numbers whose shortest form is decimal, scientific, negative zero, subnormal.
+  std::vector<double> xyz(12, 0.0);
+  const std::vector<double> frame1{0.1, 1.0 / 3, -2.5, 1e-300, 123456789.125, -0.0, 2.0 / 3, 1e21, 5e-324, 0, 0, 1};
+  xyz.insert(xyz.end(), frame1.begin(), frame1.end());
+  const mesh::Deforming_mesh<mesh::Surface_mesh> animation(tetrahedron<mesh::Surface_mesh>(), xyz);
+  const fs::path file = writer_output("obj_text", "frame1.obj");
+  io::write_obj(animation, 1, file);
+
+  const std::string text = file_text(file);
+  const std::string vertex_lines = "# deformseg: frame 1 of 2\n"
+                                   "v 0.1 0.3333333333333333 -2.5\n"
+                                   "v 1e-300 123456789.125 -0\n"
+                                   "v 0.6666666666666666 1e+21 5e-324\n"
+                                   "v 0 0 1\n";
+  CHECK(text == vertex_lines + face_lines(animation, "f", 1, {}));
+
+  // Each number reads back to the same bits.
+  std::istringstream lines(text.substr(text.find('\n') + 1));
+  for (std::size_t i = 0; i < 4; ++i) {
+    std::string v, number;
+    lines >> v;
+    for (int k = 0; k < 3; ++k) {
+      lines >> number;
+      double value = 42;
+      std::from_chars(number.data(), number.data() + number.size(), value);
+      CHECK(std::bit_cast<std::uint64_t>(value) == std::bit_cast<std::uint64_t>(frame1[3 * i + k]));
+    }
+  }
+}
+
+TEST_CASE("write_obj: a float animation is written in float's shortest form", "[io][writers][obj]") {
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh, float>(2);
+  const fs::path file = writer_output("obj_float", "frame1.obj");
+  io::write_obj(animation, 1, file);
+  // Vertex 0 of frame 1 is (0.1f, 1/3.f, 0): shorter than the double these floats are.
+  CHECK(file_text(file).starts_with("# deformseg: frame 1 of 2\nv 0.1 0.33333334 0\n"));
+}
+
+TEMPLATE_TEST_CASE("write_obj: CGAL reads back the same points and triangles", "[io][writers][obj]", mesh::Surface_mesh,
+                   Polyhedron) {
+  const auto animation = drifting_tetrahedron<TestType>(3);
+  const fs::path file = writer_output("obj_cgal_" + graph_name<TestType>(), "frame2.obj");
+  io::write_obj(animation, 2, file);
+  std::vector<Point> points;
+  Polygons polygons;
+  REQUIRE(CGAL::IO::read_polygon_soup(file.string(), points, polygons));
+  check_points(points, animation, 2);
+  CHECK(canonical_triangles(polygons) == canonical_triangles(tetra_polygons()));
+}
+
+TEST_CASE("write_obj and write_ply reject bad arguments, naming the file", "[io][writers][errors]") {
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh>(3);
+  const fs::path folder = test::fresh_dir("writers/errors");
+
+  SECTION("a frame out of range") {
+    const fs::path obj = folder / "frame3.obj";
+    CHECK_THROWS_MATCHES(io::write_obj(animation, 3, obj), invalid_input,
+                         Message(obj.string() + ": cannot write frame 3 of an animation of 3 frames"));
+    const fs::path ply = folder / "frame3.ply";
+    CHECK_THROWS_MATCHES(io::write_ply(animation, 3, ply), invalid_input,
+                         Message(ply.string() + ": cannot write frame 3 of an animation of 3 frames"));
+    CHECK_FALSE(fs::exists(obj));
+  }
+  SECTION("a colour count other than the face count") {
+    const fs::path ply = folder / "colors.ply";
+    const std::vector<color::Rgb> three(3);
+    CHECK_THROWS_MATCHES(io::write_ply(animation, 0, ply, three), invalid_input,
+                         Message(ply.string() + ": 3 face colours for 4 faces"));
+  }
+  SECTION("a path in a folder that does not exist") {
+    const fs::path obj = folder / "missing" / "frame.obj";
+    CHECK_THROWS_MATCHES(io::write_obj(animation, 0, obj), invalid_input,
+                         Message(obj.string() + ": cannot write: " + std::generic_category().message(ENOENT)));
+  }
+  SECTION("a device that is full") {
+    if (fs::exists("/dev/full"))
+      CHECK_THROWS_MATCHES(io::write_obj(animation, 0, "/dev/full"), invalid_input,
+                           Message("/dev/full: cannot write: " + std::generic_category().message(ENOSPC)));
+  }
+  SECTION("a path that is a folder") {
+    CHECK_THROWS_MATCHES(io::write_ply(animation, 0, folder), invalid_input,
+                         Message(folder.string() + ": cannot write: it is a folder, not a file"));
   }
 }

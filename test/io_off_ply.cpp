@@ -1,11 +1,14 @@
-// Tests of io/off.h (read_off), io/ply.h (read_ply) and io/read_mesh.h (read_mesh, read_mesh_points
-// for OFF and PLY, the choice by extension), on small files made here.
+// Tests of io/off.h (read_off, write_off), io/ply.h (read_ply, write_ply) and io/read_mesh.h
+// (read_mesh, read_mesh_points for OFF and PLY, the choice by extension), on small files made here.
 #include "tetrahedron.h"
+#include "writer_support.h"
 
 #include <deformseg/exceptions.h>
 #include <deformseg/io/off.h>
 #include <deformseg/io/ply.h>
 #include <deformseg/io/read_mesh.h>
+
+#include <CGAL/Polyhedron_3.h>
 
 #include <algorithm>
 #include <array>
@@ -24,6 +27,7 @@ using deformseg::io::read_off;
 using deformseg::io::read_ply;
 using deformseg::io::Triangle_soup;
 using Catch::Matchers::Message;
+using Catch::Matchers::StartsWith;
 namespace fs = std::filesystem;
 
 namespace {
@@ -386,4 +390,129 @@ TEST_CASE("read_mesh_points: positions only, from OFF and PLY", "[io][read_mesh]
   const fs::path beyond_float = file("points-big.ply", binary_ply(big));
   CHECK_THROWS_MATCHES(read_mesh_points(beyond_float, xyz_float), invalid_input,
                        Message(beyond_float.string() + ": vertex 1 has a coordinate out of the range of float"));
+}
+
+// ---- The writers: write_off and write_ply (helpers shared with the other writers' tests: writer_support.h) ----
+
+namespace io = deformseg::io;
+namespace mesh = deformseg::mesh;
+
+namespace {
+
+using deformseg::test::Polygons;
+using deformseg::test::canonical_triangles;
+using deformseg::test::check_points;
+using deformseg::test::drifting_tetrahedron;
+using deformseg::test::face_lines;
+using deformseg::test::file_text;
+using deformseg::test::four_colors;
+using deformseg::test::graph_name;
+using deformseg::test::read_ply_colored;
+using deformseg::test::tetra_polygons;
+using deformseg::test::tetrahedron;
+using deformseg::test::writer_output;
+using Point = deformseg::test::Point_3;
+using Polyhedron = CGAL::Polyhedron_3<deformseg::mesh::Kernel>;
+
+}  // namespace
+
+TEST_CASE("write_off: the counts, the vertices as their shortest exact text, the triangles 0-based",
+          "[io][writers][off]") {
+  std::vector<double> xyz(12, 0.0);
+  const std::vector<double> frame1{0.1, 1.0 / 3, -2.5, 1e-300, 123456789.125, -0.0, 2.0 / 3, 1e21, 5e-324, 0, 0, 1};
+  xyz.insert(xyz.end(), frame1.begin(), frame1.end());
+  const mesh::Deforming_mesh<mesh::Surface_mesh> animation(tetrahedron<mesh::Surface_mesh>(), xyz);
+  const fs::path file = writer_output("off_text", "frame1.off");
+  io::write_off(animation, 1, file);
+  CHECK(file_text(file) == "OFF\n# deformseg: frame 1 of 2\n4 4 0\n"
+                           "0.1 0.3333333333333333 -2.5\n"
+                           "1e-300 123456789.125 -0\n"
+                           "0.6666666666666666 1e+21 5e-324\n"
+                           "0 0 1\n" +
+                               face_lines(animation, "3", 0, {}));
+  const io::Triangle_soup soup = io::read_off(file);
+  CHECK(std::ranges::equal(soup.points, frame1));
+  CHECK(std::ranges::equal(soup.triangles, animation.triangles()));
+  CHECK_THROWS_WITH(io::write_off(animation, 2, file), StartsWith(file.string() + ": "));
+}
+
+TEST_CASE("write_ply: text PLY, with face colours, exactly", "[io][writers][ply]") {
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh>(2);
+  const fs::path file = writer_output("ply_ascii", "frame1.ply");
+  io::write_ply(animation, 1, file, four_colors, {.encoding = io::Ply_encoding::ascii});
+  const std::string expected = "ply\n"
+                               "format ascii 1.0\n"
+                               "comment deformseg: frame 1 of 2\n"
+                               "element vertex 4\n"
+                               "property double x\n"
+                               "property double y\n"
+                               "property double z\n"
+                               "element face 4\n"
+                               "property list uchar int vertex_indices\n"
+                               "property uchar red\n"
+                               "property uchar green\n"
+                               "property uchar blue\n"
+                               "end_header\n"
+                               "0.1 0.3333333333333333 0\n"
+                               "1.1 0.3333333333333333 -0.14285714285714285\n"
+                               "0.1 1.3333333333333333 -0.2857142857142857\n"
+                               "0.1 0.3333333333333333 0.5714285714285714\n";
+  CHECK(file_text(file) == expected + face_lines(animation, "3", 0, {" 255 0 0", " 0 128 0", " 0 0 255", " 12 34 56"}));
+}
+
+TEMPLATE_TEST_CASE("write_ply: binary PLY with face colours, read back by CGAL", "[io][writers][ply]",
+                   mesh::Surface_mesh, Polyhedron) {
+  const auto animation = drifting_tetrahedron<TestType>(3);
+  const fs::path file = writer_output("ply_binary_" + graph_name<TestType>(), "frame2.ply");
+  io::write_ply(animation, 2, file, four_colors);
+
+  const std::string header = "ply\n"
+                             "format binary_little_endian 1.0\n"
+                             "comment deformseg: frame 2 of 3\n"
+                             "element vertex 4\n"
+                             "property double x\n"
+                             "property double y\n"
+                             "property double z\n"
+                             "element face 4\n"
+                             "property list uchar int vertex_indices\n"
+                             "property uchar red\n"
+                             "property uchar green\n"
+                             "property uchar blue\n"
+                             "end_header\n";
+  const std::string bytes = file_text(file);
+  CHECK(bytes.substr(0, header.size()) == header);
+  CHECK(bytes.size() == header.size() + 4 * 3 * 8 + 4 * (1 + 3 * 4 + 3));
+  // The first face: its count, then its first index little-endian.
+  const std::size_t first_face = header.size() + 4 * 3 * 8;
+  CHECK(bytes[first_face] == 3);
+  CHECK(bytes.substr(first_face + 1, 4) == std::string{char(animation.triangles()[0][0]), 0, 0, 0});
+
+  std::vector<Point> points;
+  Polygons polygons;
+  std::vector<CGAL::IO::Color> colors;
+  REQUIRE(read_ply_colored(file, points, polygons, colors));
+  check_points(points, animation, 2);
+  CHECK(canonical_triangles(polygons) == canonical_triangles(tetra_polygons()));
+  REQUIRE(colors.size() == 4);
+  for (std::size_t j = 0; j < 4; ++j)
+    CHECK(colors[j] == CGAL::IO::Color(four_colors[j].r, four_colors[j].g, four_colors[j].b));
+}
+
+TEST_CASE("write_ply: a float animation, without colours, as float properties", "[io][writers][ply]") {
+  const auto animation = drifting_tetrahedron<mesh::Surface_mesh, float>(2);
+  const fs::path file = writer_output("ply_float", "frame1.ply");
+  io::write_ply(animation, 1, file);
+  const std::string bytes = file_text(file);
+  const std::string header_end =
+      "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  REQUIRE(bytes.find(header_end) != std::string::npos);
+  const std::size_t body = bytes.find(header_end) + header_end.size();
+  CHECK(bytes.size() == body + 4 * 3 * 4 + 4 * (1 + 3 * 4));
+  // Vertex 0, y = 1/3.f = 0x3EAAAAAB, little-endian.
+  CHECK(bytes.substr(body + 4, 4) == "\xAB\xAA\xAA\x3E");
+
+  std::vector<Point> points;
+  Polygons polygons;
+  REQUIRE(CGAL::IO::read_PLY(file.string(), points, polygons));
+  check_points(points, animation, 1);
 }

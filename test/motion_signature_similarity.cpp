@@ -28,6 +28,9 @@
 #include <string>
 #include <vector>
 
+using deformseg::signatures::internal::frame_at;
+using deformseg::signatures::internal::weighted_quantiles;
+
 // The descriptions whose frames similarity_significance shuffles; the tool and the Python module
 // ask this concept for the z-score, so a description that lost it would lose the z-score silently.
 static_assert(deformseg::similarity::ReorderableDescription<deformseg::similarity::Motion_signature_description>);
@@ -54,7 +57,7 @@ TEST_CASE("weighted_quantiles: the smallest value whose cumulative weight reache
     for (auto& item : items) item.second /= total;
     const auto brute = items;
     std::vector<double> out(k);
-    deformseg::signatures::internal::weighted_quantiles(items, k, out.data());
+    weighted_quantiles(items, k, out.data());
     for (std::size_t q = 0; q < k; ++q) {
       const double level = (double(q) + 0.5) / double(k);
       // Brute force: the smallest value v with (weight of the values <= v) >= level, up to rounding.
@@ -114,13 +117,13 @@ TEST_CASE("motion_signatures: a uniform translation has the exact rate everywher
   CHECK(s(39, 8) == Approx(std::log(0.3)).epsilon(1e-12));
   CHECK(s(1, 0) == Approx(std::log(0.6)).epsilon(1e-12));
   // Lags of whole frames read the frames themselves; spans are cut at the ends.
-  CHECK(deformseg::signatures::internal::frame_at(20.0 / 30 - 4.0 / 30, 30, 40) ==
+  CHECK(frame_at(20.0 / 30 - 4.0 / 30, 30, 40) ==
         std::pair<std::size_t, double>(16, 0.0));
-  CHECK(deformseg::signatures::internal::frame_at(1.0 / 30 - 4.0 / 30, 30, 40) ==
+  CHECK(frame_at(1.0 / 30 - 4.0 / 30, 30, 40) ==
         std::pair<std::size_t, double>(0, 0.0));
-  CHECK(deformseg::signatures::internal::frame_at(38.0 / 30 + 4.0 / 30, 30, 40) ==
+  CHECK(frame_at(38.0 / 30 + 4.0 / 30, 30, 40) ==
         std::pair<std::size_t, double>(39, 0.0));
-  CHECK(deformseg::signatures::internal::frame_at(0.25, 10, 40) == std::pair<std::size_t, double>(2, 0.5));
+  CHECK(frame_at(0.25, 10, 40) == std::pair<std::size_t, double>(2, 0.5));
   // Standing still gives the floor.
   std::vector<double> still(positions.begin(), positions.begin() + 12);
   still.insert(still.end(), positions.begin(), positions.begin() + 12);

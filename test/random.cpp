@@ -15,6 +15,12 @@
 #include <span>
 #include <vector>
 
+// shuffle stays qualified: std::shuffle, found by argument-dependent lookup, would be ambiguous with it.
+using deformseg::internal::Random_engine;
+using deformseg::internal::shuffled_indices;
+using deformseg::internal::uniform01;
+using deformseg::internal::uniform_below;
+
 namespace {
 
 
@@ -29,32 +35,32 @@ TEST_CASE("random: the shuffle and the draws of a std::mt19937 are pinned", "[ra
   CHECK(items == std::vector<int>{5, 9, 0, 1, 6, 7, 4, 8, 3, 2});
   std::mt19937 again(7);
   std::vector<std::uint64_t> draws;
-  for (int i = 0; i < 8; ++i) draws.push_back(deformseg::internal::uniform_below(again, 6));
+  for (int i = 0; i < 8; ++i) draws.push_back(uniform_below(again, 6));
   CHECK(draws == std::vector<std::uint64_t>{4, 0, 1, 1, 3, 5, 5, 0});
   std::mt19937 one(1);
-  CHECK(deformseg::internal::uniform01(one) == 0.4170219986692967);
+  CHECK(uniform01(one) == 0.4170219986692967);
 }
 
 // The order of k-medoids' build, from a std::mt19937_64: the same as clustering drew before the
 // draws moved to internal/random.h (checked against that code), so no clustering changed.
 TEST_CASE("random: shuffled_indices of a seed are pinned", "[random]") {
-  CHECK(deformseg::internal::shuffled_indices(10, 42) == std::vector<std::size_t>{1, 7, 9, 0, 3, 8, 4, 2, 5, 6});
-  CHECK(deformseg::internal::shuffled_indices(0, 42).empty());
-  CHECK(deformseg::internal::shuffled_indices(1, 42) == std::vector<std::size_t>{0});
+  CHECK(shuffled_indices(10, 42) == std::vector<std::size_t>{1, 7, 9, 0, 3, 8, 4, 2, 5, 6});
+  CHECK(shuffled_indices(0, 42).empty());
+  CHECK(shuffled_indices(1, 42) == std::vector<std::size_t>{0});
 }
 
 TEST_CASE("random: draws stay in their range and cover it", "[random]") {
-  deformseg::internal::Random_engine random(3);
+  Random_engine random(3);
   std::vector<int> seen(7, 0);
   for (int i = 0; i < 700; ++i) {
-    const std::uint64_t k = deformseg::internal::uniform_below(random, 7);
+    const std::uint64_t k = uniform_below(random, 7);
     REQUIRE(k < 7);
     ++seen[k];
-    const double u = deformseg::internal::uniform01(random);
+    const double u = uniform01(random);
     REQUIRE((u >= 0 && u < 1));
   }
   for (const int count : seen) CHECK(count > 50);
-  CHECK(deformseg::internal::uniform_below(random, 1) == 0);
+  CHECK(uniform_below(random, 1) == 0);
 }
 
 // A policy whose value is the first frame's single entry: the z-score then depends only on which

@@ -25,6 +25,10 @@
 #include <vector>
 
 using namespace deformseg;
+using deformseg::strain::internal::one_minus_exp_neg;
+using deformseg::strain::internal::sqrt_nonnegative;
+using deformseg::strain::internal::statistics_block;
+using deformseg::strain::internal::strain_chunk;
 
 namespace {
 
@@ -197,28 +201,28 @@ TEST_CASE("strain math: vectorisable sqrt and 1 - exp(-y) within 2 ulp", "[strai
   double worst_sqrt = 0, worst_exp = 0;
   for (std::uint32_t bits = 0x00800000u; bits < 0x7f800000u; bits += 4099) {
     const float x = std::bit_cast<float>(bits);
-    worst_sqrt = std::max(worst_sqrt, ulps(deformseg::strain::internal::sqrt_nonnegative(x), std::sqrt(x)));
+    worst_sqrt = std::max(worst_sqrt, ulps(sqrt_nonnegative(x), std::sqrt(x)));
   }
   for (std::uint32_t bits = 0; bits < std::bit_cast<std::uint32_t>(100.0f); bits += 4099) {
     const float y = std::bit_cast<float>(bits);
     worst_exp =
-        std::max(worst_exp, ulps(deformseg::strain::internal::one_minus_exp_neg(y), float(-std::expm1(-double(y)))));
+        std::max(worst_exp, ulps(one_minus_exp_neg(y), float(-std::expm1(-double(y)))));
   }
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> mantissa(1, 2);
   for (int i = 0; i < 200000; ++i) {
     const double x = std::ldexp(mantissa(random), int(random() % 1200) - 600);
-    worst_sqrt = std::max(worst_sqrt, ulps(deformseg::strain::internal::sqrt_nonnegative(x), std::sqrt(x)));
+    worst_sqrt = std::max(worst_sqrt, ulps(sqrt_nonnegative(x), std::sqrt(x)));
     const double y = std::ldexp(mantissa(random), int(random() % 70) - 62);
-    worst_exp = std::max(worst_exp, ulps(deformseg::strain::internal::one_minus_exp_neg(y), -std::expm1(-y)));
+    worst_exp = std::max(worst_exp, ulps(one_minus_exp_neg(y), -std::expm1(-y)));
   }
   CHECK(worst_sqrt <= 1);
   CHECK(worst_exp <= 2);
-  CHECK(deformseg::strain::internal::sqrt_nonnegative(0.0f) == 0.0f);
-  CHECK(deformseg::strain::internal::sqrt_nonnegative(0.0) == 0.0);
-  CHECK(deformseg::strain::internal::one_minus_exp_neg(0.0f) == 0.0f);
-  CHECK(deformseg::strain::internal::one_minus_exp_neg(1e30f) == 1.0f);
-  CHECK(deformseg::strain::internal::one_minus_exp_neg(std::numeric_limits<double>::infinity()) == 1.0);
+  CHECK(sqrt_nonnegative(0.0f) == 0.0f);
+  CHECK(sqrt_nonnegative(0.0) == 0.0);
+  CHECK(one_minus_exp_neg(0.0f) == 0.0f);
+  CHECK(one_minus_exp_neg(1e30f) == 1.0f);
+  CHECK(one_minus_exp_neg(std::numeric_limits<double>::infinity()) == 1.0);
 }
 
 TEST_CASE("strain: a rigid motion of every frame gives 0 for every measure", "[strain]") {
@@ -450,8 +454,8 @@ TEST_CASE("strain: one thread and all threads give bit-identical fields", "[stra
   spec.joints = {{.position = 0.3, .blend_width = 0.2}, {.position = 0.7, .blend_width = 0.1}};
   spec.schedule = {{9, {right_angle, 0.0}}, {9, {0.3, -right_angle}}, {5, {}}};
   const auto tube = mesh::make_bending_tube(spec);
-  REQUIRE(tube.animation.num_faces() > 3 * deformseg::strain::internal::strain_chunk);
-  REQUIRE(tube.animation.num_faces() * tube.animation.num_frames() > 3 * deformseg::strain::internal::statistics_block);
+  REQUIRE(tube.animation.num_faces() > 3 * strain_chunk);
+  REQUIRE(tube.animation.num_faces() * tube.animation.num_frames() > 3 * statistics_block);
 
   const auto same = [](const auto& a, const auto& b) {
     return a.values().size() == b.values().size() &&

@@ -34,6 +34,9 @@
 #include <vector>
 
 using namespace deformseg;
+using deformseg::internal::cheap_steps;
+using deformseg::internal::parallel_for;
+using deformseg::internal::parallel_for_with_locals;
 
 namespace {
 
@@ -136,7 +139,7 @@ TEST_CASE("parallel_for: every index once, the lowest index's exception, on any 
       for (const std::size_t count : {std::size_t(0), std::size_t(1), std::size_t(1000)}) {
         INFO(threads << " threads, chunks of " << chunk << ", " << count << " indices");
         std::vector<std::atomic<int>> runs(count);
-        deformseg::internal::parallel_for(count, threads, [&](std::size_t i) { ++runs[i]; }, chunk);
+        parallel_for(count, threads, [&](std::size_t i) { ++runs[i]; }, chunk);
         for (std::size_t i = 0; i < count; ++i) CHECK(runs[i].load() == 1);
       }
   for (const int threads : thread_counts) {
@@ -144,15 +147,15 @@ TEST_CASE("parallel_for: every index once, the lowest index's exception, on any 
     const auto failing = [](std::size_t i) {
       if (i == 900 || i == 5 || i == 600) throw std::runtime_error("index " + std::to_string(i));
     };
-    CHECK_THROWS_WITH(deformseg::internal::parallel_for(1000, threads, failing), "index 5");
-    CHECK_THROWS_WITH(deformseg::internal::parallel_for(1000, threads, failing, 64), "index 5");
+    CHECK_THROWS_WITH(parallel_for(1000, threads, failing), "index 5");
+    CHECK_THROWS_WITH(parallel_for(1000, threads, failing, 64), "index 5");
   }
 }
 
 TEST_CASE("parallel_for: per-worker locals, and nested loops run on their worker", "[threads]") {
   for (const int threads : thread_counts) {
     INFO(threads << " threads");
-    const auto sums = deformseg::internal::parallel_for_with_locals(
+    const auto sums = parallel_for_with_locals(
         10000, threads, 3, [] { return std::size_t(0); }, [](std::size_t& sum, std::size_t i) { sum += i; });
     CHECK(sums.size() <= std::size_t(threads));
     std::size_t total = 0;
@@ -162,13 +165,13 @@ TEST_CASE("parallel_for: per-worker locals, and nested loops run on their worker
     std::atomic<bool> other_thread{false};
     std::mutex seen;
     std::set<std::thread::id> workers;
-    deformseg::internal::parallel_for(50, threads, [&](std::size_t) {
+    parallel_for(50, threads, [&](std::size_t) {
       const auto worker = std::this_thread::get_id();
       {
         const std::lock_guard lock(seen);
         workers.insert(worker);
       }
-      deformseg::internal::parallel_for(20, 7, [&](std::size_t) {
+      parallel_for(20, 7, [&](std::size_t) {
         if (std::this_thread::get_id() != worker) other_thread = true;
       });
     });
@@ -195,7 +198,7 @@ TEST_CASE("interruption: the check runs on the calling thread and stops the loop
       return false;
     });
     CHECK(interruption_check_installed());
-    CHECK_THROWS_AS(deformseg::internal::parallel_for(1000, threads,
+    CHECK_THROWS_AS(parallel_for(1000, threads,
                                            [&](std::size_t) {
                                              ++steps;
                                              while (!stopped) std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -216,7 +219,7 @@ TEST_CASE("interruption: serial loops check between steps / what the check throw
       return false;
     });
     // Each step lasts longer than interruption_interval, so the check is due after the first.
-    CHECK_THROWS_AS(deformseg::internal::parallel_for(100, 1,
+    CHECK_THROWS_AS(parallel_for(100, 1,
                                            [&](std::size_t) {
                                              ++steps;
                                              std::this_thread::sleep_for(interruption_interval * 3 / 2);
@@ -226,7 +229,7 @@ TEST_CASE("interruption: serial loops check between steps / what the check throw
   CHECK(checks == 1);
   CHECK(steps == 1);
   const Interruption_scope scope([]() -> bool { throw std::runtime_error("the user's reason"); });
-  CHECK_THROWS_WITH(deformseg::internal::parallel_for(100, 2,
+  CHECK_THROWS_WITH(parallel_for(100, 2,
                                            [&](std::size_t) {
                                              std::this_thread::sleep_for(interruption_interval * 3 / 2);
                                            }),
@@ -251,17 +254,17 @@ TEST_CASE("parallel_for: a loop of cheap steps below its grain runs on the calli
   const auto caller = std::this_thread::get_id();
   std::atomic<bool> elsewhere{false};
   std::vector<int> runs(64, 0);
-  deformseg::internal::parallel_for(64, 7, [&](std::size_t i) {
+  parallel_for(64, 7, [&](std::size_t i) {
     ++runs[i];
     if (std::this_thread::get_id() != caller) elsewhere = true;
-  }, deformseg::internal::cheap_steps);
+  }, cheap_steps);
   CHECK_FALSE(elsewhere.load());
   CHECK(runs == std::vector<int>(64, 1));
   std::vector<std::atomic<int>> more(1000);
-  deformseg::internal::parallel_for(1000, 7, [&](std::size_t i) { ++more[i]; }, deformseg::internal::cheap_steps);
+  parallel_for(1000, 7, [&](std::size_t i) { ++more[i]; }, cheap_steps);
   for (const auto& count : more) CHECK(count.load() == 1);
   // A bad count is refused however short the loop.
-  CHECK_THROWS_AS(deformseg::internal::parallel_for(3, -1, [](std::size_t) {}, deformseg::internal::cheap_steps),
+  CHECK_THROWS_AS(parallel_for(3, -1, [](std::size_t) {}, cheap_steps),
                   invalid_input);
 }
 

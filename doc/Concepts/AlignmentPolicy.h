@@ -18,11 +18,15 @@
 /// A type `P` is a model when it is copyable and, for `const P& p`, `std::size_t n, m` and a
 /// dissimilarity `d`:
 ///
-/// | expression | type | meaning |
-/// |---|---|---|
-/// | `p.align(n, m, d)` | deformseg::alignment::Alignment | the score and the aligned pairs (i, j), increasing in both, gaps left out |
-/// | `p.score(n, m, d)` | `double` | the same score alone; the library's policies need memory linear in `min(n, m)` |
-/// | `P::higher_is_better` | `constexpr bool` | true when the score is to be maximised, false when it is a cost |
+/// <table>
+/// <tr><th>expression <th>type <th>meaning
+/// <tr><td>`p.align(n, m, d)` <td>deformseg::alignment::Alignment
+///     <td>the score and the aligned pairs (i, j), increasing in both, gaps left out
+/// <tr><td>`p.score(n, m, d)` <td>`double`
+///     <td>the same score alone; the library's policies need memory linear in `min(n, m)`
+/// <tr><td>`P::higher_is_better` <td>`constexpr bool`
+///     <td>true when the score is to be maximised, false when it is a cost
+/// </table>
 ///
 /// `align` and `score` are templates over the dissimilarity's type (the concept checks them with
 /// an archetype, a class with only `double operator()(std::size_t, std::size_t) const`).
@@ -32,11 +36,15 @@
 ///
 /// \par Has models
 ///
-/// | policy | header | alignment | score | on empty input |
-/// |---|---|---|---|---|
-/// | deformseg::alignment::Smith_waterman | `alignment/smith_waterman.h` | local, linear or affine gaps | best local score, `>= 0`, higher is better | 0, no pairs |
-/// | deformseg::alignment::Dtw | `alignment/dtw.h` | global warping path, optional Sakoe–Chiba window | total dissimilarity, lower is better | 0 when both are empty, else an error |
-/// | deformseg::alignment::Subsequence_dtw | `alignment/subsequence_dtw.h` | a whole query against part of the other | total dissimilarity, lower is better | as Dtw |
+/// <table>
+/// <tr><th>policy <th>header <th>alignment <th>score <th>on empty input
+/// <tr><td>deformseg::alignment::Smith_waterman <td>`alignment/smith_waterman.h` <td>local, linear or affine gaps
+///     <td>best local score, `>= 0`, higher is better <td>0, no pairs
+/// <tr><td>deformseg::alignment::Dtw <td>`alignment/dtw.h` <td>global warping path, optional Sakoe–Chiba window
+///     <td>total dissimilarity, lower is better <td>0 when both are empty, else an error
+/// <tr><td>deformseg::alignment::Subsequence_dtw <td>`alignment/subsequence_dtw.h`
+///     <td>a whole query against part of the other <td>total dissimilarity, lower is better <td>as Dtw
+/// </table>
 ///
 /// deformseg::alignment::align aligns two label sequences with any model.
 ///

@@ -8,16 +8,20 @@
 /// A type `P` is a model when it is copyable and, for `const P& p` and a
 /// `const Eigen::MatrixXd& distances` (n x n, symmetric, zero diagonal, non-negative, finite):
 ///
-/// | expression | type | meaning |
-/// |---|---|---|
-/// | `p(distances)` | deformseg::clustering::Clustering | `labels`: one per item, any values; `medoids` optional |
+/// <table>
+/// <tr><th>expression <th>type <th>meaning
+/// <tr><td>`p(distances)` <td>deformseg::clustering::Clustering <td>`labels`: one per item, any values; `medoids`
+///     optional
+/// </table>
 ///
 /// It is a deformseg::clustering::WeightedClusteringPolicy when, besides, for a
 /// `const deformseg::clustering::Grouped_items& groups`:
 ///
-/// | expression | type | meaning |
-/// |---|---|---|
-/// | `p(groups)` | deformseg::clustering::Clustering | one label per group, each group counting as `groups.weights[g]` items at distance 0 |
+/// <table>
+/// <tr><th>expression <th>type <th>meaning
+/// <tr><td>`p(groups)` <td>deformseg::clustering::Clustering <td>one label per group, each group counting as
+///     `groups.weights[g]` items at distance 0
+/// </table>
 ///
 /// deformseg::clustering::cluster checks the matrix (deformseg::clustering::check_distance_matrix),
 /// merges the items at distance exactly 0 (deformseg::clustering::group_identical_items) and hands
@@ -28,11 +32,15 @@
 /// (deformseg::clustering::silhouette). A policy holds its own options as aggregate members.
 ///
 /// \par Has models
-/// | policy | k | options (defaults) |
-/// |---|---|---|
-/// | deformseg::clustering::K_medoids | given, or best silhouette over 2..10 | `clusters` (none), `max_clusters` (10), `seed` (0), `max_iterations` (100) |
-/// | deformseg::clustering::Agglomerative | given, by height, or best silhouette over 2..10 | `linkage` (average), `clusters` (none), `height` (none), `max_clusters` (10) |
-/// | deformseg::clustering::K_means | given, or best silhouette over 2..10 | `clusters` (none), `max_clusters` (10), `prototypes` (all items), `seed` (0), `max_iterations` (100), `restarts` (3) |
+/// <table>
+/// <tr><th>policy <th>k <th>options (defaults)
+/// <tr><td>deformseg::clustering::K_medoids <td>given, or best silhouette over 2..10 <td>`clusters` (none),
+///     `max_clusters` (10), `seed` (0), `max_iterations` (100)
+/// <tr><td>deformseg::clustering::Agglomerative <td>given, by height, or best silhouette over 2..10 <td>`linkage`
+///     (average), `clusters` (none), `height` (none), `max_clusters` (10)
+/// <tr><td>deformseg::clustering::K_means <td>given, or best silhouette over 2..10 <td>`clusters` (none),
+///     `max_clusters` (10), `prototypes` (all items), `seed` (0), `max_iterations` (100), `restarts` (3)
+/// </table>
 ///
 /// All three are weighted models, deterministic for their options and seed and whatever the number
 /// of threads. `examples/own_clustering_policy.cpp` adds a policy of its own:

@@ -5,10 +5,13 @@
 ///
 /// A type `M` is a model when it is default-constructible and copyable and, for `const M& m`:
 ///
-/// | expression | type | meaning |
-/// |---|---|---|
-/// | `m(p)`, `p` a `const deformseg::strain::Principal_stretches<float>&` | `float` | the strain, in float arithmetic |
-/// | `m(p)`, `p` a `const deformseg::strain::Principal_stretches<double>&` | `double` | the strain, in double arithmetic |
+/// <table>
+/// <tr><th>expression <th>type <th>meaning
+/// <tr><td>`m(p)`, `p` a `const deformseg::strain::Principal_stretches<float>&` <td>`float` <td>the strain, in float
+///     arithmetic
+/// <tr><td>`m(p)`, `p` a `const deformseg::strain::Principal_stretches<double>&` <td>`double` <td>the strain, in double
+///     arithmetic
+/// </table>
 ///
 /// It is called in the kernel's innermost loop: keep it branch-free and inline (a member
 /// template `template <std::floating_point T> T operator()(const Principal_stretches<T>&) const`),

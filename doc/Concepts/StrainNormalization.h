@@ -5,10 +5,13 @@
 ///
 /// A type `N` is a model when it is copyable and, for `const N& n`:
 ///
-/// | expression | type | meaning |
-/// |---|---|---|
-/// | `n.normalize(f)`, `f` a `const deformseg::strain::Raw_strain_field<float>&` | `std::optional<double>` | transforms `f.values` in place; gives its parameter (sigma) or none |
-/// | `n.normalize(d)`, `d` a `const deformseg::strain::Raw_strain_field<double>&` | `std::optional<double>` | the same in double |
+/// <table>
+/// <tr><th>expression <th>type <th>meaning
+/// <tr><td>`n.normalize(f)`, `f` a `const deformseg::strain::Raw_strain_field<float>&` <td>`std::optional<double>`
+///     <td>transforms `f.values` in place; gives its parameter (sigma) or none
+/// <tr><td>`n.normalize(d)`, `d` a `const deformseg::strain::Raw_strain_field<double>&` <td>`std::optional<double>`
+///     <td>the same in double
+/// </table>
 ///
 /// Statistics should be taken over `f.samples()`, which leaves out the frame whose strain is 0
 /// by definition, and must not depend on `f.threads`.

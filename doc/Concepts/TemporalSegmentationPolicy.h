@@ -7,9 +7,11 @@
 /// A type `P` is a model when it is copyable and, for `const P& p` and a
 /// `const deformseg::temporal::Segment_cost& cost`:
 ///
-/// | expression | type | meaning |
-/// |---|---|---|
-/// | `p(cost)` | `std::vector<deformseg::temporal::Frame_interval>` | intervals covering `[0, cost.num_frames() - 1]` without gap or overlap, in any order |
+/// <table>
+/// <tr><th>expression <th>type <th>meaning
+/// <tr><td>`p(cost)` <td>`std::vector<deformseg::temporal::Frame_interval>` <td>intervals covering
+///     `[0, cost.num_frames() - 1]` without gap or overlap, in any order
+/// </table>
 ///
 /// deformseg::temporal::segment_frames sorts the intervals, checks that they cover the frames exactly once
 /// (throwing deformseg::invalid_input when not), and adds each segment's cost. The policy holds its
@@ -21,9 +23,10 @@
 /// deformseg::temporal::Thesis_greedy, deformseg::temporal::Barbic_pca; `examples/temporal_segmentation.cpp` adds one
 /// of its own.
 ///
-/// | policy | default threshold | fewer segments when the threshold grows |
-/// |---|---|---|
-/// | deformseg::temporal::Optimal_partition | penalty 0.03 of the one-segment cost | yes |
-/// | deformseg::temporal::Binary_split | 0.5 x mean distance | yes |
-/// | deformseg::temporal::Thesis_greedy | 0.2 x mean distance | not always |
-/// | deformseg::temporal::Barbic_pca | none (3 standard deviations of the error's growth) | - |
+/// <table>
+/// <tr><th>policy <th>default threshold <th>fewer segments when the threshold grows
+/// <tr><td>deformseg::temporal::Optimal_partition <td>penalty 0.03 of the one-segment cost <td>yes
+/// <tr><td>deformseg::temporal::Binary_split <td>0.5 x mean distance <td>yes
+/// <tr><td>deformseg::temporal::Thesis_greedy <td>0.2 x mean distance <td>not always
+/// <tr><td>deformseg::temporal::Barbic_pca <td>none (3 standard deviations of the error's growth) <td>-
+/// </table>

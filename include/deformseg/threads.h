@@ -83,6 +83,8 @@ inline std::optional<int> threads_of_openmp_variable() {
 /// @throws invalid_input when `DEFORMSEG_NUM_THREADS` is set but not a whole number from 1 to
 /// `max_threads`, naming its value.
 /// @par Complexity O(1): reads the environment at each call.
+/// @par Example
+/// @include thread_count.cpp
 inline int default_threads() {
   if (internal::default_threads_of_thread > 0) return internal::default_threads_of_thread;
   if (const auto n = internal::threads_of_deformseg_variable()) return *n;
@@ -98,6 +100,8 @@ inline int default_threads() {
 /// @return a count from 1 to `max_threads`.
 /// @throws invalid_input for a negative count or one above `max_threads`, naming it, e.g.
 /// "compute_strain: threads must be 0 (the default) to 1024, not 70000"; as `default_threads`.
+/// @par Example
+/// @include thread_count.cpp
 inline int thread_count(int requested, const std::string& context = {}) {
   if (requested < 0 || requested > max_threads)
     throw invalid_input((context.empty() ? "" : context + ": ") + "threads must be 0 (the default) to " +
@@ -110,6 +114,8 @@ inline int thread_count(int requested, const std::string& context = {}) {
 /// `similarity_matrix`; 0 restores the rule of `default_threads`.
 /// @param threads 0, or a count from 1 to `max_threads`.
 /// @throws invalid_input for any other count, naming it.
+/// @par Example
+/// @include thread_count.cpp
 inline void set_default_threads(int threads) {
   if (threads != 0) thread_count(threads, "set_default_threads");
   internal::default_threads_of_thread = threads;
@@ -123,6 +129,8 @@ inline void set_default_threads(int threads) {
 /// waits for the steps in progress and throws `cancelled`. An exception the callback throws
 /// stops the call too and comes out of it. An empty function (the default) is never called.
 /// What a step is and how often the callback is called, each call says.
+/// @par Example
+/// @include progress.cpp
 using Progress = std::function<bool(std::size_t done, std::size_t total)>;
 
 namespace internal {
@@ -171,6 +179,8 @@ inline thread_local Interruption_state interruption_state{};
 /// deformseg::Interruption_scope scope([&] { return !stop_requested.load(); });
 /// try { auto m = deformseg::similarity::similarity_matrix(animations); } catch (const deformseg::cancelled&) {}
 /// @endcode
+/// @par Example
+/// @include interruption_scope.cpp
 class Interruption_scope {
 public:
   /// @brief Installs `check` (an empty function checks nothing).
@@ -189,12 +199,16 @@ private:
 };
 
 /// @brief Whether an `Interruption_check` is installed on the calling thread.
+/// @par Example
+/// @include interruption_scope.cpp
 inline bool interruption_check_installed() noexcept { return internal::interruption_state.check != nullptr; }
 
 /// @brief Calls the calling thread's `Interruption_check`, if any, and throws `cancelled` when it
 /// returns false. Long serial loops call it after each step; it costs a clock read when less than
 /// `interruption_interval` has passed since the check was last called.
 /// @throws cancelled when the check returns false; what the check throws.
+/// @par Example
+/// @include interruption_scope.cpp
 inline void interruption_point() {
   internal::Interruption_state& state = internal::interruption_state;
   if (!state.check) return;

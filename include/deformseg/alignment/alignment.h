@@ -79,6 +79,8 @@ private:
 /// referred to, not copied: they must outlive the result.
 /// @return a `Label_mismatch`, a `Dissimilarity` for `align(a.size(), b.size(), d)`.
 /// @par Complexity O(1); each call O(1).
+/// @par Example
+/// @include label_mismatch.cpp
 template <std::ranges::contiguous_range A, std::ranges::contiguous_range B>
   requires std::equality_comparable_with<std::ranges::range_value_t<A>, std::ranges::range_value_t<B>>
 auto label_mismatch(const A& a, const B& b) {
@@ -109,6 +111,8 @@ private:
 /// @param matrix the entries, each finite and `>= 0` (the policies check them as they read them);
 /// referred to, not copied: it must outlive the result (a temporary is rejected at compile time).
 /// @par Complexity O(1); each call O(1).
+/// @par Example
+/// @include matrix_dissimilarity.cpp
 inline Matrix_dissimilarity matrix_dissimilarity(const Eigen::MatrixXd& matrix) {
   return Matrix_dissimilarity(matrix);
 }

@@ -99,6 +99,8 @@ concept WeightedClusteringPolicy = ClusteringPolicy<P> && requires(const P& poli
 /// @throws invalid_input naming the first offending entry `(i, j)`: when the matrix is not
 /// square, an entry is not finite or negative, the diagonal is not 0, or `(i, j) != (j, i)`.
 /// @par Complexity O(n^2).
+/// @par Example
+/// @include check_distance_matrix.cpp
 inline void check_distance_matrix(const Eigen::MatrixXd& distances, std::string_view who) {
   const std::string prefix = std::string(who) + ": ";
   if (distances.rows() != distances.cols())
@@ -301,6 +303,8 @@ inline Grouped_items zero_distance_groups(const Eigen::MatrixXd& distances) {
 /// @pre `distances` passes `check_distance_matrix` (not checked here).
 /// @return the groups, their weights (sizes) and distances (mean over their items' pairs).
 /// @par Complexity O(n^2) time, O(g^2) extra memory for g groups.
+/// @par Example
+/// @include group_identical_items.cpp
 inline Grouped_items group_identical_items(const Eigen::MatrixXd& distances) {
   Grouped_items g = internal::zero_distance_groups(distances);
   const auto n = std::size_t(distances.rows());

@@ -312,17 +312,12 @@ inline io::Gltf_contents contents(const std::filesystem::path& path, double fps)
     result.skins.push_back({.name = skin.name, .joints = skin.joints.size()});
   for (std::size_t m = 0; m < model.meshes.size(); ++m) result.meshes.push_back(mesh_info(model, m));
   const Node_forest forest = node_forest(model);
-  for (std::size_t node : forest.scene_nodes) {
-    const int mesh = model.nodes[node].mesh;
-    if (mesh < 0) continue;
-    if (std::size_t(mesh) >= model.meshes.size())
-      throw invalid_input(node_name(model, node) + " refers to mesh " + std::to_string(mesh) +
-                          ", which does not exist");
-    io::Gltf_mesh_info& info = result.meshes[std::size_t(mesh)];
+  for (const auto [node, mesh] : mesh_instances(model, forest)) {
+    io::Gltf_mesh_info& info = result.meshes[mesh];
     ++info.instances;
     info.skinned = info.skinned || model.nodes[node].skin >= 0;
     for (std::size_t p = 0; p < info.primitives.size(); ++p)
-      if (skip_reason(model.meshes[std::size_t(mesh)].primitives[p]).empty()) {
+      if (skip_reason(model.meshes[mesh].primitives[p]).empty()) {
         result.vertices += info.primitives[p].vertices;
         result.triangles += info.primitives[p].triangles;
       }
@@ -476,6 +471,8 @@ private:
 /// @throws invalid_input naming the file when `clip` is empty and the file holds two clips or
 /// more: the message lists them.
 /// @par Complexity O(clips).
+/// @par Example
+/// @include sample_gltf.cpp
 inline void require_clip_choice(const Gltf_file& file, const std::string& clip) {
   const std::vector<std::string> names = file.clip_names();
   if (!clip.empty() || names.size() < 2) return;
@@ -499,6 +496,8 @@ inline void require_clip_choice(const Gltf_file& file, const std::string& clip) 
 /// @throws invalid_input naming the file, as `Gltf_file` and `Gltf_file::sample`.
 /// @par Complexity O(file size + T (N + J + V I)): see `Gltf_file::sample`.
 /// @sa read_gltf, Gltf_file
+/// @par Example
+/// @include sample_gltf.cpp
 inline Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {}) {
   return Gltf_file(path).sample(options);
 }

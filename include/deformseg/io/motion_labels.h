@@ -152,6 +152,8 @@ namespace deformseg::io {
 /// number of fields than the header, an empty file or motion field, a quote its line does not
 /// close or text after a closing quote, or repeats a (file, clip) pair; or when it has no row.
 /// @par Complexity O(size of the file + R log R) for R rows.
+/// @par Example
+/// @include read_motion_labels.cpp
 inline std::vector<Labelled_clip> read_motion_labels(const std::filesystem::path& path) {
   namespace l = internal::labels;
   constexpr std::string_view utf8_byte_order_mark = "\xEF\xBB\xBF";

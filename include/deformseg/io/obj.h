@@ -217,23 +217,8 @@ void append_obj(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std::s
   append_decimal(text, animation.num_frames());
   text.push_back('\n');
 
-  const auto xyz = animation.frame_positions(frame);
-  for (std::size_t i = 0; i < xyz.size(); i += 3) {
-    text.push_back('v');
-    for (std::size_t k = 0; k < 3; ++k) {
-      text.push_back(' ');
-      append_shortest(text, xyz[i + k]);
-    }
-    text.push_back('\n');
-  }
-  for (const auto& triangle : animation.triangles()) {
-    text.push_back('f');
-    for (const std::uint32_t v : triangle) {
-      text.push_back(' ');
-      append_decimal(text, std::uint64_t{v} + 1);
-    }
-    text.push_back('\n');
-  }
+  append_point_lines(text, animation.frame_positions(frame), "v ");
+  append_triangle_lines(text, animation.triangles(), "f ", 1);
 }
 
 }  // namespace deformseg::io::internal

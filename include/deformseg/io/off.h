@@ -193,22 +193,8 @@ void append_off(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std::s
   append_decimal(text, animation.num_faces());
   text.append(" 0\n");
 
-  const auto xyz = animation.frame_positions(frame);
-  for (std::size_t i = 0; i < xyz.size(); i += 3) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (k != 0) text.push_back(' ');
-      append_shortest(text, xyz[i + k]);
-    }
-    text.push_back('\n');
-  }
-  for (const auto& triangle : animation.triangles()) {
-    text.push_back('3');
-    for (const std::uint32_t v : triangle) {
-      text.push_back(' ');
-      append_decimal(text, v);
-    }
-    text.push_back('\n');
-  }
+  append_point_lines(text, animation.frame_positions(frame), "");
+  append_triangle_lines(text, animation.triangles(), "3 ", 0);
 }
 
 }  // namespace deformseg::io::internal
@@ -231,6 +217,8 @@ namespace deformseg::io {
 /// written; no partial file is left then.
 /// @par Complexity O(V + F).
 /// @sa write_obj, write_ply, write_sequence
+/// @par Example
+/// @include write_off.cpp
 template <mesh::FaceGraph Graph, std::floating_point Coordinate>
 void write_off(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std::size_t frame,
                const std::filesystem::path& file) {

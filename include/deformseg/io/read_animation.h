@@ -58,6 +58,8 @@ struct Animation_read_options {
 
 /// @brief Whether `input` names a glTF file, by its extension (`.gltf` or `.glb`, in any case).
 /// @par Complexity O(length of the name).
+/// @par Example
+/// @include is_gltf.cpp
 inline bool is_gltf(const std::filesystem::path& input) {
   const std::string extension = internal::lower_extension(input);
   return extension == ".gltf" || extension == ".glb";

@@ -84,6 +84,8 @@ inline constexpr double default_frames_per_second = 30;
 /// @param location the file it applies to, if any.
 /// @throws invalid_input otherwise, e.g. "fps must be positive and finite (the frame rate, in
 /// frames per second), not 0.000000".
+/// @par Example
+/// @include check_frames_per_second.cpp
 inline void check_frames_per_second(double fps, const std::string& where = {}, const Input_location& location = {}) {
   if (!(fps > 0) || !std::isfinite(fps))
     throw invalid_input((where.empty() ? "" : where + ": ") +
@@ -367,6 +369,8 @@ private:
 
 /// @brief Whether `Mesh` is a `Deforming_mesh`, whose stored positions the algorithms read as
 /// contiguous arrays rather than through a FaceGraph's point maps. False for any other type.
+/// @par Example
+/// @include is_deforming_mesh_v.cpp
 template <class Mesh>
 inline constexpr bool is_deforming_mesh_v = false;
 /// @brief True: `Deforming_mesh<Graph, Coordinate>` is a `Deforming_mesh`.

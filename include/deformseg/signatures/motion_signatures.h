@@ -174,6 +174,8 @@ double rms_radius(std::span<const Coordinate> positions, std::span<const double>
 /// @throws invalid_input as `motion_signatures`.
 /// @par Complexity O(I V L log k) expected for I instants, in parallel over instants;
 /// deterministic whatever the thread count.
+/// @par Example
+/// @include motion_signatures_at.cpp
 template <class Coordinate>
 Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std::span<const double> weights,
                               const Motion_signature_options& options, double frames_per_second,
@@ -233,6 +235,8 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
 
 /// @brief The instants of an animation's T frames sampled at `fps`: t / fps, in seconds.
 /// @pre `fps` is positive. @par Complexity O(T).
+/// @par Example
+/// @include frame_instants.cpp
 inline std::vector<double> frame_instants(std::size_t frames, double fps) {
   std::vector<double> instants(frames);
   for (std::size_t t = 0; t < frames; ++t) instants[t] = double(t) / fps;
@@ -244,6 +248,8 @@ inline std::vector<double> frame_instants(std::size_t frames, double fps) {
 /// copying the animation first when it is not a `Deforming_mesh`; returns what `f` returns.
 /// @throws invalid_input for an animation without frames.
 /// @par Complexity O(V + F), plus a copy of the positions for a mesh that is not a `Deforming_mesh`.
+/// @par Example
+/// @include with_positions_and_weights.cpp
 template <mesh::DeformingMesh Mesh, class F>
 decltype(auto) with_positions_and_weights(const Mesh& animation, F&& f) {
   if constexpr (requires { animation.all_positions(); animation.triangles(); }) {

@@ -45,6 +45,8 @@ std::vector<double> vertex_area_weights(std::span<const double> frame, std::span
 /// Frames as the rows of a `3T x V` matrix: frame t's x, y, z in rows 3t..3t+2, each centred on
 /// its weighted centroid and multiplied by sqrt(weight); all divided by the animation's weighted
 /// RMS radius (mean over frames), so that the result does not depend on position or scale.
+/// @par Example
+/// @include procrustes_distance.cpp
 inline Eigen::MatrixXd centred_weighted_frames(std::span<const double> positions, std::span<const double> weights,
                                                std::size_t frames) {
   const std::size_t vertices = weights.size();
@@ -64,6 +66,8 @@ inline Eigen::MatrixXd centred_weighted_frames(std::span<const double> positions
 /// The smallest |R X - Y| over rotations R, from the cross-covariance `C = X Y^T` and the squared
 /// sizes: |X|^2 + |Y|^2 - 2 (s1 + s2 +- s3), the sign of the smallest singular value being that of
 /// det(C), so that reflections are not allowed (Kabsch).
+/// @par Example
+/// @include procrustes_distance.cpp
 inline double procrustes_distance(const Eigen::Matrix3d& cross, double square_x, double square_y) {
   const Eigen::JacobiSVD<Eigen::Matrix3d> svd(cross);
   const Eigen::Vector3d s = svd.singularValues();

@@ -198,6 +198,8 @@ inline constexpr std::size_t find_motion_refined = 2;
 /// @throws invalid_input when a description has no frame or `options.shortest` is not in (0, 1].
 /// @par Complexity O(k Tq Tl s^2) for k windows, Tq and Tl rows and the steepest slope s =
 /// ceil(1 / shortest), besides the frame dissimilarities' own cost; O(Tq Tl) memory.
+/// @par Example
+/// @include find_motion_in.cpp
 template <FrameDissimilarityPolicy Policy>
 std::vector<Motion_match> find_motion_in(const Policy& policy, const typename Policy::Description& query,
                                          const typename Policy::Description& long_animation,

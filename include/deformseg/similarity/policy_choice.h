@@ -57,6 +57,8 @@ inline std::string alignment_name(const Policy_choice& choice) {
 /// @brief The up direction an `up_names` entry names (+y when empty), `std::nullopt` for "none".
 /// @throws invalid_input for a name not in `up_names`.
 /// @par Complexity O(1).
+/// @par Example
+/// @include check_policy_choice.cpp
 inline std::optional<Eigen::Vector3d> up_direction(const std::string& up) {
   if (up.empty()) return Eigen::Vector3d::UnitY();
   if (std::ranges::find(up_names, up) == up_names.end())
@@ -70,6 +72,8 @@ inline std::optional<Eigen::Vector3d> up_direction(const std::string& up) {
 /// threshold with another policy than the graph one or outside [0, 1], an up direction with
 /// another policy than the motion signatures.
 /// @par Complexity O(1).
+/// @par Example
+/// @include check_policy_choice.cpp
 inline void check_policy_choice(const Policy_choice& choice) {
   const auto listed = [](const auto& names) {
     std::string list;

@@ -43,6 +43,8 @@ std::size_t frame_count(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynam
 /// `reordered_frames(d, order)` exist for it (the library's per-frame descriptions: motion
 /// signatures, strain histograms, self-similarity). `similarity_significance` takes these; a
 /// front end asks this concept, looked up here, rather than calling the two functions itself.
+/// @par Example
+/// @include reorderable_description.cpp
 template <class Description>
 concept ReorderableDescription = requires(const Description& d, std::span<const std::size_t> order) {
   { frame_count(d) } -> std::convertible_to<std::size_t>;

@@ -1,5 +1,5 @@
 // Whole-file reads and writes, byte order and number formatting, shared by the point cache
-// reader and writers (PC2, MDD) and the mesh writers (OBJ, PLY).
+// reader and writers (PC2, MDD) and the mesh writers (OBJ, OFF, PLY).
 //
 // Why whole files: one read or one write call per file is what makes thousands of frames fast;
 // a stream written number by number costs a virtual call and a locale lookup per number.
@@ -53,6 +53,36 @@ template <std::integral T>
 void append_decimal(std::string& out, T value) {
   char digits[24];
   out.append(digits, std::to_chars(digits, digits + sizeof digits, value).ptr);
+}
+
+/// Appends a line per point of `xyz` (3 coordinates each): `prefix`, then its coordinates, each
+/// the shortest text that reads back to it, separated by spaces. The vertex lines of OBJ ("v ")
+/// and OFF (no prefix).
+template <std::floating_point T>
+void append_point_lines(std::string& out, std::span<const T> xyz, std::string_view prefix) {
+  for (std::size_t i = 0; i < xyz.size(); i += 3) {
+    out.append(prefix);
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (k != 0) out.push_back(' ');
+      append_shortest(out, xyz[i + k]);
+    }
+    out.push_back('\n');
+  }
+}
+
+/// Appends a line per triangle: `prefix`, then its 3 vertex indices plus `first_index`, separated
+/// by spaces. The face lines of OBJ ("f ", from 1) and OFF ("3 ", from 0).
+template <class Triangle>
+void append_triangle_lines(std::string& out, std::span<const Triangle> triangles, std::string_view prefix,
+                           std::uint64_t first_index) {
+  for (const Triangle& triangle : triangles) {
+    out.append(prefix);
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (k != 0) out.push_back(' ');
+      append_decimal(out, std::uint64_t{triangle[k]} + first_index);
+    }
+    out.push_back('\n');
+  }
 }
 
 /// The message of the last failed C library call, such as "No such file or directory".

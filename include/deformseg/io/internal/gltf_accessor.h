@@ -26,8 +26,24 @@ struct Accessor_values {
 };
 
 /// An accessor without a buffer view (all zeros, maybe sparse) has no buffer to bound its count:
-/// it may hold at most this many elements.
+/// it may hold at most this many elements, and no more than the file's buffers have bytes (see
+/// `elements_without_buffer_limit`).
 inline constexpr std::size_t max_elements_without_buffer = std::size_t(1) << 24;
+
+/// The bytes of all the file's buffers.
+inline std::size_t buffer_bytes(const tinygltf::Model& model) {
+  std::size_t bytes = 0;
+  for (const tinygltf::Buffer& buffer : model.buffers) bytes += buffer.data.size();
+  return bytes;
+}
+
+/// The most elements an accessor without a buffer view may have: one per byte of the file's
+/// buffers, at most `max_elements_without_buffer`. Every other accessor holds at least a byte per
+/// element, so this keeps the reader's work in proportion to the file: a few bytes of JSON that
+/// ask for millions of zero vertices (which the reader would then weld and sample) are refused.
+inline std::size_t elements_without_buffer_limit(const tinygltf::Model& model) {
+  return std::min(max_elements_without_buffer, buffer_bytes(model));
+}
 
 inline std::string accessor_name(const tinygltf::Model& model, int index) {
   std::string s = "accessor " + std::to_string(index);
@@ -205,9 +221,11 @@ inline Accessor_values read_accessor(const tinygltf::Model& model, int index, co
     read_elements(view.data + accessor.byteOffset, accessor.count, components, stride, accessor.componentType,
                   accessor.normalized, result.values.data());
   } else {
-    if (accessor.count > max_elements_without_buffer)
+    if (accessor.count > elements_without_buffer_limit(model))
       throw invalid_input(name + " has no buffer view and " + std::to_string(accessor.count) +
-                          " elements; deformseg reads at most " + std::to_string(max_elements_without_buffer));
+                          " elements; deformseg reads at most one such element per byte of the file's buffers (" +
+                          std::to_string(buffer_bytes(model)) + " bytes), and at most " +
+                          std::to_string(max_elements_without_buffer));
     result.values.assign(accessor.count * components, 0.0);
   }
   if (accessor.sparse.isSparse) apply_sparse(model, accessor, name, result);

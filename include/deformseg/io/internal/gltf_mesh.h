@@ -199,36 +199,51 @@ inline std::vector<std::uint32_t> skin_joint_bases(const tinygltf::Model& model)
   return bases;
 }
 
-inline std::size_t count_scene_vertices(const tinygltf::Model& model, const Node_forest& forest) {
-  std::size_t total = 0;
+/// A mesh node instance of the scene: the node and the mesh it shows.
+struct Mesh_instance {
+  std::size_t node = 0, mesh = 0;
+};
+
+/// The scene's mesh node instances, in the order of its depth-first traversal.
+/// @throws invalid_input for a node that refers to a mesh that does not exist.
+inline std::vector<Mesh_instance> mesh_instances(const tinygltf::Model& model, const Node_forest& forest) {
+  std::vector<Mesh_instance> instances;
   for (std::size_t node : forest.scene_nodes) {
     const int mesh = model.nodes[node].mesh;
     if (mesh < 0) continue;
     if (std::size_t(mesh) >= model.meshes.size())
       throw invalid_input(node_name(model, node) + " refers to mesh " + std::to_string(mesh) +
                           ", which does not exist");
-    for (std::size_t p = 0; p < model.meshes[std::size_t(mesh)].primitives.size(); ++p) {
-      const tinygltf::Primitive& primitive = model.meshes[std::size_t(mesh)].primitives[p];
+    instances.push_back({.node = node, .mesh = std::size_t(mesh)});
+  }
+  return instances;
+}
+
+/// The vertices of the TRIANGLES primitives of all `instances`, before anything is read.
+/// @throws invalid_input past `max_scene_vertices`.
+inline std::size_t count_scene_vertices(const tinygltf::Model& model, const std::vector<Mesh_instance>& instances) {
+  std::size_t total = 0;
+  for (const Mesh_instance& instance : instances)
+    for (std::size_t p = 0; p < model.meshes[instance.mesh].primitives.size(); ++p) {
+      const tinygltf::Primitive& primitive = model.meshes[instance.mesh].primitives[p];
       if (!skip_reason(primitive).empty()) continue;
-      total += accessor_count(model, attribute(primitive, "POSITION"), primitive_name(model, std::size_t(mesh), p));
+      total += accessor_count(model, attribute(primitive, "POSITION"), primitive_name(model, instance.mesh, p));
       if (total > max_scene_vertices)
         throw invalid_input("the scene has more than " + std::to_string(max_scene_vertices) + " vertices");
     }
-  }
   return total;
 }
 
 /// Reads every TRIANGLES primitive of every mesh instance of the scene.
 inline Scene_geometry read_scene_geometry(const tinygltf::Model& model, const Node_forest& forest) {
   Scene_geometry geometry;
-  count_scene_vertices(model, forest);
+  const std::vector<Mesh_instance> instances = mesh_instances(model, forest);
+  count_scene_vertices(model, instances);
   const std::vector<std::uint32_t> bases = skin_joint_bases(model);
   std::uint32_t next_rigid_entry = bases.back();
   std::vector<bool> reported(model.meshes.size(), false);
-  for (std::size_t node : forest.scene_nodes) {
+  for (const auto [node, mesh] : instances) {
     const tinygltf::Node& instance = model.nodes[node];
-    if (instance.mesh < 0) continue;
-    const std::size_t mesh = std::size_t(instance.mesh);
     if (instance.skin >= 0 && std::size_t(instance.skin) >= model.skins.size())
       throw invalid_input(node_name(model, node) + " refers to skin " + std::to_string(instance.skin) +
                           ", which does not exist");
