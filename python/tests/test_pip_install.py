@@ -3,8 +3,9 @@ installs it into a scratch virtual environment, offline (`--no-build-isolation -
 build tools and NumPy are the system's); the installed package imports from outside the tree and
 gives the results of the package under test.
 
-It compiles the extension once more, as a user's `pip install` does (about two minutes of one core),
-so CTest runs it as a test of its own (`python.pip_install`, label `pip`) beside the C++ tests."""
+It compiles the extension once more, as a user's `pip install` does (about two minutes of one core,
+the binding files in one unit: python/CMakeLists.txt), so CTest runs it as a test of its own
+(`python.pip_install`, label `pip`) beside the C++ tests."""
 import os
 import pathlib
 import shutil
