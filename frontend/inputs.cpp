@@ -10,12 +10,8 @@
 namespace deformseg::frontend {
 
 void check(const Input_options& options, Front front) {
-  try {
-    mesh::check_frames_per_second(options.fps, spelled("fps", front));
-    thread_count(options.threads, spelled("threads", front));
-  } catch (const invalid_input& e) {
-    throw invalid_input(e.what());  // the option named, without the library's own context
-  }
+  mesh::check_frames_per_second(options.fps, spelled("fps", front));
+  thread_count(options.threads, spelled("threads", front));
 }
 
 Input_name input_name(const std::string& input, const Input_options& options, Front front) {

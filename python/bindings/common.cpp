@@ -12,8 +12,6 @@ bool no_signal_raised() {
   return true;
 }
 
-void refuse(const std::string& message) { throw invalid_input(message); }
-
 py::object python_of(const nlohmann::json& value) {
   switch (value.type()) {
     case nlohmann::json::value_t::null: return py::none();

@@ -2,6 +2,8 @@
 // Ctrl-C, the refusal of a bad argument, the front end's reports as Python values.
 #pragma once
 
+#include "frontend/parameters.h"
+
 #include <deformseg/threads.h>
 
 #include <nlohmann/json.hpp>
@@ -23,8 +25,8 @@ struct Interruptible_call {
   pybind11::gil_scoped_release release;
 };
 
-// Throws invalid_input (InvalidInput in Python) with `message`.
-[[noreturn]] void refuse(const std::string& message);
+// Throws invalid_input (InvalidInput in Python) with `message`: the front end's.
+using frontend::refuse;
 
 // A JSON value (the front end's reports) as the Python value of the same shape: dict, list, str,
 // int, float, bool or None.

@@ -33,10 +33,6 @@ namespace deformseg::tool {
 /// options, the same for every command and every input.
 using Input_options = frontend::Input_options;
 
-/// The check of every `--threads`: 0 (all) to max_threads, refused when the command line is read,
-/// before any work.
-inline const CLI::Range thread_counts(0, max_threads);
-
 /// Adds a positional argument `name` taking from `fewest` to `most` animations (-1: any number)
 /// into `inputs`, with the input options: --clip, --fps, --topology, --triangulate, --weld and
 /// --no-weld, --refuse-defects, --threads.

@@ -16,6 +16,10 @@
 
 namespace deformseg::tool {
 
+/// The check of every `--threads`: 0 (all) to max_threads, refused when the command line is read,
+/// before any work.
+inline const CLI::Range thread_counts(0, max_threads);
+
 /// The help of a parameter: its own, then, for a name among choices, each choice and its help.
 template <class Parameter>
 std::string help_of(const Parameter& p) {
@@ -39,7 +43,7 @@ void add_parameter(CLI::App& command, const frontend::Parameter<Request, Value>&
   } else {
     CLI::Option* option = command.add_option(name, value, help_of(p));
     // The front end checks these too, for Python; CLI11 refuses them as the command line is read.
-    if (name == "--threads") option->check(CLI::Range(0, max_threads));
+    if (name == "--threads") option->check(thread_counts);
     if (name == "--fps") option->check(CLI::PositiveNumber);
     if (p.kind == frontend::Parameter_kind::choice) {
       std::vector<std::string> names;
