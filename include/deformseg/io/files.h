@@ -28,6 +28,9 @@ namespace deformseg::io {
 /// for (const std::string& line : lines) out.write(line);
 /// out.commit();
 /// @endcode
+///
+/// @par Example
+/// @include atomic_file.cpp
 class Atomic_file {
 public:
   /// @brief Opens the temporary file for `path`, whose folder must exist.
