@@ -37,7 +37,10 @@ struct Dtw_length_row {
     double best = std::min(diagonal, up);
     const bool left_wins = left < best;
     best = std::min(best, left);
-    const std::size_t from = left_wins ? left_length : up_wins ? up_length : diagonal_length;
+    // Selected by masks, not by ?: which the compiler may turn into branches that mispredict.
+    std::size_t from = diagonal_length;
+    from ^= (from ^ up_length) & (std::size_t(0) - std::size_t(up_wins));
+    from ^= (from ^ left_length) & (std::size_t(0) - std::size_t(left_wins));
     diagonal = up;
     diagonal_length = up_length;
     at[j] = left = best + cost[j - 1];
