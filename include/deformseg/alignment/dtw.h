@@ -211,9 +211,9 @@ struct Dtw {
   }
 
   /// @brief The cost and the length of `align(n, m, d)`'s path without the path, in O(m)
-  /// memory, as fast as `score` or nearly; optionally abandoned as soon as the mean cost
-  /// `score / length` is proved to exceed a threshold (early abandoning for a nearest-neighbour
-  /// search).
+  /// memory and about 1.7 times `score`'s time (it carries a length per cell); optionally
+  /// abandoned as soon as the mean cost `score / length` is proved to exceed a threshold (early
+  /// abandoning for a nearest-neighbour search).
   ///
   /// Unless abandoned, `score` is `align(n, m, d).score` bit for bit (the same sums in the same
   /// order) and `length` is `align(n, m, d).pairs.size()`: the pass carries, per cell, the length
