@@ -13,7 +13,9 @@
 /// deformseg::invalid_input, naming the cell, for a value that is negative, NaN or infinite,
 /// unless the dissimilarity declares `static constexpr bool values_are_valid = true` (as
 /// deformseg::alignment::Label_mismatch does). They read `d` one row `i` at a time, in order of
-/// `j`, into a contiguous buffer, so `d` may be a lambda computing a distance on the fly.
+/// `j`, into a contiguous buffer, so `d` may be a lambda computing a distance on the fly; a `d`
+/// that also has `d.row(i, first, count, out)` (deformseg::alignment::RowDissimilarity) fills
+/// that buffer itself, a run of a row at once (a vectorised kernel), with the same values.
 ///
 /// A type `P` is a model when it is copyable and, for `const P& p`, `std::size_t n, m` and a
 /// dissimilarity `d`:

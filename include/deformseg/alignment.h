@@ -5,5 +5,6 @@
 
 #include <deformseg/alignment/alignment.h>
 #include <deformseg/alignment/dtw.h>
+#include <deformseg/alignment/dtw_mean_cost.h>
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/alignment/subsequence_dtw.h>

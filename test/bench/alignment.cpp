@@ -4,6 +4,10 @@
 // with its pairs (`align`, a byte per cell for the traceback) and as the score alone (`score`,
 // one row). Items are grid cells visited (within the window when there is one).
 //
+// Then DTW's three passes on square grids of random real dissimilarities (64, 256 and 1024
+// frames, the sizes of motion descriptions) read from a row-major matrix: `align`, `score` and
+// `mean_cost` (the value pass: score and path length), in cells per second.
+//
 //   build-bench/test/bench/alignment [--benchmark_filter=...]
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/smith_waterman.h>
@@ -11,8 +15,11 @@
 
 #include <benchmark/benchmark.h>
 
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <random>
 #include <vector>
@@ -76,6 +83,59 @@ void dtw(benchmark::State& state) { run(state, al::Dtw{}, state.range(0), cells(
 void dtw_window_500(benchmark::State& state) { run(state, al::Dtw{.window = 500}, state.range(0), cells(500)); }
 void subsequence_dtw(benchmark::State& state) { run(state, al::Subsequence_dtw{}, state.range(0), cells({})); }
 
+// A size x size matrix of uniform random values in [0, 1), one per size.
+const Eigen::MatrixXd& random_matrix(std::size_t size) {
+  static std::map<std::size_t, Eigen::MatrixXd> matrices;
+  auto [at, added] = matrices.try_emplace(size);
+  if (added) {
+    std::mt19937 random(static_cast<unsigned>(size));
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    at->second.resize(Eigen::Index(size), Eigen::Index(size));
+    for (Eigen::Index k = 0; k < at->second.size(); ++k) at->second(k) = unit(random);
+  }
+  return at->second;
+}
+
+// The matrix's entries by rows, as a comparison kernel gives them: each row contiguous, so that
+// the passes' reading of d costs little beside their dynamic programme.
+struct Rows_of {
+  std::vector<double> values;
+  std::size_t cols;
+  explicit Rows_of(const Eigen::MatrixXd& m) : values(std::size_t(m.size())), cols(std::size_t(m.cols())) {
+    Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(values.data(), m.rows(),
+                                                                                      m.cols()) = m;
+  }
+  double operator()(std::size_t i, std::size_t j) const { return values[i * cols + j]; }
+};
+
+// Argument: the side of the square grid.
+template <class Pass>
+void dtw_pass_on_matrix(benchmark::State& state, const Pass& pass) {
+  const std::size_t size = std::size_t(state.range(0));
+  const Rows_of d(random_matrix(size));
+  for (auto _ : state) pass(size, d);
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(size * size));
+}
+
+void dtw_align_matrix(benchmark::State& state) {
+  dtw_pass_on_matrix(state, [](std::size_t size, const auto& d) {
+    const al::Alignment result = al::Dtw{}.align(size, size, d);
+    benchmark::DoNotOptimize(result.pairs.data());
+  });
+}
+void dtw_score_matrix(benchmark::State& state) {
+  dtw_pass_on_matrix(state, [](std::size_t size, const auto& d) {
+    benchmark::DoNotOptimize(al::Dtw{}.score(size, size, d));
+  });
+}
+void dtw_mean_cost_matrix(benchmark::State& state) {
+  dtw_pass_on_matrix(state, [](std::size_t size, const auto& d) {
+    const al::Dtw_mean_cost value = al::Dtw{}.mean_cost(size, size, d);
+    benchmark::DoNotOptimize(value.score);
+    benchmark::DoNotOptimize(value.length);
+  });
+}
+
 }  // namespace
 
 BENCHMARK(smith_waterman_linear)->ArgName("align")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
@@ -83,5 +143,8 @@ BENCHMARK(smith_waterman_affine)->ArgName("align")->Arg(1)->Arg(0)->Unit(benchma
 BENCHMARK(dtw)->ArgName("align")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 BENCHMARK(dtw_window_500)->ArgName("align")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 BENCHMARK(subsequence_dtw)->ArgName("align")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+BENCHMARK(dtw_align_matrix)->ArgName("size")->Arg(64)->Arg(256)->Arg(1024)->Unit(benchmark::kMicrosecond);
+BENCHMARK(dtw_score_matrix)->ArgName("size")->Arg(64)->Arg(256)->Arg(1024)->Unit(benchmark::kMicrosecond);
+BENCHMARK(dtw_mean_cost_matrix)->ArgName("size")->Arg(64)->Arg(256)->Arg(1024)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

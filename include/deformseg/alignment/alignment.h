@@ -28,10 +28,27 @@ struct Alignment {
 
 /// @brief A pairwise dissimilarity: `d(i, j)` is a `double >= 0`, finite, between element i of
 /// the first sequence and element j of the second; typically in [0, 1] (0 for equal elements).
+/// A dissimilarity whose values are known to be finite and `>= 0` may say so with a member
+/// `static constexpr bool values_are_valid = true`: the policies then skip their checks.
 template <class D>
 concept Dissimilarity = std::copy_constructible<D> && requires(const D& d, std::size_t i, std::size_t j) {
   { d(i, j) } -> std::convertible_to<double>;
 };
+
+/// @brief A `Dissimilarity` that also gives a run of one row at once, which the policies then
+/// read instead of calling `d(i, j)` once per cell (a vectorised kernel computes several cells
+/// together): `d.row(i, first, count, out)` sets `out[k] = d(i, first + k)` for `k < count`.
+///
+/// The values must be those of `d(i, j)` bit for bit: a policy may read a cell either way
+/// (`Dtw::score` reads cells one by one when it walks the transposed grid), and its results must
+/// not depend on which. They are checked (finite, `>= 0`) as the cellwise ones are, unless
+/// `values_are_valid`. `row` is called with `first + count` at most the second sequence's length
+/// and `count >= 1`; it must not keep `out`.
+template <class D>
+concept RowDissimilarity =
+    Dissimilarity<D> && requires(const D& d, std::size_t i, std::size_t first, std::size_t count, double* out) {
+      d.row(i, first, count, out);
+    };
 
 namespace internal {
 // The dissimilarity the AlignmentPolicy concept checks policies with; never defined or called.

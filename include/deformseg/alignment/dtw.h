@@ -1,11 +1,15 @@
 /// @file alignment/dtw.h
 /// @brief `Dtw`: dynamic time warping, the global alignment of two sequences of least total
-/// dissimilarity, with an optional Sakoe–Chiba window.
+/// dissimilarity, with an optional Sakoe–Chiba window; `Dtw::mean_cost`, the cost and length of
+/// its path without the path.
 #pragma once
 
 #include <deformseg/alignment/alignment.h>
-#include <deformseg/exceptions.h>
+#include <deformseg/alignment/dtw_mean_cost.h>
 #include <deformseg/alignment/internal/alignment_grid.h>
+#include <deformseg/alignment/internal/dtw_band.h>
+#include <deformseg/alignment/internal/dtw_value_pass.h>
+#include <deformseg/exceptions.h>
 
 #include <algorithm>
 #include <array>
@@ -21,8 +25,6 @@ namespace deformseg::alignment {
 
 namespace internal {
 
-inline constexpr double dtw_unreachable = std::numeric_limits<double>::infinity();
-
 // Trace byte of a cell, the predecessor of its cheapest path, as two bits set without branches
 // (the choice is data, branches on it mispredict): bit 0 when up beat the diagonal, bit 1 when
 // left beat both. So: left when bit 1, else up when bit 0, else the diagonal.
@@ -34,44 +36,6 @@ struct Dtw_ends {
   bool start_on_first_row = false;  // paths may start anywhere in row 0
   // Where paths end: the far corner, anywhere in the last row, or anywhere in the last column.
   enum class End { corner, on_last_row, on_last_col } end = End::corner;
-};
-
-// The Sakoe–Chiba band of half-width w on a rows x cols grid: the cells with
-// |i (cols - 1) - j (rows - 1)| <= w min(rows - 1, cols - 1), that is within w cells (of the
-// longer sequence) of the straight line from (0, 0) to (rows - 1, cols - 1). Symmetric under
-// transposition. Without a window every cell is in.
-class Band {
-public:
-  Band(std::size_t rows, std::size_t cols, std::optional<std::size_t> window) : rows_(rows), cols_(cols) {
-    const std::size_t longest = std::max(rows, cols);
-    if (!window || *window >= longest) return;
-    if (longest >= (std::size_t(1) << 32))
-      throw invalid_input("Dtw: a window is supported for sequences of fewer than 2^32 elements");
-    windowed_ = true;
-    reach_ = *window * (std::min(rows, cols) - 1);
-  }
-  bool windowed() const { return windowed_; }
-  std::size_t first(std::size_t i) const {  // first column of row i
-    if (!windowed_ || rows_ == 1) return 0;
-    const std::size_t along = i * (cols_ - 1);
-    return along <= reach_ ? 0 : (along - reach_ + rows_ - 2) / (rows_ - 1);
-  }
-  std::size_t last(std::size_t i) const {  // last column of row i
-    if (!windowed_ || rows_ == 1) return cols_ - 1;
-    return std::min(cols_ - 1, (i * (cols_ - 1) + reach_) / (rows_ - 1));
-  }
-  // Whether a warping path from (0, 0) to the far corner stays inside: every row's columns meet
-  // or touch the row above's.
-  bool connected() const {
-    for (std::size_t i = 0; i < rows_; ++i)
-      if (first(i) > last(i) || (i > 0 && first(i) > last(i - 1) + 1)) return false;
-    return true;
-  }
-
-private:
-  std::size_t rows_, cols_;
-  bool windowed_ = false;
-  std::size_t reach_ = 0;
 };
 
 // One row as the pass walks along it.
@@ -244,6 +208,47 @@ struct Dtw {
     const internal::Band band = checked_band(n, m);
     if (m > n) return internal::dtw_cost(m, n, internal::Transposed<D>{d}, internal::Band(m, n, window), {}, "Dtw");
     return internal::dtw_cost(n, m, d, band, {}, "Dtw");
+  }
+
+  /// @brief The cost and the length of `align(n, m, d)`'s path without the path, in O(m)
+  /// memory and about 1.7 times `score`'s time (it carries a length per cell); optionally
+  /// abandoned as soon as the mean cost `score / length` is proved to exceed a threshold (early
+  /// abandoning for a nearest-neighbour search).
+  ///
+  /// Unless abandoned, `score` is `align(n, m, d).score` bit for bit (the same sums in the same
+  /// order) and `length` is `align(n, m, d).pairs.size()`: the pass carries, per cell, the length
+  /// of the path align's traceback would follow to it, with align's rule for ties. So the pass
+  /// runs in the caller's orientation, never transposed: on ties the length depends on which
+  /// sequence is A. The window applies as in `align`.
+  ///
+  /// With `options.abandon_above = tau`, the rows are read and walked `rows_at_once` (4) at a
+  /// time, and after each such step (and after the last row) the pass stops, with
+  /// `abandoned = true` and `rows_done` the rows finished, if every path the traceback could
+  /// still follow is proved to have a mean cost above tau: the tracked cost and length to a cell
+  /// of the row, plus what the rest costs at least (`options.row_bounds` of the rows below, 0
+  /// without them) over the fewest and the most cells it can have. The test leaves a relative
+  /// margin of about (2 n + m) 2^-50 for rounding, so it never abandons when `score / length <=
+  /// tau`, and when it does not abandon the result is that without `abandon_above`. Rows after the
+  /// stop are not read.
+  /// @param n, m the lengths: both 0 (result {0, 0, false, 0}) or both at least 1.
+  /// @param d the dissimilarity, each value finite and `>= 0`; read a row at a time, by `d.row`
+  /// when it has one (`RowDissimilarity`).
+  /// @param options when to abandon (default: never); see `Dtw_mean_cost_options`.
+  /// @return the cost, the length, whether abandoned and how many rows were done.
+  /// @throws invalid_input as `score` does, when `abandon_above` is NaN, when `row_bounds` is
+  /// neither empty nor of n values, or when one of them is not finite and `>= 0`.
+  /// @par Complexity O(n m) time (O(n w + m w) cells with a window), less when abandoned, plus
+  /// O(m) per abandoning test (each stops at the first cell whose bound is not above tau);
+  /// O(m) memory, plus O(n) for the row bounds' suffix sums.
+  /// @par Example
+  /// @include dtw_mean_cost.cpp
+  template <Dissimilarity D>
+  Dtw_mean_cost mean_cost(std::size_t n, std::size_t m, const D& d, const Dtw_mean_cost_options& options = {}) const {
+    internal::check_mean_cost_options(n, options);
+    if (n == 0 && m == 0) return {};
+    const internal::Band band = checked_band(n, m);
+    const internal::Mean_cost_abandoning abandoning(n, m, options);
+    return internal::Dtw_value_pass<D>(n, m, d, band, abandoning).run();
   }
 
 private:

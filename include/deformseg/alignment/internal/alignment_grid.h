@@ -3,6 +3,7 @@
 // score-only passes over the shorter sequence, and the byte matrix of a traceback.
 #pragma once
 
+#include <deformseg/alignment/alignment.h>
 #include <deformseg/exceptions.h>
 
 #include <array>
@@ -29,18 +30,25 @@ struct Transposed {
 template <class D>
 inline constexpr bool values_are_valid = requires { requires D::values_are_valid; };
 
-// row[k] = d(i, first + k) for k < count; throws when a value is negative, NaN or infinite.
-// The check is a branch-free reduction, so this loop costs about as much as calling d.
+// row[k] = d(i, first + k) for k < count, by d.row when D has it (RowDissimilarity); throws when
+// a value is negative, NaN or infinite. The check is a branch-free reduction, so this loop costs
+// about as much as calling d.
 template <class D>
 void read_row(const D& d, std::size_t i, std::size_t first, std::size_t count, double* row, const char* who) {
-  if constexpr (values_are_valid<D>) {
+  if constexpr (RowDissimilarity<D>) {
+    if (count != 0) d.row(i, first, count, row);
+    if constexpr (values_are_valid<D>) return;
+  } else if constexpr (values_are_valid<D>) {
     for (std::size_t k = 0; k < count; ++k) row[k] = static_cast<double>(d(i, first + k));
     return;
   }
   bool all_valid = true;
   for (std::size_t k = 0; k < count; ++k) {
-    const double v = static_cast<double>(d(i, first + k));
-    row[k] = v;
+    double v;
+    if constexpr (RowDissimilarity<D>)
+      v = row[k];
+    else
+      v = row[k] = static_cast<double>(d(i, first + k));
     all_valid &= (v >= 0.0) & (v <= std::numeric_limits<double>::max());
   }
   if (all_valid) return;
