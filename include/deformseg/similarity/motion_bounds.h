@@ -7,8 +7,8 @@
 /// for `d(i, j) = frame_dissimilarity(||a_i - b_j||^2, unit)`; the default policy's value is
 /// `1 - D`. Every bound here is a lower bound of the least mean over **all** warping paths from
 /// (0, 0) to (n - 1, m - 1), so it holds whatever path the tie rule picks and in both orientations
-/// (the paths of (B, A) are those of (A, B) transposed). Proofs: the manual's chapter "Alignment
-/// and similarity", section "Lower bounds of the dissimilarity".
+/// (the paths of (B, A) are those of (A, B) transposed). Proofs: each bound's comment, and
+/// @ref section_motion_bounds with what each prunes on real clips.
 #pragma once
 
 #include <deformseg/exceptions.h>
@@ -97,7 +97,9 @@ private:
 
 /// @brief Writes the summary of `view` with `chunks` chunk boxes into `out` (layout: see
 /// `Motion_summary_view`); for a store that writes summaries in place.
-/// @param chunks the chunk boxes, default 4.
+/// @param view the signatures, at least one row and one column.
+/// @param chunks the chunk boxes (`summarize` uses 4).
+/// @param out `summary_width(view.width, chunks)` floats.
 /// @throws invalid_input when the view has no row or no column, more than 2^24 rows, `chunks` is
 /// 0, or `out` does not hold exactly `summary_width(view.width, chunks)` floats.
 /// @par Complexity O(rows width) time, no allocation.
@@ -143,6 +145,7 @@ struct Motion_summary {
 };
 
 /// @brief The summary of `view` with `chunks` chunk boxes.
+/// @param view the signatures, at least one row and one column.
 /// @param chunks the chunk boxes, default 4.
 /// @throws invalid_input as `summarize_into`.
 /// @par Complexity O(rows width) time, `summary_width(width, chunks)` floats.
@@ -186,6 +189,8 @@ inline void require_same_width(const Motion_summary_view& a, const Motion_summar
 ///
 /// Every cell has `||a_i - b_j||^2 >= gap2` and the frame dissimilarity increases with it, so every
 /// cell, hence the mean along any path, is at least the bound.
+/// @param a the summary of A, the rows (the first argument of `compare`).
+/// @param b the summary of B, the columns; as wide as `a`.
 /// @param unit `frame_dissimilarity_unit(width, scale)` of the policy.
 /// @throws invalid_input when the widths differ.
 /// @par Complexity O(width), reads lo and hi only.
@@ -206,6 +211,9 @@ inline double lb_box(const Motion_summary_view& a, const Motion_summary_view& b,
 /// mean chi(s) = chi(mean s) >= chi(max(G, g0)). So the bound is at least `lb_box`. Each interval is
 /// widened by `2^-22 max(|lo|, |hi|)` each way, more than the rounding of mu (a double sum of at
 /// most 2^24 rows, then one float rounding) and of the interval's ends.
+/// @param a the summary of A, the rows (the first argument of `compare`).
+/// @param b the summary of B, the columns; as wide as `a`.
+/// @param unit `frame_dissimilarity_unit(width, scale)` of the policy.
 /// @throws invalid_input when the widths differ.
 /// @par Complexity O(width), reads lo, hi and mean only.
 inline double lb_mean(const Motion_summary_view& a, const Motion_summary_view& b, double unit) {
@@ -250,6 +258,9 @@ inline double lb_mean(const Motion_summary_view& a, const Motion_summary_view& b
 /// (m - 2) r_0) / m`; for n = m = 1, d00 exactly). The columns bound is the same with the roles of
 /// A and B swapped. Their max, not their sum: f is concave, so LB_Improved's two-pass sum does not
 /// carry over.
+/// @param a the summary of A, the rows (the first argument of `compare`).
+/// @param b the summary of B, the columns; as wide as `a`.
+/// @param unit `frame_dissimilarity_unit(width, scale)` of the policy.
 /// @throws invalid_input when the widths differ.
 /// @par Complexity O(chunks_A chunks_B width + width) time, O(chunks_A + chunks_B) memory; reads the
 /// first and last rows and the chunk boxes.
