@@ -121,7 +121,8 @@ TEST_CASE("summarize: bounds, mean, first and last rows and chunk boxes, dimensi
 TEST_CASE("summarize: fewer rows than chunks repeat the last row's box", "[motion_bounds]") {
   Eigen::MatrixXf m(2, 1);
   m << 3, 8;
-  const auto v = similarity::summarize(view_of(m)).view();
+  const auto s = similarity::summarize(view_of(m));
+  const auto v = s.view();
   REQUIRE(v.chunks() == 4);
   const float expected[] = {3, 8, 8, 8};
   for (std::size_t c = 0; c < 4; ++c) {
