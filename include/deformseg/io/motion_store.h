@@ -3,7 +3,8 @@
 /// back memory-mapped, so that a later search or matrix need not read and describe them again.
 /// `Motion_store` reads one; `Store_append` adds and replaces clips as one transaction. The format
 /// (a folder of `.npy` files and a JSON manifest, readable with NumPy alone) is described field by
-/// field in doc/store_format.md; `python/deformseg/store_format.py` is its second reader.
+/// field in doc/store_format.md (@ref store_format); `python/deformseg/store_format.py` is its
+/// second reader.
 #pragma once
 
 #include <deformseg/exceptions.h>
@@ -630,7 +631,8 @@ private:
 /// @endcode
 class Store_append {
 public:
-  /// @brief Starts an append to the store in `folder` (created when missing).
+  /// @brief Starts an append to the store in `folder`.
+  /// @param folder The store's folder; a missing or empty folder (created when missing) gets a new store.
   /// @param description_json The options the descriptions were made with, a JSON object: a new
   /// store records it; an existing one must hold the same members with the same values (numbers
   /// compared by value: 3e-3 equals 0.003).
