@@ -10,6 +10,9 @@ every clip's ranges; with ``verify=True`` also every file's and clip's CRC-32) a
     store = read_store("S")
     signatures, frames = store.clip(0)   # (R, W) float32 view, (R,) uint32
     store.clips["fps"]                   # the clip table, a structured array
+
+The file imports nothing of deformseg: copied alone beside a program, it reads stores on a machine
+without deformseg (``import deformseg.store_format`` loads the package, compiled module included).
 """
 import json
 import pathlib
