@@ -548,3 +548,32 @@ TEST_CASE("motion store: an append killed at any point leaves the store as it wa
     CHECK((name == "store.json" || name == "lock" || previous_table || listed.find('"' + name + '"') != std::string::npos));
   }
 }
+
+TEST_CASE("motion store: any one flipped byte of any file is caught with Verify::checksums") {
+  const fs::path folder = test::fresh_dir("motion_store/every_byte");
+  store_test_write(folder, 0, 3);
+  for (const std::string name : {"store.json", "clips-000001.npy", "strings-000001.npy", "signatures-000001.npy",
+                                 "frames-000001.npy", "summaries-000001.npy"}) {
+    const std::string original = store_test_bytes(folder / name);
+    std::size_t caught = 0;
+    for (std::size_t at = 0; at < original.size(); ++at) {
+      std::string bytes = original;
+      bytes[at] ^= 0x10;
+      store_test_put(folder / name, bytes);
+      const std::string error = store_test_open_error(folder, io::Verify::checksums);
+      INFO(name << ", byte " << at << ": " << error);
+      CHECK_THAT(error, Catch::StartsWith(folder.string()));
+      caught += !error.empty();
+    }
+    CHECK(caught == original.size());
+    // The manifest and the tables are checked without Verify::checksums too.
+    if (name == "store.json" || name.starts_with("clips-") || name.starts_with("strings-")) {
+      std::string bytes = original;
+      bytes[bytes.size() / 2] ^= 0x10;
+      store_test_put(folder / name, bytes);
+      CHECK_FALSE(store_test_open_error(folder).empty());
+    }
+    store_test_put(folder / name, original);
+  }
+  CHECK(store_test_open_error(folder, io::Verify::checksums).empty());
+}

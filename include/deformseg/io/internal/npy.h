@@ -134,6 +134,8 @@ private:
     while (!take(')')) {
       if (dims.size() == 2) bad("more than 2 dimensions");
       skip_space();
+      if (text_.size() - at_ > 1 && text_[at_] == '0' && text_[at_ + 1] >= '0' && text_[at_ + 1] <= '9')
+        bad("a dimension with a leading zero");  // as Python's literal syntax: one spelling per count
       std::uint64_t value = 0;
       const auto [end, error] = std::from_chars(text_.data() + at_, text_.data() + text_.size(), value);
       if (error != std::errc{}) bad("a dimension that is not a count below 2^64");
