@@ -11,6 +11,7 @@
 #include <deformseg/io/graphviz.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/motion_labels.h>
+#include <deformseg/io/motion_store.h>
 #include <deformseg/io/obj.h>
 #include <deformseg/io/off.h>
 #include <deformseg/io/ply.h>

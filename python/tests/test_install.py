@@ -15,7 +15,7 @@ def test_install_gives_an_importable_package(tmp_path):
                    check=True, capture_output=True)
     site = tmp_path / os.environ.get("DEFORMSEG_PYTHON_INSTALL_DIR", "lib/python3/dist-packages")
     installed = sorted(p.name for p in (site / "deformseg").iterdir())
-    assert {"__init__.py", "__init__.pyi", "_graphs.py", "py.typed"} <= set(installed)
+    assert {"__init__.py", "__init__.pyi", "_graphs.py", "store_format.py", "py.typed"} <= set(installed)
     assert any(name.startswith("_deformseg") and name.endswith(".so") for name in installed)
     environment = dict(os.environ, PYTHONPATH=str(site))
     done = subprocess.run([sys.executable, "-c", "import deformseg; print(deformseg.__file__)"],

@@ -63,7 +63,7 @@ def test_pip_install_builds_an_importable_package(tmp_path, grid):
     package, versions, files, segments = done.stdout.strip().splitlines()
     assert pathlib.Path(package).is_relative_to(venv), package  # installed, not the tree's
     assert versions == f"{deformseg.__version__} {deformseg.__version__}"
-    assert {"__init__.py", "__init__.pyi", "_graphs.py", "py.typed"} <= set(files.split())
+    assert {"__init__.py", "__init__.pyi", "_graphs.py", "store_format.py", "py.typed"} <= set(files.split())
     assert any(f.startswith("_deformseg.") and f.endswith(".so") for f in files.split()), files
     a = deformseg.Animation(faces, frames)
     assert np.array_equal(np.load(tmp_path / "strain.npy"), deformseg.strain(a))

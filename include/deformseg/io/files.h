@@ -16,7 +16,34 @@
 #include <string_view>
 #include <system_error>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 namespace deformseg::io {
+
+/// @brief How far `Atomic_file::commit` carries the file before it returns.
+enum class Durability {
+  /// @brief The file is renamed into place; its bytes are in the system's page cache, which a
+  /// killed process does not lose but a power failure may (the default: no wait for the disk).
+  page_cache,
+  /// @brief The file's bytes are flushed to the disk (fsync) before the rename, and the folder's
+  /// entry after it, so that after a power failure the path holds either the old or the new
+  /// file whole. What a commit point needs, such as a motion store's manifest (io/motion_store.h).
+  disk
+};
+
+namespace internal {
+/// Flushes the file or folder `path` to the disk (fsync); throws invalid_input naming it.
+inline void flush_to_disk(const std::filesystem::path& path, bool folder) {
+  const int fd = ::open(path.c_str(), (folder ? O_RDONLY | O_DIRECTORY : O_RDONLY) | O_CLOEXEC);
+  if (fd < 0 || ::fsync(fd) != 0) {
+    const std::string reason = last_system_error();
+    if (fd >= 0) ::close(fd);
+    throw invalid_input("cannot flush to the disk: " + reason, {.file = path.string()});
+  }
+  ::close(fd);
+}
+}  // namespace internal
 
 /// @brief A file written piece by piece, whole or not at all: the pieces go into a temporary file
 /// beside it, renamed over it by `commit`, so that an interrupted write (a full disk, a killed
@@ -68,15 +95,24 @@ public:
   }
 
   /// @brief Closes the file and puts it in the place of `path`.
-  /// @throws invalid_input naming the file and the system's reason; `path` is then as it was.
-  /// @par Complexity O(1).
-  void commit() {
+  /// @param durability `Durability::page_cache` (the default) returns once the file is renamed;
+  /// `Durability::disk` also flushes the file to the disk before the rename and its folder after
+  /// (POSIX fsync), so that the rename survives a power failure.
+  /// @throws invalid_input naming the file and the system's reason; `path` is then as it was
+  /// (with `Durability::disk`, unless only the folder's flush failed: the file is then in place).
+  /// @par Complexity O(1), plus the time the disk takes with `Durability::disk`.
+  void commit(Durability durability = Durability::page_cache) {
     guarded([&] { file_->close(); });
     if (!partial_) return;
+    if (durability == Durability::disk) guarded([&] { internal::flush_to_disk(*partial_, false); });
     std::error_code error;
     std::filesystem::rename(*partial_, path_, error);
     if (error) throw invalid_input("cannot write: " + error.message(), {.file = path_.string()});
     partial_.reset();
+    if (durability == Durability::disk) {
+      const std::filesystem::path folder = path_.has_parent_path() ? path_.parent_path() : ".";
+      internal::flush_to_disk(folder, true);
+    }
   }
 
 private:
