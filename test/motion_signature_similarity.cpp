@@ -642,7 +642,7 @@ TEST_CASE("Motion_signature_dissimilarity: within 2^-12 f + 2^-22 of the double 
   CHECK(d(0, 2) == 1.0);
 }
 
-TEST_CASE("Motion_signature_dissimilarity: real rows within 2^-12 f + 2^-22 of the reference; compare aligns them",
+TEST_CASE("Motion_signature_dissimilarity: real rows within 2^-12 f + 2^-22 of the reference, and compare aligns them",
           "[motion_signature]") {
   const similarity::Motion_signature_similarity<> policy;
   const auto a = policy.describe(tube(bend_hold_unbend));
