@@ -144,7 +144,8 @@ public:
     float lanes_out[lanes];
     const std::size_t start = chunk_start(j);
     compute(i, start, lanes_out);
-    return double(lanes_out[j - start]);
+    // j - start < lanes when j < cols(); the min tells the compiler, which cannot know it.
+    return double(lanes_out[std::min(j - start, lanes - 1)]);
   }
 
   /// @brief `out[k] = d(i, first + k)` for `k < count`, each value the very one `operator()` gives.
@@ -155,7 +156,8 @@ public:
       const std::size_t j = first + done, take = std::min(lanes, count - done);
       const std::size_t start = chunk_start(j);
       compute(i, start, lanes_out);
-      for (std::size_t k = 0; k < take; ++k) out[done + k] = double(lanes_out[j - start + k]);
+      const std::size_t lane = std::min(j - start, lanes - take);  // j - start, as in operator()
+      for (std::size_t k = 0; k < take; ++k) out[done + k] = double(lanes_out[lane + k]);
     }
   }
 
