@@ -704,3 +704,16 @@ TEST_CASE("similarity_significance: the shared dissimilarities give the values o
     CHECK(shared() == compared());  // the same draws
   }
 }
+
+TEST_CASE("Motion_signature_dissimilarity: shared clips' rows within 2^-12 f + 2^-22 of the reference",
+          "[motion_signature][data]") {
+  const auto dir = test::data_dir() / "characters";
+  const similarity::Motion_signature_similarity<> policy;
+  const auto walk = policy.describe(io::read_animation((dir / "Knight.glb").string(), {.clip = "Walking_A"}));
+  const auto run = policy.describe(io::read_animation((dir / "RobotExpressive.glb").string(), {.clip = "Running"}));
+  const double unit = similarity::frame_dissimilarity_unit(std::size_t(walk.signatures.cols()), policy.scale);
+  WARN("Knight's Walking_A against the robot's Running: largest error "
+       << check_kernel_accuracy(walk.signatures, run.signatures, unit) << " of the reference");
+  check_kernel_accuracy(walk.signatures, walk.signatures, unit);
+  CHECK(policy.compare(walk, walk).value == 1.0);
+}
