@@ -1,16 +1,20 @@
 // Tests of motion_signatures.h and similarity/motion_signature_similarity.h: the weighted quantiles
 // against brute force, exact signatures of a uniform motion, invariances (a moved, rotated, scaled
 // copy), rigid parts on a joint, thread independence, a time-shifted cyclic motion, a motion inside
-// a longer one, tube rankings, errors, and [data] figures on the shared characters.
+// a longer one, tube rankings, errors, [data] figures on the shared characters; and the float
+// comparison kernel (motion_signature_kernel.h): one value per cell, its accuracy, the significance's
+// shared dissimilarities.
 #include "similarity_tubes.h"
 #include "test_support.h"
 
+#include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/subsequence_dtw.h>
 #include <deformseg/similarity/find_motion.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/signatures/motion_signatures.h>
+#include <deformseg/similarity/motion_signature_kernel.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/similarity/self_similarity_matching.h>
 #include <deformseg/similarity/significance.h>
@@ -21,10 +25,14 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -148,7 +156,17 @@ TEST_CASE("motion_signature_similarity: an animation against itself and a moved,
           "[motion_signature]") {
   const similarity::Motion_signature_similarity<> policy;
   const auto [a, b] = check_moved_copy_is_one(policy, Eigen::Vector3d::UnitY());
-  CHECK((policy.describe(a).signatures - policy.describe(b).signatures).cwiseAbs().maxCoeff() < 1e-9);
+  const Eigen::MatrixXd exact_a = signatures::motion_signatures(a), exact_b = signatures::motion_signatures(b);
+  CHECK((exact_a - exact_b).cwiseAbs().maxCoeff() < 1e-9);
+  // The descriptions keep those signatures rounded to float: as close, or one float apart where
+  // the two doubles fall either side of a rounding boundary.
+  const Eigen::MatrixXf kept_a = policy.describe(a).signatures, kept_b = policy.describe(b).signatures;
+  CHECK(kept_a == exact_a.cast<float>());
+  for (Eigen::Index k = 0; k < kept_a.size(); ++k) {
+    const float magnitude = std::abs(kept_a(k));
+    CHECK(std::abs(double(kept_a(k)) - double(kept_b(k))) <=
+          1e-9 + double(std::nextafter(magnitude, INFINITY) - magnitude));
+  }
   // Without an up direction, turned about any axis.
   similarity::Motion_signature_similarity<> directionless;
   directionless.signatures.up = std::nullopt;
@@ -330,8 +348,8 @@ TEST_CASE("similarity_significance: ordered frames stand out from shuffled ones"
   CHECK_THROWS_AS(similarity::similarity_significance(policy, a, same, 1, again), invalid_input);
   // A description in another order: row t is row order[t].
   const std::vector<std::size_t> order{2, 0, 1};
-  const Eigen::MatrixXd three = a.signatures.topRows(3);
-  const Eigen::MatrixXd reordered = similarity::reordered_frames(three, std::span<const std::size_t>(order));
+  const Eigen::MatrixXf three = a.signatures.topRows(3);
+  const Eigen::MatrixXf reordered = similarity::reordered_frames(three, std::span<const std::size_t>(order));
   CHECK(reordered.row(0) == three.row(2));
   CHECK(reordered.row(1) == three.row(0));
   CHECK(similarity::frame_count(reordered) == 3);
@@ -420,7 +438,7 @@ TEST_CASE("motion_signature_similarity: a tube's motion sampled at 15, 30 or 60 
   CHECK(policy.describe(at_15).signatures.rows() == Eigen::Index(at_30.num_frames()));
   CHECK(policy.describe(at_60).signatures.rows() == Eigen::Index(at_60.num_frames()));
   // At 30 fps the signatures are those of the frames themselves.
-  CHECK(policy.describe(at_30).signatures == signatures::motion_signatures(at_30));
+  CHECK(policy.describe(at_30).signatures == signatures::motion_signatures(at_30).cast<float>());
   CHECK_THROWS_WITH(at_15.set_frames_per_second(0), Catch::Contains("frame rate"));
 }
 
@@ -502,4 +520,200 @@ TEST_CASE("find_motion: copies inside the shared animations are found at their f
     const auto samba = io::read_frame_sequence((test::unpacked("samba/samba.tar.xz") / "samba").string());
     check_found(frame_range(samba, 50, 59), samba, 50);
   }
+}
+
+// --- Issue 27: the float comparison kernel, one value per cell however it is reached. ---
+
+namespace {
+
+/// `rows x width` signatures of normal values times `spread`, drawn from `random`.
+Eigen::MatrixXf random_signatures(std::size_t rows, std::size_t width, float spread, std::mt19937& random) {
+  std::normal_distribution<float> normal(0, spread);
+  Eigen::MatrixXf s{Eigen::Index(rows), Eigen::Index(width)};
+  for (Eigen::Index k = 0; k < s.size(); ++k) s(k) = normal(random);
+  return s;
+}
+
+similarity::Motion_signature_view view_of(const Eigen::MatrixXf& s) {
+  return {s.data(), std::size_t(s.rows()), std::size_t(s.cols())};
+}
+
+/// Whether two doubles have the same bits (== would let 0 equal -0).
+bool same_bits(double x, double y) { return std::bit_cast<std::uint64_t>(x) == std::bit_cast<std::uint64_t>(y); }
+
+/// The squared distance of row i of `a` and row j of `b`, in double (exact but for the last bits).
+double exact_squared_distance(const Eigen::MatrixXf& a, std::size_t i, const Eigen::MatrixXf& b, std::size_t j) {
+  return (a.row(Eigen::Index(i)).cast<double>() - b.row(Eigen::Index(j)).cast<double>()).squaredNorm();
+}
+
+/// Checks the kernel's contract with the search's lower bounds for every cell of (a, b): within
+/// 2^-12 f + 2^-22 of the double reference f, in [0, 1]; returns the largest error relative to f.
+double check_kernel_accuracy(const Eigen::MatrixXf& a, const Eigen::MatrixXf& b, double unit) {
+  const similarity::Motion_signature_dissimilarity d(view_of(a), view_of(b), unit);
+  std::vector<double> row(d.cols());
+  double worst = 0;
+  std::size_t failures = 0;
+  for (std::size_t i = 0; i < d.rows(); ++i) {
+    d.row(i, 0, d.cols(), row.data());
+    for (std::size_t j = 0; j < d.cols(); ++j) {
+      const double f = similarity::frame_dissimilarity(exact_squared_distance(a, i, b, j), unit);
+      const double error = std::abs(row[j] - f);
+      const bool ok = row[j] >= 0 && row[j] <= 1 && error <= std::ldexp(f, -12) + std::ldexp(1.0, -22);
+      if (!ok && ++failures <= 5)
+        FAIL_CHECK("cell (" << i << ", " << j << "): kernel " << row[j] << ", reference " << f);
+      if (f > 0) worst = std::max(worst, error / f);
+    }
+  }
+  CHECK(failures == 0);
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("Motion_signature_dissimilarity: a cell has one value, read alone or within any row", "[motion_signature]") {
+  std::mt19937 random(27);
+  const double unit = similarity::frame_dissimilarity_unit(64, 1.77);
+  // Lengths about the kernel's 16 columns: padded, exact, one over, several chunks and a tail.
+  for (const std::size_t m : {1, 5, 15, 16, 17, 37, 40})
+    for (const std::size_t width : {1, 7, 64}) {
+      const std::size_t n = 1 + (m * 7) % 19;
+      const Eigen::MatrixXf a = random_signatures(n, width, 1.5f, random), b = random_signatures(m, width, 1.5f, random);
+      const similarity::Motion_signature_dissimilarity d(view_of(a), view_of(b), unit), back(view_of(b), view_of(a), unit);
+      REQUIRE(d.rows() == n);
+      REQUIRE(d.cols() == m);
+      std::vector<double> row(m);
+      std::size_t mismatches = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t first = 0; first < m; ++first)
+          for (std::size_t count = 1; first + count <= m; count += 1 + count / 3) {
+            d.row(i, first, count, row.data());
+            for (std::size_t k = 0; k < count; ++k) mismatches += !same_bits(row[k], d(i, first + k));
+          }
+      CHECK(mismatches == 0);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < m; ++j) {
+          CHECK(same_bits(d(i, j), back(j, i)));  // (a, b) and (b, a) agree
+          CHECK((d(i, j) > 0 && d(i, j) < 1));
+        }
+    }
+  // Equal rows give exactly 0, wherever they fall in a chunk.
+  const Eigen::MatrixXf a = random_signatures(40, 64, 2.0f, random);
+  const similarity::Motion_signature_dissimilarity self(view_of(a), view_of(a), unit);
+  std::vector<double> row(40);
+  for (std::size_t i = 0; i < 40; ++i) {
+    self.row(i, 0, 40, row.data());
+    CHECK(same_bits(row[i], 0.0));
+    CHECK(same_bits(self(i, i), 0.0));
+  }
+  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(view_of(a), view_of(a.leftCols(63)), unit),
+                    Catch::Contains("64 and 63"));
+  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(view_of(a), view_of(a), 0.0), Catch::Contains("unit"));
+  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(view_of(a), view_of(a), 1e300), Catch::Contains("unit"));
+}
+
+TEST_CASE("Motion_signature_dissimilarity: within 2^-12 f + 2^-22 of the double reference f, in [0, 1]",
+          "[motion_signature]") {
+  std::mt19937 random(12);
+  const double unit = similarity::frame_dissimilarity_unit(64, 1.77);
+  // Random rows at distances from tiny to far beyond where the value rounds to 1.
+  for (const float spread : {1e-6f, 1e-3f, 0.1f, 1.0f, 3.0f, 30.0f, 1e4f}) {
+    const Eigen::MatrixXf a = random_signatures(23, 64, spread, random), b = random_signatures(41, 64, spread, random);
+    const double worst = check_kernel_accuracy(a, b, unit);
+    WARN("rows spread " << spread << ": largest error " << worst << " of the reference");
+  }
+  // Each reference value f = 1 - exp(-x), x = s unit from 2e-35 to 60,000, from one dimension:
+  // s = b^2, exact but for one rounding; relatively within a few float roundings.
+  const Eigen::MatrixXf zero = Eigen::MatrixXf::Zero(1, 1);
+  std::vector<float> distances;
+  for (double e = -40; e < 5.5; e += 0.001) distances.push_back(float(std::exp(e) / std::sqrt(unit)));
+  distances.push_back(0.0f);
+  const Eigen::MatrixXf line = Eigen::Map<const Eigen::MatrixXf>(distances.data(), Eigen::Index(distances.size()), 1);
+  CHECK(check_kernel_accuracy(zero, line, unit) < 4e-7);
+  // Rows near one another, the difference in a few dimensions (tiny s, where 1 - exp would fail).
+  Eigen::MatrixXf near = random_signatures(30, 64, 1.0f, random), moved = near;
+  for (Eigen::Index r = 0; r < near.rows(); ++r) moved(r, r % 64) = std::nextafter(near(r, r % 64), INFINITY);
+  check_kernel_accuracy(near, moved, unit);
+  // Infinite and NaN distances give 1.
+  Eigen::MatrixXf huge(3, 1);
+  huge << 1e30f, INFINITY, NAN;
+  const similarity::Motion_signature_dissimilarity d(view_of(zero), view_of(huge), unit);
+  CHECK(d(0, 0) == 1.0);
+  CHECK(d(0, 1) == 1.0);
+  CHECK(d(0, 2) == 1.0);
+}
+
+TEST_CASE("Motion_signature_dissimilarity: real rows within 2^-12 f + 2^-22 of the reference, and compare aligns them",
+          "[motion_signature]") {
+  const similarity::Motion_signature_similarity<> policy;
+  const auto a = policy.describe(tube(bend_hold_unbend));
+  const auto b = policy.describe(tube(other_timing, other_tube));
+  const double unit = similarity::frame_dissimilarity_unit(std::size_t(a.signatures.cols()), policy.scale);
+  WARN("tube rows: largest error " << check_kernel_accuracy(a.signatures, b.signatures, unit) << " of the reference");
+  check_kernel_accuracy(a.signatures, a.signatures, unit);
+  // The matrix is the lazy dissimilarity's values, and compare aligns exactly them.
+  const Eigen::MatrixXd matrix = policy.frame_dissimilarities(a, b);
+  const auto lazy = policy.dissimilarity(a, b);
+  for (Eigen::Index i = 0; i < matrix.rows(); ++i)
+    for (Eigen::Index j = 0; j < matrix.cols(); ++j) CHECK(same_bits(matrix(i, j), lazy(std::size_t(i), std::size_t(j))));
+  const similarity::Similarity lazily = policy.compare(a, b);
+  const alignment::Alignment aligned =
+      alignment::Dtw{}.align(std::size_t(matrix.rows()), std::size_t(matrix.cols()), alignment::matrix_dissimilarity(matrix));
+  CHECK(same_bits(lazily.score, aligned.score));
+  CHECK(same_bits(lazily.value, 1.0 - aligned.score / double(aligned.pairs.size())));
+  CHECK(policy.compare(a, a).value == 1.0);
+  CHECK(similarity::view(a).values == a.signatures.data());
+  CHECK(similarity::view(a).rows == std::size_t(a.signatures.rows()));
+  CHECK(similarity::view(a).width == 64);
+}
+
+namespace {
+
+/// Motion_signature_similarity seen through compare alone: similarity_significance then compares
+/// every shuffled copy, as it did before the shared dissimilarities.
+struct Compare_only {
+  similarity::Motion_signature_similarity<> policy;
+  using Description = similarity::Motion_signature_description;
+  similarity::Similarity compare(const Description& a, const Description& b) const { return policy.compare(a, b); }
+};
+
+}  // namespace
+
+TEST_CASE("similarity_significance: the shared dissimilarities give the values of compare on each shuffled copy",
+          "[motion_signature]") {
+  static_assert(similarity::ReorderingComparison<similarity::Motion_signature_similarity<>,
+                                                 similarity::Motion_signature_description>);
+  static_assert(!similarity::ReorderingComparison<Compare_only, similarity::Motion_signature_description>);
+  const similarity::Motion_signature_similarity<> policy;
+  const auto a = policy.describe(tube(bend_hold_unbend));
+  auto b = policy.describe(tube(bend_hold_unbend, other_tube));
+  std::mt19937 random(5);
+  for (const std::size_t rows : {std::size_t(b.signatures.rows()), std::size_t(11)}) {  // 11: a padded b
+    b.signatures.conservativeResize(Eigen::Index(rows), Eigen::NoChange);
+    b.frames.resize(rows);
+    const auto comparison = policy.reordering_comparison(a, b);
+    std::vector<std::size_t> order(rows);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    for (int copy = 0; copy < 8; ++copy) {
+      const std::span<const std::size_t> o(order);
+      CHECK(same_bits(comparison(o), policy.compare(a, similarity::reordered_frames(b, o)).value));
+      std::shuffle(order.begin(), order.end(), random);
+    }
+    std::mt19937 shared(9), compared(9);
+    const double z = similarity::similarity_significance(policy, a, b, 20, shared);
+    CHECK(same_bits(z, similarity::similarity_significance(Compare_only{policy}, a, b, 20, compared)));
+    CHECK(shared() == compared());  // the same draws
+  }
+}
+
+TEST_CASE("Motion_signature_dissimilarity: shared clips' rows within 2^-12 f + 2^-22 of the reference",
+          "[motion_signature][data]") {
+  const auto dir = test::data_dir() / "characters";
+  const similarity::Motion_signature_similarity<> policy;
+  const auto walk = policy.describe(io::read_animation((dir / "Knight.glb").string(), {.clip = "Walking_A"}));
+  const auto run = policy.describe(io::read_animation((dir / "RobotExpressive.glb").string(), {.clip = "Running"}));
+  const double unit = similarity::frame_dissimilarity_unit(std::size_t(walk.signatures.cols()), policy.scale);
+  WARN("Knight's Walking_A against the robot's Running: largest error "
+       << check_kernel_accuracy(walk.signatures, run.signatures, unit) << " of the reference");
+  check_kernel_accuracy(walk.signatures, walk.signatures, unit);
+  CHECK(policy.compare(walk, walk).value == 1.0);
 }

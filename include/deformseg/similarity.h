@@ -6,6 +6,7 @@
 #include <deformseg/similarity/evolving_graph_similarity.h>
 #include <deformseg/similarity/find_motion.h>
 #include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/similarity/motion_signature_kernel.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/similarity/motion_signature_view.h>
 #include <deformseg/similarity/motion_similarity.h>

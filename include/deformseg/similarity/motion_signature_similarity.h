@@ -11,6 +11,8 @@
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/signatures/motion_signatures.h>
+#include <deformseg/similarity/motion_signature_kernel.h>
+#include <deformseg/similarity/motion_signature_view.h>
 #include <deformseg/similarity/significance.h>
 #include <deformseg/similarity/similarity.h>
 
@@ -31,8 +33,10 @@ namespace deformseg::similarity {
 /// frame nearest its instant.
 struct Motion_signature_description {
   /// @brief One signature per row, at increasing instants: `R x (lags x quantiles)`, twice as wide
-  /// with an up direction.
-  Eigen::MatrixXd signatures;
+  /// with an up direction. In float, rounded once from the double values `motion_signatures_at`
+  /// computes, and column-major (each dimension's R values contiguous): the layout of
+  /// `Motion_signature_view` (see `view`), which the comparison kernel reads.
+  Eigen::MatrixXf signatures;
   /// @brief Per row, the animation's frame nearest its instant: non-decreasing, from 0 to the last
   /// frame, every frame at least once.
   std::vector<std::size_t> frames;
@@ -48,6 +52,13 @@ inline Motion_signature_description reordered_frames(const Motion_signature_desc
 
 /// @brief The number of rows of `d` (see `similarity_significance`).
 inline std::size_t frame_count(const Motion_signature_description& d) { return std::size_t(d.signatures.rows()); }
+
+/// @brief The signatures of `d` as a view: its rows, width and floats, which `d` keeps (it must
+/// outlive the view and not be resized meanwhile).
+/// @par Complexity O(1).
+inline Motion_signature_view view(const Motion_signature_description& d) {
+  return {d.signatures.data(), std::size_t(d.signatures.rows()), std::size_t(d.signatures.cols())};
+}
 
 namespace internal {
 
@@ -83,6 +94,36 @@ inline std::vector<std::pair<std::size_t, std::size_t>> pairs_of_frames(
   return out;
 }
 
+// The columns of an n x m matrix of valid dissimilarities in the order `order` gives: d(i, t) =
+// matrix(i, order[t]). Refers to both.
+struct Reordered_columns {
+  const Eigen::MatrixXd& matrix;
+  std::span<const std::size_t> order;
+  static constexpr bool values_are_valid = true;
+  double operator()(std::size_t i, std::size_t t) const { return matrix(Eigen::Index(i), Eigen::Index(order[t])); }
+};
+
+// What Motion_signature_similarity::reordering_comparison returns: the frame dissimilarities of
+// a and b computed once, and the alignment and normalization to score b's reorderings with.
+template <class Alignment, class Normalization>
+class Reordering_comparison {
+public:
+  Reordering_comparison(Eigen::MatrixXd d, const Alignment& alignment, const Normalization& normalization)
+      : d_(std::move(d)), alignment_(alignment), normalization_(normalization) {}
+
+  // The value of a against b with its rows in the order `order`.
+  double operator()(std::span<const std::size_t> order) const {
+    const std::size_t n = std::size_t(d_.rows()), m = std::size_t(d_.cols());
+    const alignment::Alignment aligned = alignment_.align(n, m, Reordered_columns{d_, order});
+    return normalization_(alignment_, aligned, n, m);
+  }
+
+private:
+  Eigen::MatrixXd d_;
+  Alignment alignment_;
+  Normalization normalization_;
+};
+
 }  // namespace internal
 
 /// @brief Similarity policy (models `SimilarityPolicy`): each frame of an animation becomes its
@@ -90,7 +131,7 @@ inline std::vector<std::pair<std::size_t, std::size_t>> pairs_of_frames(
 /// lags of 1, 4, 16 and 128 thirtieths of a second, as logarithms, and of their rates up or down,
 /// measured in seconds at the animation's frame rate), two frames are
 /// compared by the root mean square difference r of their signatures, made a dissimilarity
-/// `1 - exp(-(r / scale)^2)` in [0, 1), and the two frame sequences are aligned by `alignment`
+/// `1 - exp(-(r / scale)^2)` in [0, 1], and the two frame sequences are aligned by `alignment`
 /// (dynamic time warping by default); `normalization` makes the value, for DTW one minus the mean
 /// dissimilarity along the warping path.
 ///
@@ -112,6 +153,12 @@ inline std::vector<std::pair<std::size_t, std::size_t>> pairs_of_frames(
 /// @par Complexity `describe`: `motion_signatures`' O(R V L log k) for R rows (the T frames, or
 /// duration x `signature_rate` + 1 rows for an animation sampled more slowly); `compare`:
 /// O(Ra Rb L k) for the row dissimilarities plus the alignment's O(Ra Rb).
+/// @par Precision The signatures are computed in double and kept in float; the frame
+/// dissimilarities are computed in float by one vectorised kernel (`Motion_signature_dissimilarity`),
+/// the alignment and the value in double. Values are within about 1e-6 of an all-double
+/// computation (chapter 7), identical however a comparison is reached (`compare`,
+/// `similarity_matrix`, `frame_dissimilarities`, the significance's shuffled copies), and may differ
+/// in the last bits between builds for other instruction sets.
 template <alignment::AlignmentPolicy Alignment = alignment::Dtw, class Normalization = Best_score_normalization>
 struct Motion_signature_similarity {
   /// @brief The lags, quantiles, floor and up direction of the signatures. Default:
@@ -163,39 +210,70 @@ struct Motion_signature_similarity {
     const std::vector<double> instants = internal::signature_instants(frames, frames_per_second, signature_rate);
     Description d;
     d.signatures = signatures::motion_signatures_at(positions, weights, signatures, frames_per_second,
-                                           std::span<const double>(instants));
+                                                    std::span<const double>(instants))
+                       .template cast<float>();
     d.frames = internal::nearest_frames(instants, frames_per_second, frames);
     return d;
   }
 
-  /// @brief The `Ra x Rb` dissimilarities in [0, 1) of the descriptions' rows (their frames, unless
-  /// an animation is sampled below `signature_rate`): `1 - exp(-(r / scale)^2)`, r the RMS
-  /// difference of two rows' signatures.
-  /// @throws invalid_input when the signatures have different widths or the scale is not positive.
-  Eigen::MatrixXd frame_dissimilarities(const Description& described_a, const Description& described_b) const {
-    const Eigen::MatrixXd &a = described_a.signatures, &b = described_b.signatures;
-    if (a.cols() != b.cols() || a.cols() == 0)
-      throw invalid_input("Motion_signature_similarity: signatures of " + std::to_string(a.cols()) + " and " +
-                          std::to_string(b.cols()) + " values per frame");
+  /// @brief The dissimilarities of the rows of `described_a` and those of `described_b` (their
+  /// frames, unless an animation is sampled below `signature_rate`), computed when asked:
+  /// `1 - exp(-(r / scale)^2)` in [0, 1], r the RMS difference of two rows' signatures, by the
+  /// float kernel of `Motion_signature_dissimilarity` (which refers to the descriptions: they must
+  /// outlive it).
+  /// @throws invalid_input when the signatures have different widths or none, or the scale is not
+  /// positive.
+  /// @par Complexity O(1), plus a copy of `described_b`'s signatures when it has fewer than 16 rows.
+  Motion_signature_dissimilarity dissimilarity(const Description& described_a, const Description& described_b) const {
+    const Motion_signature_view a = view(described_a), b = view(described_b);
+    if (a.width != b.width || a.width == 0)
+      throw invalid_input("Motion_signature_similarity: signatures of " + std::to_string(a.width) + " and " +
+                          std::to_string(b.width) + " values per frame");
     if (!(scale > 0)) throw invalid_input("Motion_signature_similarity: the scale must be positive");
-    // Differences, not a Gram matrix: equal frames give exactly 0, so a copy gives exactly 1.
-    const double unit = 1.0 / (double(a.cols()) * scale * scale);
-    Eigen::MatrixXd d(a.rows(), b.rows());
-    for (Eigen::Index j = 0; j < b.rows(); ++j)
-      for (Eigen::Index i = 0; i < a.rows(); ++i) d(i, j) = 1.0 - std::exp(-(a.row(i) - b.row(j)).squaredNorm() * unit);
-    return d;
+    return Motion_signature_dissimilarity(a, b, frame_dissimilarity_unit(a.width, scale));
+  }
+
+  /// @brief The `Ra x Rb` dissimilarities in [0, 1] of the descriptions' rows as a matrix: entry
+  /// (i, j) is `dissimilarity(described_a, described_b)(i, j)`, the very value `compare` aligns.
+  /// @throws invalid_input as `dissimilarity`.
+  /// @par Complexity O(Ra Rb width) time, O(Ra Rb) memory.
+  Eigen::MatrixXd frame_dissimilarities(const Description& described_a, const Description& described_b) const {
+    const Motion_signature_dissimilarity d = dissimilarity(described_a, described_b);
+    Eigen::MatrixXd out(Eigen::Index(d.rows()), Eigen::Index(d.cols()));
+    Eigen::RowVectorXd row(out.cols());
+    for (std::size_t i = 0; i < d.rows(); ++i) {
+      d.row(i, 0, d.cols(), row.data());
+      out.row(Eigen::Index(i)) = row;
+    }
+    return out;
   }
 
   /// @brief The similarity of two animations from their signatures: the alignment of their rows
-  /// under `frame_dissimilarities`, its pairs given as the animations' frames (`Description::frames`,
-  /// repeats dropped).
-  /// @throws invalid_input as `frame_dissimilarities`.
+  /// under `dissimilarity` (read a cell or a row at a time, no matrix kept), its pairs given as the
+  /// animations' frames (`Description::frames`, repeats dropped).
+  /// @throws invalid_input as `dissimilarity`.
+  /// @par Complexity O(Ra Rb width) for the dissimilarities plus the alignment's O(Ra Rb).
   Similarity compare(const Description& a, const Description& b) const {
-    Similarity result = internal::aligned_similarity(alignment, normalization, frame_dissimilarities(a, b),
+    Similarity result = internal::aligned_similarity(alignment, normalization, frame_count(a), frame_count(b),
+                                                     dissimilarity(a, b),
                                                      "area-weighted distributions of the vertices' speeds and "
                                                      "vertical rates at several lags, frames aligned in time");
     result.alignment = internal::pairs_of_frames(result.alignment, a.frames, b.frames);
     return result;
+  }
+
+  /// @brief What `similarity_significance` scores the shuffled copies of `b` with (see
+  /// `ReorderingComparison`): a function object `c` such that `c(order)` is
+  /// `compare(a, reordered_frames(b, order)).value` bit for bit, which computes the `Ra x Rb`
+  /// frame dissimilarities once, here, and for each order only the alignment of their columns
+  /// reordered (a reordered row of b has the very dissimilarities it had in place, the kernel's
+  /// values depending on the two rows alone).
+  /// @throws invalid_input as `dissimilarity`.
+  /// @par Complexity here O(Ra Rb width), O(Ra Rb) memory (kept by `c`); each `c(order)` the
+  /// alignment's O(Ra Rb).
+  internal::Reordering_comparison<Alignment, Normalization> reordering_comparison(const Description& a,
+                                                                                  const Description& b) const {
+    return {frame_dissimilarities(a, b), alignment, normalization};
   }
 };
 

@@ -51,6 +51,17 @@ concept ReorderableDescription = requires(const Description& d, std::span<const 
   { reordered_frames(d, order) } -> std::convertible_to<Description>;
 };
 
+/// @brief A policy that scores many reorderings of one description against another faster than
+/// one `compare` each: `p.reordering_comparison(a, b)` returns a function object `c` such that
+/// `c(order)` is `p.compare(a, reordered_frames(b, order)).value` bit for bit, its shared work
+/// (such as the frame dissimilarities, which a reordering only permutes) done once.
+/// `similarity_significance` uses it when the policy offers it (`Motion_signature_similarity`
+/// does); otherwise it compares each shuffled copy.
+template <class Policy, class Description>
+concept ReorderingComparison = requires(const Policy& p, const Description& d, std::span<const std::size_t> order) {
+  { p.reordering_comparison(d, d)(order) } -> std::convertible_to<double>;
+};
+
 /// @brief The significance of `policy.compare(a, b).value`: its z-score against `copies` copies of
 /// `b` whose frames are shuffled by `random`, `(value - mean) / standard deviation` of theirs.
 ///
@@ -64,7 +75,9 @@ concept ReorderableDescription = requires(const Description& d, std::span<const 
 /// @tparam Random a generator of 32 or 64 uniform bits: `std::mt19937` or `std::mt19937_64`.
 /// @return the z-score; 0 when the copies all score the same (no spread).
 /// @throws invalid_input when `copies < 2`, or as `compare`.
-/// @par Complexity `copies + 1` compares.
+/// @par Complexity `copies + 1` compares; with a policy that models `ReorderingComparison`, one
+/// compare, one `reordering_comparison` and `copies` of its calls (for `Motion_signature_similarity`,
+/// the frame dissimilarities once and `copies + 1` alignments: the values are the same).
 template <class Policy, ReorderableDescription Description, deformseg::internal::Bits_generator Random>
 double similarity_significance(const Policy& policy, const Description& a, const Description& b, std::size_t copies,
                                Random& random) {
@@ -73,10 +86,16 @@ double similarity_significance(const Policy& policy, const Description& a, const
   std::vector<std::size_t> order(frame_count(b));
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::vector<double> shuffled;
-  for (std::size_t c = 0; c < copies; ++c) {
-    deformseg::internal::shuffle(order.begin(), order.end(), random);
-    shuffled.push_back(policy.compare(a, reordered_frames(b, std::span<const std::size_t>(order))).value);
-  }
+  const auto score_copies = [&](const auto& value_of) {
+    for (std::size_t c = 0; c < copies; ++c) {
+      deformseg::internal::shuffle(order.begin(), order.end(), random);
+      shuffled.push_back(value_of(std::span<const std::size_t>(order)));
+    }
+  };
+  if constexpr (ReorderingComparison<Policy, Description>)
+    score_copies(policy.reordering_comparison(a, b));
+  else
+    score_copies([&](std::span<const std::size_t> o) { return policy.compare(a, reordered_frames(b, o)).value; });
   const double mean = std::accumulate(shuffled.begin(), shuffled.end(), 0.0) / double(copies);
   double square = 0;
   for (double v : shuffled) square += (v - mean) * (v - mean);

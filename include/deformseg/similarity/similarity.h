@@ -91,20 +91,27 @@ struct Best_score_normalization {
 
 namespace internal {
 
-/// The similarity of two frame sequences under the `n x m` frame dissimilarities `d`: aligned by
-/// `alignment`, the score made a value by `normalization`; what the per-frame policies' `compare`
-/// shares.
-template <alignment::AlignmentPolicy Alignment, class Normalization>
-Similarity aligned_similarity(const Alignment& alignment, const Normalization& normalization, const Eigen::MatrixXd& d,
-                              std::string compared) {
-  const std::size_t n = std::size_t(d.rows()), m = std::size_t(d.cols());
-  alignment::Alignment aligned = alignment.align(n, m, alignment::matrix_dissimilarity(d));
+/// The similarity of two frame sequences of `n` and `m` frames under the frame dissimilarity `d`
+/// (an `alignment::Dissimilarity`): aligned by `alignment`, the score made a value by
+/// `normalization`; what the per-frame policies' `compare` shares.
+template <alignment::AlignmentPolicy Alignment, class Normalization, alignment::Dissimilarity D>
+Similarity aligned_similarity(const Alignment& alignment, const Normalization& normalization, std::size_t n,
+                              std::size_t m, const D& d, std::string compared) {
+  alignment::Alignment aligned = alignment.align(n, m, d);
   Similarity result;
   result.value = normalization(alignment, aligned, n, m);
   result.score = aligned.score;
   result.alignment = std::move(aligned.pairs);
   result.compared = std::move(compared);
   return result;
+}
+
+/// As above, under the `n x m` frame dissimilarities `d`.
+template <alignment::AlignmentPolicy Alignment, class Normalization>
+Similarity aligned_similarity(const Alignment& alignment, const Normalization& normalization, const Eigen::MatrixXd& d,
+                              std::string compared) {
+  return aligned_similarity(alignment, normalization, std::size_t(d.rows()), std::size_t(d.cols()),
+                            alignment::matrix_dissimilarity(d), std::move(compared));
 }
 
 }  // namespace internal
