@@ -6,10 +6,12 @@
 #include <deformseg/similarity/evolving_graph_similarity.h>
 #include <deformseg/similarity/find_motion.h>
 #include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/similarity/motion_collection.h>
 #include <deformseg/similarity/motion_signature_kernel.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/similarity/motion_signature_view.h>
 #include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/similarity/nearest_motions.h>
 #include <deformseg/similarity/policy_choice.h>
 #include <deformseg/similarity/segment_costs.h>
 #include <deformseg/similarity/self_similarity_matching.h>

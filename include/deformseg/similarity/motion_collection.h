@@ -1,0 +1,82 @@
+/// @file similarity/motion_collection.h
+/// @brief The `MotionCollection` concept, what the nearest-motion search reads (each clip's
+/// signatures and summary, by index), and `Motion_collection`, its model over descriptions held in
+/// memory; `io::Motion_store` models it over a store on disk.
+#pragma once
+
+#include <deformseg/exceptions.h>
+#include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/similarity/motion_signature_similarity.h>
+#include <deformseg/similarity/motion_signature_view.h>
+
+#include <concepts>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace deformseg::similarity {
+
+/// @brief A numbered set of described clips, as the search reads it: `c.size()` clips, clip i's
+/// signatures as `c.view(i)` (a `Motion_signature_view`, every clip of the same width) and its
+/// summary as `c.summary(i)` (a `Motion_summary_view` of `summarize(c.view(i))`, made once when
+/// the clip was added). Views stay valid while the collection lives and is not changed.
+/// See @ref MotionCollectionConcept.
+template <class C>
+concept MotionCollection = requires(const C& c, std::size_t i) {
+  { c.size() } -> std::convertible_to<std::size_t>;
+  { c.view(i) } -> std::same_as<Motion_signature_view>;
+  { c.summary(i) } -> std::convertible_to<Motion_summary_view>;
+};
+
+/// @brief A `MotionCollection` of descriptions held in memory: the descriptions of
+/// `Motion_signature_similarity` (its default options, or any of one width), each summarised
+/// once as it is added.
+/// @par Example
+/// @include nearest_motions.cpp
+class Motion_collection {
+public:
+  /// @brief An empty collection.
+  Motion_collection() = default;
+
+  /// @brief The collection of `descriptions`, in their order.
+  /// @throws invalid_input as `add`.
+  /// @par Complexity O(R W) per description of R rows and W values per row.
+  explicit Motion_collection(std::vector<Motion_signature_description> descriptions) {
+    descriptions_.reserve(descriptions.size());
+    for (auto& d : descriptions) add(std::move(d));
+  }
+
+  /// @brief Adds `description` as clip `size()`.
+  /// @throws invalid_input when it has no row, or not the width of the clips already in.
+  /// @par Complexity O(R W).
+  void add(Motion_signature_description description) {
+    const std::size_t rows = std::size_t(description.signatures.rows()),
+                      width = std::size_t(description.signatures.cols());
+    if (rows == 0 || width == 0)
+      throw invalid_input("Motion_collection: clip " + std::to_string(size()) + " has no signature");
+    if (!descriptions_.empty() && width != std::size_t(descriptions_.front().signatures.cols()))
+      throw invalid_input("Motion_collection: clip " + std::to_string(size()) + " has signatures of " +
+                          std::to_string(width) + " values, the collection's have " +
+                          std::to_string(descriptions_.front().signatures.cols()));
+    descriptions_.push_back(std::move(description));
+    summaries_.push_back(summarize(similarity::view(descriptions_.back())));
+  }
+
+  /// @brief The number of clips.
+  std::size_t size() const { return descriptions_.size(); }
+  /// @brief Clip `i`'s signatures. @pre `i < size()` (not checked).
+  Motion_signature_view view(std::size_t i) const { return similarity::view(descriptions_[i]); }
+  /// @brief Clip `i`'s summary. @pre `i < size()` (not checked).
+  Motion_summary_view summary(std::size_t i) const { return summaries_[i].view(); }
+  /// @brief Clip `i`'s description. @pre `i < size()` (not checked).
+  const Motion_signature_description& description(std::size_t i) const { return descriptions_[i]; }
+
+private:
+  std::vector<Motion_signature_description> descriptions_;
+  std::vector<Motion_summary> summaries_;
+};
+
+static_assert(MotionCollection<Motion_collection>);
+
+}  // namespace deformseg::similarity

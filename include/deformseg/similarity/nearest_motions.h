@@ -1,0 +1,338 @@
+/// @file similarity/nearest_motions.h
+/// @brief `nearest_motions`: the k clips of a `MotionCollection` most similar to a query under the
+/// default policy, exactly as `similarity_matrix` ranks them, most of the collection ruled out by
+/// lower bounds before any alignment; `knn_graph`, every clip's k nearest; and the all-pairs
+/// `similarity_matrix` of a collection.
+#pragma once
+
+#include <deformseg/alignment/dtw.h>
+#include <deformseg/exceptions.h>
+#include <deformseg/internal/parallel_for.h>
+#include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/similarity/motion_collection.h>
+#include <deformseg/similarity/motion_signature_similarity.h>
+#include <deformseg/similarity/motion_signature_view.h>
+#include <deformseg/threads.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace deformseg::similarity {
+
+/// @brief One clip found by `nearest_motions`: its index in the collection and its similarity
+/// value with the query.
+struct Neighbour {
+  std::size_t index = 0;  ///< the clip's index in the collection
+  double value = 0;       ///< `compare(query, clip).value` (oriented as `similarity_matrix`)
+  /// @brief Equal index and bit-identical value.
+  bool operator==(const Neighbour&) const = default;
+};
+
+/// @brief What the search of one query (or, summed, of several) did with the collection's clips:
+/// every candidate is counted once, in the first of these that decided it.
+struct Pruning_report {
+  std::size_t candidates = 0;         ///< the clips searched: the collection less the query itself
+  std::size_t pruned_by_summary = 0;  ///< ruled out by the bound of their summaries (`lb_mean`)
+  std::size_t pruned_by_rows = 0;     ///< ruled out by the bound of their rows (`lb_rows_columns`)
+  std::size_t abandoned = 0;          ///< aligned in part: the alignment stopped once it could not win
+  std::size_t aligned = 0;            ///< aligned whole: their value computed
+  std::size_t rows_aligned = 0;       ///< rows the alignments of the abandoned ones went through
+  std::size_t rows_abandoned = 0;     ///< rows of the abandoned ones, in all
+
+  /// @brief The share of the candidates ruled out before a full alignment: 0 when there are none.
+  double pruned_share() const { return candidates ? double(candidates - aligned) / double(candidates) : 0.0; }
+
+  /// @brief Adds the counts of `other`.
+  Pruning_report& operator+=(const Pruning_report& other) {
+    candidates += other.candidates;
+    pruned_by_summary += other.pruned_by_summary;
+    pruned_by_rows += other.pruned_by_rows;
+    abandoned += other.abandoned;
+    aligned += other.aligned;
+    rows_aligned += other.rows_aligned;
+    rows_abandoned += other.rows_abandoned;
+    return *this;
+  }
+  /// @brief Equal counts.
+  bool operator==(const Pruning_report&) const = default;
+};
+
+/// @brief The result of `nearest_motions` for one query.
+struct Nearest_motions {
+  /// @brief The `min(k, candidates)` most similar clips, by value descending and, between equal
+  /// values, by index ascending: the query's row of `similarity_matrix`, stably sorted, cut at k.
+  std::vector<Neighbour> neighbours;
+  /// @brief How the candidates were decided.
+  Pruning_report pruning;
+};
+
+/// @brief How `nearest_motions` and `knn_graph` search.
+struct Nearest_motions_options {
+  /// @brief How many clips to find per query. Default 10.
+  std::size_t k = 10;
+  /// @brief The threads (0: `default_threads()`); the result and the counts do not depend on it.
+  int threads = 0;
+  /// @brief Called on the calling thread after each batch of queries (see `Progress`), one step a
+  /// query; default none.
+  Progress progress{};
+};
+
+namespace internal {
+
+// The value of the default policy for clips a (rows of the alignment) and b, computed by the
+// value pass that gives align's own score and path length; std::nullopt when the pass was
+// abandoned, proven below `at_least`. Counts the rows of an abandoned pass in `report`.
+inline std::optional<double> aligned_value(Motion_signature_view a, Motion_signature_view b, double unit,
+                                           std::optional<double> at_least, std::span<const double> row_bounds,
+                                           Pruning_report& report) {
+  alignment::Dtw_mean_cost_options options;
+  if (at_least) options.abandon_above = 1.0 - *at_least;
+  options.row_bounds = row_bounds;
+  const auto pass = alignment::Dtw{}.mean_cost(a.rows, b.rows, Motion_signature_dissimilarity{a, b, unit}, options);
+  if (pass.abandoned) {
+    ++report.abandoned;
+    report.rows_aligned += pass.rows_done;
+    report.rows_abandoned += a.rows;
+    return std::nullopt;
+  }
+  ++report.aligned;
+  return std::clamp(1.0 - pass.score / double(pass.length), 0.0, 1.0);
+}
+
+// Whether neighbour x ranks before y: greater value, then smaller index.
+inline bool ranks_before(const Neighbour& x, const Neighbour& y) {
+  return x.value != y.value ? x.value > y.value : x.index < y.index;
+}
+
+// The k best neighbours found so far, best first.
+class Top_neighbours {
+public:
+  explicit Top_neighbours(std::size_t k) : k_(k) { best_.reserve(k + 1); }
+  std::size_t size() const { return best_.size(); }
+  bool full() const { return best_.size() >= k_; }
+  // The value a candidate must reach to enter (ties enter by index, so a tie is never ruled out).
+  double threshold() const { return full() && k_ > 0 ? best_.back().value : -std::numeric_limits<double>::infinity(); }
+  void offer(Neighbour n) {
+    if (k_ == 0 || (full() && !ranks_before(n, best_.back()))) return;
+    best_.insert(std::upper_bound(best_.begin(), best_.end(), n, ranks_before), n);
+    if (best_.size() > k_) best_.pop_back();
+  }
+  std::vector<Neighbour> take() { return std::move(best_); }
+
+private:
+  std::size_t k_;
+  std::vector<Neighbour> best_;
+};
+
+// The candidates taken together between two looks at the k-th best value: fixed, so that what is
+// pruned (and the counts) does not depend on the number of threads.
+inline constexpr std::size_t search_batch = 32;
+
+// One query's search: the summary bound of every candidate, then the candidates in increasing
+// order of it, a batch at a time, each ruled out by its rows' bound, abandoned, or aligned.
+template <MotionCollection C>
+class Query_search {
+public:
+  // `self`: the query's index when it is a clip of `collection` (left out, and each pair
+  // oriented as similarity_matrix does: the lower index first).
+  Query_search(const C& collection, Motion_signature_view query, std::optional<std::size_t> self, double unit,
+               std::size_t k, int threads)
+      : collection_(collection), query_(query), summary_(summarize(query)), self_(self), unit_(unit), k_(k),
+        threads_(threads) {}
+
+  Nearest_motions run() {
+    const std::vector<std::size_t> order = by_summary_bound();
+    Nearest_motions result;
+    result.pruning.candidates = order.size();
+    Top_neighbours top(k_);
+    std::size_t next = 0;
+    while (next < order.size() && k_ > 0) {
+      const double threshold = top.threshold();
+      // Until k are found, just enough to find them, aligned whole: then the k-th value prunes.
+      const std::size_t batch = top.full() ? search_batch : k_ - top.size();
+      std::size_t end = next;
+      while (end < order.size() && end - next < batch && !rules_out(bounds_[order[end]], threshold)) ++end;
+      if (end == next) break;  // this candidate's bound rules it out, and every later one's is larger
+      run_batch(std::span(order).subspan(next, end - next), threshold, top, result.pruning);
+      next = end;
+    }
+    result.pruning.pruned_by_summary = order.size() - next;
+    result.neighbours = top.take();
+    return result;
+  }
+
+private:
+  // The candidates, sorted by their summary bound (bounds_), then by index.
+  std::vector<std::size_t> by_summary_bound() {
+    const std::size_t n = collection_.size();
+    bounds_.assign(n, 0.0);
+    deformseg::internal::parallel_for(
+        n, threads_,
+        [&](std::size_t i) {
+          bounds_[i] = lb_mean(summary_.view(), collection_.summary(i), unit_);
+        },
+        deformseg::internal::Loop_grain{.chunk = 256, .min_parallel = 2048});
+    std::vector<std::size_t> order;
+    order.reserve(n);
+    for (std::size_t i = 0; i < n; ++i)
+      if (i != self_) order.push_back(i);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return bounds_[x] < bounds_[y]; });
+    return order;
+  }
+
+  static bool rules_out(double lower_bound, double threshold) { return !may_beat(lower_bound, threshold); }
+
+  void run_batch(std::span<const std::size_t> batch, double threshold, Top_neighbours& top, Pruning_report& report) {
+    std::vector<std::optional<double>> values(batch.size());
+    std::vector<Pruning_report> counts(batch.size());
+    deformseg::internal::parallel_for(batch.size(), threads_,
+                                      [&](std::size_t b) { values[b] = value_of(batch[b], threshold, counts[b]); });
+    for (std::size_t b = 0; b < batch.size(); ++b) {
+      report += counts[b];
+      if (values[b]) top.offer({batch[b], *values[b]});
+    }
+  }
+
+  // Candidate c's value, or std::nullopt when it is proven below `threshold` (counted in `report`).
+  std::optional<double> value_of(std::size_t c, double threshold, Pruning_report& report) const {
+    const Motion_signature_view clip = collection_.view(c);
+    const bool query_first = !self_ || *self_ < c;
+    const Motion_signature_view a = query_first ? query_ : clip, b = query_first ? clip : query_;
+    if (threshold == -std::numeric_limits<double>::infinity()) return aligned_value(a, b, unit_, {}, {}, report);
+    const Motion_summary_view clip_summary = collection_.summary(c);
+    if (rules_out(lb_rows_columns(summary_.view(), clip_summary, unit_), threshold)) {
+      ++report.pruned_by_rows;
+      return std::nullopt;
+    }
+    std::vector<double> row_bound(a.rows);
+    row_bounds(a, query_first ? clip_summary : summary_.view(), unit_, row_bound);
+    // Bounds of the reference dissimilarity made bounds of the kernel's, which may be a little lower.
+    for (double& r : row_bound) r = std::max(0.0, safe_lower_bound(r));
+    return aligned_value(a, b, unit_, threshold, row_bound, report);
+  }
+
+  const C& collection_;
+  Motion_signature_view query_;
+  Motion_summary summary_;
+  std::optional<std::size_t> self_;
+  double unit_;
+  std::size_t k_;
+  int threads_;
+  std::vector<double> bounds_;
+};
+
+// The unit of the frame dissimilarity of `policy` for signatures of `width` values; refuses what
+// the search's bounds do not cover.
+inline double search_unit(const Motion_signature_similarity<>& policy, std::size_t width, const char* who) {
+  if (policy.alignment.window)
+    throw invalid_input(std::string(who) + ": the search aligns without a window (its bounds assume none)");
+  if (!(policy.scale > 0)) throw invalid_input(std::string(who) + ": the scale must be positive");
+  return frame_dissimilarity_unit(width, policy.scale);
+}
+
+template <MotionCollection C>
+void check_query(const C& collection, Motion_signature_view query, const char* who) {
+  if (query.rows == 0) throw invalid_input(std::string(who) + ": the query has no signature");
+  if (collection.size() > 0 && query.width != collection.view(0).width)
+    throw invalid_input(std::string(who) + ": the query's signatures have " + std::to_string(query.width) +
+                        " values, the collection's " + std::to_string(collection.view(0).width));
+}
+
+}  // namespace internal
+
+/// @brief The `options.k` clips of `collection` most similar to `query` under `policy` (the
+/// default policy, `Motion_signature_similarity<>`), each with its value
+/// `policy.compare(query, clip).value`, bit for bit, ranked by value descending and then by index:
+/// exactly the query's row of `similarity_matrix(queries, database)`, stably sorted.
+///
+/// Exact, and fast because most clips are never aligned: every clip's summary gives a lower
+/// bound of its dissimilarity (`lb_mean`); clips are tried in increasing order of it, so that
+/// the k-th best value rises quickly, and the search stops at the first whose bound proves it
+/// cannot reach that value (nor can any after it). A clip tried is first bounded by its rows
+/// (`lb_rows_columns`), then aligned by the value pass of `alignment::Dtw::mean_cost`, which
+/// abandons once it is proven below the k-th value. Ties with the k-th value are never ruled out,
+/// so ties rank as in the matrix. Clips are taken k at first, then 32 at a time between two looks at the k-th value,
+/// whatever the number of threads, so the result and `Nearest_motions::pruning` are the same on
+/// any number.
+/// @param query the query's signatures: `view(policy.describe(animation))`, or a clip of a
+/// collection (then it is found too, at value 1: see `knn_graph` to leave it out).
+/// @param collection a `MotionCollection` described with `policy`'s options.
+/// @param options k (default 10), threads.
+/// @param policy the scale and alignment of the values (default: the default policy's); its
+/// alignment must have no window.
+/// @throws invalid_input when the query has no row or another width than the collection's, or
+/// when `policy` has a window.
+/// @throws cancelled as `similarity_matrix`.
+/// @par Complexity O(N W) for the bounds of N clips of width W and O(N log N) to order them,
+/// then, for each clip not ruled out, O(K^2 W) for its rows' bound and O(n m W) at most for its
+/// alignment (n, m rows); how many are ruled out depends on the data (the manual's chapter 7
+/// gives figures). O(N) memory beyond the collection.
+template <MotionCollection C>
+Nearest_motions nearest_motions(Motion_signature_view query, const C& collection,
+                                const Nearest_motions_options& options = {},
+                                const Motion_signature_similarity<>& policy = {}) {
+  internal::check_query(collection, query, "nearest_motions");
+  const double unit = internal::search_unit(policy, query.width, "nearest_motions");
+  return internal::Query_search<C>(collection, query, std::nullopt, unit, options.k, options.threads).run();
+}
+
+/// @brief Every clip's `options.k` nearest other clips of `collection` (itself left out), each
+/// pair's value that of `similarity_matrix` over the collection's clips (entry (i, j) for i < j is
+/// `compare(clip i, clip j)`, and so is entry (j, i)): the k-nearest-neighbour graph, one
+/// `Nearest_motions` per clip, ranked as `nearest_motions` ranks.
+/// @param options k (default 10), threads (the clips are searched in parallel, each as
+/// `nearest_motions` searches on one thread), progress (one step a clip).
+/// @throws invalid_input when `policy` has a window.
+/// @throws cancelled as `similarity_matrix`.
+/// @par Complexity N searches as `nearest_motions`: O(N^2 W) for the summary bounds, and the
+/// alignments the bounds do not rule out.
+template <MotionCollection C>
+std::vector<Nearest_motions> knn_graph(const C& collection, const Nearest_motions_options& options = {},
+                                       const Motion_signature_similarity<>& policy = {}) {
+  const std::size_t n = collection.size();
+  std::vector<Nearest_motions> graph(n);
+  if (n == 0) return graph;
+  const double unit = internal::search_unit(policy, collection.view(0).width, "knn_graph");
+  deformseg::internal::parallel_for_reporting(n, options.threads, options.progress, 0, n, [&](std::size_t i) {
+    graph[i] = internal::Query_search<C>(collection, collection.view(i), i, unit, options.k, 1).run();
+  });
+  return graph;
+}
+
+/// @brief The similarity of every pair of `collection`'s clips under `policy` (default the default
+/// policy): entry (i, j) and (j, i), i <= j, is `policy.compare(clip i, clip j).value`, bit for
+/// bit the matrix `similarity_matrix` gives for the animations the clips were described from.
+/// @param progress one step a pair i <= j (see `Progress`); default none.
+/// @throws invalid_input when `policy` has a window; cancelled as `similarity_matrix`.
+/// @par Complexity N (N + 1) / 2 value passes (`alignment::Dtw::mean_cost`), O(n m W) each, on
+/// `default_threads()` threads; O(max rows) memory per thread beyond the N x N result.
+template <MotionCollection C>
+Eigen::MatrixXd similarity_matrix(const C& collection, const Motion_signature_similarity<>& policy = {},
+                                  const Progress& progress = {}) {
+  const std::size_t n = collection.size();
+  const auto size = Eigen::Index(n);
+  Eigen::MatrixXd values(size, size);
+  if (n == 0) return values;
+  const double unit = internal::search_unit(policy, collection.view(0).width, "similarity_matrix");
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  pairs.reserve(n * (n + 1) / 2);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i; j < n; ++j) pairs.emplace_back(i, j);
+  deformseg::internal::parallel_for_reporting(pairs.size(), 0, progress, 0, pairs.size(), [&](std::size_t p) {
+    const auto [i, j] = pairs[p];
+    Pruning_report unused;
+    const double v = *internal::aligned_value(collection.view(i), collection.view(j), unit, {}, {}, unused);
+    values(Eigen::Index(i), Eigen::Index(j)) = values(Eigen::Index(j), Eigen::Index(i)) = v;
+  });
+  return values;
+}
+
+}  // namespace deformseg::similarity

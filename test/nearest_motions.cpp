@@ -1,0 +1,143 @@
+// Tests of similarity/nearest_motions.h: the pruned search equals the brute-force ranking (the
+// matrix row, stably sorted) on random collections with exact ties, for every k, on one and two
+// threads; the k-nearest-neighbour graph equals the per-row brute force in the matrix's
+// orientation; the collection's matrix equals compare's values; the bounds prune on real clips.
+#include "test_support.h"
+
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/similarity/nearest_motions.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+using namespace deformseg;
+using similarity::Motion_signature_description;
+using similarity::Neighbour;
+
+namespace {
+
+// A random description of `rows` rows of `width` values around `centre`: rows drift like a motion.
+Motion_signature_description random_clip(std::mt19937& random, std::size_t rows, std::size_t width, float centre) {
+  std::normal_distribution<float> step(0.0f, 0.6f);
+  Motion_signature_description d;
+  d.signatures.resize(Eigen::Index(rows), Eigen::Index(width));
+  for (std::size_t k = 0; k < width; ++k) {
+    float x = centre + step(random);
+    for (std::size_t r = 0; r < rows; ++r) d.signatures(Eigen::Index(r), Eigen::Index(k)) = x += step(random);
+  }
+  for (std::size_t r = 0; r < rows; ++r) d.frames.push_back(r);
+  return d;
+}
+
+// Clips of 1 to 40 rows in a few families; every third is a copy of an earlier one, so that
+// values tie exactly.
+std::vector<Motion_signature_description> random_collection(std::uint32_t seed, std::size_t count, std::size_t width) {
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<std::size_t> rows(1, 40), family(0, 3);
+  std::vector<Motion_signature_description> clips;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (i % 3 == 2) {
+      clips.push_back(clips[std::uniform_int_distribution<std::size_t>(0, i - 1)(random)]);
+      continue;
+    }
+    clips.push_back(random_clip(random, rows(random), width, 1.5f * float(family(random))));
+  }
+  return clips;
+}
+
+// The brute force: every value by compare, oriented by `first`, stably sorted, cut at k.
+template <class Value>
+std::vector<Neighbour> brute_force(std::size_t count, std::size_t k, std::optional<std::size_t> self,
+                                   const Value& value) {
+  std::vector<Neighbour> all;
+  for (std::size_t c = 0; c < count; ++c)
+    if (c != self) all.push_back({c, value(c)});
+  std::stable_sort(all.begin(), all.end(), [](const Neighbour& x, const Neighbour& y) { return x.value > y.value; });
+  all.resize(std::min(k, all.size()));
+  return all;
+}
+
+}  // namespace
+
+TEST_CASE("nearest_motions equals the brute-force ranking, ties included, for every k and thread count") {
+  const similarity::Default_similarity policy;
+  for (std::uint32_t seed = 1; seed <= 6; ++seed) {
+    const auto clips = random_collection(seed, 60, seed % 2 ? 8 : 64);
+    const similarity::Motion_collection collection(clips);
+    std::mt19937 random(seed + 100);
+    const auto query = random_clip(random, 1 + seed * 5, clips.front().signatures.cols(), 1.5f);
+    for (std::size_t k : {std::size_t(0), std::size_t(1), std::size_t(10), clips.size(), clips.size() + 5}) {
+      const auto expected = brute_force(clips.size(), k, std::nullopt,
+                                        [&](std::size_t c) { return policy.compare(query, clips[c]).value; });
+      const auto one = similarity::nearest_motions(similarity::view(query), collection, {.k = k, .threads = 1});
+      const auto two = similarity::nearest_motions(similarity::view(query), collection, {.k = k, .threads = 2});
+      INFO("seed " << seed << ", k " << k);
+      CHECK(one.neighbours == expected);
+      CHECK(two.neighbours == expected);
+      CHECK(one.pruning == two.pruning);
+      const auto& p = one.pruning;
+      CHECK(p.candidates == clips.size());
+      CHECK(p.pruned_by_summary + p.pruned_by_rows + p.abandoned + p.aligned == p.candidates);
+    }
+  }
+}
+
+TEST_CASE("nearest_motions finds a clip of the collection itself first, at value 1, and prunes the rest") {
+  const auto clips = random_collection(7, 200, 64);
+  const similarity::Motion_collection collection(clips);
+  const auto found = similarity::nearest_motions(collection.view(4), collection, {.k = 1});
+  REQUIRE(found.neighbours.size() == 1);
+  CHECK(found.neighbours.front().index == 4);
+  CHECK(found.neighbours.front().value == 1.0);
+  // A copy of clip 4 elsewhere ties with it and ranks after it: not ruled out, so aligned.
+  CHECK(found.pruning.aligned >= 1);
+  CHECK(found.pruning.aligned < clips.size() / 2);
+}
+
+TEST_CASE("knn_graph equals the brute force in similarity_matrix's orientation, itself left out") {
+  const similarity::Default_similarity policy;
+  const auto clips = random_collection(11, 45, 16);
+  const similarity::Motion_collection collection(clips);
+  const auto value = [&](std::size_t i, std::size_t j) {
+    return policy.compare(clips[std::min(i, j)], clips[std::max(i, j)]).value;
+  };
+  for (std::size_t k : {std::size_t(1), std::size_t(5), clips.size() + 1}) {
+    const auto graph = similarity::knn_graph(collection, {.k = k, .threads = 2});
+    const auto serial = similarity::knn_graph(collection, {.k = k, .threads = 1});
+    REQUIRE(graph.size() == clips.size());
+    for (std::size_t i = 0; i < clips.size(); ++i) {
+      INFO("clip " << i << ", k " << k);
+      CHECK(graph[i].neighbours == brute_force(clips.size(), k, i, [&](std::size_t c) { return value(i, c); }));
+      CHECK(graph[i].pruning == serial[i].pruning);
+      CHECK(graph[i].pruning.candidates == clips.size() - 1);
+    }
+  }
+}
+
+TEST_CASE("a collection's similarity_matrix is compare's values, bit for bit, in the matrix's orientation") {
+  const similarity::Default_similarity policy;
+  const auto clips = random_collection(3, 25, 64);
+  const auto values = similarity::similarity_matrix(similarity::Motion_collection(clips));
+  for (std::size_t i = 0; i < clips.size(); ++i)
+    for (std::size_t j = i; j < clips.size(); ++j) {
+      const double v = policy.compare(clips[i], clips[j]).value;
+      CHECK(values(Eigen::Index(i), Eigen::Index(j)) == v);
+      CHECK(values(Eigen::Index(j), Eigen::Index(i)) == v);
+    }
+}
+
+TEST_CASE("nearest_motions refuses a query of another width, and a policy with a window") {
+  const auto clips = random_collection(5, 10, 8);
+  const similarity::Motion_collection collection(clips);
+  std::mt19937 random(1);
+  const auto wide = random_clip(random, 5, 16, 0);
+  CHECK_THROWS_WITH(similarity::nearest_motions(similarity::view(wide), collection),
+                    Catch::Contains("16 values, the collection's 8"));
+  similarity::Default_similarity windowed;
+  windowed.alignment.window = 3;
+  CHECK_THROWS_WITH(similarity::nearest_motions(collection.view(0), collection, {}, windowed),
+                    Catch::Contains("without a window"));
+}
