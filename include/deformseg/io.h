@@ -18,5 +18,6 @@
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/io/read_mesh.h>
+#include <deformseg/io/stored_motions.h>
 #include <deformseg/io/strain_field.h>
 #include <deformseg/io/triangle_soup.h>

@@ -1,0 +1,88 @@
+/// @file io/stored_motions.h
+/// @brief `Stored_motions`: a motion store (`Motion_store`) read as a
+/// `similarity::MotionCollection`, so that `similarity::nearest_motions`, `knn_graph` and
+/// `similarity_matrix` search its clips in place; and `motion_summary_layout`, the summary layout
+/// its writers record.
+#pragma once
+
+#include <deformseg/exceptions.h>
+#include <deformseg/io/internal/json.h>
+#include <deformseg/io/motion_store.h>
+#include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/similarity/motion_collection.h>
+
+#include <charconv>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <utility>
+
+namespace deformseg::io {
+
+/// @brief The manifest's "summary" object of a store whose summaries are
+/// `similarity::summarize(view, chunks)`'s floats: `{"kind": "motion-summary", "chunks": K}`.
+/// A writer passes it to `Store_append` with `similarity::summary_width(width, chunks)`.
+/// @par Complexity O(1).
+inline std::string motion_summary_layout(std::size_t chunks) {
+  return R"({"kind": "motion-summary", "chunks": )" + std::to_string(chunks) + "}";
+}
+
+namespace internal {
+
+// The chunk count of a store's summaries, from its layout; refuses any other layout.
+inline std::size_t stored_summary_chunks(const Motion_store& store) {
+  const std::string file = (store.folder() / "store.json").string();
+  const Json layout = Json_parser(store.summary_layout(), file).parse();
+  const Json* kind = layout.find("kind");
+  const Json* chunks = layout.find("chunks");
+  std::size_t count = 0;
+  if (!kind || kind->text != "motion-summary" || !chunks || chunks->kind != Json::Kind::number ||
+      std::from_chars(chunks->text.data(), chunks->text.data() + chunks->text.size(), count).ptr !=
+          chunks->text.data() + chunks->text.size() ||
+      count == 0)
+    throw invalid_input("the store's summaries are not motion summaries (its \"summary\" is " +
+                            store.summary_layout() + "): describe the clips again into a new store",
+                        {.file = file});
+  if (store.summary_width() != similarity::summary_width(store.width(), count))
+    throw invalid_input("the store's summaries have " + std::to_string(store.summary_width()) +
+                            " floats, motion summaries of width " + std::to_string(store.width()) + " with " +
+                            std::to_string(count) + " chunks " +
+                            std::to_string(similarity::summary_width(store.width(), count)),
+                        {.file = file});
+  return count;
+}
+
+}  // namespace internal
+
+/// @brief A motion store's clips as a `similarity::MotionCollection`: clip i's signatures and
+/// summary are read in the store's mapping, never copied.
+/// @par Example
+/// @include nearest_motions_in_store.cpp
+class Stored_motions {
+public:
+  /// @brief The clips of `store`, whose summaries must be motion summaries
+  /// (`motion_summary_layout`); an empty store of no clip is accepted whatever its layout.
+  /// @throws invalid_input naming the manifest when the summaries are of another layout or size.
+  /// @par Complexity O(1).
+  explicit Stored_motions(Motion_store store)
+      : store_(std::move(store)), chunks_(store_.size() == 0 ? 1 : internal::stored_summary_chunks(store_)) {}
+
+  /// @brief The number of clips.
+  std::size_t size() const { return store_.size(); }
+  /// @brief Clip `i`'s signatures. @pre `i < size()` (not checked). @par Complexity O(1).
+  similarity::Motion_signature_view view(std::size_t i) const { return store_.view(i); }
+  /// @brief Clip `i`'s summary. @pre `i < size()` (not checked). @par Complexity O(1).
+  similarity::Motion_summary_view summary(std::size_t i) const {
+    return {store_.summary(i), store_.width(), chunks_};
+  }
+  /// @brief The store read.
+  const Motion_store& store() const { return store_; }
+
+private:
+  Motion_store store_;
+  std::size_t chunks_;
+};
+
+static_assert(similarity::MotionCollection<Stored_motions>);
+
+}  // namespace deformseg::io

@@ -1,0 +1,82 @@
+// Tests of io/stored_motions.h: a store searched in place gives what the same clips give in
+// memory, bit for bit (search, knn graph, matrix); a store of other summaries is refused.
+#include "test_support.h"
+
+#include <deformseg/io/stored_motions.h>
+#include <deformseg/similarity/nearest_motions.h>
+
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <vector>
+
+using namespace deformseg;
+
+namespace {
+
+// Clips of 1 to 30 rows of 16 values; clip 7 repeats clip 2, so that values tie.
+std::vector<similarity::Motion_signature_description> clips() {
+  std::mt19937 random(5);
+  std::normal_distribution<float> value(0.0f, 1.0f);
+  std::vector<similarity::Motion_signature_description> out;
+  for (std::size_t c = 0; c < 20; ++c) {
+    if (c == 7) {
+      out.push_back(out[2]);
+      continue;
+    }
+    similarity::Motion_signature_description d;
+    d.signatures.resize(Eigen::Index(1 + (c * 7) % 30), 16);
+    for (Eigen::Index i = 0; i < d.signatures.size(); ++i) d.signatures.data()[i] = value(random);
+    for (Eigen::Index r = 0; r < d.signatures.rows(); ++r) d.frames.push_back(std::size_t(r));
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+void write(const std::filesystem::path& folder, const std::vector<similarity::Motion_signature_description>& all,
+           std::size_t chunks, const std::string& layout) {
+  io::Store_append append(folder, "{}", similarity::summary_width(16, chunks), layout);
+  for (std::size_t c = 0; c < all.size(); ++c) {
+    io::Store_record record;
+    record.path = "/clips/" + std::to_string(c) + ".pc2";
+    record.frame_count = std::uint32_t(all[c].frames.size());
+    record.fps = 30;
+    const std::vector<std::uint32_t> frames(all[c].frames.begin(), all[c].frames.end());
+    const auto view = similarity::view(all[c]);
+    append.add(record, view, frames, similarity::summarize(view, chunks).floats);
+  }
+  append.commit();
+}
+
+}  // namespace
+
+TEST_CASE("a store searched in place equals its clips in memory, bit for bit") {
+  const auto all = clips();
+  const auto folder = test::fresh_dir("stored_motions/search");
+  write(folder, all, 4, io::motion_summary_layout(4));
+  const io::Stored_motions stored(io::Motion_store::open(folder));
+  const similarity::Motion_collection in_memory(all);
+  REQUIRE(stored.size() == all.size());
+  for (std::size_t q : {std::size_t(0), std::size_t(2), std::size_t(19)}) {
+    const auto a = similarity::nearest_motions(stored.view(q), stored, {.k = 5});
+    const auto b = similarity::nearest_motions(in_memory.view(q), in_memory, {.k = 5});
+    CHECK(a.neighbours == b.neighbours);
+    CHECK(a.pruning == b.pruning);
+  }
+  const auto graph = similarity::knn_graph(stored, {.k = 3});
+  const auto expected = similarity::knn_graph(in_memory, {.k = 3});
+  for (std::size_t i = 0; i < all.size(); ++i) CHECK(graph[i].neighbours == expected[i].neighbours);
+  CHECK(similarity::similarity_matrix(stored) == similarity::similarity_matrix(in_memory));
+}
+
+TEST_CASE("a store of other summaries is refused, naming its manifest") {
+  const auto all = clips();
+  const auto folder = test::fresh_dir("stored_motions/other");
+  write(folder, all, 2, R"({"kind": "my-summary", "chunks": 2})");
+  CHECK_THROWS_WITH(io::Stored_motions(io::Motion_store::open(folder)),
+                    Catch::Contains("store.json") && Catch::Contains("not motion summaries"));
+  const auto wrong_width = test::fresh_dir("stored_motions/width");
+  write(wrong_width, all, 2, io::motion_summary_layout(3));
+  CHECK_THROWS_WITH(io::Stored_motions(io::Motion_store::open(wrong_width)), Catch::Contains("with 3 chunks"));
+  CHECK(io::Stored_motions(io::Motion_store{}).size() == 0);
+}
