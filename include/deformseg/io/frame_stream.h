@@ -333,9 +333,13 @@ private:
 /// reads: a glTF clip (`Gltf_frame_source`; "FILE.glb#CLIP" or `options.clip` names it), a point
 /// cache (`Point_cache_frame_source`, with `options.topology`) or a sequence of frame files
 /// (`Frame_sequence_source`); returns what `f` returns.
+/// @param input a glTF file (maybe followed by "#CLIP"), a folder or glob of frame files, or a
+/// `.pc2` or `.mdd` file, as for `read_animation`.
 /// @param options as `read_animation`: `topology`, `triangulate`, `repair` (default: the format's,
 /// which welds glTF only; welding a point cache or frame files is refused), `clip`, `fps`
 /// (default 30); `threads` is not used.
+/// @param f called once with the source (an lvalue of one of the three source types), which
+/// lives for the call only.
 /// @throws invalid_input as the source's constructor, and as `read_animation` for a clip given
 /// twice, a topology given with a glTF file, or a file of several clips and none named.
 /// @par Complexity that of opening the source.
