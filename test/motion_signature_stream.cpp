@@ -173,9 +173,10 @@ TEST_CASE("Frame_sequence_source: OBJ frames streamed equal read_frame_sequence'
       require_same_bits(streamed(source, options), described(whole, options));
     }
   SECTION("with a topology file") {
-    ds::io::write_obj(tube, 3, folder.parent_path() / "stream_topology.obj");
-    const auto whole = ds::io::read_animation(folder.string(), {.topology = folder.parent_path() / "stream_topology.obj"});
-    ds::io::Frame_sequence_source source(folder.string(), {.topology = folder.parent_path() / "stream_topology.obj"});
+    const fs::path topology = folder.parent_path() / "stream_topology.obj";
+    ds::io::write_obj(tube, 3, topology);
+    const auto whole = ds::io::read_animation(folder.string(), {.topology = topology});
+    ds::io::Frame_sequence_source source(folder.string(), {.topology = topology});
     require_same_bits(streamed(source, {}), described(whole, {}));
   }
   SECTION("a frame file that cannot be read names it and its frame") {

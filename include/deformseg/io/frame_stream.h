@@ -153,7 +153,8 @@ public:
     const bool little = info_.format == Point_cache_format::pc2;
     for (std::size_t i = 0; i < decoded_.size(); ++i) {
       const char* at = bytes_.data() + 4 * i;
-      decoded_[i] = little ? internal::load<std::endian::little, float>(at) : internal::load<std::endian::big, float>(at);
+      decoded_[i] =
+          little ? internal::load<std::endian::little, float>(at) : internal::load<std::endian::big, float>(at);
       if (!std::isfinite(decoded_[i]))
         internal::fail_cache(path_, internal::join("vertex ", std::to_string(i / 3), " has a non-finite coordinate"),
                              next_);
