@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -229,6 +230,10 @@ Eigen::MatrixXd motion_signatures_streamed(Source& source, const Motion_signatur
       source.read_frame(std::span<Coordinate>(frame_of(loaded++), block));
     std::size_t end = next_row;
     while (end < instants.size() && spans[end].second < loaded) ++end;
+    if (end == next_row)  // the ring holds every row's frames (ring_frames): this would loop for ever
+      throw std::logic_error("motion_signatures_streamed: row " + std::to_string(next_row) + " reads frames " +
+                             std::to_string(spans[next_row].first) + " to " + std::to_string(spans[next_row].second) +
+                             ", more than the ring's " + std::to_string(capacity));
     deformseg::internal::parallel_for(end - next_row, 0, [&](std::size_t k) {
       std::vector<std::pair<double, double>> speeds(vertices), rises(rows.up ? vertices : 0);
       const std::size_t r = next_row + k;
