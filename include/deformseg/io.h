@@ -8,6 +8,7 @@
 #include <deformseg/io/gltf.h>
 #endif
 #include <deformseg/io/files.h>
+#include <deformseg/io/frame_stream.h>
 #include <deformseg/io/graphviz.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/motion_labels.h>

@@ -4,4 +4,5 @@
 #pragma once
 
 #include <deformseg/signatures/motion_signatures.h>
+#include <deformseg/signatures/motion_signature_stream.h>
 #include <deformseg/signatures/procrustes_distances.h>

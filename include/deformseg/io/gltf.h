@@ -40,6 +40,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace deformseg::io {
@@ -212,18 +213,25 @@ inline void check_options(const io::Gltf_read_options& options) {
   thread_count(options.threads);
 }
 
+/// Poses frame `t` of the `frames` frames of `clip` (or the rest pose) sampled at `fps` into `out`
+/// (3V values); throws naming the frame for a non-finite coordinate.
+inline void pose_frame(const Rig& rig, const Clip* clip, double fps, std::size_t frames, std::size_t t,
+                       Pose_scratch& scratch, double* out) {
+  const std::size_t block = 3 * rig.geometry.vertices;
+  pose_at(rig, clip, clip ? frame_time(clip->start, clip->end, fps, t, frames) : 0.0, scratch, out);
+  const double* bad = std::find_if(out, out + block, [](double x) { return !std::isfinite(x); });
+  if (bad != out + block)
+    throw invalid_input("vertex " + std::to_string(std::size_t(bad - out) / 3) + " has a non-finite position",
+                        {.frame = t});
+}
+
 /// Samples every frame of `clip` (or the rest pose) into `positions`, in parallel; throws the
 /// error of the lowest frame with a non-finite coordinate, whatever the number of threads.
 inline void sample_frames(const Rig& rig, const Clip* clip, double fps, std::size_t frames, int threads,
                           std::vector<double>& positions) {
   const std::size_t block = 3 * rig.geometry.vertices;
   const auto sample = [&](Pose_scratch& scratch, std::size_t t) {
-    double* out = positions.data() + t * block;
-    pose_at(rig, clip, clip ? frame_time(clip->start, clip->end, fps, t, frames) : 0.0, scratch, out);
-    const double* bad = std::find_if(out, out + block, [](double x) { return !std::isfinite(x); });
-    if (bad != out + block)
-      throw invalid_input("vertex " + std::to_string(std::size_t(bad - out) / 3) + " has a non-finite position",
-                          {.frame = t});
+    pose_frame(rig, clip, fps, frames, t, scratch, positions.data() + t * block);
   };
   deformseg::internal::parallel_for_with_locals(frames, threads, 1, [] { return Pose_scratch{}; }, sample);
 }
@@ -267,6 +275,17 @@ inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_opti
   sample_frames(rig, clip ? &*clip : nullptr, options.fps, report.frames, options.threads, sampled.positions);
   sampled.triangles = rig.geometry.triangles;
   return sampled;
+}
+
+/// The clip `options` names (none for a file without animation) and its frame count at `options.fps`.
+inline std::pair<std::optional<Clip>, std::size_t> clip_and_frames(const Loaded_file& file,
+                                                                   const io::Gltf_read_options& options) {
+  check_options(options);
+  const std::optional<std::size_t> index = select_clip(file.model, options.clip);
+  if (!index) return {std::nullopt, 1};
+  Clip clip = read_clip(file.model, *index);
+  const std::size_t frames = frame_count(clip.start, clip.end, options.fps);
+  return {std::move(clip), frames};
 }
 
 /// The connectivity every clip of the file shares: the scene's vertices welded by what the file
@@ -329,6 +348,46 @@ inline io::Gltf_contents contents(const std::filesystem::path& path, double fps)
 
 namespace deformseg::io {
 
+class Gltf_file;
+
+/// @brief One clip of a `Gltf_file` sampled a frame at a time (`Gltf_file::frame_sampler`), in
+/// the vertex order of `Sampled_gltf`, before any repair.
+class Gltf_frame_sampler {
+public:
+  /// @brief The number of frames T of the clip at the frame rate asked (1 without animation).
+  std::size_t num_frames() const noexcept { return frames_; }
+  /// @brief The number of vertices V of a frame, before any repair.
+  std::size_t num_vertices() const noexcept { return rig_->geometry.vertices; }
+  /// @brief Writes frame `t`'s `3V` coordinates to `out`.
+  /// @pre `out` holds `3V` values and `t < num_frames()`; otherwise throws `invalid_input`.
+  /// @throws invalid_input naming the file and the frame for a non-finite position.
+  /// @par Complexity O(N + J + V I), as one frame of `Gltf_file::sample`.
+  void sample_frame(std::size_t t, std::span<double> out) {
+    if (t >= frames_ || out.size() != 3 * num_vertices())
+      throw invalid_input("Gltf_frame_sampler: no frame " + std::to_string(t) + " of " + std::to_string(out.size()) +
+                              " coordinates in a clip of " + std::to_string(frames_) + " frames",
+                          {.file = path_.string(), .frame = t});
+    try {
+      internal::gltf::pose_frame(*rig_, clip_ ? &*clip_ : nullptr, fps_, frames_, t, scratch_, out.data());
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path_.string()});
+    }
+  }
+
+private:
+  friend class Gltf_file;
+  Gltf_frame_sampler(std::filesystem::path path, const internal::gltf::Rig& rig,
+                     std::optional<internal::gltf::Clip> clip, std::size_t frames, double fps)
+      : path_(std::move(path)), rig_(&rig), clip_(std::move(clip)), frames_(frames), fps_(fps) {}
+
+  std::filesystem::path path_;
+  const internal::gltf::Rig* rig_;
+  std::optional<internal::gltf::Clip> clip_;
+  std::size_t frames_;
+  double fps_;
+  internal::gltf::Pose_scratch scratch_{};
+};
+
 /// @brief A glTF 2.0 file parsed once, to sample any number of its clips: parsing dominates the
 /// reading of a character of a few thousand vertices, so reading many clips of one file through
 /// a `Gltf_file` is many times faster than calling `sample_gltf` for each.
@@ -390,6 +449,17 @@ public:
       throw e.located({.file = path_.string()});
     }
   }
+
+  /// @brief Samples one clip a frame at a time, as `sample` samples all of them: frame `t` of
+  /// the sampler equals frame `t` of `sample(options)`'s positions, bit for bit, so that a long
+  /// clip can be read in memory for one frame (see `Gltf_frame_sampler`).
+  /// @param options `clip` (default: the first) and `fps` (30); the others are not used.
+  /// @return a sampler that refers to this file, which must outlive it and stay where it is.
+  /// @pre `options.fps > 0`.
+  /// @throws invalid_input naming the file as `sample` does for a missing clip or a malformed
+  /// sampler, or more than 10^6 frames.
+  /// @par Complexity O(size of the clip's channels).
+  Gltf_frame_sampler frame_sampler(const Gltf_read_options& options = {}) const;
 
   /// @brief The connectivity every clip of the file shares, repaired by `options` and decided
   /// from the file alone, whatever the clip: what `read` gives every clip.
@@ -461,6 +531,15 @@ private:
   std::filesystem::path path_;
   internal::gltf::Loaded_file file_;
 };
+
+inline Gltf_frame_sampler Gltf_file::frame_sampler(const Gltf_read_options& options) const {
+  try {
+    auto [clip, frames] = internal::gltf::clip_and_frames(file_, options);
+    return Gltf_frame_sampler(path_, file_.rig, std::move(clip), frames, options.fps);
+  } catch (const invalid_input& e) {
+    throw e.located({.file = path_.string()});
+  }
+}
 
 /// @brief The rule of the readers that take any animation (`read_animation`, the tool's commands,
 /// Python's `read_animation`) for a glTF file and the clip asked: a clip must be named

@@ -129,14 +129,32 @@ Eigen::Vector3d point(const Coordinate* frame, std::size_t v) {
                          static_cast<double>(frame[3 * v + 2]));
 }
 
-/// Vertex v's position at the instant `at` (a frame and a fraction of the way to the next),
-/// interpolated linearly between the two frames' positions.
+/// Where an instant falls among frames: the frame at or before it, the frame after it (the same
+/// frame when the fraction is 0, so that a frame past the last is never asked for) and the
+/// fraction of the way between them. Both paths of `motion_signatures_at`, the whole animation in
+/// memory and the stream of `motion_signatures_streamed`, read positions through it.
 template <class Coordinate>
-Eigen::Vector3d point_at(const Coordinate* positions, std::size_t vertices, std::pair<std::size_t, double> at,
-                         std::size_t v) {
-  const Eigen::Vector3d p = point(positions + 3 * vertices * at.first, v);
-  if (at.second == 0) return p;
-  return p + at.second * (point(positions + 3 * vertices * (at.first + 1), v) - p);
+struct Frames_around {
+  const Coordinate* before;
+  const Coordinate* after;
+  double fraction;
+};
+
+/// The frames around the instant `at` (a frame and a fraction, as `frame_at` gives it), found by
+/// `frame_of(t)`, which returns frame t's `3V` coordinates.
+template <class FrameOf>
+auto frames_around(const FrameOf& frame_of, std::pair<std::size_t, double> at) {
+  const auto* before = frame_of(at.first);
+  return Frames_around<std::remove_cvref_t<decltype(*before)>>{
+      before, at.second == 0 ? before : frame_of(at.first + 1), at.second};
+}
+
+/// Vertex v's position at an instant between two frames, interpolated linearly.
+template <class Coordinate>
+Eigen::Vector3d point_at(const Frames_around<Coordinate>& at, std::size_t v) {
+  const Eigen::Vector3d p = point(at.before, v);
+  if (at.fraction == 0) return p;
+  return p + at.fraction * (point(at.after, v) - p);
 }
 
 /// `options.up` made of unit length; refuses a zero or non-finite direction.
@@ -148,21 +166,112 @@ inline std::optional<Eigen::Vector3d> unit_up(const Motion_signature_options& op
   return *options.up / length;
 }
 
+/// Adds frame's weighted sum of squared distances of the vertices from their weighted centroid
+/// to `sum`: one frame's share of `rms_radius`, in the order `rms_radius` adds them.
+template <class Coordinate>
+void add_frame_spread(const Coordinate* frame, std::span<const double> weights, double& sum) {
+  const std::size_t vertices = weights.size();
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (std::size_t v = 0; v < vertices; ++v) centroid += weights[v] * point(frame, v);
+  for (std::size_t v = 0; v < vertices; ++v) sum += weights[v] * (point(frame, v) - centroid).squaredNorm();
+}
+
 /// The animation's weighted RMS distance of the vertices from their frame's centroid, averaged
 /// over the frames: the unit of the rates.
 template <class Coordinate>
 double rms_radius(std::span<const Coordinate> positions, std::span<const double> weights, std::size_t frames) {
-  const std::size_t vertices = weights.size();
   double sum = 0;
-  for (std::size_t t = 0; t < frames; ++t) {
-    const Coordinate* frame = positions.data() + 3 * vertices * t;
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (std::size_t v = 0; v < vertices; ++v) centroid += weights[v] * point(frame, v);
-    for (std::size_t v = 0; v < vertices; ++v) sum += weights[v] * (point(frame, v) - centroid).squaredNorm();
-  }
+  for (std::size_t t = 0; t < frames; ++t) add_frame_spread(positions.data() + 3 * weights.size() * t, weights, sum);
   return std::sqrt(sum / double(frames));
 }
 
+/// Throws unless the options and the frame rate make signatures (the checks of `motion_signatures`).
+inline void check_signature_options(const Motion_signature_options& options, double frames_per_second) {
+  if (options.quantiles == 0) throw invalid_input("motion_signatures: 0 quantiles");
+  if (options.lags.empty()) throw invalid_input("motion_signatures: no lag");
+  for (const double lag : options.lags)
+    if (!(lag > 0) || !std::isfinite(lag))
+      throw invalid_input("motion_signatures: a lag of " + std::to_string(lag) + " s; lags must be positive");
+  mesh::check_frames_per_second(frames_per_second, "motion_signatures");
+  if (!(options.floor > 0)) throw invalid_input("motion_signatures: the floor must be positive");
+  if (options.up && !(options.vertical_unit > 0))
+    throw invalid_input("motion_signatures: the vertical unit must be positive");
+  if (options.up && !(options.vertical_weight >= 0 && std::isfinite(options.vertical_weight)))
+    throw invalid_input("motion_signatures: the vertical weight must be finite and not negative");
+}
+
+/// Throws unless an animation of `frames` frames is long enough to move.
+inline void check_frame_count(std::size_t frames) {
+  if (frames < 2) throw invalid_input("motion_signatures: an animation of " + std::to_string(frames) +
+                                      " frame(s); a motion needs at least 2");
+}
+
+/// Throws unless the RMS radius is a unit: positive and finite.
+inline void check_radius(double radius) {
+  if (!(radius > 0) || !std::isfinite(radius))
+    throw invalid_input("motion_signatures: the animation has no extent (RMS radius " + std::to_string(radius) + ")");
+}
+
+/// What every row of an animation's signatures shares: the options, the unit up direction, the
+/// RMS radius, the frame rate and count, and the row's width.
+struct Signature_rows {
+  const Motion_signature_options& options;
+  std::optional<Eigen::Vector3d> up;
+  double radius;
+  double frames_per_second;
+  std::size_t frames;
+  std::size_t columns;
+};
+
+/// The rows' shared values, once the options, the frame count and the radius are checked.
+inline Signature_rows signature_rows(const Motion_signature_options& options, double frames_per_second,
+                                     std::size_t frames, double radius) {
+  std::optional<Eigen::Vector3d> up = unit_up(options);
+  const std::size_t columns = (up ? 2 : 1) * options.lags.size() * options.quantiles;
+  return {options, up, radius, frames_per_second, frames, columns};
+}
+
+/// The first and last frames (inclusive) that the row at `instant` reads.
+inline std::pair<std::size_t, std::size_t> frames_of_row(const Signature_rows& rows, double instant) {
+  std::size_t first = rows.frames, last = 0;
+  for (const double lag : rows.options.lags) {
+    const auto before = frame_at(instant - lag, rows.frames_per_second, rows.frames);
+    const auto after = frame_at(instant + lag, rows.frames_per_second, rows.frames);
+    first = std::min(first, before.first);
+    last = std::max(last, after.first + (after.second == 0 ? 0 : 1));
+  }
+  return {first, last};
+}
+
+/// The signature at `instant` into `row` (`rows.columns` values), the frames read through
+/// `frame_of(t)` (frame t's `3V` coordinates); `speeds` and `rises` are scratch of V pairs (rises
+/// empty without an up direction).
+template <class FrameOf>
+void signature_row(const Signature_rows& rows, const FrameOf& frame_of, std::span<const double> weights,
+                   double instant, double* row, std::vector<std::pair<double, double>>& speeds,
+                   std::vector<std::pair<double, double>>& rises) {
+  const Motion_signature_options& options = rows.options;
+  const std::size_t vertices = weights.size(), k = options.quantiles, lags = options.lags.size();
+  const double vertical_factor = std::sqrt(options.vertical_weight);
+  for (std::size_t l = 0; l < lags; ++l) {
+    const double lag = options.lags[l];
+    const auto before = frames_around(frame_of, frame_at(instant - lag, rows.frames_per_second, rows.frames));
+    const auto after = frames_around(frame_of, frame_at(instant + lag, rows.frames_per_second, rows.frames));
+    const double unit = 1.0 / (2.0 * lag * rows.radius);
+    for (std::size_t v = 0; v < vertices; ++v) {
+      const Eigen::Vector3d d = point_at(after, v) - point_at(before, v);
+      speeds[v] = {d.norm() * unit, weights[v]};
+      if (rows.up) rises[v] = {d.dot(*rows.up) * unit, weights[v]};
+    }
+    double* speed_quantiles = row + l * k;
+    weighted_quantiles(speeds, k, speed_quantiles);
+    for (std::size_t q = 0; q < k; ++q) speed_quantiles[q] = std::log(std::max(speed_quantiles[q], options.floor));
+    if (!rows.up) continue;
+    double* vertical = speed_quantiles + lags * k;
+    weighted_quantiles(rises, k, vertical);
+    for (std::size_t q = 0; q < k; ++q) vertical[q] = vertical_factor * std::asinh(vertical[q] / options.vertical_unit);
+  }
+}
 
 }  // namespace internal
 
@@ -184,51 +293,18 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
   if (vertices == 0 || positions.size() % (3 * vertices) != 0)
     throw invalid_input("motion_signatures: positions are not T x 3V for the weights' V = " + std::to_string(vertices));
   const std::size_t frames = positions.size() / (3 * vertices);
-  if (frames < 2) throw invalid_input("motion_signatures: an animation of " + std::to_string(frames) +
-                                      " frame(s); a motion needs at least 2");
-  if (options.quantiles == 0) throw invalid_input("motion_signatures: 0 quantiles");
-  if (options.lags.empty()) throw invalid_input("motion_signatures: no lag");
-  for (const double lag : options.lags)
-    if (!(lag > 0) || !std::isfinite(lag))
-      throw invalid_input("motion_signatures: a lag of " + std::to_string(lag) + " s; lags must be positive");
-  mesh::check_frames_per_second(frames_per_second, "motion_signatures");
-  if (!(options.floor > 0)) throw invalid_input("motion_signatures: the floor must be positive");
-  if (options.up && !(options.vertical_unit > 0))
-    throw invalid_input("motion_signatures: the vertical unit must be positive");
-  if (options.up && !(options.vertical_weight >= 0 && std::isfinite(options.vertical_weight)))
-    throw invalid_input("motion_signatures: the vertical weight must be finite and not negative");
+  internal::check_frame_count(frames);
+  internal::check_signature_options(options, frames_per_second);
   const double radius = internal::rms_radius(positions, weights, frames);
-  if (!(radius > 0) || !std::isfinite(radius))
-    throw invalid_input("motion_signatures: the animation has no extent (RMS radius " + std::to_string(radius) + ")");
+  internal::check_radius(radius);
+  const internal::Signature_rows rows = internal::signature_rows(options, frames_per_second, frames, radius);
 
-  const std::optional<Eigen::Vector3d> up = internal::unit_up(options);
-
-  const std::size_t k = options.quantiles, lags = options.lags.size(), columns = (up ? 2 : 1) * lags * k;
   using Row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-  Row_major out = Row_major(static_cast<Eigen::Index>(instants.size()), static_cast<Eigen::Index>(columns));
-  const double vertical_factor = std::sqrt(options.vertical_weight);
+  Row_major out = Row_major(static_cast<Eigen::Index>(instants.size()), static_cast<Eigen::Index>(rows.columns));
+  const auto frame_of = [&](std::size_t t) { return positions.data() + 3 * vertices * t; };
   deformseg::internal::parallel_for(instants.size(), 0, [&](std::size_t r) {
-    std::vector<std::pair<double, double>> speeds(vertices), rises(up ? vertices : 0);
-    for (std::size_t l = 0; l < lags; ++l) {
-      const double lag = options.lags[l];
-      const auto before = internal::frame_at(instants[r] - lag, frames_per_second, frames);
-      const auto after = internal::frame_at(instants[r] + lag, frames_per_second, frames);
-      const double unit = 1.0 / (2.0 * lag * radius);
-      for (std::size_t v = 0; v < vertices; ++v) {
-        const Eigen::Vector3d d = internal::point_at(positions.data(), vertices, after, v) -
-                                  internal::point_at(positions.data(), vertices, before, v);
-        speeds[v] = {d.norm() * unit, weights[v]};
-        if (up) rises[v] = {d.dot(*up) * unit, weights[v]};
-      }
-      double* row = out.data() + r * columns + l * k;
-      internal::weighted_quantiles(speeds, k, row);
-      for (std::size_t q = 0; q < k; ++q) row[q] = std::log(std::max(row[q], options.floor));
-      if (!up) continue;
-      double* vertical = row + lags * k;
-      internal::weighted_quantiles(rises, k, vertical);
-      for (std::size_t q = 0; q < k; ++q)
-        vertical[q] = vertical_factor * std::asinh(vertical[q] / options.vertical_unit);
-    }
+    std::vector<std::pair<double, double>> speeds(vertices), rises(rows.up ? vertices : 0);
+    internal::signature_row(rows, frame_of, weights, instants[r], out.data() + r * rows.columns, speeds, rises);
   });
   return out;
 }
