@@ -46,27 +46,29 @@ ds::signatures::Motion_signature_options options_with(std::optional<Eigen::Vecto
   return options;
 }
 
-// The description today's in-memory path gives (Motion_signature_similarity::describe).
+// The description the in-memory path gives (Motion_signature_similarity::describe), in float.
 template <class Animation>
-Eigen::MatrixXd described(const Animation& animation, const ds::signatures::Motion_signature_options& options) {
+Eigen::MatrixXf described(const Animation& animation, const ds::signatures::Motion_signature_options& options) {
   ds::similarity::Motion_signature_similarity<> policy;
   policy.signatures = options;
   return policy.describe(animation).signatures;
 }
 
-// The streamed signatures at the instants the policy describes at.
+// The streamed description of the policy (Motion_signature_similarity::describe_stream).
 template <class Source>
-Eigen::MatrixXd streamed(Source& source, const ds::signatures::Motion_signature_options& options) {
-  const std::vector<double> instants =
-      ds::similarity::internal::signature_instants(source.num_frames(), source.frames_per_second(), 30);
-  return ds::signatures::motion_signatures_streamed(source, options, std::span<const double>(instants));
+Eigen::MatrixXf streamed(Source& source, const ds::signatures::Motion_signature_options& options) {
+  ds::similarity::Motion_signature_similarity<> policy;
+  policy.signatures = options;
+  return policy.describe_stream(source).signatures;
 }
 
-void require_same_bits(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+template <class Scalar>
+void require_same_bits(const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& a,
+                       const Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>& b) {
   REQUIRE(a.rows() == b.rows());
   REQUIRE(a.cols() == b.cols());
   REQUIRE(a.size() > 0);
-  CHECK(std::memcmp(a.data(), b.data(), sizeof(double) * std::size_t(a.size())) == 0);
+  CHECK(std::memcmp(a.data(), b.data(), sizeof(Scalar) * std::size_t(a.size())) == 0);
 }
 
 const std::vector<std::optional<Eigen::Vector3d>> ups{Eigen::Vector3d::UnitY(), std::nullopt};

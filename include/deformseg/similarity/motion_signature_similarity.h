@@ -10,6 +10,7 @@
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
+#include <deformseg/signatures/motion_signature_stream.h>
 #include <deformseg/signatures/motion_signatures.h>
 #include <deformseg/similarity/motion_signature_kernel.h>
 #include <deformseg/similarity/motion_signature_view.h>
@@ -213,6 +214,28 @@ struct Motion_signature_similarity {
                                                     std::span<const double>(instants))
                        .template cast<float>();
     d.frames = internal::nearest_frames(instants, frames_per_second, frames);
+    return d;
+  }
+
+  /// @brief The signatures of an animation read frame by frame from `source` (a point cache, a
+  /// frame sequence or a glTF clip: `io/frame_stream.h`), equal bit for bit to `describe` of the
+  /// same frames, in memory that grows with the longest lag (`signatures::streamed_ring_frames`
+  /// frames), not with the animation's length.
+  /// @tparam Source a `signatures::FrameSource`, read twice from its start.
+  /// @throws invalid_input as `describe`, or as the source does (a frame that cannot be read).
+  /// @par Complexity as `describe`; memory O(V ring + R W).
+  template <signatures::FrameSource Source>
+  Description describe_stream(Source& source) const {
+    if (!(signature_rate > 0) || !std::isfinite(signature_rate))
+      throw invalid_input("Motion_signature_similarity: the signature rate must be positive and finite");
+    const double fps = source.frames_per_second();
+    mesh::check_frames_per_second(fps, "motion_signatures");
+    const std::size_t frames = source.num_frames();
+    const std::vector<double> instants = internal::signature_instants(frames, fps, signature_rate);
+    Description d;
+    d.signatures =
+        signatures::motion_signatures_streamed(source, signatures, std::span<const double>(instants)).template cast<float>();
+    d.frames = internal::nearest_frames(instants, fps, frames);
     return d;
   }
 
