@@ -39,6 +39,7 @@ inline double frame_dissimilarity_unit(std::size_t width, double scale) {
 /// `1 - exp(-squared_distance unit)`, in double precision. Increasing and concave in the
 /// distance, 0 for equal signatures. The reference that the vectorised comparison kernel
 /// approximates and that the search's lower bounds are proven against.
+/// @param squared_distance the squared distance of the two signatures, >= 0.
 /// @param unit `frame_dissimilarity_unit(width, scale)`.
 inline double frame_dissimilarity(double squared_distance, double unit) {
   return -std::expm1(-squared_distance * unit);
