@@ -534,7 +534,7 @@ Eigen::MatrixXf random_signatures(std::size_t rows, std::size_t width, float spr
   return s;
 }
 
-similarity::Motion_signature_view view_of(const Eigen::MatrixXf& s) {
+similarity::Motion_signature_view kernel_view_of(const Eigen::MatrixXf& s) {
   return {s.data(), std::size_t(s.rows()), std::size_t(s.cols())};
 }
 
@@ -549,7 +549,7 @@ double exact_squared_distance(const Eigen::MatrixXf& a, std::size_t i, const Eig
 /// Checks the kernel's contract with the search's lower bounds for every cell of (a, b): within
 /// 2^-12 f + 2^-22 of the double reference f, in [0, 1]; returns the largest error relative to f.
 double check_kernel_accuracy(const Eigen::MatrixXf& a, const Eigen::MatrixXf& b, double unit) {
-  const similarity::Motion_signature_dissimilarity d(view_of(a), view_of(b), unit);
+  const similarity::Motion_signature_dissimilarity d(kernel_view_of(a), kernel_view_of(b), unit);
   std::vector<double> row(d.cols());
   double worst = 0;
   std::size_t failures = 0;
@@ -578,7 +578,7 @@ TEST_CASE("Motion_signature_dissimilarity: a cell has one value, read alone or w
     for (const std::size_t width : {1, 7, 64}) {
       const std::size_t n = 1 + (m * 7) % 19;
       const Eigen::MatrixXf a = random_signatures(n, width, 1.5f, random), b = random_signatures(m, width, 1.5f, random);
-      const similarity::Motion_signature_dissimilarity d(view_of(a), view_of(b), unit), back(view_of(b), view_of(a), unit);
+      const similarity::Motion_signature_dissimilarity d(kernel_view_of(a), kernel_view_of(b), unit), back(kernel_view_of(b), kernel_view_of(a), unit);
       REQUIRE(d.rows() == n);
       REQUIRE(d.cols() == m);
       std::vector<double> row(m);
@@ -598,17 +598,17 @@ TEST_CASE("Motion_signature_dissimilarity: a cell has one value, read alone or w
     }
   // Equal rows give exactly 0, wherever they fall in a chunk.
   const Eigen::MatrixXf a = random_signatures(40, 64, 2.0f, random);
-  const similarity::Motion_signature_dissimilarity self(view_of(a), view_of(a), unit);
+  const similarity::Motion_signature_dissimilarity self(kernel_view_of(a), kernel_view_of(a), unit);
   std::vector<double> row(40);
   for (std::size_t i = 0; i < 40; ++i) {
     self.row(i, 0, 40, row.data());
     CHECK(same_bits(row[i], 0.0));
     CHECK(same_bits(self(i, i), 0.0));
   }
-  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(view_of(a), view_of(a.leftCols(63)), unit),
+  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(kernel_view_of(a), kernel_view_of(a.leftCols(63)), unit),
                     Catch::Contains("64 and 63"));
-  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(view_of(a), view_of(a), 0.0), Catch::Contains("unit"));
-  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(view_of(a), view_of(a), 1e300), Catch::Contains("unit"));
+  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(kernel_view_of(a), kernel_view_of(a), 0.0), Catch::Contains("unit"));
+  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(kernel_view_of(a), kernel_view_of(a), 1e300), Catch::Contains("unit"));
 }
 
 TEST_CASE("Motion_signature_dissimilarity: within 2^-12 f + 2^-22 of the double reference f, in [0, 1]",
@@ -636,7 +636,7 @@ TEST_CASE("Motion_signature_dissimilarity: within 2^-12 f + 2^-22 of the double 
   // Infinite and NaN distances give 1.
   Eigen::MatrixXf huge(3, 1);
   huge << 1e30f, INFINITY, NAN;
-  const similarity::Motion_signature_dissimilarity d(view_of(zero), view_of(huge), unit);
+  const similarity::Motion_signature_dissimilarity d(kernel_view_of(zero), kernel_view_of(huge), unit);
   CHECK(d(0, 0) == 1.0);
   CHECK(d(0, 1) == 1.0);
   CHECK(d(0, 2) == 1.0);
