@@ -376,8 +376,9 @@ TEST_CASE("motion store: a bad manifest, an unknown format and a newer version a
     return text.substr(0, checksum) + "\"checksum\": \"" + io::internal::checksum_text(text.substr(0, checksum)) + "\"}\n";
   };
   store_test_put(manifest_path, "{\"format\": \"deformseg-motion-store\", \"version\": 1,}");
-  CHECK_THAT(store_test_open_error(folder), Catch::StartsWith(manifest_path.string() + ": not valid JSON at byte 50: syntax error while parsing object key - "
-                                                                    "unexpected '}'; expected string literal"));
+  CHECK_THAT(store_test_open_error(folder),
+             Catch::StartsWith(manifest_path.string() + ": not valid JSON at byte 50: syntax error while parsing "
+                                                        "object key - unexpected '}'; expected string literal"));
   store_test_put(manifest_path, "{\"format\": \"something else\"}");
   CHECK(store_test_open_error(folder) ==
         manifest_path.string() + ": not a motion store: its manifest has no \"format\": \"deformseg-motion-store\"");

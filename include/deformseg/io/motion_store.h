@@ -258,7 +258,8 @@ inline std::string json_error_text(const nlohmann::json::exception& e) {
 /// @throws invalid_input naming `file`, and the byte (from 0) where the text breaks for a syntax error.
 inline Json parse_json(std::string_view text, const std::string& file, int most_depth = max_json_depth) {
   const auto shallow = [&](int depth, Json::parse_event_t event, Json&) {
-    if (depth >= most_depth && (event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start))
+    const bool opens = event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start;
+    if (opens && depth >= most_depth)
       throw invalid_input(join("not valid here: JSON nested more than ", std::to_string(most_depth), " deep"),
                           {.file = file});
     return true;
@@ -267,7 +268,8 @@ inline Json parse_json(std::string_view text, const std::string& file, int most_
     return Json::parse(text, shallow);
   } catch (const Json::parse_error& e) {
     const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;  // nlohmann counts the bytes read, the failing one too
-    throw invalid_input(join("not valid JSON at byte ", std::to_string(byte), ": ", json_error_text(e)), {.file = file});
+    throw invalid_input(join("not valid JSON at byte ", std::to_string(byte), ": ", json_error_text(e)),
+                        {.file = file});
   } catch (const Json::exception& e) {
     throw invalid_input(join("not valid JSON: ", json_error_text(e)), {.file = file});
   }
@@ -449,7 +451,10 @@ private:
 
   static const char* kind_name(internal::Json::value_t kind) {
     using V = internal::Json::value_t;
-    return kind == V::object ? "an object" : kind == V::array ? "an array" : kind == V::string ? "a string" : "a number";
+    return kind == V::object   ? "an object"
+           : kind == V::array  ? "an array"
+           : kind == V::string ? "a string"
+                               : "a number";
   }
 
   // The member `key` of `object`, of `kind` (number_unsigned: any number).
@@ -499,9 +504,10 @@ private:
       throw invalid_input(sums ? newer : internal::join(newer, " (or its manifest is corrupted: its checksum does not match)"),
                           {.file = file});
     if (!sums)
-      throw invalid_input(named ? "its checksum does not match its contents: the manifest is corrupted"
-                                : "the manifest does not end with its \"checksum\": it is corrupted or not written by deformseg",
-                          {.file = file});
+      throw invalid_input(
+          named ? "its checksum does not match its contents: the manifest is corrupted"
+                : "the manifest does not end with its \"checksum\": it is corrupted or not written by deformseg",
+          {.file = file});
   }
 
   Manifest parse_manifest(const internal::Json& json, std::string_view text, const std::string& file) const {
@@ -525,7 +531,8 @@ private:
     for (const std::uint64_t g : m.segments)
       for (const char* kind : {"signatures", "frames", "summaries"}) expected.push_back(internal::store_file_name(kind, g));
     for (const internal::Json& f : member(json, "files", V::array, file)) {
-      if (!f.is_object()) throw invalid_input("the manifest's \"files\" holds a value that is not an object", {.file = file});
+      if (!f.is_object())
+        throw invalid_input("the manifest's \"files\" holds a value that is not an object", {.file = file});
       const std::string& name = member(f, "name", V::string, file).get_ref<const std::string&>();
       if (std::find(expected.begin(), expected.end(), name) == expected.end() || m.files.count(name))
         throw invalid_input(internal::join("the manifest lists \"", name.substr(0, 80),
@@ -709,12 +716,12 @@ class Store_append {
 public:
   /// @brief Starts an append to the store in `folder`.
   /// @param folder The store's folder; a missing or empty folder (created when missing) gets a new store.
-  /// @param description_json The options the descriptions were made with, a JSON object: a new
-  /// store records it; an existing one must hold the same members with the same values (numbers
-  /// compared by value: 3e-3 equals 0.003).
+  /// @param description_json The options the descriptions were made with, a JSON object nested at
+  /// most 63 deep: a new store records it; an existing one must hold the same members with the same
+  /// values (numbers compared by value: 3e-3 equals 0.003).
   /// @param summary_width The floats of every clip's summary (0 for none); an existing store's must be equal.
-  /// @param summary_json How the summaries are laid out, a JSON object the store keeps and does not
-  /// interpret (default `{}`); an existing store's must be equal.
+  /// @param summary_json How the summaries are laid out, a JSON object (nested at most 63 deep) the
+  /// store keeps and does not interpret (default `{}`); an existing store's must be equal.
   /// @throws invalid_input naming the folder or file when another append holds the lock, the folder
   /// holds other files and no store, the store cannot be read, or the options differ from the
   /// store's (naming the first member that differs).
@@ -848,8 +855,8 @@ private:
       const auto value = [&](const internal::Json& object) {
         return object.contains(*key) ? internal::json_text(object.at(*key)) : std::string("not given");
       };
-      throw invalid_input(internal::join("the store was described with other options: \"", *key, "\" is ", value(stored),
-                                         " in the store, ", value(description_),
+      throw invalid_input(internal::join("the store was described with other options: \"", *key, "\" is ",
+                                         value(stored), " in the store, ", value(description_),
                                          " in this append; a store holds descriptions made with one set of options"),
                           {.file = file});
     }
