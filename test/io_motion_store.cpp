@@ -429,6 +429,23 @@ TEST_CASE("motion store: JSON nested too deep is refused, in the manifest and in
   CHECK(store_test_open_error(folder) == manifest_path.string() + ": not valid here: JSON nested more than 64 deep");
 }
 
+TEST_CASE("motion store: the checksum in another form, and a number no double holds, are refused") {
+  const fs::path folder = test::fresh_dir("motion_store/json_forms");
+  store_test_write(folder, 0, 1);
+  const fs::path manifest_path = folder / "store.json";
+  const std::string manifest = store_test_bytes(manifest_path);
+  // Valid JSON, the right CRC-32, but not the checksum's one form (no space after the colon).
+  const std::size_t at = manifest.rfind("\"checksum\"");
+  store_test_put(manifest_path, manifest.substr(0, at) + "\"checksum\":\"" +
+                                    io::internal::checksum_text(manifest.substr(0, at)) + "\"}\n");
+  CHECK(store_test_open_error(folder) ==
+        manifest_path.string() + ": its checksum does not match its contents: the manifest is corrupted");
+  store_test_put(manifest_path, manifest);
+  CHECK(store_test_open_error(folder).empty());
+  CHECK_THROWS_WITH(io::Store_append(folder, R"({"floor": 1e400})", 3),
+                    Catch::StartsWith(folder.string() + ": not valid JSON: number overflow parsing '1e400'"));
+}
+
 TEST_CASE("motion store: a .npy header that does not match is named") {
   const fs::path folder = test::fresh_dir("motion_store/headers");
   store_test_write(folder, 0, 3);
