@@ -4,6 +4,8 @@
 
 #include <deformseg/io/motion_store.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <csignal>
@@ -127,13 +129,13 @@ void store_test_put(const fs::path& path, const std::string& bytes) {
 void store_test_rewrite(const fs::path& folder, const std::string& name, const std::string& bytes, std::size_t header) {
   store_test_put(folder / name, bytes);
   std::string manifest = store_test_bytes(folder / "store.json");
-  const std::size_t entry = manifest.find("{\"name\": \"" + name + "\"");
+  const std::size_t entry = manifest.find("\"name\": \"" + name + "\"");
   REQUIRE(entry != std::string::npos);
   const std::size_t end = manifest.find('}', entry);
   const std::string data = bytes.substr(std::min(header, bytes.size()));
-  manifest.replace(entry, end + 1 - entry,
-                   "{\"name\": \"" + name + "\", \"bytes\": " + std::to_string(bytes.size()) + ", \"data_crc32\": " +
-                       std::to_string(io::internal::crc32(data.data(), data.size())) + "}");
+  manifest.replace(entry, end - entry,
+                   "\"name\": \"" + name + "\", \"bytes\": " + std::to_string(bytes.size()) + ", \"data_crc32\": " +
+                       std::to_string(io::internal::crc32(data.data(), data.size())) + "\n  ");
   const std::size_t checksum = manifest.rfind("\"checksum\"");
   manifest = manifest.substr(0, checksum) + "\"checksum\": \"" + io::internal::checksum_text(manifest.substr(0, checksum)) + "\"}\n";
   store_test_put(folder / "store.json", manifest);
@@ -174,8 +176,8 @@ TEST_CASE("motion store: a round trip gives the same floats, frames, summaries a
     CHECK(store.generation() == 1);
     CHECK(store.width() == 5);
     CHECK(store.summary_width() == 3);
-    CHECK(store.description() == R"({"policy": "motion-signature", "lags": [0.1, 0.2], "floor": 0.003, "up": null})");
-    CHECK(store.summary_layout() == R"({"fields": ["lo", "hi", "mean"]})");
+    CHECK(store.description() == R"({"policy":"motion-signature","lags":[0.1,0.2],"floor":0.003,"up":null})");
+    CHECK(store.summary_layout() == R"({"fields":["lo","hi","mean"]})");
     store_test_check_seeds(store, 40);
   }
 }
@@ -235,7 +237,7 @@ TEST_CASE("motion store: an append with other options is refused, naming the opt
   const std::string manifest = store_test_bytes(folder / "store.json");
   CHECK_THROWS_WITH(io::Store_append(folder, R"({"policy": "motion-signature", "lags": [0.1, 0.3], "floor": 0.003, "up": null})",
                                      3, R"({"fields": ["lo", "hi", "mean"]})"),
-                    Catch::Contains("store.json") && Catch::Contains("\"lags\" is [0.1, 0.2] in the store, [0.1, 0.3]"));
+                    Catch::Contains("store.json") && Catch::Contains("\"lags\" is [0.1,0.2] in the store, [0.1,0.3]"));
   CHECK_THROWS_WITH(io::Store_append(folder, R"({"policy": "motion-signature", "lags": [0.1, 0.2], "up": null})", 3,
                                      R"({"fields": ["lo", "hi", "mean"]})"),
                     Catch::Contains("\"floor\" is 0.003 in the store, not given in this append"));
@@ -374,7 +376,9 @@ TEST_CASE("motion store: a bad manifest, an unknown format and a newer version a
     return text.substr(0, checksum) + "\"checksum\": \"" + io::internal::checksum_text(text.substr(0, checksum)) + "\"}\n";
   };
   store_test_put(manifest_path, "{\"format\": \"deformseg-motion-store\", \"version\": 1,}");
-  CHECK_THAT(store_test_open_error(folder), Catch::StartsWith(manifest_path.string() + ": not valid JSON at byte 50: expected a member's name"));
+  CHECK_THAT(store_test_open_error(folder),
+             Catch::StartsWith(manifest_path.string() + ": not valid JSON at byte 50: syntax error while parsing "
+                                                        "object key - unexpected '}'; expected string literal"));
   store_test_put(manifest_path, "{\"format\": \"something else\"}");
   CHECK(store_test_open_error(folder) ==
         manifest_path.string() + ": not a motion store: its manifest has no \"format\": \"deformseg-motion-store\"");
@@ -392,6 +396,54 @@ TEST_CASE("motion store: a bad manifest, an unknown format and a newer version a
   store_test_put(manifest_path, with_checksum(unlisted));
   CHECK_THAT(store_test_open_error(folder), Catch::Contains("the manifest lists \"../../etc/passwd\", which is not one"));
   CHECK_THAT(store_test_open_error(folder / "nothing"), Catch::EndsWith("nothing: not a motion store: no such folder"));
+}
+
+TEST_CASE("motion store: JSON nested too deep is refused, in the manifest and in the options") {
+  const fs::path folder = test::fresh_dir("motion_store/nesting");
+  const auto nested = [](std::size_t depth) {
+    std::string json = "1";
+    for (std::size_t k = depth; k > 0; --k) json = (k % 2 ? "{\"a\": " : "[") + json + (k % 2 ? "}" : "]");
+    return json;
+  };
+  // Options of 63 levels, in a manifest of 64, are options like any others: written, read back, compared equal.
+  {
+    io::Store_append append(folder, nested(63), 0);
+    append.add(store_test_clip(0).record, store_test_clip(0).view(), store_test_clip(0).frames, {});
+    append.commit();
+  }
+  const std::string options = io::Motion_store::open(folder, io::Verify::checksums).description();
+  CHECK(options == io::internal::json_text(nlohmann::ordered_json::parse(nested(63))));
+  CHECK_NOTHROW(io::Store_append(folder, nested(63), 0));
+  CHECK_THROWS_WITH(io::Store_append(folder, nested(64), 0),
+                    Catch::StartsWith(folder.string() + ": not valid here: JSON nested more than 63 deep"));
+  // The manifest's options nested 64 deep, the manifest 65, its checksum made to agree.
+  const fs::path manifest_path = folder / "store.json";
+  nlohmann::ordered_json manifest = nlohmann::ordered_json::parse(store_test_bytes(manifest_path));
+  manifest.erase("checksum");
+  manifest["description"] = nlohmann::ordered_json::parse(nested(64));
+  store_test_put(manifest_path, io::internal::with_checksum(manifest));
+  CHECK(store_test_open_error(folder) == manifest_path.string() + ": not valid here: JSON nested more than 64 deep");
+  // A manifest of the most bytes a manifest may have, every one of them an opening bracket: refused
+  // at the 65th, without recursing.
+  store_test_put(manifest_path, std::string(io::internal::max_manifest_bytes, '['));
+  CHECK(store_test_open_error(folder) == manifest_path.string() + ": not valid here: JSON nested more than 64 deep");
+}
+
+TEST_CASE("motion store: the checksum in another form, and a number no double holds, are refused") {
+  const fs::path folder = test::fresh_dir("motion_store/json_forms");
+  store_test_write(folder, 0, 1);
+  const fs::path manifest_path = folder / "store.json";
+  const std::string manifest = store_test_bytes(manifest_path);
+  // Valid JSON, the right CRC-32, but not the checksum's one form (no space after the colon).
+  const std::size_t at = manifest.rfind("\"checksum\"");
+  store_test_put(manifest_path, manifest.substr(0, at) + "\"checksum\":\"" +
+                                    io::internal::checksum_text(manifest.substr(0, at)) + "\"}\n");
+  CHECK(store_test_open_error(folder) ==
+        manifest_path.string() + ": its checksum does not match its contents: the manifest is corrupted");
+  store_test_put(manifest_path, manifest);
+  CHECK(store_test_open_error(folder).empty());
+  CHECK_THROWS_WITH(io::Store_append(folder, R"({"floor": 1e400})", 3),
+                    Catch::StartsWith(folder.string() + ": not valid JSON: number overflow parsing '1e400'"));
 }
 
 TEST_CASE("motion store: a .npy header that does not match is named") {

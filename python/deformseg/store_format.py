@@ -53,6 +53,11 @@ def _count(manifest, key, path, most=2**64 - 1):
     return value
 
 
+def _checksum_suffix(covered):
+    """The manifest's end after the bytes ``covered``: its "checksum" member, the closing brace, a newline."""
+    return f'"checksum": "crc32:{zlib.crc32(covered):08x}"}}\n'.encode()
+
+
 def _read_manifest(folder):
     path = folder / "store.json"
     if not folder.is_dir():
@@ -64,19 +69,24 @@ def _read_manifest(folder):
         manifest = json.loads(raw.decode("utf-8"))
     except (UnicodeDecodeError, json.JSONDecodeError) as error:
         _fail(path, f"not valid JSON: {error}")
+    except RecursionError:
+        _fail(path, "not valid here: JSON nested too deep")
     if not isinstance(manifest, dict) or manifest.get("format") != FORMAT:
         _fail(path, f'not a motion store: its manifest has no "format": "{FORMAT}"')
     version = manifest.get("version")
     if type(version) is not int or version < 1:
         _fail(path, 'the manifest\'s "version" is missing or not a positive count')
-    # The checksum covers the manifest's bytes before its last member, "checksum".
-    covered = raw[:raw.rfind(b'"checksum"')]
-    sums = list(manifest)[-1:] == ["checksum"] and manifest["checksum"] == f"crc32:{zlib.crc32(covered):08x}"
+    # The manifest ends with its last member, "checksum", in one fixed form; the checksum covers
+    # every byte before it.
+    covered = raw[:-len(_checksum_suffix(b""))]
+    named = list(manifest)[-1:] == ["checksum"]
+    sums = named and raw == covered + _checksum_suffix(covered)
     if version > VERSION:
         newer = f"store version {version} is newer than this deformseg, which reads version {VERSION}"
         _fail(path, newer if sums else newer + " (or its manifest is corrupted: its checksum does not match)")
     if not sums:
-        _fail(path, "its checksum does not match its contents: the manifest is corrupted")
+        _fail(path, "its checksum does not match its contents: the manifest is corrupted" if named
+              else 'the manifest does not end with its "checksum": it is corrupted or not written by deformseg')
     return manifest
 
 

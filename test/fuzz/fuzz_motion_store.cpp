@@ -46,7 +46,7 @@ std::vector<std::string_view> split(std::string_view text) {
 
 // Replaces the size and data CRC-32 of `name`'s entry in the manifest's text by those of `bytes`.
 void fix_entry(std::string& manifest, const std::string& name, std::string_view bytes) {
-  const std::string entry = "{\"name\": \"" + name + "\"";
+  const std::string entry = "\"name\": \"" + name + "\"";
   const std::size_t begin = manifest.find(entry);
   const std::size_t end = begin == std::string::npos ? begin : manifest.find('}', begin);
   if (end == std::string::npos) return;
@@ -56,14 +56,14 @@ void fix_entry(std::string& manifest, const std::string& name, std::string_view 
   } catch (const invalid_input&) {
   }
   const std::uint32_t crc = io::internal::crc32(bytes.data() + offset, bytes.size() - offset);
-  manifest.replace(begin, end + 1 - begin, entry + ", \"bytes\": " + std::to_string(bytes.size()) +
-                                               ", \"data_crc32\": " + std::to_string(crc) + "}");
+  manifest.replace(begin, end - begin,
+                   entry + ", \"bytes\": " + std::to_string(bytes.size()) + ", \"data_crc32\": " + std::to_string(crc));
 }
 
 void fix_checksum(std::string& manifest) {
   const std::size_t at = manifest.rfind("\"checksum\"");
   if (at == std::string::npos) return;
-  manifest = manifest.substr(0, at) + "\"checksum\": \"" + io::internal::checksum_text(manifest.substr(0, at)) + "\"}";
+  manifest = manifest.substr(0, at) + io::internal::checksum_suffix(manifest.substr(0, at));
 }
 
 void read_whole(const fs::path& folder) {

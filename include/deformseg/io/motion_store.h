@@ -11,10 +11,11 @@
 #include <deformseg/io/files.h>
 #include <deformseg/io/internal/crc32.h>
 #include <deformseg/io/internal/file_io.h>
-#include <deformseg/io/internal/json.h>
 #include <deformseg/io/internal/npy.h>
 #include <deformseg/io/internal/store_files.h>
 #include <deformseg/similarity/motion_signature_view.h>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <bit>
@@ -217,6 +218,78 @@ inline std::string checksum_text(std::string_view covered) {
   return join("crc32:", digits);
 }
 
+/// The manifest's end: its "checksum" member in the one form a reader accepts, for the bytes
+/// `covered` before it, then the object's closing brace and a newline.
+inline std::string checksum_suffix(std::string_view covered) {
+  return join("\"checksum\": \"", checksum_text(covered), "\"}\n");
+}
+
+/// The size of `checksum_suffix`'s text.
+inline constexpr std::size_t checksum_suffix_bytes = std::string_view(R"("checksum": "crc32:01234567"})").size() + 1;
+
+/// The manifest's text: `object` (a JSON object without "checksum") indented by nlohmann's dump,
+/// then its "checksum" member, which covers every byte before it.
+inline std::string with_checksum(const nlohmann::ordered_json& object) {
+  std::string text = object.dump(1);
+  text.resize(text.rfind('}'));  // the closing brace, after "\n"
+  text.back() = ',';
+  text.append("\n ");
+  return text.append(checksum_suffix(text));
+}
+
+/// The JSON of a store: nlohmann's, members kept in their order (the manifest's, the caller's
+/// options'); numbers compare by value (3e-3 equals 0.003).
+using Json = nlohmann::ordered_json;
+
+/// The deepest nesting of a store's manifest: dumping and comparing values recurse. The options
+/// it holds (its "description" and "summary") are nested one less.
+inline constexpr int max_json_depth = 64;
+
+/// The text of a nlohmann error without its "[json.exception...] " and "parse error at ...: " prefixes.
+inline std::string json_error_text(const nlohmann::json::exception& e) {
+  std::string_view text = e.what();
+  if (const std::size_t at = text.find("] "); at != std::string_view::npos) text.remove_prefix(at + 2);
+  if (text.starts_with("parse error"))
+    if (const std::size_t at = text.find(": "); at != std::string_view::npos) text.remove_prefix(at + 2);
+  return std::string(text);
+}
+
+/// Parses the JSON text `text` (RFC 8259, strict: nlohmann's parser), nested at most `most_depth` deep.
+/// @throws invalid_input naming `file`, and the byte (from 0) where the text breaks for a syntax error.
+inline Json parse_json(std::string_view text, const std::string& file, int most_depth = max_json_depth) {
+  const auto shallow = [&](int depth, Json::parse_event_t event, Json&) {
+    const bool opens = event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start;
+    if (opens && depth >= most_depth)
+      throw invalid_input(join("not valid here: JSON nested more than ", std::to_string(most_depth), " deep"),
+                          {.file = file});
+    return true;
+  };
+  try {
+    return Json::parse(text, shallow);
+  } catch (const Json::parse_error& e) {
+    const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;  // nlohmann counts the bytes read, the failing one too
+    throw invalid_input(join("not valid JSON at byte ", std::to_string(byte), ": ", json_error_text(e)),
+                        {.file = file});
+  } catch (const Json::exception& e) {
+    throw invalid_input(join("not valid JSON: ", json_error_text(e)), {.file = file});
+  }
+}
+
+/// The compact text of `value` (nlohmann's dump), as errors and `Motion_store::description` give it.
+inline std::string json_text(const Json& value) {
+  return value.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+/// The first member name whose value differs between the objects `a` and `b` (in `a`'s order,
+/// then the names only `b` has), or nothing when they hold the same members with the same values.
+inline std::optional<std::string> first_different_member(const Json& a, const Json& b) {
+  for (const auto& [key, value] : a.items())
+    if (!b.contains(key) || b.at(key) != value) return key;
+  for (const auto& [key, value] : b.items())
+    if (!a.contains(key)) return key;
+  return std::nullopt;
+}
+
 }  // namespace internal
 
 /// @brief A motion store opened for reading: the descriptions of its clips, memory-mapped, their
@@ -265,9 +338,10 @@ public:
   std::size_t width() const noexcept { return width_; }
   /// @brief The floats of each clip's summary (possibly 0).
   std::size_t summary_width() const noexcept { return summary_width_; }
-  /// @brief The description's options the store was made with: a JSON object, canonical text.
+  /// @brief The description's options the store was made with: a JSON object, as nlohmann::json's
+  /// compact text (members in their order, no spaces: `{"policy":"motion-signature","width":64}`).
   const std::string& description() const noexcept { return description_; }
-  /// @brief The layout of the summaries as their writer gave it: a JSON object, canonical text.
+  /// @brief The layout of the summaries as their writer gave it: a JSON object, compact text as `description`'s.
   const std::string& summary_layout() const noexcept { return summary_layout_; }
 
   /// @brief Clip `i`'s signatures, `rows x width()` floats dimension-major, in the store's mapping.
@@ -371,74 +445,82 @@ private:
                                          " bytes; a store's manifest has at most 4 MiB"),
                           {.file = file});
     const std::string_view text(bytes.begin(), bytes.size);
-    const internal::Json json = internal::Json_parser(text, file).parse();
+    const internal::Json json = internal::parse_json(text, file);
     return parse_manifest(json, text, file);
   }
 
-  static const internal::Json& member(const internal::Json& object, std::string_view key, internal::Json::Kind kind,
+  static const char* kind_name(internal::Json::value_t kind) {
+    using V = internal::Json::value_t;
+    return kind == V::object   ? "an object"
+           : kind == V::array  ? "an array"
+           : kind == V::string ? "a string"
+                               : "a number";
+  }
+
+  // The member `key` of `object`, of `kind` (number_unsigned: any number).
+  static const internal::Json& member(const internal::Json& object, std::string_view key, internal::Json::value_t kind,
                                       const std::string& file) {
-    const internal::Json* value = object.find(key);
-    static constexpr const char* kinds[] = {"null", "true or false", "a number", "a string", "an array", "an object"};
-    if (!value || value->kind != kind)
-      throw invalid_input(internal::join("the manifest's \"", key, "\" is ", value ? "not " : "missing: it must be ",
-                                         kinds[static_cast<int>(kind)]),
+    const auto value = object.find(std::string(key));
+    const bool found = value != object.end();
+    if (!found || (kind == internal::Json::value_t::number_unsigned ? !value->is_number() : value->type() != kind))
+      throw invalid_input(internal::join("the manifest's \"", key, "\" is ", found ? "not " : "missing: it must be ",
+                                         kind_name(kind)),
                           {.file = file});
     return *value;
   }
 
   static std::uint64_t count(const internal::Json& value, std::string_view what, const std::string& file,
                              std::uint64_t most = std::numeric_limits<std::uint64_t>::max()) {
-    std::uint64_t n = 0;
-    const std::string& t = value.text;
-    const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), n);
-    if (value.kind != internal::Json::Kind::number || error != std::errc{} || end != t.data() + t.size() || n > most)
-      throw invalid_input(internal::join("the manifest's ", what, " (", t.substr(0, 40), ") is not a count of at most ",
-                                         std::to_string(most)),
+    if (!value.is_number_unsigned() || value.get<std::uint64_t>() > most)
+      throw invalid_input(internal::join("the manifest's ", what, " (", internal::json_text(value).substr(0, 40),
+                                         ") is not a count of at most ", std::to_string(most)),
                           {.file = file});
-    return n;
+    return value.get<std::uint64_t>();
   }
 
   static std::uint64_t count_member(const internal::Json& object, std::string_view key, const std::string& file,
                                     std::uint64_t most = std::numeric_limits<std::uint64_t>::max()) {
-    return count(member(object, key, internal::Json::Kind::number, file), internal::join("\"", key, "\""), file, most);
+    return count(member(object, key, internal::Json::value_t::number_unsigned, file), internal::join("\"", key, "\""),
+                 file, most);
   }
 
+  // The manifest must end with its "checksum" member in the form `checksum_suffix` writes, whose
+  // CRC-32 is that of every byte before it.
   static void check_format_and_checksum(const internal::Json& json, std::string_view text, const std::string& file) {
-    using K = internal::Json::Kind;
-    const internal::Json* format = json.kind == K::object ? json.find("format") : nullptr;
-    if (!format || format->kind != K::string || format->text != internal::store_format_name)
+    const auto format = json.is_object() ? json.find("format") : json.end();
+    if (format == json.end() || !format->is_string() ||
+        format->get_ref<const std::string&>() != internal::store_format_name)
       throw invalid_input("not a motion store: its manifest has no \"format\": \"deformseg-motion-store\"", {.file = file});
-    const internal::Json* version = json.find("version");
-    std::uint64_t v = 0;
-    if (version && version->kind == K::number) std::from_chars(version->text.data(), version->text.data() + version->text.size(), v);
-    if (!version || version->kind != K::number || v == 0)
+    const auto version = json.find("version");
+    if (version == json.end() || !version->is_number_unsigned() || version->get<std::uint64_t>() == 0)
       throw invalid_input("the manifest's \"version\" is missing or not a positive count", {.file = file});
-    const std::string newer = internal::join("store version ", version->text, " is newer than this deformseg, which reads version ",
+    const std::string newer = internal::join("store version ", internal::json_text(*version),
+                                             " is newer than this deformseg, which reads version ",
                                              std::to_string(internal::store_version));
-    const internal::Json::Member* last = json.members.empty() ? nullptr : &json.members.back();
-    const bool sums = last && last->key == "checksum" && last->value.kind == K::string &&
-                      last->value.text == internal::checksum_text(text.substr(0, last->key_begin));
-    if (v > internal::store_version)
+    const std::size_t covered = text.size() - std::min(text.size(), internal::checksum_suffix_bytes);
+    const bool named = !json.empty() && std::prev(json.end()).key() == "checksum";
+    const bool sums = named && text.substr(covered) == internal::checksum_suffix(text.substr(0, covered));
+    if (version->get<std::uint64_t>() > internal::store_version)
       throw invalid_input(sums ? newer : internal::join(newer, " (or its manifest is corrupted: its checksum does not match)"),
                           {.file = file});
     if (!sums)
-      throw invalid_input(last && last->key == "checksum"
-                              ? "its checksum does not match its contents: the manifest is corrupted"
-                              : "the manifest does not end with its \"checksum\": it is corrupted or not written by deformseg",
-                          {.file = file});
+      throw invalid_input(
+          named ? "its checksum does not match its contents: the manifest is corrupted"
+                : "the manifest does not end with its \"checksum\": it is corrupted or not written by deformseg",
+          {.file = file});
   }
 
   Manifest parse_manifest(const internal::Json& json, std::string_view text, const std::string& file) const {
-    using K = internal::Json::Kind;
+    using V = internal::Json::value_t;
     check_format_and_checksum(json, text, file);
     Manifest m;
     m.generation = count_member(json, "generation", file, 999'999'999);
     m.width = count_member(json, "width", file, internal::max_width);
     m.summary_width = count_member(json, "summary_width", file, internal::max_width);
     m.clips = count_member(json, "clips", file);
-    m.description = internal::json_text(member(json, "description", K::object, file));
-    m.summary_layout = internal::json_text(member(json, "summary", K::object, file));
-    for (const internal::Json& g : member(json, "segments", K::array, file).items) {
+    m.description = internal::json_text(member(json, "description", V::object, file));
+    m.summary_layout = internal::json_text(member(json, "summary", V::object, file));
+    for (const internal::Json& g : member(json, "segments", V::array, file)) {
       const std::uint64_t generation = count(g, "segment", file, m.generation);
       if (generation == 0 || (!m.segments.empty() && generation <= m.segments.back()))
         throw invalid_input("the manifest's \"segments\" are not increasing generations from 1", {.file = file});
@@ -448,9 +530,10 @@ private:
                                       internal::store_file_name("strings", m.generation)};
     for (const std::uint64_t g : m.segments)
       for (const char* kind : {"signatures", "frames", "summaries"}) expected.push_back(internal::store_file_name(kind, g));
-    for (const internal::Json& f : member(json, "files", K::array, file).items) {
-      if (f.kind != K::object) throw invalid_input("the manifest's \"files\" holds a value that is not an object", {.file = file});
-      const std::string& name = member(f, "name", K::string, file).text;
+    for (const internal::Json& f : member(json, "files", V::array, file)) {
+      if (!f.is_object())
+        throw invalid_input("the manifest's \"files\" holds a value that is not an object", {.file = file});
+      const std::string& name = member(f, "name", V::string, file).get_ref<const std::string&>();
       if (std::find(expected.begin(), expected.end(), name) == expected.end() || m.files.count(name))
         throw invalid_input(internal::join("the manifest lists \"", name.substr(0, 80),
                                            "\", which is not one of the store's files or is listed twice"),
@@ -633,12 +716,12 @@ class Store_append {
 public:
   /// @brief Starts an append to the store in `folder`.
   /// @param folder The store's folder; a missing or empty folder (created when missing) gets a new store.
-  /// @param description_json The options the descriptions were made with, a JSON object: a new
-  /// store records it; an existing one must hold the same members with the same values (numbers
-  /// compared by value: 3e-3 equals 0.003).
+  /// @param description_json The options the descriptions were made with, a JSON object nested at
+  /// most 63 deep: a new store records it; an existing one must hold the same members with the same
+  /// values (numbers compared by value: 3e-3 equals 0.003).
   /// @param summary_width The floats of every clip's summary (0 for none); an existing store's must be equal.
-  /// @param summary_json How the summaries are laid out, a JSON object the store keeps and does not
-  /// interpret (default `{}`); an existing store's must be equal.
+  /// @param summary_json How the summaries are laid out, a JSON object (nested at most 63 deep) the
+  /// store keeps and does not interpret (default `{}`); an existing store's must be equal.
   /// @throws invalid_input naming the folder or file when another append holds the lock, the folder
   /// holds other files and no store, the store cannot be read, or the options differ from the
   /// store's (naming the first member that differs).
@@ -759,25 +842,25 @@ private:
   using Key = std::pair<std::string, std::string>;
 
   internal::Json parse_object(std::string_view json, std::string_view what) const {
-    internal::Json value = internal::Json_parser(json, folder_.string()).parse();
-    if (value.kind != internal::Json::Kind::object)
+    internal::Json value = internal::parse_json(json, folder_.string(), internal::max_json_depth - 1);
+    if (!value.is_object())
       throw invalid_input(internal::join(what, " must be a JSON object"), {.file = folder_.string()});
     return value;
   }
 
   void check_same_options() const {
     const std::string file = (folder_ / "store.json").string();
-    const internal::Json stored = internal::Json_parser(base_.description(), file).parse();
+    const internal::Json stored = internal::parse_json(base_.description(), file);
     if (const auto key = internal::first_different_member(stored, description_)) {
-      const internal::Json* mine = description_.find(*key);
-      const internal::Json* theirs = stored.find(*key);
+      const auto value = [&](const internal::Json& object) {
+        return object.contains(*key) ? internal::json_text(object.at(*key)) : std::string("not given");
+      };
       throw invalid_input(internal::join("the store was described with other options: \"", *key, "\" is ",
-                                         theirs ? internal::json_text(*theirs) : "not given", " in the store, ",
-                                         mine ? internal::json_text(*mine) : "not given",
+                                         value(stored), " in the store, ", value(description_),
                                          " in this append; a store holds descriptions made with one set of options"),
                           {.file = file});
     }
-    const internal::Json layout = internal::Json_parser(base_.summary_layout(), file).parse();
+    const internal::Json layout = internal::parse_json(base_.summary_layout(), file);
     if (base_.summary_width() != summary_width_ || internal::first_different_member(layout, summary_layout_))
       throw invalid_input(internal::join("the store's summaries are of another layout (", std::to_string(base_.summary_width()),
                                          " floats, ", base_.summary_layout(), ") than this append's (",
@@ -907,40 +990,20 @@ private:
 
   std::string manifest_text(const std::vector<std::uint64_t>& segments,
                             const std::map<std::string, internal::Store_file>& files) const {
-    using internal::append_decimal;
-    std::string text = internal::join("{\"format\": \"", internal::store_format_name, "\", \"version\": ");
-    append_decimal(text, internal::store_version);
-    const auto number = [&](const char* key, std::uint64_t value) {
-      text.append(",\n \"").append(key).append("\": ");
-      append_decimal(text, value);
-    };
-    number("generation", generation_);
-    number("width", width_);
-    number("summary_width", summary_width_);
-    number("clips", size());
-    text.append(",\n \"description\": ").append(internal::json_text(description_));
-    text.append(",\n \"summary\": ").append(internal::json_text(summary_layout_));
-    text.append(",\n \"segments\": [");
-    for (std::size_t k = 0; k < segments.size(); ++k) {
-      if (k) text.append(", ");
-      append_decimal(text, segments[k]);
-    }
-    text.append("],\n \"files\": [");
-    bool first = true;
-    for (const auto& [name, file] : files) {
-      text.append(first ? "\n  " : ",\n  ");
-      first = false;
-      text.append("{\"name\": ");
-      internal::append_json_string(text, name);
-      text.append(", \"bytes\": ");
-      append_decimal(text, file.bytes);
-      text.append(", \"data_crc32\": ");
-      append_decimal(text, file.data_crc32);
-      text.append("}");
-    }
-    text.append("],\n ");
-    const std::string checksum = internal::checksum_text(text);
-    return text.append("\"checksum\": \"").append(checksum).append("\"}\n");
+    internal::Json manifest;
+    manifest["format"] = std::string(internal::store_format_name);
+    manifest["version"] = internal::store_version;
+    manifest["generation"] = generation_;
+    manifest["width"] = width_;
+    manifest["summary_width"] = summary_width_;
+    manifest["clips"] = size();
+    manifest["description"] = description_;
+    manifest["summary"] = summary_layout_;
+    manifest["segments"] = segments;
+    internal::Json& listed = manifest["files"] = internal::Json::array();
+    for (const auto& [name, file] : files)
+      listed.push_back({{"name", name}, {"bytes", file.bytes}, {"data_crc32", file.data_crc32}});
+    return internal::with_checksum(manifest);
   }
 
   // The previous generation's files that the new manifest does not list; its clip table and

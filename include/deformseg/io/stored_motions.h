@@ -6,13 +6,13 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/io/internal/json.h>
 #include <deformseg/io/motion_store.h>
 #include <deformseg/similarity/motion_bounds.h>
 #include <deformseg/similarity/motion_collection.h>
 
-#include <charconv>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <utility>
@@ -32,17 +32,15 @@ namespace internal {
 // The chunk count of a store's summaries, from its layout; refuses any other layout.
 inline std::size_t stored_summary_chunks(const Motion_store& store) {
   const std::string file = (store.folder() / "store.json").string();
-  const Json layout = Json_parser(store.summary_layout(), file).parse();
-  const Json* kind = layout.find("kind");
-  const Json* chunks = layout.find("chunks");
-  std::size_t count = 0;
-  if (!kind || kind->text != "motion-summary" || !chunks || chunks->kind != Json::Kind::number ||
-      std::from_chars(chunks->text.data(), chunks->text.data() + chunks->text.size(), count).ptr !=
-          chunks->text.data() + chunks->text.size() ||
-      count == 0)
+  const Json layout = parse_json(store.summary_layout(), file);
+  const auto kind = layout.find("kind");
+  const auto chunks = layout.find("chunks");
+  if (kind == layout.end() || *kind != "motion-summary" || chunks == layout.end() || !chunks->is_number_unsigned() ||
+      chunks->get<std::uint64_t>() == 0 || chunks->get<std::uint64_t>() > std::numeric_limits<std::size_t>::max())
     throw invalid_input("the store's summaries are not motion summaries (its \"summary\" is " +
                             store.summary_layout() + "): describe the clips again into a new store",
                         {.file = file});
+  const auto count = chunks->get<std::size_t>();
   if (store.summary_width() != similarity::summary_width(store.width(), count))
     throw invalid_input("the store's summaries have " + std::to_string(store.summary_width()) +
                             " floats, motion summaries of width " + std::to_string(store.width()) + " with " +
