@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <iterator>
 #include <cstddef>
 #include <limits>
 #include <numeric>
@@ -153,39 +154,71 @@ public:
     Nearest_motions result;
     result.pruning.candidates = order.size();
     Top_neighbours top(k_);
+    if (k_ == 0) {
+      result.pruning.pruned_by_summary = order.size();
+      return result;
+    }
+    // First the k likeliest, aligned whole, so that the k-th value prunes from the start.
+    const std::vector<std::size_t> seeds = likeliest(order);
+    run_batch(seeds, -std::numeric_limits<double>::infinity(), top, result.pruning);
+    std::vector<std::size_t> rest;
+    rest.reserve(order.size() - seeds.size());
+    std::set_difference(order.begin(), order.end(), seeds.begin(), seeds.end(), std::back_inserter(rest),
+                        [&](std::size_t x, std::size_t y) { return in_order(x, y); });
     std::size_t next = 0;
-    while (next < order.size() && k_ > 0) {
+    while (next < rest.size()) {
       const double threshold = top.threshold();
-      // Until k are found, just enough to find them, aligned whole: then the k-th value prunes.
-      const std::size_t batch = top.full() ? search_batch : k_ - top.size();
       std::size_t end = next;
-      while (end < order.size() && end - next < batch && !rules_out(bounds_[order[end]], threshold)) ++end;
+      while (end < rest.size() && end - next < search_batch && !rules_out(bounds_[rest[end]], threshold)) ++end;
       if (end == next) break;  // this candidate's bound rules it out, and every later one's is larger
-      run_batch(std::span(order).subspan(next, end - next), threshold, top, result.pruning);
+      run_batch(std::span(rest).subspan(next, end - next), threshold, top, result.pruning);
       next = end;
     }
-    result.pruning.pruned_by_summary = order.size() - next;
+    result.pruning.pruned_by_summary = rest.size() - next;
     result.neighbours = top.take();
     return result;
   }
 
 private:
-  // The candidates, sorted by their summary bound (bounds_), then by index.
+  // The order of the search: by summary bound, then by index.
+  bool in_order(std::size_t x, std::size_t y) const {
+    return bounds_[x] != bounds_[y] ? bounds_[x] < bounds_[y] : x < y;
+  }
+
+  // The candidates, sorted by their summary bound (bounds_), then by index; and each one's guess.
   std::vector<std::size_t> by_summary_bound() {
     const std::size_t n = collection_.size();
     bounds_.assign(n, 0.0);
+    guesses_.assign(n, 0.0);
+    const Motion_summary_view query = summary_.view();
     deformseg::internal::parallel_for(
         n, threads_,
         [&](std::size_t i) {
-          bounds_[i] = lb_mean(summary_.view(), collection_.summary(i), unit_);
+          const Motion_summary_view clip = collection_.summary(i);
+          bounds_[i] = lb_mean(query, clip, unit_);
+          guesses_[i] = internal::squared_distance(query.mean(), clip.mean());
         },
         deformseg::internal::Loop_grain{.chunk = 256, .min_parallel = 2048});
     std::vector<std::size_t> order;
     order.reserve(n);
     for (std::size_t i = 0; i < n; ++i)
       if (i != self_) order.push_back(i);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return bounds_[x] < bounds_[y]; });
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return in_order(x, y); });
     return order;
+  }
+
+  // The k candidates whose mean signatures are nearest the query's (ties by index), in search order:
+  // a guess, not a bound, at the k nearest.
+  std::vector<std::size_t> likeliest(const std::vector<std::size_t>& order) const {
+    std::vector<std::size_t> seeds = order;
+    const auto by_guess = [&](std::size_t x, std::size_t y) {
+      return guesses_[x] != guesses_[y] ? guesses_[x] < guesses_[y] : x < y;
+    };
+    const std::size_t count = std::min(k_, seeds.size());
+    std::nth_element(seeds.begin(), seeds.begin() + std::ptrdiff_t(count), seeds.end(), by_guess);
+    seeds.resize(count);
+    std::sort(seeds.begin(), seeds.end(), [&](std::size_t x, std::size_t y) { return in_order(x, y); });
+    return seeds;
   }
 
   static bool rules_out(double lower_bound, double threshold) { return !may_beat(lower_bound, threshold); }
@@ -226,7 +259,7 @@ private:
   double unit_;
   std::size_t k_;
   int threads_;
-  std::vector<double> bounds_;
+  std::vector<double> bounds_, guesses_;
 };
 
 // The unit of the frame dissimilarity of `policy` for signatures of `width` values; refuses what
@@ -254,14 +287,15 @@ void check_query(const C& collection, Motion_signature_view query, const char* w
 /// exactly the query's row of `similarity_matrix(queries, database)`, stably sorted.
 ///
 /// Exact, and fast because most clips are never aligned: every clip's summary gives a lower
-/// bound of its dissimilarity (`lb_mean`); clips are tried in increasing order of it, so that
-/// the k-th best value rises quickly, and the search stops at the first whose bound proves it
-/// cannot reach that value (nor can any after it). A clip tried is first bounded by its rows
-/// (`lb_rows_columns`), then aligned by the value pass of `alignment::Dtw::mean_cost`, which
-/// abandons once it is proven below the k-th value. Ties with the k-th value are never ruled out,
-/// so ties rank as in the matrix. Clips are taken k at first, then 32 at a time between two looks at the k-th value,
-/// whatever the number of threads, so the result and `Nearest_motions::pruning` are the same on
-/// any number.
+/// bound of its dissimilarity (`lb_mean`). First the k clips whose mean signatures are nearest
+/// the query's are aligned whole, a guess at the nearest that makes the k-th best value high from
+/// the start; then the others are tried in increasing order of their bound, and the search stops
+/// at the first whose bound proves it cannot reach the k-th value (nor can any after it). A clip
+/// tried is first bounded by its rows (`lb_rows_columns`), then aligned by the value pass of
+/// `alignment::Dtw::mean_cost`, which abandons once it is proven below the k-th value. Ties with
+/// the k-th value are never ruled out, so ties rank as in the matrix. Clips are tried 32 at a time
+/// between two looks at the k-th value, whatever the number of threads, so the result and
+/// `Nearest_motions::pruning` are the same on any number.
 /// @param query the query's signatures: `view(policy.describe(animation))`, or a clip of a
 /// collection (then it is found too, at value 1: see `knn_graph` to leave it out).
 /// @param collection a `MotionCollection` described with `policy`'s options.
