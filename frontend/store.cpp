@@ -35,17 +35,22 @@ std::string canonical_path(const std::string& path) {
   return fs::absolute(path).lexically_normal().string();
 }
 
-// The clips of a glTF file: `clip` when given, else every clip of the file (a file without
-// clips gives its one animation, the rest pose repeated, under "").
-void add_gltf_clips(const std::string& file, const std::string& clip, std::vector<Clip_source>& out) {
+// The clips of a glTF file: `clip` when given, else every clip of the file of 2 frames or more at
+// `fps` (the others, poses, go to `poses`); a file without clips gives its one animation under "".
+void add_gltf_clips(const std::string& file, const std::string& clip, double fps, std::vector<Clip_source>& out,
+                    std::vector<std::string>& poses) {
   if (!clip.empty()) {
     out.push_back({canonical_path(file), clip});
     return;
   }
-  const std::vector<std::string> names = io::Gltf_file(file).clip_names();
-  if (names.empty()) out.push_back({canonical_path(file), ""});
-  for (std::size_t k = 0; k < names.size(); ++k)
-    out.push_back({canonical_path(file), names[k].empty() ? std::to_string(k) : names[k]});
+  const io::Gltf_contents contents = io::gltf_contents(file, fps);
+  if (contents.clips.empty()) out.push_back({canonical_path(file), ""});
+  for (std::size_t k = 0; k < contents.clips.size(); ++k) {
+    const Clip_source source{canonical_path(file),
+                             contents.clips[k].name.empty() ? std::to_string(k) : contents.clips[k].name};
+    if (contents.clips[k].frames < 2) poses.push_back(source.name());
+    else out.push_back(source);
+  }
 }
 
 }  // namespace
@@ -143,7 +148,8 @@ void read_file_clips(const std::vector<Clip_source>& clips, const std::vector<st
 
 }  // namespace
 
-std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, const Input_options& options) {
+std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, const Input_options& options,
+                                      std::vector<std::string>& poses) {
   check_clip_applies(inputs, options, Front::command_line);
   std::vector<Clip_source> all;
   for (const std::string& input : inputs) {
@@ -152,7 +158,7 @@ std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, co
       continue;
     }
     const Input_name name = input_name(input, options, Front::command_line);
-    if (io::is_gltf(name.file)) add_gltf_clips(name.file, name.clip, all);
+    if (io::is_gltf(name.file)) add_gltf_clips(name.file, name.clip, options.fps, all, poses);
     else all.push_back({canonical_path(name.file), ""});
   }
   std::vector<Clip_source> once;  // a clip named twice is described once

@@ -33,12 +33,14 @@ struct Clip_source {
 
 /// The clips that `inputs` name, in their order, each once: an animation (frame files, a folder, a
 /// quoted glob, a point cache) is one clip; a glTF file with a clip (FILE.glb#CLIP or
-/// `options.clip`) that clip, without one every clip of the file; a labels CSV (`.csv`, the
+/// `options.clip`) that clip, without one every clip of the file of 2 frames or more at
+/// `options.fps` (the others, poses with no motion, named in `poses`); a labels CSV (`.csv`, the
 /// header of `evaluate`'s) the clip of each row (a glTF row without a clip takes `options.clip`,
 /// or the file's only clip).
 /// @throws invalid_input naming the input that does not exist, a glTF file that cannot be parsed,
 /// a clip it does not have, a labels row naming several clips of a file that is not glTF.
-std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, const Input_options& options);
+std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, const Input_options& options,
+                                      std::vector<std::string>& poses);
 
 /// The clip of each row of the labels CSV `labels` (`evaluate`'s), in the rows' order: a glTF row
 /// without a clip takes `options.clip`, or the file's only clip.

@@ -252,3 +252,5 @@ def test_evaluate_store_shared_characters(tool, scratch, characters):
     # Every clip of a glTF file when none is named: the Knight's clips include the two above.
     knight = describe(tool, folder, characters / "Knight.glb")
     assert len(knight["skipped"]) == 2 and len(knight["described"]) > 2
+    assert knight["poses_left_out"] and all(p.startswith(str((characters / "Knight.glb").resolve()) + "#")
+                                            for p in knight["poses_left_out"])

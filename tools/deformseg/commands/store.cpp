@@ -48,17 +48,21 @@ void run_describe(const Describe_options& o) {
   frontend::check(o.read, frontend::Front::command_line);
   set_default_threads(o.read.threads);
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<frontend::Clip_source> clips = frontend::clip_sources(o.inputs, o.read);
+  std::vector<std::string> poses;
+  const std::vector<frontend::Clip_source> clips = frontend::clip_sources(o.inputs, o.read, poses);
   progress(std::to_string(clips.size()) + " clip(s) named by the inputs");
+  for (const std::string& pose : poses) progress("left out " + pose + ": a pose of 1 frame, no motion");
   const frontend::Describe_report report =
       frontend::describe_into_store(o.store, clips, o.read, policy, o.hash, progress);
   const double seconds = seconds_since(start);
   const nlohmann::json document = {{"store", o.store},         {"clips", report.clips},
                                    {"described", report.described}, {"redescribed", report.redescribed},
-                                   {"skipped", report.skipped},  {"seconds", seconds}};
+                                   {"skipped", report.skipped},  {"poses_left_out", poses},
+                                   {"seconds", seconds}};
   write_outputs(document, o.json, [&] {
     std::cout << "described    " << report.described.size() << "\nre-described " << report.redescribed.size()
-              << "\nskipped      " << report.skipped.size() << " (unchanged)\nstore        " << o.store << ", "
+              << "\nskipped      " << report.skipped.size() << " (unchanged)\nleft out     " << poses.size()
+              << " (poses of 1 frame in glTF files read whole)\nstore        " << o.store << ", "
               << report.clips << " clips\n";
     for (const auto& name : report.described) std::cout << "  described    " << name << '\n';
     for (const auto& name : report.redescribed) std::cout << "  re-described " << name << '\n';
