@@ -254,3 +254,18 @@ def test_evaluate_store_shared_characters(tool, scratch, characters):
     assert len(knight["skipped"]) == 2 and len(knight["described"]) > 2
     assert knight["poses_left_out"] and all(p.startswith(str((characters / "Knight.glb").resolve()) + "#")
                                             for p in knight["poses_left_out"])
+
+
+def test_evaluate_store_changed_clip(tool, scratch, clips):
+    copies = []
+    for k, clip in enumerate(clips):
+        copies.append(scratch / f"evaluated-{k}")
+        shutil.copytree(clip, copies[-1])
+    labels = write_labels(scratch / "labels-3.csv", [(c, "", m) for c, m in zip(copies, ["a", "a", "b", "b"])])
+    folder = scratch / "store-stale"
+    describe(tool, folder, labels)
+    frame = sorted(copies[2].iterdir())[0]
+    shutil.copy(sorted(clips[0].iterdir())[0], frame)  # changed bytes, size and time
+    fails(tool("evaluate", labels, "--store", folder), "1 changed since described", str(copies[2].resolve()))
+    assert describe(tool, folder, labels)["redescribed"] == [str(copies[2].resolve())]
+    succeeds(tool("evaluate", labels, "--store", folder))

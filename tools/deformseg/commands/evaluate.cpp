@@ -291,7 +291,8 @@ std::vector<std::size_t> stored_rows(const io::Motion_store& store, const Evalua
   };
   std::string message = "the store does not hold every labelled clip as it is now:";
   if (!missing.empty()) message += " " + std::to_string(missing.size()) + " missing (" + listed(missing) + ")";
-  if (!stale.empty()) message += " " + std::to_string(stale.size()) + " changed since described (" + listed(stale) + ")";
+  if (!stale.empty())
+    message += " " + std::to_string(stale.size()) + " changed since described (" + listed(stale) + ")";
   throw invalid_input(message + "; run: deformseg describe " + o.labels + " --store " + o.store, {.file = o.store});
 }
 

@@ -142,8 +142,8 @@ Eigen::MatrixXd matrix_of(const Matrix_command_options& o, std::vector<std::stri
   for (std::size_t i = 0; i < stored.size(); ++i) {
     const io::Store_record record = stored.store().record(i);
     names.push_back(frontend::stored_clip_name(stored.store(), i));
-    records.push_back({{"file", record.path}, {"clip", record.clip.empty() ? nlohmann::json() : nlohmann::json(record.clip)},
-                       {"fps", record.fps}});
+    const nlohmann::json clip = record.clip.empty() ? nlohmann::json() : nlohmann::json(record.clip);
+    records.push_back({{"file", record.path}, {"clip", clip}, {"fps", record.fps}});
   }
   progress("comparing the " + std::to_string(stored.size()) + " clips of " + o.store + " pair by pair");
   Matrix_progress report{.descriptions = 0};
