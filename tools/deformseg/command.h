@@ -115,5 +115,9 @@ void add_matrix_command(CLI::App& app);
 void add_evaluate_command(CLI::App& app);
 void add_find_command(CLI::App& app);
 void add_view_command(CLI::App& app);
+void add_describe_command(CLI::App& app);
+void add_search_command(CLI::App& app);
+void add_knn_graph_command(CLI::App& app);
+void add_store_command(CLI::App& app);
 
 }  // namespace deformseg::tool

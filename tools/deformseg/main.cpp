@@ -23,6 +23,10 @@ int main(int argc, char** argv) {
   deformseg::tool::add_evaluate_command(app);
   deformseg::tool::add_find_command(app);
   deformseg::tool::add_view_command(app);
+  deformseg::tool::add_describe_command(app);
+  deformseg::tool::add_search_command(app);
+  deformseg::tool::add_knn_graph_command(app);
+  deformseg::tool::add_store_command(app);
   const std::vector<std::string> arguments(argv + 1, argv + argc);
   try {
     app.parse(argc, argv);

@@ -3,9 +3,13 @@
 #include "command.h"
 #include "policy_options.h"
 
+#include <frontend/store.h>
+
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/motion_labels.h>
 #include <deformseg/io/read_animation.h>
+#include <deformseg/io/stored_motions.h>
+#include <deformseg/similarity/nearest_motions.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/evaluation/retrieval_evaluation.h>
 #include <deformseg/color/strain_colors.h>
@@ -24,6 +28,7 @@ namespace {
 
 struct Evaluate_options {
   std::string labels;
+  std::string store;
   Policy_options policy;
   Input_options read;
   bool skip_unreadable = false;
@@ -256,16 +261,81 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
   }
 }
 
+// Some clips of a store, in a given order: the labelled ones.
+struct Selected_motions {
+  const io::Stored_motions* stored;
+  std::vector<std::size_t> indices;
+
+  std::size_t size() const { return indices.size(); }
+  similarity::Motion_signature_view view(std::size_t i) const { return stored->view(indices[i]); }
+  similarity::Motion_summary_view summary(std::size_t i) const { return stored->summary(indices[i]); }
+};
+
+// The clip of each labels row in the store, in the rows' order; refuses, listing them, rows whose
+// clip the store lacks or holds as it was before its source changed.
+std::vector<std::size_t> stored_rows(const io::Motion_store& store, const Evaluate_options& o) {
+  const std::vector<frontend::Clip_source> clips = frontend::labelled_clips(o.labels, o.read);
+  std::vector<std::size_t> indices;
+  std::vector<std::string> missing, stale;
+  for (const frontend::Clip_source& clip : clips) {
+    const std::optional<std::size_t> at = store.find(clip.file, clip.clip);
+    if (!at) missing.push_back(clip.name());
+    else if (!frontend::up_to_date(store.record(*at), clip, o.read)) stale.push_back(clip.name());
+    else indices.push_back(*at);
+  }
+  if (missing.empty() && stale.empty()) return indices;
+  const auto listed = [](const std::vector<std::string>& names) {
+    std::string list;
+    for (std::size_t k = 0; k < names.size() && k < 5; ++k) list += (k ? ", " : "") + names[k];
+    return names.size() > 5 ? list + " and " + std::to_string(names.size() - 5) + " more" : list;
+  };
+  std::string message = "the store does not hold every labelled clip as it is now:";
+  if (!missing.empty()) message += " " + std::to_string(missing.size()) + " missing (" + listed(missing) + ")";
+  if (!stale.empty())
+    message += " " + std::to_string(stale.size()) + " changed since described (" + listed(stale) + ")";
+  throw invalid_input(message + "; run: deformseg describe " + o.labels + " --store " + o.store, {.file = o.store});
+}
+
+// The matrix of the labelled clips as the store holds them, the rows as `read.clips`.
+Eigen::MatrixXd matrix_of_store(Read_clips& read, const Evaluate_options& o, Matrix_progress& report) {
+  const io::Stored_motions stored(io::Motion_store::open(o.store));
+  const similarity::Default_similarity policy =
+      frontend::store_policy(frontend::stored_policy_choice(stored.store()), frontend::Front::command_line);
+  const similarity::Default_similarity asked = frontend::store_policy(o.policy, frontend::Front::command_line);
+  if (!o.policy.up.empty() && frontend::store_description(asked) != frontend::store_description(policy))
+    throw invalid_input("--up " + o.policy.up + " differs from the store's up direction", {.file = o.store});
+  // The rows grouped by file, in the order of first appearance, as read_clips reads them.
+  const std::vector<io::Labelled_clip> rows = io::read_motion_labels(o.labels);
+  const std::vector<std::size_t> at = stored_rows(stored.store(), o);
+  Selected_motions selected{&stored, {}};
+  std::vector<bool> taken(rows.size(), false);
+  for (std::size_t first = 0; first < rows.size(); ++first) {
+    if (taken[first]) continue;
+    for (std::size_t i = first; i < rows.size(); ++i)
+      if (rows[i].file == rows[first].file) {
+        taken[i] = true;
+        read.clips.push_back(rows[i]);
+        selected.indices.push_back(at[i]);
+      }
+  }
+  progress("comparing " + std::to_string(selected.size()) + " clips of " + o.store + " pair by pair");
+  report = Matrix_progress{.descriptions = 0};
+  return similarity::similarity_matrix(selected, policy, std::ref(report));
+}
+
 void run_evaluate(const Evaluate_options& o) {
   frontend::check(o.policy, frontend::Front::command_line);
   frontend::check(o.read, frontend::Front::command_line);
   set_default_threads(o.read.threads);  // the matrix's threads; the readers take theirs
   const auto start = Clock::now();
-  Read_clips read = read_clips(io::read_motion_labels(o.labels), o);
+  Read_clips read;
+  if (o.store.empty()) {
+    read = read_clips(io::read_motion_labels(o.labels), o);
+    progress("read " + std::to_string(read.animations.size()) + " clips in " + fixed(seconds_since(start), 1) + " s");
+  }
   const double read_seconds = seconds_since(start);
-  progress("read " + std::to_string(read.animations.size()) + " clips in " + fixed(read_seconds, 1) + " s");
   Matrix_progress report;
-  const Eigen::MatrixXd m = matrix_of_clips(read, o, report);
+  const Eigen::MatrixXd m = o.store.empty() ? matrix_of_clips(read, o, report) : matrix_of_store(read, o, report);
   const double matrix_seconds = seconds_since(report.start);
   std::vector<evaluation::Labelled_item> items;
   for (const auto& clip : read.clips) items.push_back(clip.item);
@@ -317,6 +387,9 @@ void add_evaluate_command(CLI::App& app) {
       ->required();
   add_policy_options(*command, o->policy);
   add_parameters(*command, frontend::input_parameters, o->read);
+  command->add_option("--store", o->store,
+                      "Compare the labelled clips as a motion store holds them (deformseg describe LABELS --store S), "
+                      "without reading or describing them; a clip missing or changed since is an error");
   command->add_flag("--skip-unreadable", o->skip_unreadable,
                     "Leave out, with a line on standard error, the clips that cannot be read or described (a "
                     "pose of one frame), instead of stopping");

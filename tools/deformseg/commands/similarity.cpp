@@ -4,8 +4,11 @@
 #include "policy_options.h"
 
 #include <frontend/similarity.h>
+#include <frontend/store.h>
 
+#include <deformseg/io/stored_motions.h>
 #include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/similarity/nearest_motions.h>
 #include <deformseg/similarity/significance.h>
 #include <deformseg/color/strain_colors.h>
 
@@ -80,6 +83,7 @@ void run_similarity(const Similarity_command_options& o) {
 
 struct Matrix_command_options {
   std::vector<std::string> inputs;
+  std::string store;
   Input_options read;
   Policy_options policy;
   std::string csv;
@@ -89,13 +93,14 @@ struct Matrix_command_options {
 
 // Cells coloured by viridis from the smallest value (dark) to 1 (yellow), the animations' names
 // along the top and the left.
-void write_heat_map(const Eigen::MatrixXd& m, const Matrix_command_options& o, const std::string& path) {
+void write_heat_map(const Eigen::MatrixXd& m, const Matrix_command_options& o, const std::vector<std::string>& inputs,
+                    const std::string& path) {
   progress("writing the heat map to " + path);
   const auto n = std::size_t(m.rows());
   const int cell = cell_size(n, n, 480, 4, 40);
   const double low = std::min(m.minCoeff(), 1.0 - 1e-12);
   std::vector<std::string> names;
-  for (const std::string& input : o.inputs) names.push_back(short_name(input));
+  for (const std::string& input : inputs) names.push_back(short_name(input));
   Matrix_figure figure(n, n, cell, "similarity (" + o.policy.policy + ", " + similarity::alignment_name(o.policy) + ")",
                        named_axis("", names), named_axis("", names),
                        Color_bar{"similarity", low, 1.0, [](double f) { return color::strain_color(f); }});
@@ -105,34 +110,70 @@ void write_heat_map(const Eigen::MatrixXd& m, const Matrix_command_options& o, c
   figure.write(path);
 }
 
+// The policy of a matrix over a store: the store's, which the command's options must not contradict.
+similarity::Default_similarity policy_of_store(const io::Motion_store& store, const Matrix_command_options& o) {
+  const similarity::Default_similarity asked = frontend::store_policy(o.policy, frontend::Front::command_line);
+  const similarity::Default_similarity stored =
+      frontend::store_policy(frontend::stored_policy_choice(store), frontend::Front::command_line);
+  if (!o.policy.up.empty() && frontend::store_description(asked) != frontend::store_description(stored))
+    throw invalid_input("--up " + o.policy.up + " differs from the store's up direction (deformseg store info " +
+                            store.folder().string() + " gives it)",
+                        {.file = store.folder().string()});
+  return stored;
+}
+
+// The matrix of the inputs read and described now, or of the store's clips as described.
+Eigen::MatrixXd matrix_of(const Matrix_command_options& o, std::vector<std::string>& names, nlohmann::json& records) {
+  if (o.store.empty()) {
+    std::vector<mesh::Surface_mesh_animation> animations;
+    for (frontend::Read_input& input : read_inputs(o.inputs, o.read)) {
+      records.push_back(frontend::input_record(input, o.read.fps));
+      animations.push_back(std::move(input.animation));
+    }
+    names = o.inputs;
+    progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
+    Matrix_progress report{.descriptions = animations.size()};
+    return similarity::with_policy_choice(o.policy, [&](const auto& policy) {
+      return similarity::similarity_matrix(animations, policy, std::ref(report));
+    });
+  }
+  const io::Stored_motions stored(io::Motion_store::open(o.store));
+  const similarity::Default_similarity policy = policy_of_store(stored.store(), o);
+  for (std::size_t i = 0; i < stored.size(); ++i) {
+    const io::Store_record record = stored.store().record(i);
+    names.push_back(frontend::stored_clip_name(stored.store(), i));
+    const nlohmann::json clip = record.clip.empty() ? nlohmann::json() : nlohmann::json(record.clip);
+    records.push_back({{"file", record.path}, {"clip", clip}, {"fps", record.fps}});
+  }
+  progress("comparing the " + std::to_string(stored.size()) + " clips of " + o.store + " pair by pair");
+  Matrix_progress report{.descriptions = 0};
+  return similarity::similarity_matrix(stored, policy, std::ref(report));
+}
+
 void run_matrix(const Matrix_command_options& o) {
   frontend::check(o.policy, frontend::Front::command_line);
-  std::vector<mesh::Surface_mesh_animation> animations;
+  if (o.store.empty() && o.inputs.size() < 2)
+    throw invalid_input("matrix needs two or more animations, or --store S");
+  if (!o.store.empty() && !o.inputs.empty())
+    throw invalid_input("matrix takes animations or --store S, not both");
+  std::vector<std::string> names;
   nlohmann::json records = nlohmann::json::array();
-  for (frontend::Read_input& input : read_inputs(o.inputs, o.read)) {
-    records.push_back(frontend::input_record(input, o.read.fps));
-    animations.push_back(std::move(input.animation));
-  }
-  progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
-  Matrix_progress report{.descriptions = animations.size()};
-  const Eigen::MatrixXd m = similarity::with_policy_choice(o.policy, [&](const auto& policy) {
-    return similarity::similarity_matrix(animations, policy, std::ref(report));
-  });
+  const Eigen::MatrixXd m = matrix_of(o, names, records);
   if (!o.csv.empty()) {
     if (o.csv != "-") progress("writing the matrix to " + o.csv);
-    frontend::write_matrix_csv(m, o.csv, o.inputs);
+    frontend::write_matrix_csv(m, o.csv, names);
   }
-  if (!o.png.empty()) write_heat_map(m, o, o.png);
+  if (!o.png.empty()) write_heat_map(m, o, names, o.png);
   nlohmann::json rows = nlohmann::json::array();
   for (Eigen::Index i = 0; i < m.rows(); ++i) {
     rows.push_back(nlohmann::json::array());
     for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
   }
-  const nlohmann::json document = {{"inputs", o.inputs}, {"sources", records}, {"policy", o.policy.policy},
+  const nlohmann::json document = {{"inputs", names}, {"sources", records}, {"policy", o.policy.policy},
                                    {"alignment_policy", similarity::alignment_name(o.policy)}, {"similarity", rows}};
   write_outputs(document, o.json, [&] {
-    for (std::size_t i = 0; i < o.inputs.size(); ++i) {
-      std::cout << i << "  " << o.inputs[i] << "\n  ";
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      std::cout << i << "  " << names[i] << "\n  ";
       for (Eigen::Index j = 0; j < m.cols(); ++j) std::cout << ' ' << m(Eigen::Index(i), j);
       std::cout << '\n';
     }
@@ -157,8 +198,11 @@ void add_similarity_command(CLI::App& app) {
 void add_matrix_command(CLI::App& app) {
   auto o = std::make_shared<Matrix_command_options>();
   CLI::App* command = app.add_subcommand("matrix", "The similarity of every pair of a set of animations");
-  add_inputs(*command, "inputs", o->inputs, 2, -1, o->read, "Two or more animations");
+  add_inputs(*command, "inputs", o->inputs, 2, -1, o->read, "Two or more animations (or none, with --store)");
+  command->get_option("inputs")->required(false);
   add_policy_options(*command, o->policy);
+  command->add_option("--store", o->store,
+                      "The clips of a motion store (deformseg describe), as described, in place of animations");
   command->add_option("--csv", o->csv,
                       "Write the matrix as CSV, with the inputs as row and column names, to FILE ('-': standard "
                       "output, in place of the summary)")

@@ -1,0 +1,103 @@
+// The motion store as the tool's commands use it: which clips a command's inputs name, the
+// description options a store records, the record that tells an unchanged source from a changed
+// one, and describing clips into a store (`deformseg describe`).
+#pragma once
+
+#include "inputs.h"
+#include "similarity.h"
+
+#include <deformseg/io/motion_store.h>
+#include <deformseg/io/stored_motions.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/similarity/policy_choice.h>
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace deformseg::frontend {
+
+/// The summaries a store's clips get: `similarity::summarize(view, store_summary_chunks)`.
+inline constexpr std::size_t store_summary_chunks = 4;
+
+/// One clip an input names: its file, canonical and absolute, and its clip's name in a glTF file
+/// ("" for a file of one animation: frames, a point cache).
+struct Clip_source {
+  std::string file;
+  std::string clip;
+  /// "FILE" or "FILE#CLIP", as reports name the clip.
+  std::string name() const { return clip.empty() ? file : file + "#" + clip; }
+};
+
+/// The clips that `inputs` name, in their order, each once: an animation (frame files, a folder, a
+/// quoted glob, a point cache) is one clip; a glTF file with a clip (FILE.glb#CLIP or
+/// `options.clip`) that clip, without one every clip of the file of 2 frames or more at
+/// `options.fps` (the others, poses with no motion, named in `poses`); a labels CSV (`.csv`, the
+/// header of `evaluate`'s) the clip of each row (a glTF row without a clip takes `options.clip`,
+/// or the file's only clip).
+/// @throws invalid_input naming the input that does not exist, a glTF file that cannot be parsed,
+/// a clip it does not have, a labels row naming several clips of a file that is not glTF.
+std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, const Input_options& options,
+                                      std::vector<std::string>& poses);
+
+/// The clip of each row of the labels CSV `labels` (`evaluate`'s), in the rows' order: a glTF row
+/// without a clip takes `options.clip`, or the file's only clip.
+/// @throws invalid_input naming the labels file or the glTF file, as `clip_sources`.
+std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_options& options);
+
+/// The default policy with the signatures' up direction of `choice` (its policy must be
+/// motion-signature and its alignment dtw: what a store holds).
+/// @throws invalid_input naming the option otherwise.
+similarity::Default_similarity store_policy(const similarity::Policy_choice& choice, Front front);
+
+/// The description options a store records for `policy`, as a JSON object: policy, alignment,
+/// lags, quantiles, floor, up ([x, y, z] or null), vertical_unit, vertical_weight,
+/// signature_rate, scale and width (the values per signature).
+std::string store_description(const similarity::Default_similarity& policy);
+
+/// The policy choice a store's description names (its up direction), for describing queries as
+/// the store's clips were.
+/// @throws invalid_input naming the store when its description is not one this front end writes
+/// (another version of deformseg, other options): the message says which member differs.
+similarity::Policy_choice stored_policy_choice(const io::Motion_store& store);
+
+/// The input options as a store records them: the options that change what is read (fps,
+/// topology, triangulate, weld as it applies to `file`, refuse_defects), as canonical JSON.
+std::string input_options_text(const std::string& file, const Input_options& options);
+
+/// The record of `clip` as its source is now (path, clip, options, size, modification time,
+/// topology; the file's hash with `hash`), without frame count and fps.
+/// @throws invalid_input naming the file when it cannot be read.
+io::Store_record source_record(const Clip_source& clip, const Input_options& options, bool hash);
+
+/// True when `stored` was described from the source `now` describes: the same input options,
+/// size and topology, and the same hash (`hash`, when `stored` has one) or modification time.
+bool unchanged(const io::Store_record& stored, const io::Store_record& now, bool hash);
+
+/// True when `stored` is the clip as its source is now: the same input options, size and topology,
+/// and the same modification time, or, when it differs, the same hash (if `stored` has one).
+bool up_to_date(const io::Store_record& stored, const Clip_source& clip, const Input_options& options);
+
+/// What `describe_into_store` did, each clip named ("FILE" or "FILE#CLIP").
+struct Describe_report {
+  std::vector<std::string> described;    ///< new clips, added
+  std::vector<std::string> redescribed;  ///< changed clips, replaced at their index
+  std::vector<std::string> skipped;      ///< unchanged clips
+  std::size_t clips = 0;                 ///< the store's clips after the run
+};
+
+/// Describes `clips` read with `options` by `policy` into the store in `folder` (made when
+/// missing), with their summaries: new clips added, changed ones replaced in place, unchanged ones
+/// skipped (see `unchanged`); one commit at the end. `say` gets a line of progress per file.
+/// @throws invalid_input naming the file and clip that cannot be read or described, or the store
+/// when it cannot be written or was made with other options; the store is then as it was.
+Describe_report describe_into_store(const std::string& folder, const std::vector<Clip_source>& clips,
+                                    const Input_options& options, const similarity::Default_similarity& policy,
+                                    bool hash, const std::function<void(const std::string&)>& say);
+
+/// A store's clip `i` named for reports: "FILE" or "FILE#CLIP".
+std::string stored_clip_name(const io::Motion_store& store, std::size_t i);
+
+}  // namespace deformseg::frontend

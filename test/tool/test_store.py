@@ -1,0 +1,271 @@
+"""describe, search, knn-graph, store info/verify, and matrix and evaluate over a motion store: the
+store's values are those matrix and evaluate give from the files, bit for bit; unchanged clips are
+skipped, changed ones described again at their index; a damaged store is named; a describe killed
+half way leaves the store as it was."""
+
+import os
+import shutil
+import signal
+import subprocess
+import time
+
+import pytest
+
+from conftest import fails, succeeds, synth
+
+# Four small tubes moving differently, as frame folders (OBJ).
+SCHEDULES = {
+    "bend": ["10:0", "10:90", "10:"],
+    "twice": ["5:0", "5:60", "5:0", "5:60", "5:"],
+    "slow": ["5:0", "20:45", "5:"],
+    "still": ["8:0", "8:"],
+}
+
+
+@pytest.fixture(scope="session")
+def clips(tool, scratch):
+    """The four tubes' folders, in a fixed order."""
+    return [synth(tool, scratch, f"tube-{name}", "--format", "obj", "--rings", "10", "--sectors", "6",
+                  "--schedule", *schedule, "--easing", "linear")[0]
+            for name, schedule in SCHEDULES.items()]
+
+
+def describe(tool, store, *inputs, extra=()):
+    return tool("describe", *inputs, "--store", store, *extra, "--json", "-").json()
+
+
+def store_info(tool, store):
+    return tool("store", "info", store, "--json", "-").json()
+
+
+def ranked(values, indices):
+    """(index, value) of `indices` by value descending, index ascending: the search's order."""
+    return sorted(((i, values[i]) for i in indices), key=lambda p: (-p[1], p[0]))
+
+
+@pytest.fixture(scope="session")
+def store(tool, scratch, clips):
+    """A store of the four tubes, described once."""
+    folder = scratch / "store"
+    result = describe(tool, folder, *clips)
+    assert len(result["described"]) == 4 and result["skipped"] == [] and result["clips"] == 4
+    return folder
+
+
+def test_search_equals_matrix(tool, store, clips):
+    # The query first, then the store's clips in their order: row 0 is the query against each.
+    matrix = tool("matrix", clips[1], *clips, "--json", "-").json()["similarity"]
+    found = tool("search", clips[1], "--store", store, "-k", "10", "--json", "-").json()
+    (query,) = found["queries"]
+    expected = ranked({j - 1: matrix[0][j] for j in range(1, 5)}, range(4))
+    assert [(n["index"], n["value"]) for n in query["neighbours"]] == expected
+    assert [n["path"] for n in query["neighbours"]] == [str(clips[i].resolve()) for i, _ in expected]
+    assert query["pruning"]["candidates"] == 4
+
+
+def test_search_clip_index_leaves_itself_out(tool, store):
+    matrix = tool("matrix", "--store", store, "--json", "-").json()["similarity"]
+    found = tool("search", "--store", store, "--clip-index", "0", "-k", "2", "--json", "-").json()
+    (query,) = found["queries"]
+    assert query["clip_index"] == 0
+    assert [(n["index"], n["value"]) for n in query["neighbours"]] == ranked(matrix[0], range(1, 4))[:2]
+
+
+def test_search_text(tool, store, clips):
+    out = succeeds(tool("search", clips[0], "--store", store, "-k", "2")).out
+    assert out.startswith(f"query {clips[0]}") and f"  1  1.0  {clips[0].resolve()}" in out, out
+
+
+def test_search_needs_a_query(tool, store):
+    fails(tool("search", "--store", store), "search needs a query")
+    fails(tool("search", "--store", store, "--clip-index", "9"), "--clip-index 9: the store holds 4 clips")
+
+
+def test_matrix_store_equals_matrix_of_files(tool, store, clips):
+    from_files = tool("matrix", *clips, "--json", "-").json()
+    from_store = tool("matrix", "--store", store, "--json", "-").json()
+    assert from_store["similarity"] == from_files["similarity"]
+    assert from_store["inputs"] == [str(c.resolve()) for c in clips]
+
+
+def test_matrix_store_or_inputs(tool, store, clips):
+    fails(tool("matrix", *clips, "--store", store), "not both")
+    fails(tool("matrix", "--store", store, "--policy", "histogram"), "a motion store holds the motion signatures")
+
+
+def test_knn_graph_equals_brute_force(tool, scratch, store):
+    matrix = tool("matrix", "--store", store, "--json", "-").json()["similarity"]
+    graph = tool("knn-graph", "--store", store, "-k", "2", "--json", "-").json()
+    edges = [(e["source"], e["target"], e["rank"], e["value"]) for e in graph["edges"]]
+    expected = [(i, j, r + 1, v) for i in range(4)
+                for r, (j, v) in enumerate(ranked(matrix[i], [j for j in range(4) if j != i])[:2])]
+    assert edges == expected
+    csv = scratch / "edges.csv"
+    succeeds(tool("knn-graph", "--store", store, "-k", "2", "--csv", csv))
+    lines = csv.read_text().splitlines()
+    assert lines[0] == "source,target,rank,value" and len(lines) == 9
+    assert [tuple(map(float, line.split(","))) for line in lines[1:]] == [tuple(map(float, e)) for e in edges]
+
+
+def test_describe_again_skips_everything(tool, store, clips):
+    result = describe(tool, store, *clips)
+    assert result["described"] == [] and result["redescribed"] == [] and len(result["skipped"]) == 4
+
+
+def test_changed_clip_described_again_at_its_index(tool, scratch, clips):
+    folder = scratch / "store-changed"
+    copies = []
+    for k, clip in enumerate(clips[:3]):
+        copies.append(scratch / f"copy-{k}")
+        shutil.copytree(clip, copies[-1])
+    describe(tool, folder, *copies)
+    before = store_info(tool, folder)
+    frame = sorted(copies[1].iterdir())[0]
+    stamp = frame.stat()
+    os.utime(frame, ns=(stamp.st_atime_ns, stamp.st_mtime_ns + 1_000_000_000))  # touched
+    result = describe(tool, folder, *copies)
+    assert result["redescribed"] == [str(copies[1].resolve())] and len(result["skipped"]) == 2
+    after = store_info(tool, folder)
+    assert [c["path"] for c in after["clips"]] == [c["path"] for c in before["clips"]]
+    assert after["clips"][1]["source_mtime_ns"] != before["clips"][1]["source_mtime_ns"]
+    # --hash: the clips described without a hash are described again once, then only a change counts.
+    assert len(describe(tool, folder, *copies, extra=["--hash"])["redescribed"]) == 3
+    os.utime(frame, ns=(stamp.st_atime_ns, stamp.st_mtime_ns + 2_000_000_000))
+    assert len(describe(tool, folder, *copies, extra=["--hash"])["skipped"]) == 3
+    shutil.copy(sorted(clips[3].iterdir())[0], frame)  # another frame's geometry: changed bytes
+    result = describe(tool, folder, *copies, extra=["--hash"])
+    assert result["redescribed"] == [str(copies[1].resolve())]
+    # A new clip comes at the end.
+    result = describe(tool, folder, *copies, clips[3])
+    assert result["described"] == [str(clips[3].resolve())] and result["clips"] == 4
+
+
+def test_unreadable_clip_leaves_the_store(tool, scratch, store, clips):
+    manifest = (store / "store.json").read_bytes()
+    broken = scratch / "broken"
+    shutil.copytree(clips[0], broken)
+    sorted(broken.iterdir())[3].write_text("v 1 2\n")
+    fails(tool("describe", *clips, broken, "--store", store), "broken")
+    assert (store / "store.json").read_bytes() == manifest
+
+
+@pytest.mark.parametrize("command", ["describe", "search"])
+def test_input_options(tool, command):
+    out = succeeds(tool(command, "--help")).out
+    for option in ["--clip", "--fps", "--topology", "--triangulate", "--weld", "--no-weld", "--refuse-defects",
+                   "--threads"]:
+        assert f"  {option} " in out, (command, option)
+
+
+def test_store_info(tool, store):
+    info = store_info(tool, store)
+    assert len(info["clips"]) == 4 and info["description"]["policy"] == "motion-signature"
+    assert info["description"]["up"] == [0.0, 1.0, 0.0] and info["description"]["width"] == info["width"] == 64
+    assert info["summary_layout"] == {"kind": "motion-summary", "chunks": 4}
+
+
+def test_store_verify_names_the_damaged_file(tool, scratch, store):
+    assert "ok: 4 clips" in succeeds(tool("store", "verify", store)).out
+    damaged = scratch / "store-damaged"
+    shutil.copytree(store, damaged)
+    (data,) = [f for f in damaged.iterdir() if f.name.startswith("signatures-")]
+    content = bytearray(data.read_bytes())
+    content[-5] ^= 0x40
+    data.write_bytes(bytes(content))
+    fails(tool("store", "verify", damaged), data.name)
+
+
+def test_store_verify_not_a_store(tool, scratch):
+    fails(tool("store", "verify", scratch / "no-such-store"), "no-such-store")
+
+
+def data_files(folder):
+    """The names of the store's data files and tables, written or being written (.partial)."""
+    kinds = ("signatures-", "frames-", "summaries-", "clips-", "strings-", "store.json.partial")
+    return {f.name for f in folder.iterdir() if f.name.startswith(kinds)}
+
+
+def test_killed_describe_leaves_the_store(tool, scratch, clips):
+    folder = scratch / "store-killed"
+    describe(tool, folder, clips[0])
+    manifest = (folder / "store.json").read_bytes()
+    info = store_info(tool, folder)
+    listed = data_files(folder)
+    many = []
+    for k in range(40):  # many clips: the describe is still running when its first new file appears
+        many.append(scratch / f"many-{k}")
+        shutil.copytree(clips[k % 4], many[-1])
+    process = subprocess.Popen([os.environ["DEFORMSEG_TOOL"], "describe", *map(str, many), "--store", str(folder)],
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        while process.poll() is None and data_files(folder) <= listed:
+            time.sleep(0.002)  # polling, not an assertion
+        assert process.poll() is None, "the describe ended before a new file appeared"
+        process.send_signal(signal.SIGKILL)
+    finally:
+        process.wait()
+    assert process.returncode == -signal.SIGKILL
+    assert (folder / "store.json").read_bytes() == manifest
+    assert store_info(tool, folder) == info
+    result = describe(tool, folder, *many)
+    assert len(result["described"]) == 40 and result["clips"] == 41
+
+
+def write_labels(path, rows):
+    path.write_text("file,clip,motion\n" + "".join(f"{file},{clip},{motion}\n" for file, clip, motion in rows))
+    return path
+
+
+def evaluate_figures(run):
+    result = run.json()
+    return result["scores"], result["similarity"]
+
+
+def test_evaluate_store_equals_evaluate_of_files(tool, scratch, clips):
+    labels = write_labels(scratch / "labels.csv", [(c, "", m) for c, m in zip(clips, ["a", "a", "b", "b"])])
+    folder = scratch / "store-labels"
+    assert len(describe(tool, folder, labels)["described"]) == 4
+    from_files = evaluate_figures(tool("evaluate", labels, "--json", "-"))
+    from_store = evaluate_figures(tool("evaluate", labels, "--store", folder, "--json", "-"))
+    assert from_store == from_files
+
+
+def test_evaluate_store_missing_clip(tool, scratch, clips):
+    labels = write_labels(scratch / "labels-2.csv", [(c, "", m) for c, m in zip(clips, ["a", "a", "b", "b"])])
+    folder = scratch / "store-partial"
+    describe(tool, folder, *clips[:2])
+    fails(tool("evaluate", labels, "--store", folder), "2 missing", f"deformseg describe {labels} --store {folder}")
+
+
+def test_evaluate_store_shared_characters(tool, scratch, characters):
+    # Interleaved: evaluate reads each file's rows together, and the store's matrix follows that order.
+    rows = [("Knight.glb", "Walking_A", "walk"), ("Mage.glb", "Walking_A", "walk"),
+            ("Knight.glb", "Running_A", "run"), ("Mage.glb", "Running_A", "run")]
+    if not all((characters / f).is_file() for f, _, _ in rows):
+        pytest.skip("the shared characters are not all here")
+    labels = write_labels(scratch / "characters.csv", [(characters / f, c, m) for f, c, m in rows])
+    folder = scratch / "store-characters"
+    assert len(describe(tool, folder, labels)["described"]) == 4
+    from_files = evaluate_figures(tool("evaluate", labels, "--json", "-"))
+    from_store = evaluate_figures(tool("evaluate", labels, "--store", folder, "--json", "-"))
+    assert from_store == from_files
+    # Every clip of a glTF file when none is named: the Knight's clips include the two above.
+    knight = describe(tool, folder, characters / "Knight.glb")
+    assert len(knight["skipped"]) == 2 and len(knight["described"]) > 2
+    assert knight["poses_left_out"] and all(p.startswith(str((characters / "Knight.glb").resolve()) + "#")
+                                            for p in knight["poses_left_out"])
+
+
+def test_evaluate_store_changed_clip(tool, scratch, clips):
+    copies = []
+    for k, clip in enumerate(clips):
+        copies.append(scratch / f"evaluated-{k}")
+        shutil.copytree(clip, copies[-1])
+    labels = write_labels(scratch / "labels-3.csv", [(c, "", m) for c, m in zip(copies, ["a", "a", "b", "b"])])
+    folder = scratch / "store-stale"
+    describe(tool, folder, labels)
+    frame = sorted(copies[2].iterdir())[0]
+    shutil.copy(sorted(clips[0].iterdir())[0], frame)  # changed bytes, size and time
+    fails(tool("evaluate", labels, "--store", folder), "1 changed since described", str(copies[2].resolve()))
+    assert describe(tool, folder, labels)["redescribed"] == [str(copies[2].resolve())]
+    succeeds(tool("evaluate", labels, "--store", folder))
