@@ -287,7 +287,7 @@ TEST_CASE("with_frame_source: a shared character's clip streamed equals read_ani
       INFO(fps << " fps" << (up ? " with up" : " without up"));
       const auto options = options_with(up);
       const std::string input = fox.string() + "#Run";
-      const Eigen::MatrixXd stream = ds::io::with_frame_source(
+      const Eigen::MatrixXf stream = ds::io::with_frame_source(
           input, {.fps = fps}, [&](auto& source) { return streamed(source, options); });
       require_same_bits(stream, described(ds::io::read_animation(input, {.fps = fps}), options));
     }
