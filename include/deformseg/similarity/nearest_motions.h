@@ -322,8 +322,10 @@ Nearest_motions nearest_motions(Motion_signature_view query, const C& collection
 /// pair's value that of `similarity_matrix` over the collection's clips (entry (i, j) for i < j is
 /// `compare(clip i, clip j)`, and so is entry (j, i)): the k-nearest-neighbour graph, one
 /// `Nearest_motions` per clip, ranked as `nearest_motions` ranks.
+/// @param collection a `MotionCollection` described with `policy`'s options.
 /// @param options k (default 10), threads (the clips are searched in parallel, each as
 /// `nearest_motions` searches on one thread), progress (one step a clip).
+/// @param policy the scale and alignment of the values (default: the default policy's); no window.
 /// @throws invalid_input when `policy` has a window.
 /// @throws cancelled as `similarity_matrix`.
 /// @par Complexity N searches as `nearest_motions`: O(N^2 W) for the summary bounds, and the
@@ -344,6 +346,8 @@ std::vector<Nearest_motions> knn_graph(const C& collection, const Nearest_motion
 /// @brief The similarity of every pair of `collection`'s clips under `policy` (default the default
 /// policy): entry (i, j) and (j, i), i <= j, is `policy.compare(clip i, clip j).value`, bit for
 /// bit the matrix `similarity_matrix` gives for the animations the clips were described from.
+/// @param collection a `MotionCollection` described with `policy`'s options.
+/// @param policy the scale and alignment of the values (default: the default policy's); no window.
 /// @param progress one step a pair i <= j (see `Progress`); default none.
 /// @throws invalid_input when `policy` has a window; cancelled as `similarity_matrix`.
 /// @par Complexity N (N + 1) / 2 value passes (`alignment::Dtw::mean_cost`), O(n m W) each, on
