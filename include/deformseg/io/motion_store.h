@@ -439,7 +439,8 @@ private:
       throw invalid_input("not a motion store: no such folder", {.file = folder_.string()});
     if (!std::filesystem::exists(folder_ / "store.json", error))
       throw invalid_input("not a motion store: the folder has no store.json", {.file = folder_.string()});
-    const internal::File_bytes bytes = internal::read_file_bytes(folder_ / "store.json", internal::max_manifest_bytes + 1);
+    const internal::File_bytes bytes =
+        internal::read_file_bytes(folder_ / "store.json", internal::max_manifest_bytes + 1);
     if (bytes.file_size > internal::max_manifest_bytes)
       throw invalid_input(internal::join("a manifest of ", std::to_string(bytes.file_size),
                                          " bytes; a store's manifest has at most 4 MiB"),
@@ -490,7 +491,8 @@ private:
     const auto format = json.is_object() ? json.find("format") : json.end();
     if (format == json.end() || !format->is_string() ||
         format->get_ref<const std::string&>() != internal::store_format_name)
-      throw invalid_input("not a motion store: its manifest has no \"format\": \"deformseg-motion-store\"", {.file = file});
+      throw invalid_input("not a motion store: its manifest has no \"format\": \"deformseg-motion-store\"",
+                          {.file = file});
     const auto version = json.find("version");
     if (version == json.end() || !version->is_number_unsigned() || version->get<std::uint64_t>() == 0)
       throw invalid_input("the manifest's \"version\" is missing or not a positive count", {.file = file});
@@ -501,8 +503,9 @@ private:
     const bool named = !json.empty() && std::prev(json.end()).key() == "checksum";
     const bool sums = named && text.substr(covered) == internal::checksum_suffix(text.substr(0, covered));
     if (version->get<std::uint64_t>() > internal::store_version)
-      throw invalid_input(sums ? newer : internal::join(newer, " (or its manifest is corrupted: its checksum does not match)"),
-                          {.file = file});
+      throw invalid_input(
+          sums ? newer : internal::join(newer, " (or its manifest is corrupted: its checksum does not match)"),
+          {.file = file});
     if (!sums)
       throw invalid_input(
           named ? "its checksum does not match its contents: the manifest is corrupted"
@@ -529,7 +532,8 @@ private:
     std::vector<std::string> expected{internal::store_file_name("clips", m.generation),
                                       internal::store_file_name("strings", m.generation)};
     for (const std::uint64_t g : m.segments)
-      for (const char* kind : {"signatures", "frames", "summaries"}) expected.push_back(internal::store_file_name(kind, g));
+      for (const char* kind : {"signatures", "frames", "summaries"})
+        expected.push_back(internal::store_file_name(kind, g));
     for (const internal::Json& f : member(json, "files", V::array, file)) {
       if (!f.is_object())
         throw invalid_input("the manifest's \"files\" holds a value that is not an object", {.file = file});
@@ -538,11 +542,13 @@ private:
         throw invalid_input(internal::join("the manifest lists \"", name.substr(0, 80),
                                            "\", which is not one of the store's files or is listed twice"),
                             {.file = file});
-      m.files[name] = {count_member(f, "bytes", file), static_cast<std::uint32_t>(count_member(f, "data_crc32", file, 0xFFFFFFFFu))};
+      m.files[name] = {count_member(f, "bytes", file),
+                       static_cast<std::uint32_t>(count_member(f, "data_crc32", file, 0xFFFFFFFFu))};
     }
     for (const std::string& name : expected)
       if (!m.files.count(name))
-        throw invalid_input(internal::join("the manifest does not list ", name, ", a file of the store"), {.file = file});
+        throw invalid_input(internal::join("the manifest does not list ", name, ", a file of the store"),
+                            {.file = file});
     return m;
   }
 
@@ -555,7 +561,8 @@ private:
     const internal::Store_file& listed = files_.at(name);
     const std::string file = path_of(name);
     auto mapped = internal::Mapped_file::open(folder_ / name, listed.bytes);
-    const std::uint64_t rows = internal::check_npy(mapped->data(), mapped->size(), file, descr, item_bytes, dimensions, columns);
+    const std::uint64_t rows =
+        internal::check_npy(mapped->data(), mapped->size(), file, descr, item_bytes, dimensions, columns);
     if (check_crc) {
       const std::size_t offset = mapped->size() - static_cast<std::size_t>(rows * item_bytes * columns);
       if (internal::crc32(mapped->data() + offset, mapped->size() - offset) != listed.data_crc32)
@@ -572,8 +579,9 @@ private:
     const std::string clips_name = internal::store_file_name("clips", m.generation);
     auto [clips, rows] = map_file(clips_name, internal::clip_table_descr, internal::clip_row_bytes, 1, 1, true);
     if (rows != m.clips)
-      throw invalid_input(internal::join("it holds ", std::to_string(rows), " clips, the manifest says ", std::to_string(m.clips)),
-                          {.file = path_of(clips_name)});
+      throw invalid_input(
+          internal::join("it holds ", std::to_string(rows), " clips, the manifest says ", std::to_string(m.clips)),
+          {.file = path_of(clips_name)});
     auto [strings, bytes] = map_file(internal::store_file_name("strings", m.generation), "'|u1'", 1, 1, 1, true);
     clip_table_ = std::move(clips);
     clip_rows_ = rows;
@@ -620,11 +628,13 @@ private:
       if (end == std::string_view::npos)
         clip_error(internal::join("clip ", std::to_string(i), ": its strings are not 4 NUL-terminated strings"));
       *part = text.substr(0, end);
-      if (!internal::valid_utf8(*part)) clip_error(internal::join("clip ", std::to_string(i), ": its strings are not valid UTF-8"));
+      if (!internal::valid_utf8(*part))
+        clip_error(internal::join("clip ", std::to_string(i), ": its strings are not valid UTF-8"));
       text.remove_prefix(end + 1);
     }
     if (!text.empty() || e.path.empty())
-      clip_error(internal::join("clip ", std::to_string(i), ": its strings are not 4 NUL-terminated strings, the path not empty"));
+      clip_error(internal::join("clip ", std::to_string(i),
+                                ": its strings are not 4 NUL-terminated strings, the path not empty"));
   }
 
   void check_entry(std::size_t i, const Entry& e, Verify verify) const {
@@ -638,13 +648,15 @@ private:
     if (r.rows == 0) clip_error(internal::join(name, ": 0 rows; a clip has at least one"));
     if (!(r.fps > 0) || !std::isfinite(r.fps)) clip_error(internal::join(name, ": its fps is not positive and finite"));
     if (r.block.offset % internal::block_alignment_floats != 0)
-      clip_error(internal::join(name, ": its block at float ", std::to_string(r.block.offset), " is not 64-byte aligned"));
+      clip_error(
+          internal::join(name, ": its block at float ", std::to_string(r.block.offset), " is not 64-byte aligned"));
     const std::uint64_t floats = std::uint64_t{r.rows} * width_;
     if (r.block.offset > s.floats || floats > s.floats - r.block.offset)
-      past("signatures", internal::join(std::to_string(r.rows), " rows of ", std::to_string(width_), " floats at float ",
-                                        std::to_string(r.block.offset)));
+      past("signatures", internal::join(std::to_string(r.rows), " rows of ", std::to_string(width_),
+                                        " floats at float ", std::to_string(r.block.offset)));
     if (r.block.frames_offset > s.frame_count || r.rows > s.frame_count - r.block.frames_offset)
-      past("frames", internal::join(std::to_string(r.rows), " frame numbers at ", std::to_string(r.block.frames_offset)));
+      past("frames",
+           internal::join(std::to_string(r.rows), " frame numbers at ", std::to_string(r.block.frames_offset)));
     if (r.block.summary_row >= s.summary_rows)
       past("summaries", internal::join("its summary row ", std::to_string(r.block.summary_row), " would"));
     if (verify == Verify::checksums) {
@@ -830,7 +842,8 @@ public:
     std::vector<std::uint64_t> segments = referenced_segments();
     for (const std::uint64_t g : segments)
       for (const char* kind : {"signatures", "frames", "summaries"})
-        if (g != generation_) files[internal::store_file_name(kind, g)] = base_.files_.at(internal::store_file_name(kind, g));
+        if (g != generation_)
+          files[internal::store_file_name(kind, g)] = base_.files_.at(internal::store_file_name(kind, g));
     Atomic_file manifest(folder_ / "store.json");
     manifest.write(manifest_text(segments, files));
     manifest.commit(Durability::disk);
@@ -862,10 +875,11 @@ private:
     }
     const internal::Json layout = internal::parse_json(base_.summary_layout(), file);
     if (base_.summary_width() != summary_width_ || internal::first_different_member(layout, summary_layout_))
-      throw invalid_input(internal::join("the store's summaries are of another layout (", std::to_string(base_.summary_width()),
-                                         " floats, ", base_.summary_layout(), ") than this append's (",
-                                         std::to_string(summary_width_), " floats, ", internal::json_text(summary_layout_), ")"),
-                          {.file = file});
+      throw invalid_input(
+          internal::join("the store's summaries are of another layout (", std::to_string(base_.summary_width()),
+                         " floats, ", base_.summary_layout(), ") than this append's (", std::to_string(summary_width_),
+                         " floats, ", internal::json_text(summary_layout_), ")"),
+          {.file = file});
   }
 
   void check_no_other_files() const {
@@ -900,11 +914,13 @@ private:
     if (committed_) fail("the append is already committed");
     if (r.path.empty()) fail("its path is empty");
     for (const std::string* text : {&r.path, &r.clip, &r.input_options, &r.topology_path})
-      if (text->find('\0') != std::string::npos || !internal::valid_utf8(*text)) fail("a string that is not UTF-8 without NUL");
+      if (text->find('\0') != std::string::npos || !internal::valid_utf8(*text))
+        fail("a string that is not UTF-8 without NUL");
     if (!(r.fps > 0) || !std::isfinite(r.fps)) fail("its fps is not positive and finite");
     if (view.rows == 0 || view.rows > std::numeric_limits<std::uint32_t>::max())
       fail("its description has no row, or more than 2^32 - 1");
-    if (view.width == 0 || view.width > internal::max_width) fail("its description has no value per row, or more than 65536");
+    if (view.width == 0 || view.width > internal::max_width)
+      fail("its description has no value per row, or more than 65536");
     if (width_ != 0 && view.width != width_)
       fail(internal::join("its description has ", std::to_string(view.width), " values per row, the store's ",
                           std::to_string(width_)));
@@ -922,12 +938,13 @@ private:
     summaries_ = std::make_unique<internal::Npy_writer>(path("summaries"), "'<f4'", 4, summary_width_, true);
   }
 
-  void write_block(Store_record& r, const similarity::Motion_signature_view& view, std::span<const std::uint32_t> frames,
-                   std::span<const float> summary) {
+  void write_block(Store_record& r, const similarity::Motion_signature_view& view,
+                   std::span<const std::uint32_t> frames, std::span<const float> summary) {
     if (!signatures_) open_data_files();
     width_ = view.width;
-    const std::uint64_t padding = (internal::block_alignment_floats - signatures_->items() % internal::block_alignment_floats) %
-                                  internal::block_alignment_floats;
+    const std::uint64_t padding =
+        (internal::block_alignment_floats - signatures_->items() % internal::block_alignment_floats) %
+        internal::block_alignment_floats;
     const float zeros[internal::block_alignment_floats] = {};
     signatures_->append(zeros, padding);
     r.rows = static_cast<std::uint32_t>(view.rows);
@@ -957,7 +974,8 @@ private:
                              : replaced != replaced_.end() ? replaced->second
                                                            : base_.record(i);
       internal::Clip_row row{r, strings.size(), 0};
-      for (const std::string* text : {&r.path, &r.clip, &r.input_options, &r.topology_path}) strings.append(*text).push_back('\0');
+      for (const std::string* text : {&r.path, &r.clip, &r.input_options, &r.topology_path})
+        strings.append(*text).push_back('\0');
       row.strings_length = static_cast<std::uint32_t>(strings.size() - row.strings);
       internal::encode_clip_row(table.data() + i * internal::clip_row_bytes, row);
     }
