@@ -5,6 +5,7 @@
 #include "policy_options.h"
 
 #include <frontend/store.h>
+#include <frontend/store_search.h>
 
 #include <deformseg/io/motion_store.h>
 #include <deformseg/io/stored_motions.h>
@@ -97,35 +98,20 @@ nlohmann::json neighbours_json(const std::vector<similarity::Neighbour>& neighbo
   return found;
 }
 
-// Clip `index` of the store as a query, itself left out: the k + 1 nearest, less itself (or, when
-// k + 1 clips tie with it at its value ahead of it, less the last).
-similarity::Nearest_motions search_stored_clip(const io::Stored_motions& stored, std::size_t index,
-                                               const Search_options& o,
-                                               const similarity::Default_similarity& policy) {
-  similarity::Nearest_motions found = similarity::nearest_motions(
-      stored.view(index), stored, {.k = o.k + 1, .threads = o.read.threads}, policy);
-  auto& n = found.neighbours;
-  const auto self = std::ranges::find_if(n, [&](const similarity::Neighbour& x) { return x.index == index; });
-  if (self != n.end()) n.erase(self);
-  if (n.size() > o.k) n.resize(o.k);
-  return found;
-}
-
 void run_search(const Search_options& o) {
   if (o.queries.empty() && o.clip_indices.empty())
     throw invalid_input("search needs a query: an animation, or --clip-index I for a clip of the store");
   if (o.k == 0) throw invalid_input("-k must be at least 1");
   frontend::check(o.read, frontend::Front::command_line);
   set_default_threads(o.read.threads);
-  const io::Stored_motions stored(io::Motion_store::open(o.store));
-  const io::Motion_store& store = stored.store();
+  const frontend::Store_search library(o.store);
+  const io::Motion_store& store = library.store();
   for (const std::size_t i : o.clip_indices)
     if (i >= store.size())
       throw invalid_input("--clip-index " + std::to_string(i) + ": the store holds " + std::to_string(store.size()) +
                           " clips", {.file = o.store});
   if (store.size() == 0) throw invalid_input("the store holds no clip", {.file = o.store});
-  const similarity::Default_similarity policy =
-      frontend::store_policy(frontend::stored_policy_choice(store), frontend::Front::command_line);
+  const similarity::Nearest_motions_options options{.k = o.k, .threads = o.read.threads};
   nlohmann::json results = nlohmann::json::array();
   const auto start = std::chrono::steady_clock::now();
   const auto record = [&](const std::string& name, std::optional<std::size_t> index,
@@ -135,14 +121,10 @@ void run_search(const Search_options& o) {
                        {"pruning", pruning_json(found.pruning)}});
   };
   for (const frontend::Read_input& query : read_inputs(o.queries, o.read)) {
-    const auto description = policy.describe(query.animation);
     const std::string name = query.gltf ? query.name.file + "#" + query.gltf->clip : query.name.file;
-    record(name, std::nullopt,
-           similarity::nearest_motions(similarity::view(description), stored, {.k = o.k, .threads = o.read.threads},
-                                       policy));
+    record(name, std::nullopt, library.nearest(query.animation, options));
   }
-  for (const std::size_t i : o.clip_indices)
-    record(frontend::stored_clip_name(store, i), i, search_stored_clip(stored, i, o, policy));
+  for (const std::size_t i : o.clip_indices) record(library.name(i), i, library.nearest_to_clip(i, options));
   const double seconds = seconds_since(start);
   const nlohmann::json document = {{"store", o.store}, {"k", o.k}, {"queries", results}, {"seconds", seconds}};
   write_outputs(document, o.json, [&] {
@@ -188,14 +170,12 @@ void write_edges_csv(const std::vector<similarity::Nearest_motions>& graph, cons
 void run_knn_graph(const Knn_options& o) {
   if (o.k == 0) throw invalid_input("-k must be at least 1");
   set_default_threads(o.threads);
-  const io::Stored_motions stored(io::Motion_store::open(o.store));
-  const io::Motion_store& store = stored.store();
-  const similarity::Default_similarity policy =
-      frontend::store_policy(frontend::stored_policy_choice(store), frontend::Front::command_line);
+  const frontend::Store_search library(o.store);
+  const io::Motion_store& store = library.store();
   progress("searching the " + std::to_string(store.size()) + " clips' nearest " + std::to_string(o.k));
   const auto start = std::chrono::steady_clock::now();
   const std::vector<similarity::Nearest_motions> graph =
-      similarity::knn_graph(stored, {.k = o.k, .threads = o.threads}, policy);
+      library.knn_graph({.k = o.k, .threads = o.threads});
   const double seconds = seconds_since(start);
   similarity::Pruning_report total;
   for (const auto& node : graph) total += node.pruning;

@@ -1,0 +1,53 @@
+// A motion store opened for what the tool's and Python's commands ask of it: searching it for a
+// query's nearest clips, its k-nearest-neighbour graph and its matrix, under the policy its clips
+// were described with.
+#pragma once
+
+#include "similarity.h"
+
+#include <deformseg/io/stored_motions.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/similarity/nearest_motions.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace deformseg::frontend {
+
+/// A store's clips, memory-mapped, with the policy of their description (`stored_policy_choice`).
+class Store_search {
+ public:
+  /// Opens the store in `folder`, checked as `verify` asks.
+  /// @throws invalid_input naming the store when it cannot be opened or was described with options
+  /// this front end does not write.
+  explicit Store_search(const std::string& folder, io::Verify verify = io::Verify::structure);
+
+  std::size_t size() const { return clips_.size(); }
+  const io::Stored_motions& clips() const { return clips_; }
+  const io::Motion_store& store() const { return clips_.store(); }
+  const similarity::Default_similarity& policy() const { return policy_; }
+  /// Clip `i` named for reports: "FILE" or "FILE#CLIP".
+  std::string name(std::size_t i) const;
+
+  /// `query` described as the store's clips were.
+  similarity::Motion_signature_description describe(const mesh::Surface_mesh_animation& query) const;
+  /// The `options.k` clips nearest to `query` (`similarity::nearest_motions`).
+  /// @throws invalid_input when the store holds no clip.
+  similarity::Nearest_motions nearest(const mesh::Surface_mesh_animation& query,
+                                      const similarity::Nearest_motions_options& options) const;
+  /// The `options.k` clips nearest to clip `i` of the store, itself left out.
+  /// @throws invalid_input naming the index when the store has no clip `i`.
+  similarity::Nearest_motions nearest_to_clip(std::size_t i, const similarity::Nearest_motions_options& options) const;
+  /// Every clip's `options.k` nearest others (`similarity::knn_graph`).
+  std::vector<similarity::Nearest_motions> knn_graph(const similarity::Nearest_motions_options& options) const;
+  /// The similarity of every pair of the store's clips (`similarity::similarity_matrix`).
+  Eigen::MatrixXd matrix(const Progress& progress = {}) const;
+
+ private:
+  io::Stored_motions clips_;
+  similarity::Default_similarity policy_;
+};
+
+}  // namespace deformseg::frontend
