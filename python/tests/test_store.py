@@ -4,14 +4,18 @@ a scratch folder): the store's values equal those of similarity_matrix on the an
 and the tool's on the same store, bit for bit; unchanged clips are skipped; a missing, truncated
 or corrupted store is refused naming the file."""
 import csv
+import doctest
 import os
 import pickle
+import re
 
 import numpy as np
 import pytest
 
 import deformseg
 from deformseg import store_format
+
+from conftest import REPOSITORY, data_dir
 
 # A few of the shared clips: two small characters, several motions each, a distractor.
 ROWS = {("Fox.glb", "Walk"), ("Fox.glb", "Run"), ("Fox.glb", "Survey"), ("RobotExpressive.glb", "Walking"),
@@ -282,3 +286,19 @@ def test_search_knn_graph_matrix_and_evaluate_equal_the_tools(tool, described, f
     assert deformseg.evaluate(store, labels).nn_accuracy == evaluated["scores"]["nn_accuracy"]
     assert deformseg.evaluate(store, labels).mean_average_precision == \
         evaluated["scores"]["mean_average_precision"]
+
+
+# ---- the manual's example -------------------------------------------------------------------------
+
+def test_the_chapter_s_session_runs_as_written(fox, tmp_path, monkeypatch):
+    """The session of chapter 12's "A motion store", run by doctest in a scratch folder, the shared
+    data where it is."""
+    chapter = (REPOSITORY / "doc" / "chapters" / "12_python.md").read_text()
+    section = chapter[chapter.index("## A motion store"):]
+    session = re.search(r"@code\{\.py\}\n(.*?)@endcode", section, re.S).group(1)
+    session = session.replace('"../shared/data/', f'"{data_dir()}/')
+    monkeypatch.chdir(tmp_path)
+    test = doctest.DocTestParser().get_doctest(session, {"deformseg": deformseg}, "chapter 12", None, 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    runner.run(test)
+    assert runner.summarize(verbose=False) == doctest.TestResults(0, len(test.examples)) and test.examples
