@@ -12,6 +12,15 @@ bool no_signal_raised() {
   return true;
 }
 
+Progress progress_of(const std::optional<py::function>& progress) {
+  if (!progress) return {};
+  return [&progress](std::size_t done, std::size_t total) {
+    py::gil_scoped_acquire acquire;
+    const py::object go = (*progress)(done, total);
+    return go.is_none() || go.cast<bool>();
+  };
+}
+
 py::object python_of(const nlohmann::json& value) {
   switch (value.type()) {
     case nlohmann::json::value_t::null: return py::none();

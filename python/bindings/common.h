@@ -10,6 +10,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <optional>
 #include <string>
 
 namespace deformseg::python {
@@ -24,6 +25,11 @@ struct Interruptible_call {
   Interruption_scope scope{&no_signal_raised};
   pybind11::gil_scoped_release release;
 };
+
+// A Python progress callback (or None) as the library's Progress, called with the GIL held;
+// `progress` must outlive the call it is given to (it is referenced, not copied: a copy of a
+// Python object on another thread, without the GIL, would be unsafe).
+Progress progress_of(const std::optional<pybind11::function>& progress);
 
 // Throws invalid_input (InvalidInput in Python) with `message`: the front end's.
 using frontend::refuse;

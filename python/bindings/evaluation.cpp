@@ -4,6 +4,7 @@
 #include "arrays.h"
 #include "common.h"
 #include "pickling.h"
+#include "store.h"
 
 #include <deformseg/io/motion_labels.h>
 #include <deformseg/evaluation/retrieval_evaluation.h>
@@ -54,8 +55,23 @@ evaluation::Labelled_item labelled_item(const py::handle& item, std::size_t inde
   return l;
 }
 
-evaluation::Retrieval_scores evaluate(const py::array_t<double, py::array::forcecast>& similarity,
-                                      const py::sequence& labels) {
+// evaluate(MotionStore, LABELS.csv): the labelled clips as the store holds them.
+evaluation::Retrieval_scores evaluate_of_store(const Opened_store& store, const py::object& labels) {
+  if (!py::isinstance<py::str>(labels) && !py::hasattr(labels, "__fspath__"))
+    throw py::type_error("labels: with a MotionStore, expected the path of a labels CSV (str or os.PathLike), got " +
+                         type_name(labels));
+  return evaluate_stored(store, labels.cast<std::filesystem::path>().string());
+}
+
+evaluation::Retrieval_scores evaluate(const py::object& similarity_like, const py::object& labels_like) {
+  if (py::isinstance<Opened_store>(similarity_like))
+    return evaluate_of_store(similarity_like.cast<const Opened_store&>(), labels_like);
+  const auto similarity = py::array_t<double, py::array::forcecast>::ensure(similarity_like);
+  if (!similarity)
+    throw py::type_error("similarity: expected an (N, N) array or a MotionStore, got " + type_name(similarity_like));
+  if (!py::isinstance<py::sequence>(labels_like))
+    throw py::type_error("labels: expected a sequence of labels, got " + type_name(labels_like));
+  const auto labels = py::reinterpret_borrow<py::sequence>(labels_like);
   if (similarity.ndim() != 2 || similarity.shape(0) != similarity.shape(1))
     throw py::value_error("similarity: expected a square (N, N) array, got " + shape_of(similarity));
   if (std::size_t(similarity.shape(0)) != labels.size())
@@ -198,7 +214,14 @@ without either the item is a body of its own (so every other item is a candidate
 names compares every item with every other). Raises TypeError for an item of another type,
 ValueError for an item without a motion. Returns RetrievalScores: NN accuracy, mAP, ROC-AUC,
 medians, the confusion table, and what each query found (items of one body have no candidate:
-queries_without_candidate counts them). Complexity O(N^2 log N).)doc");
+queries_without_candidate counts them).
+`similarity` may be a MotionStore (open_store) instead, with `labels` the path of a labels CSV
+(read_motion_labels'), as the tool's `evaluate LABELS --store S`: the clip of each row (a glTF
+row without a clip: the file's only one) is looked up in the store and compared as described,
+without reading or describing it; the items are the rows, in their order. Raises InvalidInput
+naming the store and listing the clips it lacks or holds as they were before their source
+changed (checked as describe_to_store checks them, with the input options each was described
+with). Complexity O(N^2 log N); with a store, plus N (N + 1) / 2 alignments.)doc");
 
   m.def("read_motion_labels", &motion_labels, "path"_a,
         R"doc(The rows of a labels CSV file (header file,clip,motion[,rig][,body]; fields may be quoted

@@ -9,6 +9,7 @@
 // dispatch as the tool's. Every call that can take long releases the GIL and can be interrupted by
 // Ctrl-C; the arguments it reads stay referenced by Python objects held for the call.
 #include "bindings.h"
+#include "store.h"
 
 #include "frontend/similarity.h"
 #include "frontend/spatiotemporal.h"
@@ -29,7 +30,8 @@ pybind11::dict choices() {
       {"reference", strain_references}, {"method", temporal_methods},
       {"metric", frame_metrics},        {"policy", similarity_policies},
       {"alignment", alignments},        {"up", up_directions},
-      {"segmentation_reference", segmentation_references}};
+      {"segmentation_reference", segmentation_references},
+      {"verify", deformseg::python::store_verifications}};
   pybind11::dict out;
   for (const auto& [parameter, table] : tables) {
     pybind11::list names;
@@ -46,6 +48,7 @@ PYBIND11_MODULE(_deformseg, m) {
   using namespace deformseg::python;
   bind_errors(m);
   bind_animation(m);
+  bind_store(m);
   bind_strain(m);
   bind_temporal(m);
   bind_spatiotemporal(m);

@@ -5,6 +5,7 @@
 #include "inputs.h"
 #include "parameters.h"
 #include "pickling.h"
+#include "store.h"
 
 #include "frontend/similarity.h"
 
@@ -66,19 +67,19 @@ struct Animation_list {
   }
 };
 
-py::array matrix(const py::sequence& animations, const std::optional<py::sequence>& database,
+py::array matrix(const py::object& animations, const std::optional<py::sequence>& database,
                  const similarity::Policy_choice& choice, const std::optional<py::function>& progress) {
+  if (py::isinstance<Opened_store>(animations)) {  // the store's clips as described: the tool's matrix --store
+    if (database) refuse("database: a MotionStore's matrix is of its own clips; search it for other animations");
+    return stored_similarity_matrix(animations.cast<const Opened_store&>(), choice, progress_of(progress));
+  }
+  if (!py::isinstance<py::sequence>(animations))
+    throw py::type_error("animations: expected a sequence of Animation or a MotionStore, got " + type_name(animations));
   frontend::check(choice, frontend::Front::python);
-  const Animation_list rows(animations, "animations");
+  const Animation_list rows(py::reinterpret_borrow<py::sequence>(animations), "animations");
   const std::optional<Animation_list> columns =
       database ? std::optional<Animation_list>(std::in_place, *database, "database") : std::nullopt;
-  Progress report;
-  if (progress)
-    report = [&progress](std::size_t done, std::size_t total) {
-      py::gil_scoped_acquire acquire;
-      const py::object go = (*progress)(done, total);
-      return go.is_none() || go.cast<bool>();
-    };
+  const Progress report = progress_of(progress);
   Eigen::MatrixXd m = similarity::with_policy_choice(choice, [&](const auto& p) {
     Interruptible_call call;
     return columns ? similarity::similarity_matrix(rows.range(), columns->range(), p, report)
@@ -151,7 +152,7 @@ each, one compare, plus one compare per shuffled copy (motion-signature with DTW
 describe, O(Ta Tb) to compare). Releases the GIL.)doc",
       &similarity, std::tuple{py::arg("a"), py::arg("b"), py::kw_only()});
 
-  define_function<frontend::policy_parameters, Types<const py::sequence&, const std::optional<py::sequence>&>,
+  define_function<frontend::policy_parameters, Types<const py::object&, const std::optional<py::sequence>&>,
                   Types<const std::optional<py::function>&>, similarity::Policy_choice>(
       m, "similarity_matrix",
       R"doc(The similarity of every pair of `animations`: an (N, N) float64 array, symmetric, entry (i, j)
@@ -161,7 +162,11 @@ pairs are compared in parallel; the result does not depend on the number of thre
 policy, alignment, threshold, up: as `similarity`. progress (default None): called as
 progress(done, total) on the calling thread (with the GIL) as the work advances, N + N (N + 1) / 2
 steps (Q + D + Q D with a database); returning False stops the work and raises SimilarityStopped.
-The animations are not copied. Complexity N describes and N (N + 1) / 2 compares. Releases the
+The animations are not copied.
+`animations` may be a MotionStore (open_store) instead, without a database: the matrix of its
+clips as described, without reading or describing them (the tool's `matrix --store`); the
+policy must then be the store's (motion-signature, dtw; `up`, when given, its own), else
+InvalidInput naming the store. Complexity N describes and N (N + 1) / 2 compares. Releases the
 GIL.)doc",
       &matrix, std::tuple{py::arg("animations"), py::arg_v("database", py::none()), py::kw_only()},
       std::tuple{py::arg_v("progress", py::none())});

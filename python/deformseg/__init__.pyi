@@ -85,6 +85,48 @@ def temporal_segmentation(
     threads: int = 0,
 ) -> _Pairs: ...
 
+class MotionStore:
+    def __len__(self) -> int: ...
+    @property
+    def folder(self) -> str: ...
+    @property
+    def generation(self) -> int: ...
+    @property
+    def width(self) -> int: ...
+    @property
+    def description(self) -> dict[str, Any]: ...  # the options the clips were described with
+    @property
+    def names(self) -> List[str]: ...  # "FILE" or "FILE#CLIP"
+    @property
+    def records(self) -> List[dict[str, Any]]: ...  # index, name, path, clip, frames, fps, rows, ...
+    def index_of(self, path: _Path, clip: str = "") -> Optional[int]: ...
+    def signatures(self, i: int) -> npt.NDArray[np.float32]: ...  # (R, W), read-only view of the mapping
+    def frames(self, i: int) -> npt.NDArray[np.uint32]: ...  # (R,), read-only view
+    # A dict: neighbours (dicts of rank, index, name, path, clip, value) and pruning (the counts).
+    def search(self, query: Animation, k: int = 10, *, threads: int = 0) -> dict[str, Any]: ...
+    def nearest_to_clip(self, i: int, k: int = 10, *, threads: int = 0) -> dict[str, Any]: ...
+    def knn_graph(self, k: int = 10, *, threads: int = 0) -> List[dict[str, Any]]: ...  # per clip, as search
+    def matrix(
+        self, *, progress: Optional[Callable[[int, int], Optional[bool]]] = None
+    ) -> npt.NDArray[np.float64]: ...  # (N, N)
+
+def open_store(folder: _Path, verify: Literal["structure", "checksums"] = "structure") -> MotionStore: ...
+# A dict: store, clips, described, redescribed, skipped (lists of clip names) and poses_left_out.
+def describe_to_store(
+    inputs: Union[_Path, Sequence[_Path]],  # animations, glTF files (every clip), labels CSVs
+    store: _Path,
+    *,
+    clip: Union[str, int, None] = None,
+    fps: float = 30.0,
+    topology: Optional[_Path] = None,
+    triangulate: bool = False,
+    weld: Optional[bool] = None,
+    refuse_defects: bool = False,
+    threads: int = 0,
+    up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
+    hash: bool = False,
+) -> dict[str, Any]: ...
+
 class Node:
     kind: str
     segment: Optional[int]
@@ -156,7 +198,7 @@ def similarity(
     seed: int = 1,
 ) -> Similarity: ...
 def similarity_matrix(
-    animations: Sequence[Animation],
+    animations: Union[Sequence[Animation], MotionStore],  # a store: its clips as described, no database
     database: Optional[Sequence[Animation]] = None,
     *,
     policy: Literal["motion-signature", "histogram", "graph", "self-similarity"] = "motion-signature",
@@ -202,7 +244,10 @@ class _Labelled(Protocol):  # an object with a motion; body, rig, clip and file 
 # A motion name, a dict (motion, and optionally body, rig, clip, file) or an object with a motion.
 _Label = Union[str, Mapping[str, Optional[str]], _Labelled]
 
-def evaluate(similarity: npt.ArrayLike, labels: Sequence[_Label]) -> RetrievalScores: ...
+# With a MotionStore: labels is the path of a labels CSV, its clips looked up in the store.
+def evaluate(
+    similarity: Union[npt.ArrayLike, MotionStore], labels: Union[Sequence[_Label], _Path]
+) -> RetrievalScores: ...
 def read_motion_labels(path: _Path) -> List[dict[str, str]]: ...
 
 class GedResult:

@@ -207,6 +207,8 @@ CHOICES = {
     ("similarity_matrix", "policy"): "policy",
     ("similarity_matrix", "alignment"): "alignment",
     ("similarity_matrix", "up"): "up",
+    ("describe_to_store", "up"): "up",
+    ("open_store", "verify"): "verify",
 }
 
 

@@ -1,0 +1,420 @@
+// MotionStore, open_store and describe_to_store: describing clips once into a motion store and
+// searching it (chapter 14), as the tool's describe, search, knn-graph, matrix --store and
+// evaluate --store do, through the same front end (frontend/store.h, frontend/store_search.h).
+#include "bindings.h"
+#include "store.h"
+
+#include "arrays.h"
+#include "inputs.h"
+#include "parameters.h"
+#include "pickling.h"
+
+#include "frontend/store.h"
+
+#include <deformseg/io/motion_labels.h>
+#include <deformseg/similarity/nearest_motions.h>
+
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <array>
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace deformseg::python {
+
+const std::array<frontend::Choice, 2> store_verifications{
+    {{"structure", "the manifest, the files' sizes and headers, every clip's ranges: O(clips), the default"},
+     {"checksums", "also the CRC-32 of every file and every clip's block: reads every byte"}}};
+
+namespace {
+
+// describe_to_store's keywords: the input options, then the signatures' up direction.
+constexpr auto describe_table =
+    std::tuple_cat(frontend::input_parameters, std::tuple{std::get<3>(frontend::policy_parameters)});
+static_assert(std::string_view(std::get<7>(describe_table).name) == "up");
+
+io::Verify verify_of(const std::string& name) {
+  frontend::check_choice("verify", name, store_verifications, frontend::Front::python);
+  return name == "checksums" ? io::Verify::checksums : io::Verify::structure;
+}
+
+std::string verify_name(io::Verify verify) { return verify == io::Verify::checksums ? "checksums" : "structure"; }
+
+std::string folder_of(const Opened_store& s) { return s.search.store().folder().string(); }
+
+// One path (str or os.PathLike) as text; `where` names the argument in the TypeError.
+std::string path_text(const py::handle& item, const std::string& where) {
+  if (!py::isinstance<py::str>(item) && !py::hasattr(item, "__fspath__"))
+    throw py::type_error(where + ": expected a path (str or os.PathLike), got " + type_name(item));
+  const py::object path = py::module_::import("os").attr("fspath")(item);
+  if (!py::isinstance<py::str>(path)) throw py::type_error(where + ": expected a str path, got " + type_name(path));
+  return path.cast<std::string>();
+}
+
+// describe_to_store's inputs: one path, or a sequence of them.
+std::vector<std::string> input_paths(const py::object& inputs) {
+  if (py::isinstance<py::str>(inputs) || py::hasattr(inputs, "__fspath__")) return {path_text(inputs, "inputs")};
+  if (!py::isinstance<py::sequence>(inputs))
+    throw py::type_error("inputs: expected a path or a sequence of paths, got " + type_name(inputs));
+  const auto sequence = py::reinterpret_borrow<py::sequence>(inputs);
+  std::vector<std::string> paths;
+  for (std::size_t i = 0; i < sequence.size(); ++i)
+    paths.push_back(path_text(sequence[i], "inputs[" + std::to_string(i) + "]"));
+  if (paths.empty()) refuse("inputs: no input; name animations, glTF files or labels CSVs");
+  return paths;
+}
+
+// `threads` for the calls on this thread that take none (describing), then back to the default.
+struct Default_threads_scope {
+  explicit Default_threads_scope(int threads) { set_default_threads(threads); }
+  ~Default_threads_scope() { set_default_threads(0); }
+  Default_threads_scope(const Default_threads_scope&) = delete;
+  Default_threads_scope& operator=(const Default_threads_scope&) = delete;
+};
+
+py::dict describe_to_store(const py::object& inputs, const std::filesystem::path& store,
+                           const frontend::Input_options& options, const similarity::Policy_choice& choice, bool hash) {
+  const std::vector<std::string> paths = input_paths(inputs);
+  const similarity::Default_similarity policy = frontend::store_policy(choice, frontend::Front::python);
+  frontend::check(options, frontend::Front::python);
+  frontend::check_clip_applies(paths, options, frontend::Front::python);
+  std::vector<std::string> poses;
+  frontend::Describe_report report;
+  {
+    Interruptible_call call;
+    const Default_threads_scope threads(options.threads);
+    const std::vector<frontend::Clip_source> clips = frontend::clip_sources(paths, options, poses);
+    report = frontend::describe_into_store(store.string(), clips, options, policy, hash, [](const std::string&) {});
+  }
+  return py::dict("store"_a = store.string(), "clips"_a = report.clips, "described"_a = report.described,
+                  "redescribed"_a = report.redescribed, "skipped"_a = report.skipped, "poses_left_out"_a = poses);
+}
+
+Opened_store open_store_at(const std::filesystem::path& folder, const std::string& verify) {
+  const io::Verify how = verify_of(verify);
+  Interruptible_call call;
+  return Opened_store{frontend::Store_search(folder.string(), how), how};
+}
+
+// Clip `i` of the store, refused naming the store when it has none.
+std::size_t clip_index(const Opened_store& s, long long i) {
+  if (i < 0 || std::size_t(i) >= s.search.size())
+    throw invalid_input("no clip " + std::to_string(i) + ": the store holds " + std::to_string(s.search.size()) +
+                            " clips",
+                        {.file = folder_of(s)});
+  return std::size_t(i);
+}
+
+void check_search(std::size_t k, int threads) {
+  if (k == 0) refuse("k must be at least 1");
+  thread_count(threads, "threads");
+}
+
+py::dict record_dict(const Opened_store& s, std::size_t i) {
+  const io::Store_record r = s.search.store().record(i);
+  return py::dict("index"_a = i, "name"_a = s.search.name(i), "path"_a = r.path, "clip"_a = r.clip,
+                  "frames"_a = r.frame_count, "fps"_a = r.fps, "rows"_a = r.rows,
+                  "input_options"_a = python_of(nlohmann::json::parse(r.input_options, nullptr, false)),
+                  "source_size"_a = r.source_size, "source_mtime_ns"_a = r.source_mtime_ns,
+                  "source_hash"_a = r.source_hash, "topology_path"_a = r.topology_path);
+}
+
+py::dict pruning_dict(const similarity::Pruning_report& p) {
+  return py::dict("candidates"_a = p.candidates, "pruned_by_summary"_a = p.pruned_by_summary,
+                  "pruned_by_rows"_a = p.pruned_by_rows, "abandoned"_a = p.abandoned, "aligned"_a = p.aligned,
+                  "rows_aligned"_a = p.rows_aligned, "rows_abandoned"_a = p.rows_abandoned,
+                  "pruned_share"_a = p.pruned_share());
+}
+
+py::dict nearest_dict(const Opened_store& s, const similarity::Nearest_motions& found) {
+  py::list neighbours;
+  for (std::size_t r = 0; r < found.neighbours.size(); ++r) {
+    const similarity::Neighbour& n = found.neighbours[r];
+    const io::Store_record record = s.search.store().record(n.index);
+    neighbours.append(py::dict("rank"_a = r + 1, "index"_a = n.index, "name"_a = s.search.name(n.index),
+                               "path"_a = record.path, "clip"_a = record.clip, "value"_a = n.value));
+  }
+  return py::dict("neighbours"_a = neighbours, "pruning"_a = pruning_dict(found.pruning));
+}
+
+py::dict search(const Opened_store& s, const Animation& query, std::size_t k, int threads) {
+  check_search(k, threads);
+  require_motion(query.mesh, "query");
+  similarity::Nearest_motions found;
+  {
+    Interruptible_call call;
+    found = s.search.nearest(query.mesh, {.k = k, .threads = threads});
+  }
+  return nearest_dict(s, found);
+}
+
+py::dict nearest_to_clip(const Opened_store& s, long long i, std::size_t k, int threads) {
+  check_search(k, threads);
+  const std::size_t clip = clip_index(s, i);
+  similarity::Nearest_motions found;
+  {
+    Interruptible_call call;
+    found = s.search.nearest_to_clip(clip, {.k = k, .threads = threads});
+  }
+  return nearest_dict(s, found);
+}
+
+py::list knn_graph(const Opened_store& s, std::size_t k, int threads) {
+  check_search(k, threads);
+  std::vector<similarity::Nearest_motions> graph;
+  {
+    Interruptible_call call;
+    graph = s.search.knn_graph({.k = k, .threads = threads});
+  }
+  py::list out;
+  for (const similarity::Nearest_motions& node : graph) out.append(nearest_dict(s, node));
+  return out;
+}
+
+// Clip i's signatures as an (R, W) float32 view of the mapping: the store keeps a clip's values
+// dimension-major (W blocks of R), so a row's values are R floats apart.
+py::array signatures(const py::object& self, long long i) {
+  const Opened_store& s = self.cast<const Opened_store&>();
+  const similarity::Motion_signature_view v = s.search.clips().view(clip_index(s, i));
+  constexpr auto item = py::ssize_t(sizeof(float));
+  py::array a(py::dtype::of<float>(), {py::ssize_t(v.rows), py::ssize_t(v.width)}, {item, py::ssize_t(v.rows) * item},
+              v.values, self);
+  a.attr("setflags")("write"_a = false);
+  return a;
+}
+
+py::array frames(const py::object& self, long long i) {
+  const Opened_store& s = self.cast<const Opened_store&>();
+  const std::span<const std::uint32_t> f = s.search.store().frames(clip_index(s, i));
+  return view(f.data(), {py::ssize_t(f.size())}, self);
+}
+
+// MotionStore: (1, folder, verify): a store pickles as where it is; restored, it is opened again.
+py::object store_state(const Opened_store& s) {
+  return py::make_tuple(pickle_version, folder_of(s), verify_name(s.verify));
+}
+
+Opened_store store_of_state(const py::object& state) {
+  constexpr const char* type = "MotionStore";
+  const py::tuple f = state_fields(state, type, 2, "(1, folder, verify)");
+  return open_store_at(state_field<std::string>(f, 0, type, "folder"), state_field<std::string>(f, 1, type, "verify"));
+}
+
+// Some clips of a store, in a given order: the labelled ones (a similarity::MotionCollection).
+struct Selected_clips {
+  const io::Stored_motions* stored;
+  std::vector<std::size_t> indices;
+
+  std::size_t size() const { return indices.size(); }
+  similarity::Motion_signature_view view(std::size_t i) const { return stored->view(indices[i]); }
+  similarity::Motion_summary_view summary(std::size_t i) const { return stored->summary(indices[i]); }
+};
+
+// The input options a clip was described with, as its record spells them (input_options_text).
+frontend::Input_options recorded_options(const io::Store_record& record) {
+  frontend::Input_options options;
+  const nlohmann::json o = nlohmann::json::parse(record.input_options, nullptr, false);
+  try {
+    options.fps = o.at("fps").get<double>();
+    options.topology = o.at("topology").get<std::string>();
+    options.triangulate = o.at("triangulate").get<bool>();
+    options.weld = o.at("weld").get<bool>();
+    options.refuse_defects = o.at("refuse_defects").get<bool>();
+  } catch (const nlohmann::json::exception&) {
+    return {};  // not this front end's: the clip then reads as changed
+  }
+  return options;
+}
+
+std::string listed_names(const std::vector<std::string>& names) {
+  std::string list;
+  for (std::size_t k = 0; k < names.size() && k < 5; ++k) list += (k ? ", " : "") + names[k];
+  return names.size() > 5 ? list + " and " + std::to_string(names.size() - 5) + " more" : list;
+}
+
+// The store's index of each labelled clip, in the rows' order; refuses, listing them, the clips
+// it lacks or holds as they were before their source changed.
+std::vector<std::size_t> labelled_indices(const Opened_store& s, const std::string& labels) {
+  const io::Motion_store& store = s.search.store();
+  std::vector<std::size_t> indices;
+  std::vector<std::string> missing, stale;
+  for (const frontend::Clip_source& clip : frontend::labelled_clips(labels, {})) {
+    const std::optional<std::size_t> at = store.find(clip.file, clip.clip);
+    const std::optional<io::Store_record> record = at ? std::optional(store.record(*at)) : std::nullopt;
+    if (!record) missing.push_back(clip.name());
+    else if (!frontend::up_to_date(*record, clip, recorded_options(*record))) stale.push_back(clip.name());
+    else indices.push_back(*at);
+  }
+  if (missing.empty() && stale.empty()) return indices;
+  std::string message = "the store does not hold every labelled clip as it is now:";
+  if (!missing.empty()) message += " " + std::to_string(missing.size()) + " missing (" + listed_names(missing) + ")";
+  if (!stale.empty())
+    message += " " + std::to_string(stale.size()) + " changed since described (" + listed_names(stale) + ")";
+  throw invalid_input(message + "; describe them again: deformseg.describe_to_store('" + labels + "', '" +
+                          folder_of(s) + "')",
+                      {.file = folder_of(s)});
+}
+
+}  // namespace
+
+py::array stored_similarity_matrix(const Opened_store& store, const similarity::Policy_choice& choice,
+                                   const Progress& progress) {
+  const similarity::Default_similarity asked = frontend::store_policy(choice, frontend::Front::python);
+  if (!choice.up.empty() &&
+      frontend::store_description(asked) != frontend::store_description(store.search.policy()))
+    throw invalid_input("up='" + choice.up + "' differs from the store's up direction (MotionStore.description "
+                        "gives it)", {.file = folder_of(store)});
+  Eigen::MatrixXd m;
+  {
+    Interruptible_call call;
+    m = store.search.matrix(progress);
+  }
+  const auto n = py::ssize_t(m.rows()), item = py::ssize_t(sizeof(double));
+  return owning(std::move(m), +[](const Eigen::MatrixXd& x) { return x.data(); }, {n, n}, {item, n * item});
+}
+
+evaluation::Retrieval_scores evaluate_stored(const Opened_store& store, const std::string& labels) {
+  std::vector<evaluation::Labelled_item> items;
+  for (const io::Labelled_clip& row : io::read_motion_labels(labels)) items.push_back(row.item);
+  Interruptible_call call;
+  const Selected_clips selected{&store.search.clips(), labelled_indices(store, labels)};
+  return evaluation::evaluate_retrieval(similarity::similarity_matrix(selected, store.search.policy()), items);
+}
+
+void bind_store(py::module_& m) {
+  py::class_<Opened_store>(m, "MotionStore", R"doc(A motion store opened by `open_store`: the descriptions of clips
+written once by `describe_to_store` (or the tool's `deformseg describe --store`), memory-mapped for
+as long as the object lives, searched under the policy they were described with (the default
+motion-signature policy, its up direction recorded in `description`). The format is
+doc/store_format.md; deformseg.store_format reads it with NumPy alone.
+
+len(store) clips, indexed from 0 in the store's order; `names`, `records` and `description` say
+what it holds; `signatures(i)` and `frames(i)` are read-only views of the mapping (no copy);
+`search`, `nearest_to_clip`, `knn_graph` and `matrix` give exactly the values `similarity_matrix`
+gives the same clips described now. A store pickles as its folder and is opened again where it is
+unpickled (with the same check): the clips are those the folder holds then. The store stays
+readable while another process appends to it; this object goes on showing what it held when opened.)doc")
+      .def(py::pickle(&store_state, &store_of_state))
+      .def("__len__", [](const Opened_store& s) { return s.search.size(); })
+      .def_property_readonly("folder", &folder_of, "The store's folder, as given to open_store.")
+      .def_property_readonly("generation", [](const Opened_store& s) { return s.search.store().generation(); },
+                             "The number of appends committed.")
+      .def_property_readonly("width", [](const Opened_store& s) { return s.search.store().width(); },
+                             "W, the values per signature (64 by default; 0 while the store holds no clip).")
+      .def_property_readonly(
+          "description",
+          [](const Opened_store& s) {
+            return python_of(nlohmann::json::parse(s.search.store().description(), nullptr, false));
+          },
+          "The options the clips were described with, as a dict: policy, alignment, lags, quantiles, floor, up "
+          "([x, y, z] or None), vertical_unit, vertical_weight, signature_rate, scale and width.")
+      .def_property_readonly(
+          "names",
+          [](const Opened_store& s) {
+            std::vector<std::string> names;
+            for (std::size_t i = 0; i < s.search.size(); ++i) names.push_back(s.search.name(i));
+            return names;
+          },
+          "Each clip named as reports name it: 'FILE' or 'FILE#CLIP', FILE canonical and absolute.")
+      .def_property_readonly(
+          "records",
+          [](const Opened_store& s) {
+            py::list out;
+            for (std::size_t i = 0; i < s.search.size(); ++i) out.append(record_dict(s, i));
+            return out;
+          },
+          "Per clip, a dict of index, name, path, clip ('' for a file of one animation), frames (its frame "
+          "count), fps, rows (described instants), input_options (a dict), source_size, source_mtime_ns, "
+          "source_hash (0: none) and topology_path: the keys of the tool's `store info --json` clips, with "
+          "name and topology_path.")
+      .def("index_of",
+           [](const Opened_store& s, const std::filesystem::path& path, const std::string& clip) {
+             return s.search.store().find(path.string(), clip);
+           },
+           "path"_a, "clip"_a = "",
+           "The index of the clip of `path` (canonical and absolute, as records give it) and `clip` (default '': "
+           "a file of one animation), or None. Complexity O(log N).")
+      .def("signatures", &signatures, "i"_a,
+           "Clip i's signatures: an (R, W) float32 array, one row per described instant, a read-only view "
+           "of the store's mapping (no copy; strides (4, 4 R): the store keeps them dimension-major) that "
+           "keeps the store open. Raises InvalidInput naming the store for an index out of range. "
+           "Complexity O(1).")
+      .def("frames", &frames, "i"_a,
+           "Clip i's frame numbers, one per row of its signatures: an (R,) uint32 read-only view (no copy). "
+           "Complexity O(1).")
+      .def("search", &search, "query"_a, "k"_a = 10, py::kw_only(), "threads"_a = 0,
+           R"doc(The k clips of the store that move most like the Animation `query` (the tool's
+`search`): `query` described as the clips were, then searched exactly, with lower bounds and
+early abandoning (chapter 14). Returns a dict: neighbours, a list of dicts of rank (from 1), index,
+name, path, clip and value (similarity(query, clip).value under the store's policy, exactly as
+similarity_matrix gives it), best first, ties by index; and pruning, a dict of the counts
+candidates, pruned_by_summary, pruned_by_rows, abandoned, aligned, rows_aligned, rows_abandoned
+and pruned_share (the share of candidates never aligned whole). k (default 10): at most the
+store's size come back. threads (default 0: all): the result and the counts do not depend on it.
+Raises InvalidInput for k = 0, a query of one frame, an empty store. Complexity one description
+of the query, at worst N alignments. Releases the GIL.)doc")
+      .def("nearest_to_clip", &nearest_to_clip, "i"_a, "k"_a = 10, py::kw_only(), "threads"_a = 0,
+           "The k clips nearest to clip i of the store, itself left out (the tool's `search --clip-index I`): "
+           "a dict as `search` gives, default k 10, threads 0 (all). Raises InvalidInput naming the store for "
+           "an index out of range. Complexity at worst N alignments. Releases the GIL.")
+      .def("knn_graph", &knn_graph, "k"_a = 10, py::kw_only(), "threads"_a = 0,
+           "Every clip's k nearest other clips (the tool's `knn-graph`): a list, per clip in the store's "
+           "order, of dicts as `search` gives (default k 10, threads 0: all). Complexity at worst N^2 "
+           "alignments, in practice far fewer (chapter 14). Releases the GIL.")
+      .def(
+          "matrix",
+          [](const Opened_store& s, const std::optional<py::function>& progress) {
+            return stored_similarity_matrix(s, {}, progress_of(progress));
+          },
+          py::kw_only(), "progress"_a = py::none(),
+          "The similarity of every pair of the store's clips as described: an (N, N) float64 array, as "
+          "similarity_matrix(store) and the tool's `matrix --store` give it. progress (default None): as "
+          "similarity_matrix's. Complexity N (N + 1) / 2 alignments. Releases the GIL.")
+      .def("__repr__", [](const Opened_store& s) {
+        return "<deformseg.MotionStore " + folder_of(s) + ": " + std::to_string(s.search.size()) + " clips>";
+      });
+
+  m.def("open_store", &open_store_at, "folder"_a, "verify"_a = "structure",
+        R"doc(Opens the motion store in `folder` (made by describe_to_store or `deformseg describe --store`)
+as a MotionStore. verify (default 'structure'): 'structure' checks the manifest, the files' sizes
+and headers and every clip's ranges (O(clips)); 'checksums' also the CRC-32 of every byte (the
+tool's `store verify`). Raises InvalidInput naming the file (and the clip) when the folder is not
+a store, is of a newer version, is truncated or corrupted, or was described with options this
+deformseg does not write. Complexity O(clips), or O(bytes) with 'checksums'. Releases the GIL.)doc");
+
+  define_function<describe_table, Types<const py::object&, const std::filesystem::path&>, Types<bool>,
+                  frontend::Input_options, similarity::Policy_choice>(
+      m, "describe_to_store",
+      R"doc(Describes clips once into the motion store in the folder `store` (made when missing), as the
+tool's `deformseg describe INPUTS --store S`: `inputs` a path or a sequence of paths, each an
+animation as read_animation reads it (frame files, a folder, a glob, a point cache with
+`topology`, FILE.glb#CLIP), a glTF file without a clip (every clip of 2 frames or more; its poses
+of one frame are left out and listed), or a labels CSV (evaluate's: the clip of each row). New
+clips are added, changed ones described again in place, unchanged ones skipped: a clip is
+unchanged when its path, clip, input options, size and modification time (with hash=True, the
+hash of its bytes instead of the time) are those recorded. One commit at the end: on any error
+the store is as it was. Returns a dict: store, clips (the store's count after the run),
+described, redescribed and skipped (the clips' names, 'FILE' or 'FILE#CLIP'), poses_left_out.
+up (default None: the policy's default, none): the signatures' up direction, recorded in the
+store; a store takes clips of one description only. hash (default False). Raises InvalidInput
+naming the file and clip that cannot be read or described, or the store when it cannot be
+written or was made with other options. Complexity linear in the inputs' size for the clips
+described, O(clips) for those skipped (plus reading every byte with hash=True). Releases the GIL.)doc",
+      &describe_to_store, std::tuple{py::arg("inputs"), py::arg("store"), py::kw_only()},
+      std::tuple{py::arg_v("hash", false)});
+}
+
+}  // namespace deformseg::python

@@ -1,0 +1,305 @@
+"""The motion store from Python: describe_to_store, open_store and MotionStore, and similarity_matrix
+and evaluate given a store. Made of a few shared clips (a labels CSV written from motions.csv into
+a scratch folder): the store's values equal those of similarity_matrix on the animations read now
+and the tool's on the same store, bit for bit; unchanged clips are skipped; a missing, truncated
+or corrupted store is refused naming the file."""
+import csv
+import doctest
+import os
+import pickle
+import re
+
+import numpy as np
+import pytest
+
+import deformseg
+from deformseg import store_format
+
+from conftest import REPOSITORY, data_dir
+
+# A few of the shared clips: two small characters, several motions each, a distractor.
+ROWS = {("Fox.glb", "Walk"), ("Fox.glb", "Run"), ("Fox.glb", "Survey"), ("RobotExpressive.glb", "Walking"),
+        ("RobotExpressive.glb", "Running"), ("RobotExpressive.glb", "Idle"), ("RobotExpressive.glb", "Dance")}
+
+
+def write_labels(characters, path, rows=ROWS):
+    """The rows of the shared motions.csv among `rows`, their files made absolute, into `path`."""
+    with open(characters / "motions.csv", newline="") as f:
+        listed = [r for r in csv.DictReader(f) if (r["file"], r["clip"]) in rows]
+    assert len(listed) == len(rows)
+    with open(path, "w", newline="") as f:
+        out = csv.DictWriter(f, fieldnames=list(listed[0]))
+        out.writeheader()
+        for row in listed:
+            out.writerow(dict(row, file=str(characters / row["file"])))
+    return path
+
+
+@pytest.fixture(scope="module")
+def described(characters, tmp_path_factory):
+    """(labels CSV, store folder, the report of describing it, the animations of the rows in order)."""
+    root = tmp_path_factory.mktemp("store")
+    labels = write_labels(characters, root / "labels.csv")
+    report = deformseg.describe_to_store(labels, root / "S")
+    animations = [deformseg.read_animation(row["file"], clip=row["clip"])
+                  for row in deformseg.read_motion_labels(labels)]
+    return labels, root / "S", report, animations
+
+
+# ---- describing ---------------------------------------------------------------------------------
+
+def test_describe_reports_the_clips_and_skips_them_the_second_time(described):
+    labels, folder, report, animations = described
+    rows = deformseg.read_motion_labels(labels)
+    names = [f"{os.path.realpath(r['file'])}#{r['clip']}" for r in rows]
+    assert report == {"store": str(folder), "clips": len(rows), "described": names, "redescribed": [],
+                      "skipped": [], "poses_left_out": []}
+    again = deformseg.describe_to_store([str(labels)], folder)
+    assert again["skipped"] == names and again["described"] == again["redescribed"] == []
+    assert again["clips"] == len(rows)
+
+
+def test_a_touched_source_is_described_again_unless_its_hash_is_the_same(fox, tmp_path):
+    copy = tmp_path.resolve() / "Fox.glb"
+    copy.write_bytes(fox.read_bytes())
+    store = tmp_path / "S"
+    first = deformseg.describe_to_store(copy, store, hash=True)
+    assert first["described"] == [f"{copy}#Survey", f"{copy}#Walk", f"{copy}#Run"]
+    stat = copy.stat()
+    os.utime(copy, ns=(stat.st_atime_ns, stat.st_mtime_ns + 10**9))
+    assert deformseg.describe_to_store(copy, store, hash=True)["skipped"] == first["described"]
+    touched = deformseg.describe_to_store(f"{copy}#Walk", store)  # by its time: changed
+    assert touched["redescribed"] == [f"{copy}#Walk"] and touched["clips"] == 3
+
+
+def test_describe_refuses_what_the_tool_refuses(fox, tmp_path):
+    with pytest.raises(deformseg.InvalidInput, match="Nope") as error:
+        deformseg.describe_to_store(fox, tmp_path / "S", clip="Nope")
+    assert error.value.file == os.path.realpath(fox)  # canonical, as the store records it
+    missing = tmp_path / "missing.glb"
+    with pytest.raises(deformseg.InvalidInput) as error:
+        deformseg.describe_to_store(missing, tmp_path / "S")
+    assert str(missing) in str(error.value)
+    with pytest.raises(TypeError, match=r"inputs\[1\]: expected a path \(str or os.PathLike\), got int"):
+        deformseg.describe_to_store([fox, 3], tmp_path / "S")
+    with pytest.raises(deformseg.InvalidInput, match="up must be"):
+        deformseg.describe_to_store(fox, tmp_path / "S", up="z")
+    assert not (tmp_path / "S").exists() or not any((tmp_path / "S").glob("signatures-*"))
+    deformseg.describe_to_store(f"{fox}#Walk", tmp_path / "T")
+    with pytest.raises(deformseg.InvalidInput, match="other options"):  # one description per store
+        deformseg.describe_to_store(f"{fox}#Run", tmp_path / "T", up="+x")
+
+
+# ---- the store's contents -----------------------------------------------------------------------
+
+def test_the_store_holds_the_clips_in_the_rows_order(described):
+    labels, folder, report, animations = described
+    store = deformseg.open_store(folder)
+    assert len(store) == len(animations) and store.folder == str(folder)
+    assert store.names == report["described"] and store.generation == 1
+    assert store.description["policy"] == "motion-signature" and store.description["width"] == store.width
+    for i, (record, animation) in enumerate(zip(store.records, animations)):
+        assert record["index"] == i and record["name"] == store.names[i]
+        assert (record["frames"], record["fps"]) == (animation.num_frames, animation.fps)
+        assert store.index_of(record["path"], record["clip"]) == i
+    assert store.index_of("/no/such/file.glb") is None
+    assert repr(store) == f"<deformseg.MotionStore {folder}: {len(animations)} clips>"
+
+
+def test_signatures_are_read_only_views_of_the_mapping_equal_to_the_numpy_reader(described):
+    folder = described[1]
+    store = deformseg.open_store(folder)
+    reader = store_format.read_store(folder, verify=True)
+    assert len(reader) == len(store)
+    for i in range(len(store)):
+        signatures, frames = store.signatures(i), store.frames(i)
+        block, reader_frames = reader.clip(i)
+        assert signatures.dtype == np.float32 and signatures.shape == (store.records[i]["rows"], store.width)
+        assert not signatures.flags.writeable and not frames.flags.writeable
+        assert signatures.strides == (4, 4 * signatures.shape[0])  # the store's layout, not a copy
+        assert signatures.tobytes() == block.tobytes() and np.array_equal(frames, reader_frames)
+        assert reader.find(store.records[i]["path"], store.records[i]["clip"]) == i
+    # The view keeps the store open: it outlives every reference to the object.
+    view = deformseg.open_store(folder).signatures(0)
+    assert view.tobytes() == reader.clip(0)[0].tobytes()
+    with pytest.raises(deformseg.InvalidInput, match=f"no clip {len(store)}: the store holds {len(store)} clips"):
+        store.signatures(len(store))
+
+
+# ---- searching: the values of similarity_matrix ---------------------------------------------------
+
+def ranked(row, leave_out=None):
+    """(index, value) of a matrix row by decreasing value, ties by index, as the search ranks them."""
+    order = sorted((i for i in range(len(row)) if i != leave_out), key=lambda i: (-row[i], i))
+    return [(i, float(row[i])) for i in order]
+
+
+def test_the_matrix_of_a_store_is_similarity_matrix_of_the_animations(described):
+    folder, animations = described[1], described[3]
+    store = deformseg.open_store(folder)
+    m = deformseg.similarity_matrix(animations)
+    assert np.array_equal(store.matrix(), m)
+    assert np.array_equal(deformseg.similarity_matrix(store), m)
+    steps = []
+    store.matrix(progress=lambda done, total: steps.append((done, total)))
+    assert steps and steps[-1][0] == steps[-1][1]
+    with pytest.raises(deformseg.SimilarityStopped):
+        deformseg.similarity_matrix(store, progress=lambda done, total: False)
+
+
+def test_search_knn_graph_and_nearest_to_clip_equal_the_sorted_matrix_rows(described):
+    folder, animations = described[1], described[3]
+    store = deformseg.open_store(folder)
+    m = deformseg.similarity_matrix(animations)
+    n = len(store)
+    for q, query in enumerate(animations[:3]):
+        found = store.search(query, k=4, threads=1)
+        assert [(x["index"], x["value"]) for x in found["neighbours"]] == ranked(m[q])[:4]
+        assert [x["rank"] for x in found["neighbours"]] == [1, 2, 3, 4]
+        assert [x["name"] for x in found["neighbours"]] == [store.names[x["index"]] for x in found["neighbours"]]
+        p = found["pruning"]
+        assert p["candidates"] == n and p["aligned"] + p["pruned_by_summary"] + p["pruned_by_rows"] + \
+            p["abandoned"] == n
+        assert store.search(query, k=4, threads=2) == found  # the counts too
+    everything = store.search(animations[0], k=n + 5)["neighbours"]  # k above the size: every clip
+    assert [(x["index"], x["value"]) for x in everything] == ranked(m[0])
+    graph = store.knn_graph(k=3)
+    assert len(graph) == n
+    for i, node in enumerate(graph):
+        assert [(x["index"], x["value"]) for x in node["neighbours"]] == ranked(m[i], leave_out=i)[:3]
+        assert store.nearest_to_clip(i, 3)["neighbours"] == node["neighbours"]
+
+
+def test_the_search_refuses_bad_arguments(described, grid):
+    store = deformseg.open_store(described[1])
+    faces, frames = grid(3, 3, 4)
+    cases = [(lambda: store.search(described[3][0], k=0), "k must be at least 1"),
+             (lambda: store.search(deformseg.Animation(faces, frames[:1])), "query: an animation of 1 frame"),
+             (lambda: store.search(described[3][0], threads=-1), "threads must be 0"),
+             (lambda: store.nearest_to_clip(-1), "no clip -1: the store holds"),
+             (lambda: store.knn_graph(k=0), "k must be at least 1"),
+             (lambda: deformseg.similarity_matrix(store, described[3]), "database: a MotionStore's matrix"),
+             (lambda: deformseg.similarity_matrix(store, policy="histogram"), "motion signatures aligned by dtw")]
+    for call, message in cases:
+        with pytest.raises(deformseg.InvalidInput, match=message):
+            call()
+    other = "none" if store.description["up"] is not None else "+y"
+    with pytest.raises(deformseg.InvalidInput, match="differs from the store's up direction") as error:
+        deformseg.similarity_matrix(store, up=other)
+    assert error.value.file == str(described[1])
+    with pytest.raises(TypeError, match="animations: expected a sequence of Animation or a MotionStore, got int"):
+        deformseg.similarity_matrix(3)
+
+
+# ---- evaluate -------------------------------------------------------------------------------------
+
+def test_evaluate_on_a_store_equals_evaluate_on_the_matrix_of_the_animations(described):
+    labels, folder, _, animations = described
+    store = deformseg.open_store(folder)
+    expected = deformseg.evaluate(deformseg.similarity_matrix(animations), deformseg.read_motion_labels(labels))
+    got = deformseg.evaluate(store, labels)
+    for name in ("queries", "nn_accuracy", "mean_average_precision", "roc_auc", "median_same", "median_different",
+                 "same_pairs", "different_pairs", "labels", "confusion", "per_motion", "per_query"):
+        assert getattr(got, name) == getattr(expected, name), name
+    assert got.queries > 0
+
+
+def test_evaluate_on_a_store_names_the_clips_it_lacks(described, characters, tmp_path):
+    folder = described[1]
+    labels = write_labels(characters, tmp_path / "more.csv", ROWS | {("RobotExpressive.glb", "Jump")})
+    with pytest.raises(deformseg.InvalidInput, match=r"1 missing \(.*RobotExpressive.glb#Jump\)") as error:
+        deformseg.evaluate(deformseg.open_store(folder), labels)
+    assert error.value.file == str(folder)
+    with pytest.raises(TypeError, match="labels: with a MotionStore, expected the path of a labels CSV"):
+        deformseg.evaluate(deformseg.open_store(folder), [{"motion": "walk"}])
+
+
+def test_evaluate_on_a_store_refuses_a_clip_changed_since(fox, tmp_path):
+    copy = tmp_path / "Fox.glb"
+    copy.write_bytes(fox.read_bytes())
+    labels = tmp_path / "labels.csv"
+    labels.write_text(f"file,clip,motion,rig,body\n{copy},Walk,walk,fox,a\n{copy},Run,walk,fox,b\n")
+    deformseg.describe_to_store(labels, tmp_path / "S")
+    store = deformseg.open_store(tmp_path / "S")
+    assert deformseg.evaluate(store, labels).queries == 2
+    stat = copy.stat()
+    os.utime(copy, ns=(stat.st_atime_ns, stat.st_mtime_ns + 10**9))
+    with pytest.raises(deformseg.InvalidInput, match="2 changed since described"):
+        deformseg.evaluate(store, labels)
+
+
+# ---- a store that is not one ----------------------------------------------------------------------
+
+def test_a_missing_truncated_or_corrupted_store_is_refused_naming_the_file(described, tmp_path):
+    with pytest.raises(deformseg.InvalidInput, match="not a motion store") as error:
+        deformseg.open_store(tmp_path / "missing")
+    assert error.value.file == str(tmp_path / "missing")
+    copy = tmp_path / "S"
+    copy.mkdir()
+    for f in described[1].iterdir():
+        (copy / f.name).write_bytes(f.read_bytes())
+    signatures = copy / store_format.file_name("signatures", 1)
+    data = bytearray(signatures.read_bytes())
+    data[-1] ^= 0xFF  # a flipped bit in the last clip's data: only the checksums see it
+    signatures.write_bytes(bytes(data))
+    deformseg.open_store(copy)
+    with pytest.raises(deformseg.InvalidInput, match="checksum") as error:
+        deformseg.open_store(copy, verify="checksums")
+    assert error.value.file == str(signatures)
+    signatures.write_bytes(bytes(data[:-4]))  # truncated
+    with pytest.raises(deformseg.InvalidInput, match="truncated|bytes") as error:
+        deformseg.open_store(copy)
+    assert error.value.file == str(signatures)
+    with pytest.raises(deformseg.InvalidInput, match="verify must be 'structure' or 'checksums', got 'all'"):
+        deformseg.open_store(described[1], verify="all")
+
+
+# ---- pickling ---------------------------------------------------------------------------------------
+
+def test_a_store_pickles_as_its_folder(described):
+    store = deformseg.open_store(described[1], verify="checksums")
+    state = store.__getstate__()
+    assert state == (1, str(described[1]), "checksums")
+    restored = pickle.loads(pickle.dumps(store))
+    assert restored.names == store.names and restored.signatures(1).tobytes() == store.signatures(1).tobytes()
+    with pytest.raises(ValueError, match="^deformseg.MotionStore: cannot restore a pickled state"):
+        deformseg.MotionStore.__new__(deformseg.MotionStore).__setstate__((2,) + state[1:])
+
+
+# ---- the tool on the same store -------------------------------------------------------------------
+
+def test_search_knn_graph_matrix_and_evaluate_equal_the_tools(tool, described, fox):
+    labels, folder, _, animations = described
+    store = deformseg.open_store(folder)
+    searched = tool("search", f"{fox}#Walk", "--store", folder, "-k", 3, "--clip-index", 4, "--json", "-")
+    by_query = [store.search(deformseg.read_animation(fox, clip="Walk"), 3), store.nearest_to_clip(4, 3)]
+    for mine, theirs in zip(by_query, searched["queries"]):
+        assert [(x["index"], x["path"], x["clip"], x["value"]) for x in mine["neighbours"]] == \
+            [(x["index"], x["path"], x["clip"], x["value"]) for x in theirs["neighbours"]]
+        assert mine["pruning"] == theirs["pruning"]
+    graph = tool("knn-graph", "--store", folder, "-k", 2, "--json", "-")
+    edges = [(i, x["index"], x["rank"], x["value"]) for i, node in enumerate(store.knn_graph(2))
+             for x in node["neighbours"]]
+    assert edges == [(e["source"], e["target"], e["rank"], e["value"]) for e in graph["edges"]]
+    assert store.matrix().tolist() == tool("matrix", "--store", folder, "--json", "-")["similarity"]
+    evaluated = tool("evaluate", labels, "--store", folder, "--json", "-")["scores"]
+    scores = deformseg.evaluate(store, labels)
+    assert evaluated["queries"] > 0
+    for name, value in evaluated.items():  # the rows of each file are together: the same order
+        assert getattr(scores, name) == value, name
+
+
+# ---- the manual's example -------------------------------------------------------------------------
+
+def test_the_chapter_s_session_runs_as_written(fox, tmp_path, monkeypatch):
+    """The session of chapter 12's "A motion store", run by doctest in a scratch folder, the shared
+    data where it is."""
+    chapter = (REPOSITORY / "doc" / "chapters" / "12_python.md").read_text()
+    section = chapter[chapter.index("## A motion store"):]
+    session = re.search(r"@code\{\.py\}\n(.*?)@endcode", section, re.S).group(1)
+    session = session.replace('"../shared/data/', f'"{data_dir()}/')
+    monkeypatch.chdir(tmp_path)
+    test = doctest.DocTestParser().get_doctest(session, {"deformseg": deformseg}, "chapter 12", None, 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    runner.run(test)
+    assert runner.summarize(verbose=False) == doctest.TestResults(0, len(test.examples)) and test.examples
