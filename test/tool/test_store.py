@@ -201,9 +201,9 @@ def test_describe_streamed_equals_read_whole(tool, scratch, clips, caches):
     assert tool("matrix", "--store", cached, "--json", "-").json()["similarity"] == from_files
 
 
-def test_describe_errors_name_the_clip(tool, scratch, clips):
+def test_describe_errors_name_the_clip(tool, scratch, clips, caches):
     # A frame that cannot be read is named once, by its file and frame; a folder of one frame, by
-    # the folder, as when read whole.
+    # the folder, and a point cache without topology, as when read whole.
     broken = scratch / "broken-stream"
     shutil.copytree(clips[1], broken)
     frame = sorted(broken.iterdir())[5]
@@ -216,6 +216,8 @@ def test_describe_errors_name_the_clip(tool, scratch, clips):
     shutil.copy(sorted(clips[0].iterdir())[0], single)
     fails(tool("describe", single, "--store", scratch / "store-errors"), str(single.resolve()),
           "an animation of 1 frame: a motion needs at least 2")
+    fails(tool("describe", caches[0][0], "--store", scratch / "store-errors"),
+          f"{caches[0][0]}: a .pc2 point cache needs a topology mesh")
     assert not (scratch / "store-errors" / "store.json").exists()
 
 
