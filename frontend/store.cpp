@@ -274,14 +274,9 @@ mesh::Surface_mesh_animation read_whole(const Clip_source& clip, const io::Gltf_
                      .threads = options.threads});
 }
 
-// What `describe()` gives, its errors (not the reader's) prefixed with the clip's name.
-template <class Describe>
-similarity::Motion_signature_description named_errors(const Clip_source& clip, const Describe& describe) {
-  try {
-    return describe();
-  } catch (const invalid_input& e) {
-    throw invalid_input(clip.name() + ": " + e.what());
-  }
+// A description's error, named by its clip (a reader's names its file and frame already).
+invalid_input of_clip(const Clip_source& clip, const invalid_input& error) {
+  return invalid_input(clip.name() + ": " + error.what());
 }
 
 Described_clip summarized(std::size_t frames, double fps, similarity::Motion_signature_description description) {
@@ -293,8 +288,11 @@ Described_clip describe_whole(const Clip_source& clip, const io::Gltf_file* gltf
                               const similarity::Default_similarity& policy) {
   const mesh::Surface_mesh_animation animation = read_whole(clip, gltf, options);
   require_motion(animation, clip.name());
-  return summarized(animation.num_frames(), mesh::frames_per_second(animation),
-                    named_errors(clip, [&] { return policy.describe(animation); }));
+  try {
+    return summarized(animation.num_frames(), mesh::frames_per_second(animation), policy.describe(animation));
+  } catch (const invalid_input& e) {
+    throw of_clip(clip, e);
+  }
 }
 
 // A frame source that notes when reading fails: the reader's errors name the file and the frame
@@ -344,7 +342,7 @@ Described_clip describe_streamed(Source& source, const Clip_source& clip, const 
     description = policy.describe_stream(noting);
   } catch (const invalid_input& e) {
     if (noting.failed()) throw;
-    throw invalid_input(clip.name() + ": " + e.what());
+    throw of_clip(clip, e);
   }
   return summarized(source.num_frames(), source.frames_per_second(), std::move(description));
 }
@@ -381,9 +379,10 @@ Described_clip describe_clip(const Clip_source& clip, const io::Gltf_file* gltf,
 // the last (clips of other files may be described meanwhile, on other threads).
 class Gltf_parses {
 public:
-  explicit Gltf_parses(const std::vector<const Clip_source*>& clips) {
-    for (const Clip_source* clip : clips)
-      if (io::is_gltf(clip->file)) ++files_[clip->file].clips_left;
+  // For the clips `order` names.
+  Gltf_parses(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& order) {
+    for (const std::size_t i : order)
+      if (io::is_gltf(clips[i].file)) ++files_[clips[i].file].clips_left;
   }
 
   // The parsed file; a parse that failed throws again for each of its clips.
@@ -435,44 +434,60 @@ void append_clip(io::Store_append& append, const Clip_source& clip, const io::St
   }
 }
 
+// The clips of `clips` to describe, their records in `records`: those the store lacks or holds
+// changed, a file's together in the order of the files' first clips (the order they are appended
+// in); the others are reported skipped.
+std::vector<std::size_t> clips_to_describe(const std::vector<Clip_source>& clips, const Input_options& options,
+                                           bool hash, const io::Motion_store& store,
+                                           std::vector<io::Store_record>& records, Describe_report& report) {
+  std::map<std::string, std::vector<std::size_t>> of_file;
+  std::vector<std::string> files;
+  for (std::size_t i = 0; i < clips.size(); ++i) {
+    records[i] = source_record(clips[i], options, hash);
+    const std::optional<std::size_t> at = store.find(clips[i].file, clips[i].clip);
+    if (at && unchanged(store.record(*at), records[i], hash)) {
+      report.skipped.push_back(clips[i].name());
+      continue;
+    }
+    if (!of_file.count(clips[i].file)) files.push_back(clips[i].file);
+    of_file[clips[i].file].push_back(i);
+  }
+  std::vector<std::size_t> order;
+  for (const std::string& file : files) order.insert(order.end(), of_file[file].begin(), of_file[file].end());
+  return order;
+}
+
+// Says "describing N clip(s) of FILE" for each file whose first clip is among order[first, end).
+void announce_files(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& order, std::size_t first,
+                    std::size_t end, const std::function<void(const std::string&)>& say) {
+  for (std::size_t k = first; k < end; ++k) {
+    const std::string& file = clips[order[k]].file;
+    if (k > 0 && clips[order[k - 1]].file == file) continue;
+    std::size_t count = 1;
+    while (k + count < order.size() && clips[order[k + count]].file == file) ++count;
+    say("describing " + std::to_string(count) + " clip(s) of " + file);
+  }
+}
+
 }  // namespace
 
 Describe_report describe_into_store(const std::string& folder, const std::vector<Clip_source>& clips,
                                     const Input_options& options, const similarity::Default_similarity& policy,
                                     bool hash, const std::function<void(const std::string&)>& say) {
-  const std::size_t width = signature_width(policy);
-  io::Store_append append(folder, store_description(policy), similarity::summary_width(width, store_summary_chunks),
+  io::Store_append append(folder, store_description(policy),
+                          similarity::summary_width(signature_width(policy), store_summary_chunks),
                           io::motion_summary_layout(store_summary_chunks));
   Describe_report report;
   std::vector<io::Store_record> records(clips.size());
-  std::map<std::string, std::vector<std::size_t>> to_read;  // by file, in the clips' order
-  std::vector<std::string> files;
-  for (std::size_t i = 0; i < clips.size(); ++i) {
-    records[i] = source_record(clips[i], options, hash);
-    const std::optional<std::size_t> at = append.store().find(clips[i].file, clips[i].clip);
-    if (at && unchanged(append.store().record(*at), records[i], hash)) {
-      report.skipped.push_back(clips[i].name());
-      continue;
-    }
-    if (!to_read.count(clips[i].file)) files.push_back(clips[i].file);
-    to_read[clips[i].file].push_back(i);
-  }
-  std::vector<std::size_t> order;  // the clips to describe, a file's together, in the store's order
-  for (const std::string& file : files) order.insert(order.end(), to_read[file].begin(), to_read[file].end());
-  std::vector<const Clip_source*> ordered;
-  for (const std::size_t i : order) ordered.push_back(&clips[i]);
-  Gltf_parses parses(ordered);
-
+  const std::vector<std::size_t> order = clips_to_describe(clips, options, hash, append.store(), records, report);
+  Gltf_parses parses(clips, order);
   const std::size_t batch = describe_batch(thread_count(options.threads));
   std::vector<Described_clip> described;
   for (std::size_t first = 0; first < order.size(); first += batch) {
     const std::size_t count = std::min(batch, order.size() - first);
-    for (std::size_t k = first; k < first + count; ++k)
-      if (k == 0 || clips[order[k]].file != clips[order[k - 1]].file)
-        say("describing " + std::to_string(to_read[clips[order[k]].file].size()) + " clip(s) of " +
-            clips[order[k]].file);
+    announce_files(clips, order, first, first + count, say);
     described.assign(count, {});
-    // Each clip on one thread; a loop of one clip leaves its rows to the threads (the nested rule).
+    // A clip per thread; a batch of one clip leaves its rows to the threads (a loop's nested rule).
     deformseg::internal::parallel_for(count, options.threads, [&](std::size_t k) {
       const Clip_source& clip = clips[order[first + k]];
       const std::shared_ptr<const io::Gltf_file> gltf = io::is_gltf(clip.file) ? parses.acquire(clip.file) : nullptr;
