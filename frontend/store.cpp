@@ -487,7 +487,9 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
     const std::size_t count = std::min(batch, order.size() - first);
     announce_files(clips, order, first, first + count, say);
     described.assign(count, {});
-    // A clip per thread; a batch of one clip leaves its rows to the threads (a loop's nested rule).
+    // A clip per thread, by the library's one parallel loop (a detail: threads.h has no public
+    // loop) for its rules: a batch of one clip leaves the threads to its rows (loops nested in a
+    // loop of several threads run on one), and a failure gives the lowest clip's error.
     deformseg::internal::parallel_for(count, options.threads, [&](std::size_t k) {
       const Clip_source& clip = clips[order[first + k]];
       const std::shared_ptr<const io::Gltf_file> gltf = io::is_gltf(clip.file) ? parses.acquire(clip.file) : nullptr;
