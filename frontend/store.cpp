@@ -1,7 +1,9 @@
 #include "store.h"
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/frame_sequence.h>
+#include <deformseg/io/frame_stream.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/motion_labels.h>
 #include <deformseg/io/read_animation.h>
@@ -10,9 +12,15 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <exception>
 #include <filesystem>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <set>
+#include <span>
 #include <utility>
 
 namespace deformseg::frontend {
@@ -128,24 +136,6 @@ nlohmann::json up_json(const std::optional<Eigen::Vector3d>& up) {
   return {(*up)[0], (*up)[1], (*up)[2]};
 }
 
-// Reads the clips of one file, in `indices` of `clips`, as `read_input` reads them (a glTF file
-// parsed once), and gives each to `take`.
-template <class Take>
-void read_file_clips(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& indices,
-                     const Input_options& options, const Take& take) {
-  const std::string& file = clips[indices.front()].file;
-  if (!io::is_gltf(file)) {
-    Input_options frames = options;
-    frames.clip.clear();
-    take(indices.front(), read_input(file, frames, Front::command_line).animation);
-    return;
-  }
-  const io::Gltf_file gltf(file);
-  for (const std::size_t i : indices)
-    take(i, gltf.read({.clip = clips[i].clip, .fps = options.fps, .repair = repair_options(file, options),
-                       .threads = options.threads}));
-}
-
 }  // namespace
 
 std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, const Input_options& options,
@@ -179,9 +169,14 @@ similarity::Default_similarity store_policy(const similarity::Policy_choice& cho
   return policy;
 }
 
+std::size_t signature_width(const similarity::Default_similarity& policy) {
+  const signatures::Motion_signature_options& s = policy.signatures;
+  return (s.up ? 2 : 1) * s.lags.size() * s.quantiles;
+}
+
 std::string store_description(const similarity::Default_similarity& policy) {
   const signatures::Motion_signature_options& s = policy.signatures;
-  const std::size_t width = (s.up ? 2 : 1) * s.lags.size() * s.quantiles;
+  const std::size_t width = signature_width(policy);
   const nlohmann::json description = {
       {"policy", "motion-signature"}, {"alignment", "dtw"},         {"lags", s.lags},
       {"quantiles", s.quantiles},     {"floor", s.floor},           {"up", up_json(s.up)},
@@ -255,51 +250,258 @@ bool up_to_date(const io::Store_record& stored, const Clip_source& clip, const I
   return unchanged(stored, now, true);
 }
 
-Describe_report describe_into_store(const std::string& folder, const std::vector<Clip_source>& clips,
-                                    const Input_options& options, const similarity::Default_similarity& policy,
-                                    bool hash, const std::function<void(const std::string&)>& say) {
-  const std::size_t width = nlohmann::json::parse(store_description(policy))["width"].get<std::size_t>();
-  io::Store_append append(folder, store_description(policy),
-                          similarity::summary_width(width, store_summary_chunks),
-                          io::motion_summary_layout(store_summary_chunks));
-  Describe_report report;
-  std::vector<io::Store_record> records(clips.size());
-  std::map<std::string, std::vector<std::size_t>> to_read;  // by file, in the clips' order
+namespace {
+
+// ---- describing clips into a store ---------------------------------------------------------
+
+// A clip described, kept until its turn to be appended.
+struct Described_clip {
+  std::uint32_t frame_count = 0;
+  double fps = 0;
+  similarity::Motion_signature_description description;
+  similarity::Motion_summary summary;
+};
+
+// The whole animation of `clip` as read_input reads it; a glTF clip from `gltf`, its file parsed once.
+mesh::Surface_mesh_animation read_whole(const Clip_source& clip, const io::Gltf_file* gltf,
+                                        const Input_options& options) {
+  if (!gltf) {
+    Input_options frames = options;
+    frames.clip.clear();
+    return read_input(clip.file, frames, Front::command_line).animation;
+  }
+  return gltf->read({.clip = clip.clip, .fps = options.fps, .repair = repair_options(clip.file, options),
+                     .threads = options.threads});
+}
+
+// A description's error, named by its clip (a reader's names its file and frame already).
+invalid_input of_clip(const Clip_source& clip, const invalid_input& error) {
+  return invalid_input(clip.name() + ": " + error.what());
+}
+
+Described_clip summarized(std::size_t frames, double fps, similarity::Motion_signature_description description) {
+  similarity::Motion_summary summary = similarity::summarize(similarity::view(description), store_summary_chunks);
+  return {std::uint32_t(frames), fps, std::move(description), std::move(summary)};
+}
+
+Described_clip describe_whole(const Clip_source& clip, const io::Gltf_file* gltf, const Input_options& options,
+                              const similarity::Default_similarity& policy) {
+  const mesh::Surface_mesh_animation animation = read_whole(clip, gltf, options);
+  require_motion(animation, clip.name());
+  try {
+    return summarized(animation.num_frames(), mesh::frames_per_second(animation), policy.describe(animation));
+  } catch (const invalid_input& e) {
+    throw of_clip(clip, e);
+  }
+}
+
+// A frame source that notes when reading fails: the reader's errors name the file and the frame
+// already and are passed on as they are, the description's get the clip's name (as read whole).
+template <signatures::FrameSource Source>
+class Noting_source {
+public:
+  using Coordinate = typename Source::Coordinate;
+
+  explicit Noting_source(Source& source) : source_(source) {}
+  std::size_t num_vertices() const { return source_.num_vertices(); }
+  std::size_t num_frames() const { return source_.num_frames(); }
+  double frames_per_second() const { return source_.frames_per_second(); }
+  std::span<const std::array<std::uint32_t, 3>> triangles() const { return source_.triangles(); }
+  void read_frame(std::span<Coordinate> out) {
+    noting([&] { source_.read_frame(out); });
+  }
+  void rewind() {
+    noting([&] { source_.rewind(); });
+  }
+  bool failed() const { return failed_; }
+
+private:
+  template <class Read>
+  void noting(const Read& read) {
+    try {
+      read();
+    } catch (...) {
+      failed_ = true;
+      throw;
+    }
+  }
+
+  Source& source_;
+  bool failed_ = false;
+};
+
+// `policy.describe_stream(source)`: the same signatures as `describe` of the animation read whole,
+// holding the frames the longest lag needs, not the clip's.
+template <signatures::FrameSource Source>
+Described_clip describe_streamed(Source& source, const Clip_source& clip, const io::Gltf_file* gltf,
+                                 const Input_options& options, const similarity::Default_similarity& policy) {
+  if (source.num_frames() < 2) return describe_whole(clip, gltf, options, policy);  // refused as before
+  Noting_source<Source> noting(source);
+  similarity::Motion_signature_description description;
+  try {
+    description = policy.describe_stream(noting);
+  } catch (const invalid_input& e) {
+    if (noting.failed()) throw;
+    throw of_clip(clip, e);
+  }
+  return summarized(source.num_frames(), source.frames_per_second(), std::move(description));
+}
+
+// Whether a point cache or a frame sequence is read whole: welded (welding compares every frame,
+// which a stream cannot), or a point cache without its topology (refused by the reader of whole
+// caches, in its words).
+bool read_whole_only(const Clip_source& clip, const Input_options& options, const io::Repair_options& repair) {
+  if (repair.weld) return true;
+  if (!options.topology.empty()) return false;
+  const std::string format = io::animation_format(clip.file);
+  return format == "pc2" || format == "mdd";
+}
+
+// Describes `clip` as `read_input` reads it, frame by frame: a glTF clip from `gltf` (welded, when
+// it is, by what the file fixes: the stream's connectivity is read's); a point cache or frame
+// sequence through `io::with_frame_source` with the same topology, triangulation, repair and fps,
+// unless `read_whole_only`.
+Described_clip describe_clip(const Clip_source& clip, const io::Gltf_file* gltf, const Input_options& options,
+                             const similarity::Default_similarity& policy) {
+  const io::Repair_options repair = repair_options(clip.file, options);
+  if (gltf) {
+    io::Gltf_frame_source source(*gltf, {.clip = clip.clip, .fps = options.fps, .repair = repair});
+    return describe_streamed(source, clip, gltf, options, policy);
+  }
+  if (read_whole_only(clip, options, repair)) return describe_whole(clip, nullptr, options, policy);
+  io::Animation_read_options read{.triangulate = options.triangulate, .repair = repair, .fps = options.fps};
+  if (!options.topology.empty()) read.topology = options.topology;
+  return io::with_frame_source(clip.file, read,
+                               [&](auto& source) { return describe_streamed(source, clip, nullptr, options, policy); });
+}
+
+// Each glTF file parsed once for its clips, by the first of them to be described, and freed after
+// the last (clips of other files may be described meanwhile, on other threads).
+class Gltf_parses {
+public:
+  // For the clips `order` names.
+  Gltf_parses(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& order) {
+    for (const std::size_t i : order)
+      if (io::is_gltf(clips[i].file)) ++files_[clips[i].file].clips_left;
+  }
+
+  // The parsed file; a parse that failed throws again for each of its clips.
+  std::shared_ptr<const io::Gltf_file> acquire(const std::string& file) {
+    File& entry = files_.at(file);
+    const std::lock_guard lock(entry.mutex);
+    if (entry.error) std::rethrow_exception(entry.error);
+    if (!entry.parsed) try {
+        entry.parsed = std::make_shared<const io::Gltf_file>(file);
+      } catch (...) {
+        entry.error = std::current_exception();
+        throw;
+      }
+    return entry.parsed;
+  }
+
+  // One clip of `file` described: the parse is freed after its last.
+  void release(const std::string& file) {
+    File& entry = files_.at(file);
+    const std::lock_guard lock(entry.mutex);
+    if (--entry.clips_left == 0) entry.parsed.reset();
+  }
+
+private:
+  struct File {
+    std::mutex mutex;
+    std::shared_ptr<const io::Gltf_file> parsed;
+    std::exception_ptr error;
+    std::size_t clips_left = 0;
+  };
+  std::map<std::string, File> files_;  // made whole by the constructor: found concurrently, never added to
+};
+
+// The clips described at once, then appended in order: at least 32, so that few threads wait for
+// the batch's last clip; 4 per thread on more than 8. At most `threads` clips are read at once.
+std::size_t describe_batch(int threads) { return std::max<std::size_t>(32, 4 * std::size_t(threads)); }
+
+// Appends `described` as clip `clip` of `record` (replacing the clip's old description, if any).
+void append_clip(io::Store_append& append, const Clip_source& clip, const io::Store_record& record,
+                 const Described_clip& described, Describe_report& report) {
+  const similarity::Motion_signature_view view = similarity::view(described.description);
+  const std::vector<std::uint32_t> frames(described.description.frames.begin(), described.description.frames.end());
+  if (const std::optional<std::size_t> at = append.store().find(record.path, record.clip)) {
+    append.replace(*at, record, view, frames, described.summary.floats);
+    report.redescribed.push_back(clip.name());
+  } else {
+    append.add(record, view, frames, described.summary.floats);
+    report.described.push_back(clip.name());
+  }
+}
+
+// The clips of `clips` to describe, their records in `records`: those the store lacks or holds
+// changed, a file's together in the order of the files' first clips (the order they are appended
+// in); the others are reported skipped.
+std::vector<std::size_t> clips_to_describe(const std::vector<Clip_source>& clips, const Input_options& options,
+                                           bool hash, const io::Motion_store& store,
+                                           std::vector<io::Store_record>& records, Describe_report& report) {
+  std::map<std::string, std::vector<std::size_t>> of_file;
   std::vector<std::string> files;
   for (std::size_t i = 0; i < clips.size(); ++i) {
     records[i] = source_record(clips[i], options, hash);
-    const std::optional<std::size_t> at = append.store().find(clips[i].file, clips[i].clip);
-    if (at && unchanged(append.store().record(*at), records[i], hash)) {
+    const std::optional<std::size_t> at = store.find(clips[i].file, clips[i].clip);
+    if (at && unchanged(store.record(*at), records[i], hash)) {
       report.skipped.push_back(clips[i].name());
       continue;
     }
-    if (!to_read.count(clips[i].file)) files.push_back(clips[i].file);
-    to_read[clips[i].file].push_back(i);
+    if (!of_file.count(clips[i].file)) files.push_back(clips[i].file);
+    of_file[clips[i].file].push_back(i);
   }
-  for (const std::string& file : files) {
-    say("describing " + std::to_string(to_read[file].size()) + " clip(s) of " + file);
-    read_file_clips(clips, to_read[file], options, [&](std::size_t i, const mesh::Surface_mesh_animation& animation) {
-      require_motion(animation, clips[i].name());
-      io::Store_record& record = records[i];
-      record.frame_count = std::uint32_t(animation.num_frames());
-      record.fps = mesh::frames_per_second(animation);
-      similarity::Motion_signature_description description;
-      try {
-        description = policy.describe(animation);
-      } catch (const invalid_input& e) {
-        throw invalid_input(clips[i].name() + ": " + e.what());
-      }
-      const similarity::Motion_signature_view view = similarity::view(description);
-      const std::vector<std::uint32_t> frames(description.frames.begin(), description.frames.end());
-      const similarity::Motion_summary summary = similarity::summarize(view, store_summary_chunks);
-      if (const std::optional<std::size_t> at = append.store().find(record.path, record.clip)) {
-        append.replace(*at, record, view, frames, summary.floats);
-        report.redescribed.push_back(clips[i].name());
-      } else {
-        append.add(record, view, frames, summary.floats);
-        report.described.push_back(clips[i].name());
-      }
+  std::vector<std::size_t> order;
+  for (const std::string& file : files) order.insert(order.end(), of_file[file].begin(), of_file[file].end());
+  return order;
+}
+
+// Says "describing N clip(s) of FILE" for each file whose first clip is among order[first, end).
+void announce_files(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& order, std::size_t first,
+                    std::size_t end, const std::function<void(const std::string&)>& say) {
+  for (std::size_t k = first; k < end; ++k) {
+    const std::string& file = clips[order[k]].file;
+    if (k > 0 && clips[order[k - 1]].file == file) continue;
+    std::size_t count = 1;
+    while (k + count < order.size() && clips[order[k + count]].file == file) ++count;
+    say("describing " + std::to_string(count) + " clip(s) of " + file);
+  }
+}
+
+}  // namespace
+
+Describe_report describe_into_store(const std::string& folder, const std::vector<Clip_source>& clips,
+                                    const Input_options& options, const similarity::Default_similarity& policy,
+                                    bool hash, const std::function<void(const std::string&)>& say) {
+  io::Store_append append(folder, store_description(policy),
+                          similarity::summary_width(signature_width(policy), store_summary_chunks),
+                          io::motion_summary_layout(store_summary_chunks));
+  Describe_report report;
+  std::vector<io::Store_record> records(clips.size());
+  const std::vector<std::size_t> order = clips_to_describe(clips, options, hash, append.store(), records, report);
+  Gltf_parses parses(clips, order);
+  const std::size_t batch = describe_batch(thread_count(options.threads));
+  std::vector<Described_clip> described;
+  for (std::size_t first = 0; first < order.size(); first += batch) {
+    const std::size_t count = std::min(batch, order.size() - first);
+    announce_files(clips, order, first, first + count, say);
+    described.assign(count, {});
+    // A clip per thread, by the library's one parallel loop (a detail: threads.h has no public
+    // loop) for its rules: a batch of one clip leaves the threads to its rows (loops nested in a
+    // loop of several threads run on one), and a failure gives the lowest clip's error.
+    deformseg::internal::parallel_for(count, options.threads, [&](std::size_t k) {
+      const Clip_source& clip = clips[order[first + k]];
+      const std::shared_ptr<const io::Gltf_file> gltf = io::is_gltf(clip.file) ? parses.acquire(clip.file) : nullptr;
+      described[k] = describe_clip(clip, gltf.get(), options, policy);
+      if (gltf) parses.release(clip.file);
     });
+    for (std::size_t k = 0; k < count; ++k) {
+      io::Store_record& record = records[order[first + k]];
+      record.frame_count = described[k].frame_count;
+      record.fps = described[k].fps;
+      append_clip(append, clips[order[first + k]], record, described[k], report);
+    }
   }
   append.commit();
   report.clips = append.size();

@@ -52,6 +52,10 @@ std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_o
 /// @throws invalid_input naming the option otherwise.
 similarity::Default_similarity store_policy(const similarity::Policy_choice& choice, Front front);
 
+/// The values per row of `policy`'s signatures: lags x quantiles, twice that with an up direction
+/// (the vertical rates' quantiles follow the speeds'); the "width" a store's description records.
+std::size_t signature_width(const similarity::Default_similarity& policy);
+
 /// The description options a store records for `policy`, as a JSON object: policy, alignment,
 /// lags, quantiles, floor, up ([x, y, z] or null), vertical_unit, vertical_weight,
 /// signature_rate, scale and width (the values per signature).
@@ -90,7 +94,14 @@ struct Describe_report {
 
 /// Describes `clips` read with `options` by `policy` into the store in `folder` (made when
 /// missing), with their summaries: new clips added, changed ones replaced in place, unchanged ones
-/// skipped (see `unchanged`); one commit at the end. `say` gets a line of progress per file.
+/// skipped (see `unchanged`); one commit at the end. Each clip is read frame by frame (`policy`'s
+/// `describe_stream`, the same values as `describe` of the clip read whole), in memory that grows
+/// with the signatures' longest lag, not with the clip: all but point caches and frame sequences
+/// welded (`options.weld`), which are read whole. Clips are described on `options.threads` threads
+/// (a glTF file parsed once for its clips), a batch of at least 32 at a time, each batch appended in
+/// the clips' order: the store is the same, byte for byte, whatever the number of threads, and at
+/// most that many clips are read at once. `say` gets a line of progress per file, on the calling
+/// thread, in the clips' order.
 /// @throws invalid_input naming the file and clip that cannot be read or described, or the store
 /// when it cannot be written or was made with other options; the store is then as it was.
 Describe_report describe_into_store(const std::string& folder, const std::vector<Clip_source>& clips,

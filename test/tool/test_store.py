@@ -149,6 +149,78 @@ def test_unreadable_clip_leaves_the_store(tool, scratch, store, clips):
     assert (store / "store.json").read_bytes() == manifest
 
 
+def store_files(folder):
+    """Every file of a store (but its lock) by name, with its bytes."""
+    return {f.name: f.read_bytes() for f in folder.iterdir() if f.name != "lock"}
+
+
+@pytest.fixture(scope="session")
+def caches(tool, scratch):
+    """Two PC2 tubes of one mesh moving differently, and that mesh (their topology)."""
+    folders = [synth(tool, scratch, f"cache-{k}", "--format", "pc2", "--rings", "10", "--sectors", "6",
+                     "--schedule", *schedule)[0] for k, schedule in enumerate([["6:0", "6:70", "6:"],
+                                                                               ["4:0", "9:40", "3:"]])]
+    return [folder / "tube.pc2" for folder in folders], folders[0] / "tube.obj"
+
+
+def describe_both(tool, folder, frames, caches, extra=()):
+    """Describes the frame folders, then the point caches with their topology, into `folder`."""
+    describe(tool, folder, *frames, extra=extra)
+    return describe(tool, folder, *caches[0], extra=["--topology", caches[1], *extra])
+
+
+def test_describe_threads_give_the_same_store(tool, scratch, clips, caches):
+    # More clips than a batch (32), of two formats: every file of the store, clip table and
+    # manifest included, is the same described on 1 thread or on 2.
+    many = []
+    for k in range(36):
+        many.append(scratch / f"threads-{k}")
+        shutil.copytree(clips[k % 4], many[-1])
+    stores = [scratch / f"store-threads-{n}" for n in (1, 2)]
+    for n, folder in zip((1, 2), stores):
+        assert describe_both(tool, folder, [*many, *clips], caches, extra=["--threads", str(n)])["clips"] == 42
+    one, two = store_files(stores[0]), store_files(stores[1])
+    assert sorted(one) == sorted(two) and any(name.startswith("signatures-") for name in one)
+    assert [name for name in one if one[name] != two[name]] == []
+
+
+def test_describe_streamed_equals_read_whole(tool, scratch, clips, caches):
+    # Frames and point caches are read frame by frame, unless welded (then read whole); the tubes
+    # have no vertices to weld: the signatures, frames and summaries are the same bytes either way,
+    # and matrix --store gives matrix's values from the files.
+    streamed, whole = scratch / "store-streamed", scratch / "store-whole"
+    describe_both(tool, streamed, clips, caches)
+    describe_both(tool, whole, clips, caches, extra=["--weld"])
+    one, two = store_files(streamed), store_files(whole)
+    data = [name for name in one if name.startswith(("signatures-", "frames-", "summaries-"))]
+    assert len(data) == 6 and [name for name in data if one[name] != two[name]] == []
+    assert all(one[name] != two[name] for name in one if name.startswith("clips-"))  # the weld option recorded
+    cached = scratch / "store-caches"
+    describe(tool, cached, *caches[0], extra=["--topology", caches[1]])
+    from_files = tool("matrix", *caches[0], "--topology", caches[1], "--json", "-").json()["similarity"]
+    assert tool("matrix", "--store", cached, "--json", "-").json()["similarity"] == from_files
+
+
+def test_describe_errors_name_the_clip(tool, scratch, clips, caches):
+    # A frame that cannot be read is named once, by its file and frame; a folder of one frame, by
+    # the folder, and a point cache without topology, as when read whole.
+    broken = scratch / "broken-stream"
+    shutil.copytree(clips[1], broken)
+    frame = sorted(broken.iterdir())[5]
+    frame.write_text("v 1 2\n")
+    run = fails(tool("describe", broken, "--store", scratch / "store-errors"), f"{frame}:", "frame 5")
+    (error,) = [line for line in run.err.splitlines() if "error:" in line]
+    assert error.count(str(broken)) == 1, run.err
+    single = scratch / "one-frame"
+    single.mkdir()
+    shutil.copy(sorted(clips[0].iterdir())[0], single)
+    fails(tool("describe", single, "--store", scratch / "store-errors"), str(single.resolve()),
+          "an animation of 1 frame: a motion needs at least 2")
+    fails(tool("describe", caches[0][0], "--store", scratch / "store-errors"),
+          f"{caches[0][0]}: a .pc2 point cache needs a topology mesh")
+    assert not (scratch / "store-errors" / "store.json").exists()
+
+
 @pytest.mark.parametrize("command", ["describe", "search"])
 def test_input_options(tool, command):
     out = succeeds(tool(command, "--help")).out
