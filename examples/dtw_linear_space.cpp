@@ -10,7 +10,7 @@
 int main() {
   namespace al = deformseg::alignment;
   // Two sine waves of 3,000 and 2,000 samples, one of them sped up: 6 million cells, whose trace
-  // bytes (6 MB) are under the default budget of 16 MiB.
+  // bytes (6 MB) are under the default budget of 32 MiB.
   std::vector<double> x(3000), y(2000);
   for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::sin(0.010 * double(i));
   for (std::size_t j = 0; j < y.size(); ++j) y[j] = std::sin(0.017 * double(j));

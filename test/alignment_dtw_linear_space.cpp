@@ -124,10 +124,10 @@ TEST_CASE("Dtw linear space: Subsequence_dtw, either sequence the query", "[alig
   }
 }
 
-TEST_CASE("Dtw linear space: the default budget switches on a grid of 4,200 x 4,100, with the same path",
+TEST_CASE("Dtw linear space: the default budget switches on a grid of 6,000 x 5,800, with the same path",
           "[alignment]") {
   // Two slow waves, their differences rounded to 1/64 so that many cells tie.
-  const std::size_t n = 4200, m = 4100;
+  const std::size_t n = 6000, m = 5800;
   REQUIRE(n * m > al::Dtw{}.max_trace_bytes);
   const auto dis = [](std::size_t i, std::size_t j) {
     return std::round(64 * std::abs(std::sin(0.003 * double(i)) - std::sin(0.0031 * double(j) + 0.2))) / 64;

@@ -194,16 +194,16 @@ double dtw_cost(std::size_t rows, std::size_t cols, const D& d, const Band& band
 /// (which happens when w is below about half the ratio of the lengths) is an error whose message
 /// gives the narrowest that does. Outside the window, d is neither read nor checked.
 ///
-/// `max_trace_bytes` (default 2^24, 16 MiB) bounds the memory of `align`'s traceback: up to that
+/// `max_trace_bytes` (default 2^25, 32 MiB) bounds the memory of `align`'s traceback: up to that
 /// many cells, `align` keeps a byte per cell of the n x m grid; above, it finds the same path in
 /// linear space (see `align`).
 struct Dtw {
   std::optional<std::size_t> window{};  ///< Sakoe–Chiba half-width in cells; none by default
   /// @brief The most cells whose trace bytes `align` holds at once: the whole grid when
   /// `n m <= max_trace_bytes`, else blocks of at most that many cells (or one row) of a
-  /// divide-and-conquer traceback. Default 2^24 (16 MiB: 4,096 x 4,096 frames); 0 makes every
+  /// divide-and-conquer traceback. Default 2^25 (32 MiB: 5,792 x 5,792 frames); 0 makes every
   /// alignment use the divide and conquer. The result does not depend on it.
-  std::size_t max_trace_bytes = std::size_t(1) << 24;
+  std::size_t max_trace_bytes = std::size_t(1) << 25;
 
   /// @brief The score is a cost, to be minimised.
   static constexpr bool higher_is_better = false;

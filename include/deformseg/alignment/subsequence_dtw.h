@@ -38,8 +38,8 @@ struct Subsequence_dtw {
   /// @brief The sequence matched whole; default the first.
   Subsequence_query query = Subsequence_query::first;
   /// @brief The most cells whose trace bytes `align` holds at once, as `Dtw::max_trace_bytes`:
-  /// above, the same path is found in linear space. Default 2^24 (16 MiB); 0: always.
-  std::size_t max_trace_bytes = std::size_t(1) << 24;
+  /// above, the same path is found in linear space. Default 2^25 (32 MiB); 0: always.
+  std::size_t max_trace_bytes = std::size_t(1) << 25;
 
   /// @brief The score is a cost, to be minimised.
   static constexpr bool higher_is_better = false;

@@ -8,7 +8,9 @@
 // over a rectangle thus tells where the path crosses the middle row; the path is then that of the
 // bottom part (its boundary: the middle row, kept, and the column before the crossing, computed)
 // followed back into that of the top part (its boundary: a part of the rectangle's own). A
-// rectangle small enough is traced back through a byte per cell, as dtw.h does for the whole grid.
+// rectangle small enough is traced back through a byte per cell, as dtw.h does for the whole grid;
+// one of at most twice that, by its bottom rows so, after a pass of the costs above them, then the
+// rest of the path above them.
 #pragma once
 
 #include <deformseg/alignment/alignment.h>
@@ -47,7 +49,9 @@ public:
   // The pairs, last first, of the path ending at (r1, c1) up to where it leaves `rect`; returns
   // the cumulative cost of (r1, c1).
   double trace(const Dtw_rect& rect, std::span<const double> top, std::span<const double> left, Pairs& pairs) const {
-    if (rect.height() == 1 || rect.height() * rect.width() <= block_) return trace_block(rect, top, left, pairs);
+    const std::size_t area = rect.height() * rect.width();
+    if (rect.height() == 1 || area <= block_) return trace_block(rect, top, left, pairs).cost;
+    if (area / 2 <= block_) return trace_tail(rect, top, left, pairs);
     return trace_split(rect, top, left, pairs);
   }
 
@@ -85,9 +89,17 @@ private:
     std::fill(cur + (hi - c0) + 2, cur + width + 1, dtw_unreachable);
   }
 
+  // How a traceback left a rectangle: the cost of its end, and whether it stepped into the row
+  // above inside the rectangle's columns, at `column` (rather than into the column before it).
+  struct Exit {
+    double cost;
+    bool through_top;
+    std::size_t column;
+  };
+
   // A small rectangle: a byte per cell, then the traceback as dtw_traceback does it.
-  double trace_block(const Dtw_rect& rect, std::span<const double> top, std::span<const double> left,
-                     Pairs& pairs) const {
+  Exit trace_block(const Dtw_rect& rect, std::span<const double> top, std::span<const double> left,
+                   Pairs& pairs) const {
     const std::size_t width = rect.width();
     std::vector<std::uint8_t> choice(rect.height() * width);  // 0 diagonal, 1 up, 2 left
     std::vector<double> above(top.begin(), top.end()), cur(width + 1), row(width);
@@ -102,11 +114,34 @@ private:
     for (;;) {
       pairs.emplace_back(i, j);
       const std::uint8_t from = choice[(i - rect.r0) * width + (j - rect.c0)];
-      if ((from != 2 && i == rect.r0) || (from != 1 && j == rect.c0)) break;
+      if (from != 2 && i == rect.r0) {
+        const bool inside = from == 1 || j > rect.c0;
+        return {above[width], inside, inside ? j - (from == 0) : 0};
+      }
+      if (from != 1 && j == rect.c0) return {above[width], false, 0};
       if (from != 2) --i;
       if (from != 1) --j;
     }
-    return above[width];
+  }
+
+  // A rectangle of at most twice the block: the costs of the rows above its last
+  // `block_ / width` ones, those traced back through a byte per cell, then the part of the path
+  // above them (at most a block).
+  double trace_tail(const Dtw_rect& rect, std::span<const double> top, std::span<const double> left,
+                    Pairs& pairs) const {
+    const std::size_t width = rect.width(), last_top = rect.r1 - block_ / width;
+    std::vector<double> above(top.begin(), top.end()), cur(width + 1), row(width);
+    for (std::size_t i = rect.r0; i <= last_top; ++i) {
+      cur[0] = left[i - rect.r0];
+      sweep_row(i, rect.c0, width, above.data(), cur.data(), row, [](std::size_t, bool, bool) {});
+      std::swap(above, cur);
+    }
+    const std::size_t top_rows = last_top + 1 - rect.r0;
+    const Exit exit = trace_block({last_top + 1, rect.r1, rect.c0, rect.c1}, above, left.subspan(top_rows), pairs);
+    if (exit.through_top)
+      trace({rect.r0, last_top, rect.c0, exit.column}, top.first(exit.column - rect.c0 + 2), left.first(top_rows),
+            pairs);
+    return exit.cost;
   }
 
   // Splits the rows in two halves and finds where the path crosses the last row of the top one.
