@@ -209,8 +209,6 @@ struct Dtw {
   static constexpr bool higher_is_better = false;
 
   /// @brief The least-cost warping path between A (n elements) and B (m elements) under `d`.
-  /// @param n, m the lengths: both 0 (cost 0, no pairs) or both at least 1.
-  /// @param d the dissimilarity, each value finite and `>= 0`.
   ///
   /// When `n m > max_trace_bytes`, the path is found in linear space instead of through a byte per
   /// cell, with the same result (the same pairs, the same score bit for bit): the rows are split in
@@ -219,7 +217,9 @@ struct Dtw {
   /// bottom half's part of the path and the top half's are then found the same way, each over the
   /// rectangle that holds it (from the crossing to the right in the bottom half, up to it in the
   /// top half), which the costs kept along its top and left edges determine. A rectangle of at most
-  /// `max_trace_bytes` cells, or of one row, is traced back through a byte per cell.
+  /// `max_trace_bytes` cells, or of one row, is traced back through a byte per cell; one of at most
+  /// twice that, by a pass of the costs down to its last `max_trace_bytes / width` rows, those
+  /// traced back through a byte per cell, then the part of the path above them the same way.
   /// @param n, m the lengths: both 0 (cost 0, no pairs) or both at least 1.
   /// @param d the dissimilarity, each value finite and `>= 0`; read row by row, by `d.row` when
   /// it has one (`RowDissimilarity`), each row once through a byte per cell, a few times (about
@@ -230,7 +230,8 @@ struct Dtw {
   /// @par Complexity O(n m) time (O(n w + m w) cells with a window). Memory: up to
   /// `max_trace_bytes` cells, n m bytes plus O(m) doubles; above, `max_trace_bytes` bytes (or m)
   /// plus O(n + m log n) doubles, in at most about 3 n m cells (each rectangle's area is at most
-  /// half its parent's) instead of n m.
+  /// half its parent's) instead of n m: 1.06 times the time of a byte per cell on two 6,601-frame
+  /// descriptions with the default budget, 2.3 times with 2^18 (test/bench/dtw_path_memory.cpp).
   /// @par Example
   /// @include dtw_linear_space.cpp
   template <Dissimilarity D>
