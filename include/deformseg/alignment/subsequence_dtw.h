@@ -37,6 +37,9 @@ enum class Subsequence_query {
 struct Subsequence_dtw {
   /// @brief The sequence matched whole; default the first.
   Subsequence_query query = Subsequence_query::first;
+  /// @brief The most cells whose trace bytes `align` holds at once, as `Dtw::max_trace_bytes`:
+  /// above, the same path is found in linear space. Default 2^25 (32 MiB); 0: always.
+  std::size_t max_trace_bytes = std::size_t(1) << 25;
 
   /// @brief The score is a cost, to be minimised.
   static constexpr bool higher_is_better = false;
@@ -45,17 +48,20 @@ struct Subsequence_dtw {
   /// @param n, m the lengths of A and B: both 0 (cost 0, no pairs) or both at least 1.
   /// @param d the dissimilarity between A and B, each value finite and `>= 0`.
   /// @return its cost and its pairs (i of A, j of B), in increasing order.
-  /// @throws invalid_input when exactly one sequence is empty, when a value of d is not finite and
-  /// `>= 0`, or when an n x m byte matrix cannot be addressed.
-  /// @par Complexity O(n m) time, O(n m) bytes for the traceback plus O(n + m) doubles.
+  /// @throws invalid_input when exactly one sequence is empty, or when a value of d is not finite
+  /// and `>= 0`.
+  /// @par Complexity O(n m) time, O(n m) bytes for the traceback plus O(n + m) doubles; when
+  /// `n m > max_trace_bytes`, `Dtw::align`'s linear-space traceback (after a pass of the costs
+  /// alone, to find the end): `max_trace_bytes` bytes plus O(n + m log n) doubles.
   template <Dissimilarity D>
   Alignment align(std::size_t n, std::size_t m, const D& d) const {
     if (check_lengths(n, m)) return {};
     if (query == Subsequence_query::first || n <= m)
-      return internal::dtw_align(n, m, d, internal::Band(n, m, {}), query_along_rows(), "Subsequence_dtw");
+      return internal::dtw_align(n, m, d, internal::Band(n, m, {}), query_along_rows(), max_trace_bytes,
+                                 "Subsequence_dtw");
     // The query is B: the grid with B along the rows, then the pairs turned back.
     Alignment a = internal::dtw_align(m, n, internal::Transposed<D>{d}, internal::Band(m, n, {}),
-                                      query_along_rows(), "Subsequence_dtw");
+                                      query_along_rows(), max_trace_bytes, "Subsequence_dtw");
     for (auto& [i, j] : a.pairs) std::swap(i, j);
     return a;
   }

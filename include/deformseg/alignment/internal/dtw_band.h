@@ -1,5 +1,5 @@
-// The Sakoe–Chiba band of the DTW passes, shared by the path pass (dtw.h) and the value pass
-// (dtw_value_pass.h).
+// The Sakoe–Chiba band of the DTW passes and where their paths start and end, shared by the path
+// passes (dtw.h, dtw_linear_space.h) and the value pass (dtw_value_pass.h).
 #pragma once
 
 #include <deformseg/exceptions.h>
@@ -13,6 +13,14 @@ namespace deformseg::alignment::internal {
 
 // The cumulative cost of a cell no path reaches (outside the band, or before a forced start).
 inline constexpr double dtw_unreachable = std::numeric_limits<double>::infinity();
+
+// Where warping paths may start and end on a rows x cols grid. Rows are the outer loop.
+struct Dtw_ends {
+  bool start_on_first_col = false;  // paths may start anywhere in column 0 (else only at (0, 0))
+  bool start_on_first_row = false;  // paths may start anywhere in row 0
+  // Where paths end: the far corner, anywhere in the last row, or anywhere in the last column.
+  enum class End { corner, on_last_row, on_last_col } end = End::corner;
+};
 
 // The Sakoe–Chiba band of half-width w on a rows x cols grid: the cells with
 // |i (cols - 1) - j (rows - 1)| <= w min(rows - 1, cols - 1), that is within w cells (of the
