@@ -37,7 +37,8 @@ class Store_search {
   /// @throws invalid_input when the store holds no clip.
   similarity::Nearest_motions nearest(const mesh::Surface_mesh_animation& query,
                                       const similarity::Nearest_motions_options& options) const;
-  /// The `options.k` clips nearest to clip `i` of the store, itself left out.
+  /// The `options.k` clips nearest to clip `i` of the store, itself left out
+  /// (`similarity::nearest_others`): row `i` of `knn_graph`, the same neighbours, values and counts.
   /// @throws invalid_input naming the index when the store has no clip `i`.
   similarity::Nearest_motions nearest_to_clip(std::size_t i, const similarity::Nearest_motions_options& options) const;
   /// Every clip's `options.k` nearest others (`similarity::knn_graph`).

@@ -1,7 +1,8 @@
 /// @file similarity/nearest_motions.h
 /// @brief `nearest_motions`: the k clips of a `MotionCollection` most similar to a query under the
 /// default policy, exactly as `similarity_matrix` ranks them, most of the collection ruled out by
-/// lower bounds before any alignment; `knn_graph`, every clip's k nearest; and the all-pairs
+/// lower bounds before any alignment; `nearest_others`, a clip's k nearest others in its own
+/// collection; `knn_graph`, every clip's k nearest others; and the all-pairs
 /// `similarity_matrix` of a collection.
 #pragma once
 
@@ -271,6 +272,13 @@ inline double search_unit(const Motion_signature_similarity<>& policy, std::size
   return frame_dissimilarity_unit(width, policy.scale);
 }
 
+// Clip i's search among the others of `collection`: the one code path of `nearest_others` and of
+// every row of `knn_graph`.
+template <MotionCollection C>
+Nearest_motions search_others(const C& collection, std::size_t i, double unit, std::size_t k, int threads) {
+  return Query_search<C>(collection, collection.view(i), i, unit, k, threads).run();
+}
+
 template <MotionCollection C>
 void check_query(const C& collection, Motion_signature_view query, const char* who) {
   if (query.rows == 0) throw invalid_input(std::string(who) + ": the query has no signature");
@@ -297,7 +305,7 @@ void check_query(const C& collection, Motion_signature_view query, const char* w
 /// between two looks at the k-th value, whatever the number of threads, so the result and
 /// `Nearest_motions::pruning` are the same on any number.
 /// @param query the query's signatures: `view(policy.describe(animation))`, or a clip of a
-/// collection (then it is found too, at value 1: see `knn_graph` to leave it out).
+/// collection (then it is found too, at value 1: see `nearest_others` to leave it out).
 /// @param collection a `MotionCollection` described with `policy`'s options.
 /// @param options k (default 10), threads.
 /// @param policy the scale and alignment of the values (default: the default policy's); its
@@ -318,13 +326,43 @@ Nearest_motions nearest_motions(Motion_signature_view query, const C& collection
   return internal::Query_search<C>(collection, query, std::nullopt, unit, options.k, options.threads).run();
 }
 
+/// @brief The `options.k` clips of `collection` most similar to its own clip `i`, clip i left out:
+/// row i of `similarity_matrix(collection)` less its diagonal, ranked as `nearest_motions` ranks
+/// (value descending, then index ascending), cut at k; each value is the matrix's entry, bit for bit,
+/// so each pair is oriented as the matrix orients it (`compare(clip min(i, j), clip max(i, j))`).
+///
+/// The search of `nearest_motions` with clip i as the query, but clip i is no candidate: it is
+/// neither searched nor counted in `Nearest_motions::pruning` (`candidates` is `size() - 1`). Row
+/// i of `knn_graph` is this search, the same code path: the same neighbours, values and counts.
+/// @param collection a `MotionCollection` described with `policy`'s options.
+/// @param i the clip whose neighbours are wanted. @pre `i < collection.size()` (checked).
+/// @param options k (default 10; fewer neighbours when the collection holds at most k others),
+/// threads (default 0: `default_threads()`; the result and the counts do not depend on it); its
+/// progress is not called (one query).
+/// @param policy the scale and alignment of the values (default: the default policy's); no window.
+/// @throws invalid_input when `i` is not a clip of `collection`, or when `policy` has a window.
+/// @throws cancelled as `similarity_matrix`.
+/// @par Complexity as `nearest_motions` over the N - 1 other clips: O(N W) for their summary
+/// bounds, O(N log N) to order them, and the alignments the bounds do not rule out.
+/// @par Example
+/// @include nearest_others.cpp
+template <MotionCollection C>
+Nearest_motions nearest_others(const C& collection, std::size_t i, const Nearest_motions_options& options = {},
+                               const Motion_signature_similarity<>& policy = {}) {
+  if (i >= collection.size())
+    throw invalid_input("nearest_others: no clip " + std::to_string(i) + ": the collection holds " +
+                        std::to_string(collection.size()));
+  const double unit = internal::search_unit(policy, collection.view(i).width, "nearest_others");
+  return internal::search_others(collection, i, unit, options.k, options.threads);
+}
+
 /// @brief Every clip's `options.k` nearest other clips of `collection` (itself left out), each
 /// pair's value that of `similarity_matrix` over the collection's clips (entry (i, j) for i < j is
 /// `compare(clip i, clip j)`, and so is entry (j, i)): the k-nearest-neighbour graph, one
-/// `Nearest_motions` per clip, ranked as `nearest_motions` ranks.
+/// `Nearest_motions` per clip, row i exactly `nearest_others(collection, i, options, policy)`.
 /// @param collection a `MotionCollection` described with `policy`'s options.
 /// @param options k (default 10), threads (the clips are searched in parallel, each as
-/// `nearest_motions` searches on one thread), progress (one step a clip).
+/// `nearest_others` searches on one thread), progress (one step a clip).
 /// @param policy the scale and alignment of the values (default: the default policy's); no window.
 /// @throws invalid_input when `policy` has a window.
 /// @throws cancelled as `similarity_matrix`.
@@ -338,7 +376,7 @@ std::vector<Nearest_motions> knn_graph(const C& collection, const Nearest_motion
   if (n == 0) return graph;
   const double unit = internal::search_unit(policy, collection.view(0).width, "knn_graph");
   deformseg::internal::parallel_for_reporting(n, options.threads, options.progress, 0, n, [&](std::size_t i) {
-    graph[i] = internal::Query_search<C>(collection, collection.view(i), i, unit, options.k, 1).run();
+    graph[i] = internal::search_others(collection, i, unit, options.k, 1);
   });
   return graph;
 }
