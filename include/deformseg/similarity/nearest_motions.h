@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <atomic>
 #include <iterator>
 #include <cstddef>
 #include <limits>
@@ -134,6 +135,13 @@ private:
   std::vector<Neighbour> best_;
 };
 
+// What one thread of a search reuses from candidate to candidate, so that trying one allocates
+// nothing once the vectors have grown to the longest clip.
+struct Search_scratch {
+  std::vector<double> gaps;       // lb_rows_columns' chunk gaps, then row_bounds' per-row sums
+  std::vector<double> row_bound;  // the alignment's per-row bounds
+};
+
 // The candidates taken together between two looks at the k-th best value: fixed, so that what is
 // pruned (and the counts) does not depend on the number of threads.
 inline constexpr std::size_t search_batch = 32;
@@ -147,8 +155,9 @@ public:
   // oriented as similarity_matrix does: the lower index first).
   Query_search(const C& collection, Motion_signature_view query, std::optional<std::size_t> self, double unit,
                std::size_t k, int threads)
-      : collection_(collection), query_(query), summary_(summarize(query)), self_(self), unit_(unit), k_(k),
-        threads_(threads) {}
+      : collection_(collection), query_(query), summary_(summarize(query)), summary_view_(summary_.view()),
+        self_(self), unit_(unit), k_(k), threads_(threads),
+        scratch_(std::size_t(deformseg::thread_count(threads, "nearest_motions"))) {}
 
   Nearest_motions run() {
     const std::vector<std::size_t> order = by_summary_bound();
@@ -191,7 +200,10 @@ private:
     const std::size_t n = collection_.size();
     bounds_.assign(n, 0.0);
     guesses_.assign(n, 0.0);
-    const Motion_summary_view query = summary_.view();
+    const Motion_summary_view query = summary_view_;
+    // Clip i's summary view is made here once per search: a collection held in memory makes it
+    // unchecked (its summaries were made by summarize), a store checks its row count, which a store
+    // opened without its checksums is not otherwise known to hold.
     deformseg::internal::parallel_for(
         n, threads_,
         [&](std::size_t i) {
@@ -225,29 +237,38 @@ private:
   static bool rules_out(double lower_bound, double threshold) { return !may_beat(lower_bound, threshold); }
 
   void run_batch(std::span<const std::size_t> batch, double threshold, Top_neighbours& top, Pruning_report& report) {
-    std::vector<std::optional<double>> values(batch.size());
-    std::vector<Pruning_report> counts(batch.size());
-    deformseg::internal::parallel_for(batch.size(), threads_,
-                                      [&](std::size_t b) { values[b] = value_of(batch[b], threshold, counts[b]); });
+    values_.assign(batch.size(), std::nullopt);
+    counts_.assign(batch.size(), Pruning_report{});
+    // Each worker takes a scratch of its own (a loop has at most scratch_.size() workers).
+    std::atomic<std::size_t> next_scratch{0};
+    deformseg::internal::parallel_for_with_locals(
+        batch.size(), threads_, 1, [&] { return &scratch_[next_scratch++]; },
+        [&](Search_scratch* scratch, std::size_t b) {
+          values_[b] = value_of(batch[b], threshold, *scratch, counts_[b]);
+        });
     for (std::size_t b = 0; b < batch.size(); ++b) {
-      report += counts[b];
-      if (values[b]) top.offer({batch[b], *values[b]});
+      report += counts_[b];
+      if (values_[b]) top.offer({batch[b], *values_[b]});
     }
   }
 
   // Candidate c's value, or std::nullopt when it is proven below `threshold` (counted in `report`).
-  std::optional<double> value_of(std::size_t c, double threshold, Pruning_report& report) const {
+  std::optional<double> value_of(std::size_t c, double threshold, Search_scratch& scratch,
+                                 Pruning_report& report) const {
     const Motion_signature_view clip = collection_.view(c);
     const bool query_first = !self_ || *self_ < c;
     const Motion_signature_view a = query_first ? query_ : clip, b = query_first ? clip : query_;
     if (threshold == -std::numeric_limits<double>::infinity()) return aligned_value(a, b, unit_, {}, {}, report);
     const Motion_summary_view clip_summary = collection_.summary(c);
-    if (rules_out(lb_rows_columns(summary_.view(), clip_summary, unit_), threshold)) {
+    const std::size_t chunks = summary_view_.chunks() + clip_summary.chunks();
+    if (scratch.gaps.size() < std::max(chunks, a.rows)) scratch.gaps.resize(std::max(chunks, a.rows));
+    if (rules_out(lb_rows_columns(summary_view_, clip_summary, unit_, scratch.gaps), threshold)) {
       ++report.pruned_by_rows;
       return std::nullopt;
     }
-    std::vector<double> row_bound(a.rows);
-    row_bounds(a, query_first ? clip_summary : summary_.view(), unit_, row_bound);
+    if (scratch.row_bound.size() < a.rows) scratch.row_bound.resize(a.rows);
+    const std::span<double> row_bound = std::span(scratch.row_bound).first(a.rows);
+    row_bounds(a, query_first ? clip_summary : summary_view_, unit_, row_bound, scratch.gaps);
     // Bounds of the reference dissimilarity made bounds of the kernel's, which may be a little lower.
     for (double& r : row_bound) r = std::max(0.0, safe_lower_bound(r));
     return aligned_value(a, b, unit_, threshold, row_bound, report);
@@ -256,11 +277,15 @@ private:
   const C& collection_;
   Motion_signature_view query_;
   Motion_summary summary_;
+  Motion_summary_view summary_view_;  // of summary_, checked once
   std::optional<std::size_t> self_;
   double unit_;
   std::size_t k_;
   int threads_;
   std::vector<double> bounds_, guesses_;
+  std::vector<Search_scratch> scratch_;  // one per worker of a batch
+  std::vector<std::optional<double>> values_;  // a batch's values
+  std::vector<Pruning_report> counts_;         // a batch's counts
 };
 
 // The unit of the frame dissimilarity of `policy` for signatures of `width` values; refuses what
