@@ -29,6 +29,12 @@ similarity::Nearest_motions Store_search::nearest_to_clip(std::size_t i,
   return similarity::nearest_others(clips_, i, options, policy_);
 }
 
+std::vector<similarity::Clip_match> Store_search::find(const mesh::Surface_mesh_animation& query,
+                                                      const similarity::Find_in_collection_options& options) const {
+  if (size() == 0) throw invalid_input("the store holds no clip", {.file = store().folder().string()});
+  return similarity::find_motion_in_collection(describe(query), clips_, options, policy_);
+}
+
 std::vector<similarity::Nearest_motions> Store_search::knn_graph(
     const similarity::Nearest_motions_options& options) const {
   return similarity::knn_graph(clips_, options, policy_);
