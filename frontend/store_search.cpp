@@ -26,14 +26,13 @@ similarity::Nearest_motions Store_search::nearest_to_clip(std::size_t i,
   if (i >= size())
     throw invalid_input("no clip " + std::to_string(i) + ": the store holds " + std::to_string(size()) + " clips",
                         {.file = store().folder().string()});
-  // The k + 1 nearest, less clip i itself (or, when k + 1 clips tie with it ahead of it, less the last).
-  similarity::Nearest_motions found = similarity::nearest_motions(
-      clips_.view(i), clips_, {.k = options.k + 1, .threads = options.threads, .progress = options.progress}, policy_);
-  auto& n = found.neighbours;
-  const auto self = std::ranges::find_if(n, [&](const similarity::Neighbour& x) { return x.index == i; });
-  if (self != n.end()) n.erase(self);
-  if (n.size() > options.k) n.resize(options.k);
-  return found;
+  return similarity::nearest_others(clips_, i, options, policy_);
+}
+
+std::vector<similarity::Clip_match> Store_search::find(const mesh::Surface_mesh_animation& query,
+                                                      const similarity::Find_in_collection_options& options) const {
+  if (size() == 0) throw invalid_input("the store holds no clip", {.file = store().folder().string()});
+  return similarity::find_motion_in_collection(describe(query), clips_, options, policy_);
 }
 
 std::vector<similarity::Nearest_motions> Store_search::knn_graph(

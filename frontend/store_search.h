@@ -1,12 +1,13 @@
 // A motion store opened for what the tool's and Python's commands ask of it: searching it for a
-// query's nearest clips, its k-nearest-neighbour graph and its matrix, under the policy its clips
-// were described with.
+// query's nearest clips, finding where a query occurs in its clips, its k-nearest-neighbour graph
+// and its matrix, under the policy its clips were described with.
 #pragma once
 
 #include "similarity.h"
 
 #include <deformseg/io/stored_motions.h>
 #include <deformseg/mesh/default_mesh.h>
+#include <deformseg/similarity/find_motion_in_collection.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/nearest_motions.h>
 
@@ -37,11 +38,18 @@ class Store_search {
   /// @throws invalid_input when the store holds no clip.
   similarity::Nearest_motions nearest(const mesh::Surface_mesh_animation& query,
                                       const similarity::Nearest_motions_options& options) const;
-  /// The `options.k` clips nearest to clip `i` of the store, itself left out.
+  /// The `options.k` clips nearest to clip `i` of the store, itself left out
+  /// (`similarity::nearest_others`): row `i` of `knn_graph`, the same neighbours, values and counts.
   /// @throws invalid_input naming the index when the store has no clip `i`.
   similarity::Nearest_motions nearest_to_clip(std::size_t i, const similarity::Nearest_motions_options& options) const;
   /// Every clip's `options.k` nearest others (`similarity::knn_graph`).
   std::vector<similarity::Nearest_motions> knn_graph(const similarity::Nearest_motions_options& options) const;
+  /// Where `query` occurs in the store (`similarity::find_motion_in_collection`): the best
+  /// `options.count` non-overlapping windows over all its clips, each in its clip's stored frames,
+  /// valued on the descriptions as stored (1 minus the mean dissimilarity along the warping path).
+  /// @throws invalid_input when the store holds no clip.
+  std::vector<similarity::Clip_match> find(const mesh::Surface_mesh_animation& query,
+                                           const similarity::Find_in_collection_options& options) const;
   /// The similarity of every pair of the store's clips (`similarity::similarity_matrix`).
   Eigen::MatrixXd matrix(const Progress& progress = {}) const;
 

@@ -70,6 +70,26 @@ Bounds check_bounds(const Eigen::MatrixXf& a, const Eigen::MatrixXf& b, std::siz
   std::vector<double> rows(std::size_t(a.rows()));
   similarity::row_bounds(view_of(a), sb.view(), unit, rows);
   for (Eigen::Index i = 0; i < a.rows(); ++i) CHECK(rows[std::size_t(i)] <= d.row(i).minCoeff());
+  // Row i's bound is f of its least gap2 to a chunk box, each summed over the dimensions in order.
+  for (Eigen::Index i = 0; i < a.rows(); ++i) {
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t c = 0; c < sb.view().chunks(); ++c) {
+      double sum = 0;
+      for (Eigen::Index k = 0; k < a.cols(); ++k) {
+        const double x = a(i, k), g = std::max({0.0, x - double(sb.view().chunk_hi(c)[std::size_t(k)]),
+                                                double(sb.view().chunk_lo(c)[std::size_t(k)]) - x});
+        sum += g * g;
+      }
+      least = std::min(least, sum);
+    }
+    CHECK(rows[std::size_t(i)] == similarity::frame_dissimilarity(least, unit));
+  }
+  // With the caller's scratch, dirty and longer than needed: the same bounds, bit for bit.
+  std::vector<double> scratch(rows.size() + 3, 7.5), again(rows.size(), -1.0);
+  similarity::row_bounds(view_of(a), sb.view(), unit, again, scratch);
+  CHECK(again == rows);
+  std::vector<double> gaps(chunks_a + chunks_b + 2, -1.0);
+  CHECK(similarity::lb_rows_columns(sa.view(), sb.view(), unit, gaps) == lb.rows_columns);
   // A kernel at the worst of its contract: the safe bounds stay strictly below its value, and a
   // candidate whose value ties the k-th is never pruned.
   const double kernel = test::dtw_mean(kernel_worst_case(d));
@@ -154,6 +174,15 @@ TEST_CASE("summarize and the bounds: errors name what is wrong", "[motion_bounds
   CHECK_THROWS_WITH(similarity::row_bounds(view_of(wide), s.view(), 1, out), Catch::Contains("4 wide"));
   CHECK_THROWS_WITH(similarity::row_bounds(view_of(m), s.view(), 1, std::span(out).first(2)),
                     Catch::Contains("3 rows"));
+  std::vector<double> short_scratch(2);
+  CHECK_THROWS_WITH(similarity::row_bounds(view_of(m), s.view(), 1, out, short_scratch),
+                    Catch::Contains("the scratch 2, the query has 3 rows"));
+  CHECK_THROWS_WITH(similarity::lb_rows_columns(s.view(), s.view(), 1, short_scratch),
+                    Catch::Contains("the scratch holds 2 values"));
+  // A view made unchecked reads the same block as a checked one.
+  const auto unchecked = similarity::Motion_summary_view::unchecked(s.floats, s.width, s.chunks);
+  CHECK(unchecked.rows() == s.view().rows());
+  CHECK(similarity::lb_mean(unchecked, s.view(), 1) == similarity::lb_mean(s.view(), s.view(), 1));
 }
 
 TEST_CASE("may_beat: prunes only when 1 - the safe bound is strictly below the k-th value", "[motion_bounds]") {

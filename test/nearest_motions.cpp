@@ -1,7 +1,8 @@
 // Tests of similarity/nearest_motions.h: the pruned search equals the brute-force ranking (the
 // matrix row, stably sorted) on random collections with exact ties, for every k, on one and two
 // threads; the k-nearest-neighbour graph equals the per-row brute force in the matrix's
-// orientation; the collection's matrix equals compare's values; the bounds prune on real clips.
+// orientation, and each of its rows is nearest_others, the matrix's row less its diagonal; the
+// collection's matrix equals compare's values; the bounds prune on real clips.
 #include "test_support.h"
 
 #include <deformseg/similarity/motion_similarity.h>
@@ -115,6 +116,55 @@ TEST_CASE("knn_graph equals the brute force in similarity_matrix's orientation, 
       CHECK(graph[i].pruning.candidates == clips.size() - 1);
     }
   }
+}
+
+TEST_CASE("nearest_others is similarity_matrix's row i, stably sorted, itself left out, for i at the edges") {
+  const auto clips = random_collection(13, 40, 8);
+  const similarity::Motion_collection collection(clips);
+  const Eigen::MatrixXd matrix = similarity::similarity_matrix(collection);
+  const std::size_t n = clips.size();
+  for (std::size_t i : {std::size_t(0), std::size_t(1), n / 2, n - 2, n - 1})
+    for (std::size_t k : {std::size_t(0), std::size_t(1), std::size_t(7), n - 1, n, n + 3}) {
+      INFO("clip " << i << ", k " << k);
+      const auto expected =
+          brute_force(n, k, i, [&](std::size_t c) { return matrix(Eigen::Index(i), Eigen::Index(c)); });
+      const auto one = similarity::nearest_others(collection, i, {.k = k, .threads = 1});
+      const auto two = similarity::nearest_others(collection, i, {.k = k, .threads = 2});
+      CHECK(one.neighbours == expected);
+      CHECK(two.neighbours == expected);
+      CHECK(one.neighbours.size() == std::min(k, n - 1));
+      CHECK(one.pruning == two.pruning);
+      const auto& p = one.pruning;
+      CHECK(p.candidates == n - 1);
+      CHECK(p.pruned_by_summary + p.pruned_by_rows + p.abandoned + p.aligned == p.candidates);
+    }
+}
+
+TEST_CASE("nearest_others and the row of knn_graph are one search: same neighbours, values and counts") {
+  const auto clips = random_collection(17, 70, 16);
+  const similarity::Motion_collection collection(clips);
+  for (std::size_t k : {std::size_t(1), std::size_t(4), std::size_t(80)}) {
+    const auto graph = similarity::knn_graph(collection, {.k = k, .threads = 2});
+    for (std::size_t i = 0; i < clips.size(); ++i) {
+      INFO("clip " << i << ", k " << k);
+      const auto row = similarity::nearest_others(collection, i, {.k = k});
+      CHECK(row.neighbours == graph[i].neighbours);
+      CHECK(row.pruning == graph[i].pruning);
+    }
+  }
+}
+
+TEST_CASE("nearest_others of a collection of one clip finds nothing, and refuses a clip it does not hold") {
+  const auto clips = random_collection(19, 1, 8);
+  const similarity::Motion_collection collection(clips);
+  const auto found = similarity::nearest_others(collection, 0, {.k = 3});
+  CHECK(found.neighbours.empty());
+  CHECK(found.pruning == similarity::Pruning_report{});
+  CHECK_THROWS_WITH(similarity::nearest_others(collection, 1), Catch::Contains("no clip 1: the collection holds 1"));
+  CHECK_THROWS_WITH(similarity::nearest_others(similarity::Motion_collection{}, 0), Catch::Contains("holds 0"));
+  similarity::Default_similarity windowed;
+  windowed.alignment.window = 3;
+  CHECK_THROWS_WITH(similarity::nearest_others(collection, 0, {}, windowed), Catch::Contains("without a window"));
 }
 
 TEST_CASE("a collection's similarity_matrix is compare's values, bit for bit, in the matrix's orientation") {

@@ -5,6 +5,7 @@
 
 #include <deformseg/similarity/evolving_graph_similarity.h>
 #include <deformseg/similarity/find_motion.h>
+#include <deformseg/similarity/find_motion_in_collection.h>
 #include <deformseg/similarity/motion_bounds.h>
 #include <deformseg/similarity/motion_collection.h>
 #include <deformseg/similarity/motion_signature_kernel.h>

@@ -67,13 +67,18 @@ std::size_t frame_of_row(const Description& d, std::size_t row) {
 }
 
 /// The window [first, last] brought to a length in [shortest, longest] inside [lowest, highest],
-/// grown or shrunk about its middle (shortest <= longest, shortest <= highest - lowest + 1).
+/// grown or shrunk about its middle, unchanged when its length is already in bounds (shortest <=
+/// longest, shortest <= highest - lowest + 1, lowest <= first <= last <= highest).
 inline std::pair<std::size_t, std::size_t> clamped_window(std::size_t first, std::size_t last, std::size_t shortest,
                                                           std::size_t longest, std::size_t lowest,
                                                           std::size_t highest) {
-  const std::size_t length = std::clamp(last - first + 1, shortest, std::min(longest, highest - lowest + 1));
-  const std::size_t middle = first + (last - first) / 2;
-  std::size_t start = middle > lowest + length / 2 ? middle - length / 2 : lowest;
+  const std::size_t old_length = last - first + 1;
+  const std::size_t length = std::clamp(old_length, shortest, std::min(longest, highest - lowest + 1));
+  std::size_t start = first + (old_length - std::min(length, old_length)) / 2;  // shrunk: half off each end
+  if (length > old_length) {                                                    // grown: half on each end
+    const std::size_t grow = (length - old_length) / 2;
+    start = first > lowest + grow ? first - grow : lowest;
+  }
   start = std::min(start, highest + 1 - length);
   return {start, start + length - 1};
 }
@@ -171,6 +176,52 @@ inline constexpr std::size_t find_motion_candidates = 6;
 /// How many of them `find_motion` moves a frame at a time while their value rises (the best first).
 inline constexpr std::size_t find_motion_refined = 2;
 
+/// The windows of `find_motion_in` from the query's rows' dissimilarities to the long rows, `d`
+/// (query rows x long rows), with each row's frame (`query_frame(row)`, `long_frame(row)`).
+template <class QueryFrame, class LongFrame>
+std::vector<Motion_match> find_windows_in(const Eigen::MatrixXd& d, const QueryFrame& query_frame,
+                                          const LongFrame& long_frame, const Find_motion_options& options) {
+  const std::size_t n = std::size_t(d.rows()), m = std::size_t(d.cols());
+  if (n == 0 || m == 0) throw invalid_input("find_motion: an animation without frames");
+  const auto [shortest, longest] = window_lengths(double(n), options);
+  const std::size_t steepest = steepest_slope(n, shortest, longest);
+
+  // The match of the whole query warped onto the rows [first, last].
+  const auto match_of = [&](std::size_t first, std::size_t last) {
+    const auto inside = [&](std::size_t i, std::size_t j) { return d(Eigen::Index(i), Eigen::Index(first + j)); };
+    const alignment::Dtw dtw;
+    const alignment::Alignment a = dtw.align(n, last - first + 1, inside);
+    Motion_match match;
+    match.value = Best_score_normalization{}(dtw, a, n, last - first + 1);
+    for (const auto& [i, j] : a.pairs) {
+      const std::pair<std::size_t, std::size_t> pair{query_frame(i), long_frame(first + j)};
+      if (match.alignment.empty() || match.alignment.back() != pair) match.alignment.push_back(pair);
+    }
+    match.first = match.alignment.front().second, match.last = match.alignment.back().second;
+    return std::pair{match, std::pair{first, last}};
+  };
+
+  std::vector<Motion_match> found;
+  std::vector<std::pair<std::size_t, std::size_t>> stretches{{0, m - 1}};  // free rows, inclusive
+  while (found.size() < options.count) {
+    std::vector<std::pair<Motion_match, std::pair<std::size_t, std::size_t>>> candidates;
+    for (auto [first, last] : stretches) {
+      if (last - first + 1 < shortest) continue;
+      for (auto [s, e] : warped_windows(d, first, last, steepest, find_motion_candidates)) {
+        const auto [a, b] = clamped_window(s, e, shortest, longest, first, last);
+        candidates.push_back(match_of(a, b));
+      }
+    }
+    if (candidates.empty()) break;
+    const auto best = std::min_element(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {
+      return x.first.value != y.first.value ? x.first.value > y.first.value : x.second.first < y.second.first;
+    });
+    stretches = without_window(stretches, best->second.first, best->second.second);
+    found.push_back(std::move(best->first));
+  }
+  return found;
+}
+
 }  // namespace internal
 
 /// @brief The best non-overlapping windows of `long_animation`'s description that match `query`'s,
@@ -205,47 +256,10 @@ std::vector<Motion_match> find_motion_in(const Policy& policy, const typename Po
                                          const typename Policy::Description& long_animation,
                                          const Find_motion_options& options = {}) {
   internal::check_find_options(options);
-  const Eigen::MatrixXd d = policy.frame_dissimilarities(query, long_animation);
-  const std::size_t n = std::size_t(d.rows()), m = std::size_t(d.cols());
-  if (n == 0 || m == 0) throw invalid_input("find_motion: an animation without frames");
-  const auto [shortest, longest] = internal::window_lengths(double(n), options);
-  const std::size_t steepest = internal::steepest_slope(n, shortest, longest);
-
-  // The match of the whole query warped onto the rows [first, last].
-  const auto match_of = [&](std::size_t first, std::size_t last) {
-    const auto inside = [&](std::size_t i, std::size_t j) { return d(Eigen::Index(i), Eigen::Index(first + j)); };
-    const alignment::Dtw dtw;
-    const alignment::Alignment a = dtw.align(n, last - first + 1, inside);
-    Motion_match match;
-    match.value = Best_score_normalization{}(dtw, a, n, last - first + 1);
-    for (const auto& [i, j] : a.pairs) {
-      const std::pair<std::size_t, std::size_t> pair{internal::frame_of_row(query, i),
-                                                     internal::frame_of_row(long_animation, first + j)};
-      if (match.alignment.empty() || match.alignment.back() != pair) match.alignment.push_back(pair);
-    }
-    match.first = match.alignment.front().second, match.last = match.alignment.back().second;
-    return std::pair{match, std::pair{first, last}};
-  };
-
-  std::vector<Motion_match> found;
-  std::vector<std::pair<std::size_t, std::size_t>> stretches{{0, m - 1}};  // free rows, inclusive
-  while (found.size() < options.count) {
-    std::vector<std::pair<Motion_match, std::pair<std::size_t, std::size_t>>> candidates;
-    for (auto [first, last] : stretches) {
-      if (last - first + 1 < shortest) continue;
-      for (auto [s, e] : internal::warped_windows(d, first, last, steepest, internal::find_motion_candidates)) {
-        const auto [a, b] = internal::clamped_window(s, e, shortest, longest, first, last);
-        candidates.push_back(match_of(a, b));
-      }
-    }
-    if (candidates.empty()) break;
-    const auto best = std::min_element(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {
-      return x.first.value != y.first.value ? x.first.value > y.first.value : x.second.first < y.second.first;
-    });
-    stretches = internal::without_window(stretches, best->second.first, best->second.second);
-    found.push_back(std::move(best->first));
-  }
-  return found;
+  return internal::find_windows_in(
+      policy.frame_dissimilarities(query, long_animation),
+      [&](std::size_t row) { return internal::frame_of_row(query, row); },
+      [&](std::size_t row) { return internal::frame_of_row(long_animation, row); }, options);
 }
 
 namespace internal {

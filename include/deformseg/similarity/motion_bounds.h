@@ -65,6 +65,17 @@ public:
                           " is not a whole number in [1, 2^24]: not a summary");
   }
 
+  /// @brief The summary held by `floats`, unchecked: for a block known to be a summary of this
+  /// shape, such as one `summarize` wrote (`Motion_collection` makes its views so, once per clip,
+  /// from the summaries it made), where the checks of the constructor would be repeated for
+  /// every clip of every search.
+  /// @pre `width` and `chunks` positive, `floats.size() == summary_width(width, chunks)`, and
+  /// `floats[0]` a whole number in [1, 2^24] (not checked).
+  /// @par Complexity O(1).
+  static Motion_summary_view unchecked(std::span<const float> floats, std::size_t width, std::size_t chunks) {
+    return Motion_summary_view(floats, width, chunks, Unchecked{});
+  }
+
   /// @brief The rows of the summarised view.
   std::size_t rows() const { return std::size_t(floats_[0]); }
   /// @brief The values per row.
@@ -89,6 +100,9 @@ public:
   std::span<const float> floats() const { return floats_; }
 
 private:
+  struct Unchecked {};
+  Motion_summary_view(std::span<const float> floats, std::size_t width, std::size_t chunks, Unchecked)
+      : floats_(floats), width_(width), chunks_(chunks) {}
   std::span<const float> part(std::size_t p) const { return floats_.subspan(1 + p * width_, width_); }
 
   std::span<const float> floats_;
@@ -261,14 +275,20 @@ inline double lb_mean(const Motion_summary_view& a, const Motion_summary_view& b
 /// @param a the summary of A, the rows (the first argument of `compare`).
 /// @param b the summary of B, the columns; as wide as `a`.
 /// @param unit `frame_dissimilarity_unit(width, scale)` of the policy.
-/// @throws invalid_input when the widths differ.
-/// @par Complexity O(chunks_A chunks_B width + width) time, O(chunks_A + chunks_B) memory; reads the
-/// first and last rows and the chunk boxes.
-inline double lb_rows_columns(const Motion_summary_view& a, const Motion_summary_view& b, double unit) {
+/// @param scratch at least `a.chunks() + b.chunks()` doubles, overwritten: with it, no allocation
+/// (the search passes each thread's own).
+/// @throws invalid_input when the widths differ or `scratch` is too short.
+/// @par Complexity O(chunks_A chunks_B width + width) time; reads the first and last rows and the
+/// chunk boxes.
+inline double lb_rows_columns(const Motion_summary_view& a, const Motion_summary_view& b, double unit,
+                              std::span<double> scratch) {
   internal::require_same_width(a, b, "lb_rows_columns");
   const std::size_t ka = a.chunks(), kb = b.chunks();
-  constexpr double none = std::numeric_limits<double>::infinity();
-  std::vector<double> row_gap(ka, none), column_gap(kb, none);
+  if (scratch.size() < ka + kb)
+    throw invalid_input("lb_rows_columns: the scratch holds " + std::to_string(scratch.size()) + " values, not " +
+                        std::to_string(ka + kb));
+  const std::span<double> row_gap = scratch.first(ka), column_gap = scratch.subspan(ka, kb);
+  std::fill(scratch.begin(), scratch.begin() + std::ptrdiff_t(ka + kb), std::numeric_limits<double>::infinity());
   for (std::size_t ca = 0; ca < ka; ++ca)
     for (std::size_t cb = 0; cb < kb; ++cb) {
       const double g = internal::box_gap2(a.chunk_lo(ca), a.chunk_hi(ca), b.chunk_lo(cb), b.chunk_hi(cb));
@@ -284,6 +304,14 @@ inline double lb_rows_columns(const Motion_summary_view& a, const Motion_summary
                   internal::rows_side_bound(m, n, kb, column_gap, d00, d_last));
 }
 
+/// @brief `lb_rows_columns(a, b, unit, scratch)` with a scratch of its own.
+/// @throws invalid_input when the widths differ.
+/// @par Complexity O(chunks_A chunks_B width + width) time, O(chunks_A + chunks_B) memory.
+inline double lb_rows_columns(const Motion_summary_view& a, const Motion_summary_view& b, double unit) {
+  std::vector<double> scratch(a.chunks() + b.chunks());
+  return lb_rows_columns(a, b, unit, scratch);
+}
+
 /// @brief Per row i of `query`, `out[i] = f(min_c gap2(a_i, chunk box c of candidate)) <= min_j d(i, j)`:
 /// a lower bound of every cell of row i against the candidate (f the frame dissimilarity), for
 /// the early abandoning of an exact pass over the query's rows.
@@ -291,32 +319,45 @@ inline double lb_rows_columns(const Motion_summary_view& a, const Motion_summary
 /// @param candidate the candidate's summary (B).
 /// @param unit `frame_dissimilarity_unit(width, scale)` of the policy.
 /// @param out `query.rows` doubles.
-/// @throws invalid_input when the widths differ or `out` does not hold `query.rows` values.
-/// @par Complexity O(query.rows chunks width) time, O(query.rows chunks) memory.
+/// @param scratch at least `query.rows` doubles, overwritten: with it, no allocation (the search
+/// passes each thread's own).
+/// @throws invalid_input when the widths differ, `out` does not hold `query.rows` values or
+/// `scratch` fewer.
+/// @par Complexity O(query.rows chunks width) time.
 inline void row_bounds(const Motion_signature_view& query, const Motion_summary_view& candidate, double unit,
-                       std::span<double> out) {
+                       std::span<double> out, std::span<double> scratch) {
   if (query.width != candidate.width())
     throw invalid_input("row_bounds: the query is " + std::to_string(query.width) + " wide, the candidate " +
                         std::to_string(candidate.width()));
-  if (out.size() != query.rows)
-    throw invalid_input("row_bounds: the output holds " + std::to_string(out.size()) + " values, the query has " +
-                        std::to_string(query.rows) + " rows");
-  const std::size_t n = query.rows, chunks = candidate.chunks();
-  std::vector<double> gap2(n * chunks, 0.0);  // row i against chunk c at i * chunks + c
-  for (std::size_t k = 0; k < query.width; ++k) {
-    const float* column = query.values + k * n;
-    for (std::size_t c = 0; c < chunks; ++c) {
+  if (out.size() != query.rows || scratch.size() < query.rows)
+    throw invalid_input("row_bounds: the output holds " + std::to_string(out.size()) + " values and the scratch " +
+                        std::to_string(scratch.size()) + ", the query has " + std::to_string(query.rows) + " rows");
+  const std::size_t n = query.rows;
+  const std::span<double> gap2 = scratch.first(n);  // row i against the chunk at hand
+  std::fill(out.begin(), out.end(), std::numeric_limits<double>::infinity());
+  // Chunk by chunk, each row's gap2 summed over the dimensions in order, then its least kept.
+  for (std::size_t c = 0; c < candidate.chunks(); ++c) {
+    std::fill(gap2.begin(), gap2.end(), 0.0);
+    for (std::size_t k = 0; k < query.width; ++k) {
+      const float* column = query.values + k * n;
       const double lo = candidate.chunk_lo(c)[k], hi = candidate.chunk_hi(c)[k];
       for (std::size_t i = 0; i < n; ++i) {
         const double g = internal::interval_gap(column[i], column[i], lo, hi);
-        gap2[i * chunks + c] += g * g;
+        gap2[i] += g * g;
       }
     }
+    for (std::size_t i = 0; i < n; ++i) out[i] = std::min(out[i], gap2[i]);
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto row = std::span(gap2).subspan(i * chunks, chunks);
-    out[i] = frame_dissimilarity(*std::min_element(row.begin(), row.end()), unit);
-  }
+  for (double& r : out) r = frame_dissimilarity(r, unit);
+}
+
+/// @brief `row_bounds(query, candidate, unit, out, scratch)` with a scratch of its own.
+/// @throws invalid_input when the widths differ or `out` does not hold `query.rows` values.
+/// @par Complexity O(query.rows chunks width) time, O(query.rows) memory.
+inline void row_bounds(const Motion_signature_view& query, const Motion_summary_view& candidate, double unit,
+                       std::span<double> out) {
+  std::vector<double> scratch(query.rows);
+  row_bounds(query, candidate, unit, out, scratch);
 }
 
 /// @brief A lower bound made safe against rounding: `lower_bound (1 - 2^-10) - 2^-20`.

@@ -67,8 +67,11 @@ public:
   std::size_t size() const { return descriptions_.size(); }
   /// @brief Clip `i`'s signatures. @pre `i < size()` (not checked).
   Motion_signature_view view(std::size_t i) const { return similarity::view(descriptions_[i]); }
-  /// @brief Clip `i`'s summary. @pre `i < size()` (not checked).
-  Motion_summary_view summary(std::size_t i) const { return summaries_[i].view(); }
+  /// @brief Clip `i`'s summary, not checked again: `summarize` made it. @pre `i < size()` (not checked).
+  Motion_summary_view summary(std::size_t i) const {
+    const Motion_summary& s = summaries_[i];
+    return Motion_summary_view::unchecked(s.floats, s.width, s.chunks);
+  }
   /// @brief Clip `i`'s description. @pre `i < size()` (not checked).
   const Motion_signature_description& description(std::size_t i) const { return descriptions_[i]; }
 

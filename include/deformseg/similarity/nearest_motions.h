@@ -1,7 +1,8 @@
 /// @file similarity/nearest_motions.h
 /// @brief `nearest_motions`: the k clips of a `MotionCollection` most similar to a query under the
 /// default policy, exactly as `similarity_matrix` ranks them, most of the collection ruled out by
-/// lower bounds before any alignment; `knn_graph`, every clip's k nearest; and the all-pairs
+/// lower bounds before any alignment; `nearest_others`, a clip's k nearest others in its own
+/// collection; `knn_graph`, every clip's k nearest others; and the all-pairs
 /// `similarity_matrix` of a collection.
 #pragma once
 
@@ -17,6 +18,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <atomic>
 #include <iterator>
 #include <cstddef>
 #include <limits>
@@ -133,6 +135,13 @@ private:
   std::vector<Neighbour> best_;
 };
 
+// What one thread of a search reuses from candidate to candidate, so that trying one allocates
+// nothing once the vectors have grown to the longest clip.
+struct Search_scratch {
+  std::vector<double> gaps;       // lb_rows_columns' chunk gaps, then row_bounds' per-row sums
+  std::vector<double> row_bound;  // the alignment's per-row bounds
+};
+
 // The candidates taken together between two looks at the k-th best value: fixed, so that what is
 // pruned (and the counts) does not depend on the number of threads.
 inline constexpr std::size_t search_batch = 32;
@@ -146,8 +155,9 @@ public:
   // oriented as similarity_matrix does: the lower index first).
   Query_search(const C& collection, Motion_signature_view query, std::optional<std::size_t> self, double unit,
                std::size_t k, int threads)
-      : collection_(collection), query_(query), summary_(summarize(query)), self_(self), unit_(unit), k_(k),
-        threads_(threads) {}
+      : collection_(collection), query_(query), summary_(summarize(query)), summary_view_(summary_.view()),
+        self_(self), unit_(unit), k_(k), threads_(threads),
+        scratch_(std::size_t(deformseg::thread_count(threads, "nearest_motions"))) {}
 
   Nearest_motions run() {
     const std::vector<std::size_t> order = by_summary_bound();
@@ -190,7 +200,10 @@ private:
     const std::size_t n = collection_.size();
     bounds_.assign(n, 0.0);
     guesses_.assign(n, 0.0);
-    const Motion_summary_view query = summary_.view();
+    const Motion_summary_view query = summary_view_;
+    // Clip i's summary view is made here once per search: a collection held in memory makes it
+    // unchecked (its summaries were made by summarize), a store checks its row count, which a store
+    // opened without its checksums is not otherwise known to hold.
     deformseg::internal::parallel_for(
         n, threads_,
         [&](std::size_t i) {
@@ -224,29 +237,38 @@ private:
   static bool rules_out(double lower_bound, double threshold) { return !may_beat(lower_bound, threshold); }
 
   void run_batch(std::span<const std::size_t> batch, double threshold, Top_neighbours& top, Pruning_report& report) {
-    std::vector<std::optional<double>> values(batch.size());
-    std::vector<Pruning_report> counts(batch.size());
-    deformseg::internal::parallel_for(batch.size(), threads_,
-                                      [&](std::size_t b) { values[b] = value_of(batch[b], threshold, counts[b]); });
+    values_.assign(batch.size(), std::nullopt);
+    counts_.assign(batch.size(), Pruning_report{});
+    // Each worker takes a scratch of its own (a loop has at most scratch_.size() workers).
+    std::atomic<std::size_t> next_scratch{0};
+    deformseg::internal::parallel_for_with_locals(
+        batch.size(), threads_, 1, [&] { return &scratch_[next_scratch++]; },
+        [&](Search_scratch* scratch, std::size_t b) {
+          values_[b] = value_of(batch[b], threshold, *scratch, counts_[b]);
+        });
     for (std::size_t b = 0; b < batch.size(); ++b) {
-      report += counts[b];
-      if (values[b]) top.offer({batch[b], *values[b]});
+      report += counts_[b];
+      if (values_[b]) top.offer({batch[b], *values_[b]});
     }
   }
 
   // Candidate c's value, or std::nullopt when it is proven below `threshold` (counted in `report`).
-  std::optional<double> value_of(std::size_t c, double threshold, Pruning_report& report) const {
+  std::optional<double> value_of(std::size_t c, double threshold, Search_scratch& scratch,
+                                 Pruning_report& report) const {
     const Motion_signature_view clip = collection_.view(c);
     const bool query_first = !self_ || *self_ < c;
     const Motion_signature_view a = query_first ? query_ : clip, b = query_first ? clip : query_;
     if (threshold == -std::numeric_limits<double>::infinity()) return aligned_value(a, b, unit_, {}, {}, report);
     const Motion_summary_view clip_summary = collection_.summary(c);
-    if (rules_out(lb_rows_columns(summary_.view(), clip_summary, unit_), threshold)) {
+    const std::size_t chunks = summary_view_.chunks() + clip_summary.chunks();
+    if (scratch.gaps.size() < std::max(chunks, a.rows)) scratch.gaps.resize(std::max(chunks, a.rows));
+    if (rules_out(lb_rows_columns(summary_view_, clip_summary, unit_, scratch.gaps), threshold)) {
       ++report.pruned_by_rows;
       return std::nullopt;
     }
-    std::vector<double> row_bound(a.rows);
-    row_bounds(a, query_first ? clip_summary : summary_.view(), unit_, row_bound);
+    if (scratch.row_bound.size() < a.rows) scratch.row_bound.resize(a.rows);
+    const std::span<double> row_bound = std::span(scratch.row_bound).first(a.rows);
+    row_bounds(a, query_first ? clip_summary : summary_view_, unit_, row_bound, scratch.gaps);
     // Bounds of the reference dissimilarity made bounds of the kernel's, which may be a little lower.
     for (double& r : row_bound) r = std::max(0.0, safe_lower_bound(r));
     return aligned_value(a, b, unit_, threshold, row_bound, report);
@@ -255,11 +277,15 @@ private:
   const C& collection_;
   Motion_signature_view query_;
   Motion_summary summary_;
+  Motion_summary_view summary_view_;  // of summary_, checked once
   std::optional<std::size_t> self_;
   double unit_;
   std::size_t k_;
   int threads_;
   std::vector<double> bounds_, guesses_;
+  std::vector<Search_scratch> scratch_;  // one per worker of a batch
+  std::vector<std::optional<double>> values_;  // a batch's values
+  std::vector<Pruning_report> counts_;         // a batch's counts
 };
 
 // The unit of the frame dissimilarity of `policy` for signatures of `width` values; refuses what
@@ -269,6 +295,13 @@ inline double search_unit(const Motion_signature_similarity<>& policy, std::size
     throw invalid_input(std::string(who) + ": the search aligns without a window (its bounds assume none)");
   if (!(policy.scale > 0)) throw invalid_input(std::string(who) + ": the scale must be positive");
   return frame_dissimilarity_unit(width, policy.scale);
+}
+
+// Clip i's search among the others of `collection`: the one code path of `nearest_others` and of
+// every row of `knn_graph`.
+template <MotionCollection C>
+Nearest_motions search_others(const C& collection, std::size_t i, double unit, std::size_t k, int threads) {
+  return Query_search<C>(collection, collection.view(i), i, unit, k, threads).run();
 }
 
 template <MotionCollection C>
@@ -297,7 +330,7 @@ void check_query(const C& collection, Motion_signature_view query, const char* w
 /// between two looks at the k-th value, whatever the number of threads, so the result and
 /// `Nearest_motions::pruning` are the same on any number.
 /// @param query the query's signatures: `view(policy.describe(animation))`, or a clip of a
-/// collection (then it is found too, at value 1: see `knn_graph` to leave it out).
+/// collection (then it is found too, at value 1: see `nearest_others` to leave it out).
 /// @param collection a `MotionCollection` described with `policy`'s options.
 /// @param options k (default 10), threads.
 /// @param policy the scale and alignment of the values (default: the default policy's); its
@@ -318,13 +351,43 @@ Nearest_motions nearest_motions(Motion_signature_view query, const C& collection
   return internal::Query_search<C>(collection, query, std::nullopt, unit, options.k, options.threads).run();
 }
 
+/// @brief The `options.k` clips of `collection` most similar to its own clip `i`, clip i left out:
+/// row i of `similarity_matrix(collection)` less its diagonal, ranked as `nearest_motions` ranks
+/// (value descending, then index ascending), cut at k; each value is the matrix's entry, bit for bit,
+/// so each pair is oriented as the matrix orients it (`compare(clip min(i, j), clip max(i, j))`).
+///
+/// The search of `nearest_motions` with clip i as the query, but clip i is no candidate: it is
+/// neither searched nor counted in `Nearest_motions::pruning` (`candidates` is `size() - 1`). Row
+/// i of `knn_graph` is this search, the same code path: the same neighbours, values and counts.
+/// @param collection a `MotionCollection` described with `policy`'s options.
+/// @param i the clip whose neighbours are wanted. @pre `i < collection.size()` (checked).
+/// @param options k (default 10; fewer neighbours when the collection holds at most k others),
+/// threads (default 0: `default_threads()`; the result and the counts do not depend on it); its
+/// progress is not called (one query).
+/// @param policy the scale and alignment of the values (default: the default policy's); no window.
+/// @throws invalid_input when `i` is not a clip of `collection`, or when `policy` has a window.
+/// @throws cancelled as `similarity_matrix`.
+/// @par Complexity as `nearest_motions` over the N - 1 other clips: O(N W) for their summary
+/// bounds, O(N log N) to order them, and the alignments the bounds do not rule out.
+/// @par Example
+/// @include nearest_others.cpp
+template <MotionCollection C>
+Nearest_motions nearest_others(const C& collection, std::size_t i, const Nearest_motions_options& options = {},
+                               const Motion_signature_similarity<>& policy = {}) {
+  if (i >= collection.size())
+    throw invalid_input("nearest_others: no clip " + std::to_string(i) + ": the collection holds " +
+                        std::to_string(collection.size()));
+  const double unit = internal::search_unit(policy, collection.view(i).width, "nearest_others");
+  return internal::search_others(collection, i, unit, options.k, options.threads);
+}
+
 /// @brief Every clip's `options.k` nearest other clips of `collection` (itself left out), each
 /// pair's value that of `similarity_matrix` over the collection's clips (entry (i, j) for i < j is
 /// `compare(clip i, clip j)`, and so is entry (j, i)): the k-nearest-neighbour graph, one
-/// `Nearest_motions` per clip, ranked as `nearest_motions` ranks.
+/// `Nearest_motions` per clip, row i exactly `nearest_others(collection, i, options, policy)`.
 /// @param collection a `MotionCollection` described with `policy`'s options.
 /// @param options k (default 10), threads (the clips are searched in parallel, each as
-/// `nearest_motions` searches on one thread), progress (one step a clip).
+/// `nearest_others` searches on one thread), progress (one step a clip).
 /// @param policy the scale and alignment of the values (default: the default policy's); no window.
 /// @throws invalid_input when `policy` has a window.
 /// @throws cancelled as `similarity_matrix`.
@@ -338,7 +401,7 @@ std::vector<Nearest_motions> knn_graph(const C& collection, const Nearest_motion
   if (n == 0) return graph;
   const double unit = internal::search_unit(policy, collection.view(0).width, "knn_graph");
   deformseg::internal::parallel_for_reporting(n, options.threads, options.progress, 0, n, [&](std::size_t i) {
-    graph[i] = internal::Query_search<C>(collection, collection.view(i), i, unit, options.k, 1).run();
+    graph[i] = internal::search_others(collection, i, unit, options.k, 1);
   });
   return graph;
 }
