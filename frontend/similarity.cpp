@@ -1,5 +1,6 @@
 #include "similarity.h"
 
+#include <deformseg/io/frame_stream.h>
 #include <deformseg/similarity/significance.h>
 
 #include <random>
@@ -27,20 +28,71 @@ void check(const Significance_request& r, const similarity::Policy_choice& choic
     refuse(name + " does not apply to the graph policy, whose frames are key-frame labels");
 }
 
+namespace {
+
+std::size_t shuffled_copies(const similarity::Policy_choice& choice, const Significance_request& significance) {
+  return significance.significance.value_or(choice.policy == "graph" ? 0 : 20);
+}
+
+template <class Policy, class Description>
+Compared compare_descriptions(const Policy& policy, const Description& da, const Description& db, std::size_t copies,
+                              unsigned seed) {
+  Compared out{policy.compare(da, db), std::nullopt, 0};
+  if constexpr (similarity::ReorderableDescription<Description>) {
+    if (copies >= 2) {
+      std::mt19937 random(seed);
+      out.z_score = similarity::similarity_significance(policy, da, db, copies, random);
+      out.shuffled_copies = copies;
+    }
+  }
+  return out;
+}
+
+// Whether the input `name` can be read frame by frame as read_input reads it whole.
+bool streamable(const Input_name& name, const Input_options& options) {
+  if (io::is_gltf(name.file) || repair_options(name.file, options).weld) return false;
+  if (!options.topology.empty()) return true;
+  const std::string format = io::animation_format(name.file);
+  return format != "pc2" && format != "mdd";  // refused by the reader of whole caches, in its words
+}
+
+}  // namespace
+
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
                  const similarity::Policy_choice& choice, const Significance_request& significance) {
-  const std::size_t copies = significance.significance.value_or(choice.policy == "graph" ? 0 : 20);
   return similarity::with_policy_choice(choice, [&](const auto& policy) {
-    const auto da = policy.describe(a), db = policy.describe(b);
-    Compared out{policy.compare(da, db), std::nullopt, 0};
-    if constexpr (similarity::ReorderableDescription<std::remove_cvref_t<decltype(db)>>) {
-      if (copies >= 2) {
-        std::mt19937 random(significance.seed);
-        out.z_score = similarity::similarity_significance(policy, da, db, copies, random);
-        out.shuffled_copies = copies;
+    return compare_descriptions(policy, policy.describe(a), policy.describe(b), shuffled_copies(choice, significance),
+                                significance.seed);
+  });
+}
+
+std::optional<Compared> compare_streamed(const std::array<std::string, 2>& inputs, const Input_options& options,
+                                         const similarity::Policy_choice& choice,
+                                         const Significance_request& significance, Front front,
+                                         std::array<std::size_t, 2>& frames) {
+  if (choice.policy != "motion-signature") return std::nullopt;
+  const std::array<Input_name, 2> names{input_name(inputs[0], options, front), input_name(inputs[1], options, front)};
+  if (!streamable(names[0], options) || !streamable(names[1], options)) return std::nullopt;
+  return similarity::with_policy_choice(choice, [&](const auto& policy) -> std::optional<Compared> {
+    using Description = typename std::remove_cvref_t<decltype(policy)>::Description;
+    if constexpr (!std::is_same_v<Description, similarity::Motion_signature_description>) {
+      return std::nullopt;
+    } else {
+      std::array<std::optional<Description>, 2> described;
+      for (std::size_t k = 0; k < 2; ++k) {
+        io::Animation_read_options read{.triangulate = options.triangulate, .threads = options.threads,
+                                        .repair = repair_options(names[k].file, options), .fps = options.fps};
+        if (!options.topology.empty()) read.topology = options.topology;
+        described[k] = io::with_frame_source(names[k].file, read, [&](auto& source) -> std::optional<Description> {
+          frames[k] = source.num_frames();
+          if (frames[k] < 2) return std::nullopt;  // refused by the reader of whole animations, in its words
+          return policy.describe_stream(source);
+        });
+        if (!described[k]) return std::nullopt;
       }
+      return compare_descriptions(policy, *described[0], *described[1], shuffled_copies(choice, significance),
+                                  significance.seed);
     }
-    return out;
   });
 }
 

@@ -2,6 +2,7 @@
 // alignment by name, and the z-score against frame-shuffled copies.
 #pragma once
 
+#include "inputs.h"
 #include "parameters.h"
 
 #include <deformseg/mesh/default_mesh.h>
@@ -94,6 +95,19 @@ struct Compared {
 /// the z-score of the value against shuffled copies of `b` as `significance` asks.
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
                  const similarity::Policy_choice& choice, const Significance_request& significance);
+
+/// `compare` of the animations that `inputs` name, each read frame by frame: the motion-signature
+/// policy describes a stream holding the frames its longest lag spans, not the whole animation
+/// (a point cache with its topology, a frame sequence; neither welded, since welding compares every
+/// frame), with the same result as `compare` of the animations read whole. `frames` gets their
+/// frame counts.
+/// @return nullopt, having described nothing, when an input must be read whole: another policy, a
+/// glTF file, a welded input, a point cache without topology, an animation of fewer than 2 frames.
+/// @throws invalid_input naming the file or the frame that cannot be read.
+std::optional<Compared> compare_streamed(const std::array<std::string, 2>& inputs, const Input_options& options,
+                                         const similarity::Policy_choice& choice,
+                                         const Significance_request& significance, Front front,
+                                         std::array<std::size_t, 2>& frames);
 
 /// A similarity as a report: {"policy", "alignment_policy", "similarity", "score", "labels_a",
 /// "labels_b", "alignment": [[i, j], ...], "compared", "z_score" (or null), "shuffled_copies"}.

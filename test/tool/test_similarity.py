@@ -6,7 +6,7 @@ import re
 
 import pytest
 
-from conftest import fails, reads_nothing, succeeds
+from conftest import fails, reads_nothing, succeeds, synth
 
 POLICIES = ["motion-signature", "histogram", "self-similarity", "graph"]
 
@@ -97,3 +97,19 @@ def test_matrix_one_input(tool, synth_obj):
 def test_matrix_unquoted_glob(tool, synth_obj):
     fails(tool("matrix", synth_obj[0] / "frame_0000.obj", synth_obj[0] / "frame_0001.obj"),
           "an animation of 1 frame: a motion needs at least 2 (an unquoted glob")
+
+
+# Frame sequences and point caches are described frame by frame (the progress says so); read whole
+# (--weld: welding compares every frame; the tubes have nothing to weld) they give the same report
+# to the last byte, path and z-score included.
+def test_similarity_streamed_equals_read_whole(tool, scratch, synth_obj, bend_once):
+    caches = [synth(tool, scratch, f"similarity-cache-{k}", "--format", "pc2", "--schedule", *schedule)[0]
+              for k, schedule in enumerate([["6:0", "6:70", "6:"], ["4:0", "9:40", "3:"]])]
+    pairs = [([synth_obj[0], bend_once[0]], []),
+             ([caches[0] / "tube.pc2", caches[1] / "tube.pc2"], ["--topology", caches[0] / "tube.obj"])]
+    for inputs, options in pairs:
+        streamed = succeeds(tool("similarity", *inputs, *options, "--significance", "4", "--json", "-"))
+        whole = succeeds(tool("similarity", *inputs, *options, "--significance", "4", "--weld", "--json", "-"))
+        assert "frame by frame" in streamed.err and "frame by frame" not in whole.err
+        assert streamed.out == whole.out
+        assert len(streamed.json()["alignment"]) > 0

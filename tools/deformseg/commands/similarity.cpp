@@ -13,6 +13,7 @@
 #include <deformseg/color/strain_colors.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -57,18 +58,13 @@ void write_alignment_figure(const similarity::Similarity& s, const Similarity_co
   figure.write(path);
 }
 
-void run_similarity(const Similarity_command_options& o) {
-  frontend::check(o.policy, frontend::Front::command_line);
-  frontend::check(o.significance, o.policy, frontend::Front::command_line);
-  const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
-  const mesh::Surface_mesh_animation &a = inputs[0].animation, &b = inputs[1].animation;
-  progress("comparing " + std::to_string(a.num_frames()) + " and " + std::to_string(b.num_frames()) + " frames");
-  const frontend::Compared compared = frontend::compare(a, b, o.policy, o.significance);
+void report_similarity(const Similarity_command_options& o, const frontend::Compared& compared,
+                       const nlohmann::json& sources, std::size_t frames_a, std::size_t frames_b) {
   if (compared.z_score)
     progress("z-score against " + std::to_string(compared.shuffled_copies) + " frame-shuffled copies of B");
   const similarity::Similarity& s = compared.similarity;
-  if (!o.png.empty()) write_alignment_figure(s, o, a.num_frames(), b.num_frames(), o.png);
-  nlohmann::json document = {{"a", o.inputs[0]}, {"b", o.inputs[1]}, {"sources", sources(inputs, o.read)}};
+  if (!o.png.empty()) write_alignment_figure(s, o, frames_a, frames_b, o.png);
+  nlohmann::json document = {{"a", o.inputs[0]}, {"b", o.inputs[1]}, {"sources", sources}};
   document.update(frontend::similarity_record(compared, o.policy));
   write_outputs(document, o.json, [&] {
     std::cout << "similarity  " << s.value << "\nscore       " << s.score << "\naligned     " << s.alignment.size()
@@ -77,6 +73,31 @@ void run_similarity(const Similarity_command_options& o) {
       std::cout << "z-score     " << *compared.z_score << " (against " << compared.shuffled_copies
                 << " frame-shuffled copies of B)\n";
   });
+}
+
+// Point caches and frame sequences are described frame by frame where the policy allows it (a
+// long take then needs memory for its signatures, not its frames); the others are read whole.
+void run_similarity(const Similarity_command_options& o) {
+  frontend::check(o.policy, frontend::Front::command_line);
+  frontend::check(o.significance, o.policy, frontend::Front::command_line);
+  frontend::check(o.read, frontend::Front::command_line);
+  frontend::check_clip_applies(o.inputs, o.read, frontend::Front::command_line);
+  std::array<std::size_t, 2> frames{};
+  if (const auto compared = frontend::compare_streamed({o.inputs[0], o.inputs[1]}, o.read, o.policy, o.significance,
+                                                        frontend::Front::command_line, frames)) {
+    progress("compared " + std::to_string(frames[0]) + " and " + std::to_string(frames[1]) +
+             " frames, each described frame by frame");
+    nlohmann::json records = nlohmann::json::array();
+    for (const std::string& input : o.inputs)
+      records.push_back({{"file", frontend::input_name(input, o.read, frontend::Front::command_line).file},
+                         {"clip", nullptr}, {"fps", o.read.fps}});
+    return report_similarity(o, *compared, records, frames[0], frames[1]);
+  }
+  const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
+  const mesh::Surface_mesh_animation &a = inputs[0].animation, &b = inputs[1].animation;
+  progress("comparing " + std::to_string(a.num_frames()) + " and " + std::to_string(b.num_frames()) + " frames");
+  report_similarity(o, frontend::compare(a, b, o.policy, o.significance), sources(inputs, o.read), a.num_frames(),
+                    b.num_frames());
 }
 
 // ---- deformseg matrix INPUT... ---------------------------------------------------------------
