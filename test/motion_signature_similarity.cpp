@@ -691,6 +691,8 @@ TEST_CASE("similarity_significance: the shared dissimilarities give the values o
     b.signatures.conservativeResize(Eigen::Index(rows), Eigen::NoChange);
     b.frames.resize(rows);
     const auto comparison = policy.reordering_comparison(a, b);
+    const Eigen::MatrixXd d = policy.frame_dissimilarities(a, b);  // floats: the copies keep them so, exactly
+    CHECK((d.cast<float>().cast<double>().array() == d.array()).all());
     std::vector<std::size_t> order(rows);
     std::iota(order.begin(), order.end(), std::size_t(0));
     for (int copy = 0; copy < 8; ++copy) {

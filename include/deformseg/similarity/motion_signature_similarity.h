@@ -98,18 +98,30 @@ inline std::vector<std::pair<std::size_t, std::size_t>> pairs_of_frames(
 // The columns of an n x m matrix of valid dissimilarities in the order `order` gives: d(i, t) =
 // matrix(i, order[t]). Refers to both.
 struct Reordered_columns {
-  const Eigen::MatrixXd& matrix;
+  const Eigen::MatrixXf& matrix;
   std::span<const std::size_t> order;
   static constexpr bool values_are_valid = true;
   double operator()(std::size_t i, std::size_t t) const { return matrix(Eigen::Index(i), Eigen::Index(order[t])); }
 };
+
+// The kernel's values of every pair of rows in float: the kernel computes them in float, so they
+// are its very values in half the memory of doubles.
+inline Eigen::MatrixXf float_dissimilarities(const Motion_signature_dissimilarity& d) {
+  Eigen::MatrixXf out(Eigen::Index(d.rows()), Eigen::Index(d.cols()));
+  std::vector<double> row(d.cols());
+  for (std::size_t i = 0; i < d.rows(); ++i) {
+    d.row(i, 0, d.cols(), row.data());
+    for (std::size_t j = 0; j < d.cols(); ++j) out(Eigen::Index(i), Eigen::Index(j)) = float(row[j]);
+  }
+  return out;
+}
 
 // What Motion_signature_similarity::reordering_comparison returns: the frame dissimilarities of
 // a and b computed once, and the alignment and normalization to score b's reorderings with.
 template <class Alignment, class Normalization>
 class Reordering_comparison {
 public:
-  Reordering_comparison(Eigen::MatrixXd d, const Alignment& alignment, const Normalization& normalization)
+  Reordering_comparison(Eigen::MatrixXf d, const Alignment& alignment, const Normalization& normalization)
       : d_(std::move(d)), alignment_(alignment), normalization_(normalization) {}
 
   // The value of a against b with its rows in the order `order`.
@@ -120,7 +132,7 @@ public:
   }
 
 private:
-  Eigen::MatrixXd d_;
+  Eigen::MatrixXf d_;
   Alignment alignment_;
   Normalization normalization_;
 };
@@ -292,11 +304,11 @@ struct Motion_signature_similarity {
   /// reordered (a reordered row of b has the very dissimilarities it had in place, the kernel's
   /// values depending on the two rows alone).
   /// @throws invalid_input as `dissimilarity`.
-  /// @par Complexity here O(Ra Rb width), O(Ra Rb) memory (kept by `c`); each `c(order)` the
-  /// alignment's O(Ra Rb).
+  /// @par Complexity here O(Ra Rb width), O(Ra Rb) floats of memory (kept by `c`); each
+  /// `c(order)` the alignment's O(Ra Rb).
   internal::Reordering_comparison<Alignment, Normalization> reordering_comparison(const Description& a,
                                                                                   const Description& b) const {
-    return {frame_dissimilarities(a, b), alignment, normalization};
+    return {internal::float_dissimilarities(dissimilarity(a, b)), alignment, normalization};
   }
 };
 
