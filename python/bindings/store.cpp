@@ -172,6 +172,29 @@ py::dict nearest_to_clip(const Opened_store& s, long long i, std::size_t k, int 
   return nearest_dict(s, found);
 }
 
+// The best windows over the store's clips (the tool's `find --store`), each a dict of the clip and
+// the MotionMatch's fields.
+py::list find_in_store(const Opened_store& s, const Animation& query, std::size_t count, double shortest,
+                       int threads) {
+  if (count == 0) refuse("count must be at least 1");
+  if (!(shortest > 0 && shortest <= 1)) refuse("shortest must be in (0, 1]");
+  thread_count(threads, "threads");
+  require_motion(query.mesh, "query");
+  std::vector<similarity::Clip_match> matches;
+  {
+    Interruptible_call call;
+    matches = s.search.find(query.mesh, {.count = count, .shortest = shortest, .threads = threads});
+  }
+  py::list out;
+  for (const similarity::Clip_match& c : matches) {
+    const io::Store_record record = s.search.store().record(c.clip);
+    out.append(py::dict("index"_a = c.clip, "name"_a = s.search.name(c.clip), "path"_a = record.path,
+                        "clip"_a = record.clip, "first"_a = c.match.first, "last"_a = c.match.last,
+                        "value"_a = c.match.value, "alignment"_a = c.match.alignment));
+  }
+  return out;
+}
+
 py::list knn_graph(const Opened_store& s, std::size_t k, int threads) {
   check_search(k, threads);
   std::vector<similarity::Nearest_motions> graph;
@@ -370,6 +393,17 @@ of the query, at worst N alignments. Releases the GIL.)doc")
            "The k clips nearest to clip i of the store, itself left out (the tool's `search --clip-index I`): "
            "a dict as `search` gives, default k 10, threads 0 (all). Raises InvalidInput naming the store for "
            "an index out of range. Complexity at worst N alignments. Releases the GIL.")
+      .def("find", &find_in_store, "query"_a, "count"_a = 3, py::kw_only(), "shortest"_a = 0.5, "threads"_a = 0,
+           R"doc(Where the Animation `query` occurs in the store's clips (the tool's `find --store`):
+at most `count` (default 3) non-overlapping windows over all the clips, best first (ties by clip
+index), each a dict of index, name, path, clip, first and last (the window in the clip's stored
+frames), value and alignment ((row of the query, frame of the clip) pairs). Each clip is searched
+as find_motion searches a long animation, but valued on the descriptions as stored: value is 1
+minus the mean dissimilarity along the warping path (1 for a window cut from the clip itself).
+shortest (default 0.5): a window spans from `shortest` to 1 / `shortest` times the query's rows.
+threads (default 0: all): the result does not depend on it. Raises InvalidInput for count = 0, a
+shortest outside (0, 1], a query of one frame, an empty store. Complexity O(Tq Tc / shortest^2)
+per clip of Tc rows. Releases the GIL.)doc")
       .def("knn_graph", &knn_graph, "k"_a = 10, py::kw_only(), "threads"_a = 0,
            "Every clip's k nearest other clips (the tool's `knn-graph`): a list, per clip in the store's "
            "order, of dicts as `search` gives (default k 10, threads 0: all). Complexity at worst N^2 "

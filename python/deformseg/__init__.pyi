@@ -106,6 +106,9 @@ class MotionStore:
     def search(self, query: Animation, k: int = 10, *, threads: int = 0) -> dict[str, Any]: ...
     def nearest_to_clip(self, i: int, k: int = 10, *, threads: int = 0) -> dict[str, Any]: ...
     def knn_graph(self, k: int = 10, *, threads: int = 0) -> List[dict[str, Any]]: ...  # per clip, as search
+    def find(  # windows: index, name, path, clip, first, last, value, alignment
+        self, query: Animation, count: int = 3, *, shortest: float = 0.5, threads: int = 0
+    ) -> List[dict[str, Any]]: ...
     def matrix(
         self, *, progress: Optional[Callable[[int, int], Optional[bool]]] = None
     ) -> npt.NDArray[np.float64]: ...  # (N, N)

@@ -289,6 +289,24 @@ def test_search_knn_graph_matrix_and_evaluate_equal_the_tools(tool, described, f
         assert getattr(scores, name) == value, name
 
 
+def test_find_equals_the_tools_and_finds_a_clip_in_itself(tool, described, fox):
+    labels, folder, _, animations = described
+    store = deformseg.open_store(folder)
+    walk = deformseg.read_animation(fox, clip="Walk")
+    found = store.find(walk, 4, shortest=0.5, threads=1)
+    theirs = tool("find", f"{fox}#Walk", "--store", folder, "--count", 4, "--json", "-")["matches"]
+    assert [(m["index"], m["path"], m["clip"], m["first"], m["last"], m["value"], [list(p) for p in m["alignment"]])
+            for m in found] == [(m["clip_index"], m["path"], m["clip"], m["first"], m["last"], m["similarity"],
+                                 m["alignment"]) for m in theirs]
+    own = store.index_of(os.path.realpath(fox), "Walk")
+    assert found[0]["index"] == own and found[0]["value"] == 1.0 and found[0]["name"] == store.names[own]
+    assert store.find(walk, 4, threads=2) == found
+    with pytest.raises(deformseg.InvalidInput, match="count must be at least 1"):
+        store.find(walk, 0)
+    with pytest.raises(deformseg.InvalidInput, match=r"shortest must be in \(0, 1\]"):
+        store.find(walk, shortest=0)
+
+
 # ---- the manual's example -------------------------------------------------------------------------
 
 def test_the_chapter_s_session_runs_as_written(fox, tmp_path, monkeypatch):
