@@ -60,14 +60,7 @@ std::size_t clip_frame(const C& collection, std::size_t i, std::size_t row) {
 
 /// The kernel's dissimilarities of the query's rows to clip b's rows: `frame_dissimilarities`'s matrix.
 inline Eigen::MatrixXd view_dissimilarities(Motion_signature_view a, Motion_signature_view b, double unit) {
-  const Motion_signature_dissimilarity d(a, b, unit);
-  Eigen::MatrixXd out(Eigen::Index(d.rows()), Eigen::Index(d.cols()));
-  Eigen::RowVectorXd row(out.cols());
-  for (std::size_t i = 0; i < d.rows(); ++i) {
-    d.row(i, 0, d.cols(), row.data());
-    out.row(Eigen::Index(i)) = row;
-  }
-  return out;
+  return dissimilarity_matrix<double>(Motion_signature_dissimilarity(a, b, unit));
 }
 
 }  // namespace internal

@@ -104,14 +104,15 @@ struct Reordered_columns {
   double operator()(std::size_t i, std::size_t t) const { return matrix(Eigen::Index(i), Eigen::Index(order[t])); }
 };
 
-// The kernel's values of every pair of rows in float: the kernel computes them in float, so they
-// are its very values in half the memory of doubles.
-inline Eigen::MatrixXf float_dissimilarities(const Motion_signature_dissimilarity& d) {
-  Eigen::MatrixXf out(Eigen::Index(d.rows()), Eigen::Index(d.cols()));
+// Every value of `d` as a matrix of Scalar: double, or float, which holds the kernel's values (float
+// computations) exactly in half the memory.
+template <class Scalar>
+Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> dissimilarity_matrix(const Motion_signature_dissimilarity& d) {
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> out(Eigen::Index(d.rows()), Eigen::Index(d.cols()));
   std::vector<double> row(d.cols());
   for (std::size_t i = 0; i < d.rows(); ++i) {
     d.row(i, 0, d.cols(), row.data());
-    for (std::size_t j = 0; j < d.cols(); ++j) out(Eigen::Index(i), Eigen::Index(j)) = float(row[j]);
+    for (std::size_t j = 0; j < d.cols(); ++j) out(Eigen::Index(i), Eigen::Index(j)) = Scalar(row[j]);
   }
   return out;
 }
@@ -273,14 +274,7 @@ struct Motion_signature_similarity {
   /// @throws invalid_input as `dissimilarity`.
   /// @par Complexity O(Ra Rb width) time, O(Ra Rb) memory.
   Eigen::MatrixXd frame_dissimilarities(const Description& described_a, const Description& described_b) const {
-    const Motion_signature_dissimilarity d = dissimilarity(described_a, described_b);
-    Eigen::MatrixXd out(Eigen::Index(d.rows()), Eigen::Index(d.cols()));
-    Eigen::RowVectorXd row(out.cols());
-    for (std::size_t i = 0; i < d.rows(); ++i) {
-      d.row(i, 0, d.cols(), row.data());
-      out.row(Eigen::Index(i)) = row;
-    }
-    return out;
+    return internal::dissimilarity_matrix<double>(dissimilarity(described_a, described_b));
   }
 
   /// @brief The similarity of two animations from their signatures: the alignment of their rows
@@ -308,7 +302,7 @@ struct Motion_signature_similarity {
   /// `c(order)` the alignment's O(Ra Rb).
   internal::Reordering_comparison<Alignment, Normalization> reordering_comparison(const Description& a,
                                                                                   const Description& b) const {
-    return {internal::float_dissimilarities(dissimilarity(a, b)), alignment, normalization};
+    return {internal::dissimilarity_matrix<float>(dissimilarity(a, b)), alignment, normalization};
   }
 };
 
