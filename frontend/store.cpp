@@ -215,6 +215,21 @@ std::string input_options_text(const std::string& file, const Input_options& opt
   return text.dump();
 }
 
+Input_options recorded_input_options(const io::Store_record& record) {
+  Input_options options;
+  const nlohmann::json o = nlohmann::json::parse(record.input_options, nullptr, false);
+  try {
+    options.fps = o.at("fps").get<double>();
+    options.topology = o.at("topology").get<std::string>();
+    options.triangulate = o.at("triangulate").get<bool>();
+    options.weld = o.at("weld").get<bool>();
+    options.refuse_defects = o.at("refuse_defects").get<bool>();
+  } catch (const nlohmann::json::exception&) {
+    return {};
+  }
+  return options;
+}
+
 io::Store_record source_record(const Clip_source& clip, const Input_options& options, bool hash) {
   io::Store_record record;
   record.path = clip.file;

@@ -71,6 +71,10 @@ similarity::Policy_choice stored_policy_choice(const io::Motion_store& store);
 /// topology, triangulate, weld as it applies to `file`, refuse_defects), as canonical JSON.
 std::string input_options_text(const std::string& file, const Input_options& options);
 
+/// The input options a record holds (`input_options_text`), read back; the defaults when the text
+/// is not one this front end writes (the clip then reads as changed).
+Input_options recorded_input_options(const io::Store_record& record);
+
 /// The record of `clip` as its source is now (path, clip, options, size, modification time,
 /// topology; the file's hash with `hash`), without frame count and fps.
 /// @throws invalid_input naming the file when it cannot be read.

@@ -3,6 +3,26 @@
 #include "store.h"
 
 namespace deformseg::frontend {
+namespace {
+
+// Some clips of a store, in a given order (a similarity::MotionCollection).
+struct Selected_clips {
+  const io::Stored_motions* stored;
+  std::vector<std::size_t> indices;
+
+  std::size_t size() const { return indices.size(); }
+  similarity::Motion_signature_view view(std::size_t i) const { return stored->view(indices[i]); }
+  similarity::Motion_summary_view summary(std::size_t i) const { return stored->summary(indices[i]); }
+};
+
+// The first five names, and how many more.
+std::string listed_names(const std::vector<std::string>& names) {
+  std::string list;
+  for (std::size_t k = 0; k < names.size() && k < 5; ++k) list += (k ? ", " : "") + names[k];
+  return names.size() > 5 ? list + " and " + std::to_string(names.size() - 5) + " more" : list;
+}
+
+}  // namespace
 
 Store_search::Store_search(const std::string& folder, io::Verify verify)
     : clips_(io::Motion_store::open(folder, verify)),
@@ -42,6 +62,46 @@ std::vector<similarity::Nearest_motions> Store_search::knn_graph(
 
 Eigen::MatrixXd Store_search::matrix(const Progress& progress) const {
   return similarity::similarity_matrix(clips_, policy_, progress);
+}
+
+Eigen::MatrixXd Store_search::matrix(std::vector<std::size_t> indices, const Progress& progress) const {
+  return similarity::similarity_matrix(Selected_clips{&clips_, std::move(indices)}, policy_, progress);
+}
+
+void Store_search::check_policy(const similarity::Policy_choice& asked, Front front) const {
+  const similarity::Default_similarity wanted = store_policy(asked, front);  // motion signatures, DTW
+  if (asked.up.empty() || store_description(wanted) == store_description(policy_)) return;
+  const std::string where = front == Front::python ? "MotionStore.description"
+                                                   : "deformseg store info " + store().folder().string();
+  throw invalid_input(spelled("up", asked.up, front) + " differs from the store's up direction (" + where +
+                          " gives it)",
+                      {.file = store().folder().string()});
+}
+
+std::vector<std::size_t> Store_search::labelled(const std::string& labels, const std::optional<Input_options>& read,
+                                                Front front) const {
+  std::vector<std::size_t> indices;
+  std::vector<std::string> missing, stale;
+  for (const Clip_source& clip : labelled_clips(labels, read.value_or(Input_options{}))) {
+    const std::optional<std::size_t> at = store().find(clip.file, clip.clip);
+    if (!at) {
+      missing.push_back(clip.name());
+      continue;
+    }
+    const io::Store_record record = store().record(*at);
+    if (!up_to_date(record, clip, read.value_or(recorded_input_options(record)))) stale.push_back(clip.name());
+    else indices.push_back(*at);
+  }
+  if (missing.empty() && stale.empty()) return indices;
+  std::string message = "the store does not hold every labelled clip as it is now:";
+  if (!missing.empty()) message += " " + std::to_string(missing.size()) + " missing (" + listed_names(missing) + ")";
+  if (!stale.empty())
+    message += " " + std::to_string(stale.size()) + " changed since described (" + listed_names(stale) + ")";
+  const std::string folder = store().folder().string();
+  message += front == Front::python
+                 ? "; describe them again: deformseg.describe_to_store('" + labels + "', '" + folder + "')"
+                 : "; run: deformseg describe " + labels + " --store " + folder;
+  throw invalid_input(message, {.file = folder});
 }
 
 }  // namespace deformseg::frontend

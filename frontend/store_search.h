@@ -12,6 +12,7 @@
 #include <deformseg/similarity/nearest_motions.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,22 @@ class Store_search {
                                            const similarity::Find_in_collection_options& options) const;
   /// The similarity of every pair of the store's clips (`similarity::similarity_matrix`).
   Eigen::MatrixXd matrix(const Progress& progress = {}) const;
+  /// The similarity of every pair of clips `indices` of the store, in that order.
+  /// @pre every index is below `size()`.
+  Eigen::MatrixXd matrix(std::vector<std::size_t> indices, const Progress& progress = {}) const;
+
+  /// Refuses policy options that contradict the store's: a policy other than motion signatures
+  /// aligned by DTW (`store_policy`), or an `up` (when `asked` gives one) other than the one its
+  /// clips were described with.
+  /// @throws invalid_input naming the option as `front` spells it (and the store, for `up`).
+  void check_policy(const similarity::Policy_choice& asked, Front front) const;
+  /// The store's index of the clip of each row of the labels CSV `labels`, in the rows' order (a
+  /// glTF row without a clip takes `read`'s, or the file's only one), each up to date with its
+  /// source (`up_to_date`) as read with `read` or, without, with the options it was described with.
+  /// @throws invalid_input naming the store, listing the clips it lacks or holds as they were before
+  /// their source changed, and saying how to describe them again as `front` does.
+  std::vector<std::size_t> labelled(const std::string& labels, const std::optional<Input_options>& read,
+                                    Front front) const;
 
  private:
   io::Stored_motions clips_;

@@ -236,70 +236,11 @@ Opened_store store_of_state(const py::object& state) {
   return open_store_at(state_field<std::string>(f, 0, type, "folder"), state_field<std::string>(f, 1, type, "verify"));
 }
 
-// Some clips of a store, in a given order: the labelled ones (a similarity::MotionCollection).
-struct Selected_clips {
-  const io::Stored_motions* stored;
-  std::vector<std::size_t> indices;
-
-  std::size_t size() const { return indices.size(); }
-  similarity::Motion_signature_view view(std::size_t i) const { return stored->view(indices[i]); }
-  similarity::Motion_summary_view summary(std::size_t i) const { return stored->summary(indices[i]); }
-};
-
-// The input options a clip was described with, as its record spells them (input_options_text).
-frontend::Input_options recorded_options(const io::Store_record& record) {
-  frontend::Input_options options;
-  const nlohmann::json o = nlohmann::json::parse(record.input_options, nullptr, false);
-  try {
-    options.fps = o.at("fps").get<double>();
-    options.topology = o.at("topology").get<std::string>();
-    options.triangulate = o.at("triangulate").get<bool>();
-    options.weld = o.at("weld").get<bool>();
-    options.refuse_defects = o.at("refuse_defects").get<bool>();
-  } catch (const nlohmann::json::exception&) {
-    return {};  // not this front end's: the clip then reads as changed
-  }
-  return options;
-}
-
-std::string listed_names(const std::vector<std::string>& names) {
-  std::string list;
-  for (std::size_t k = 0; k < names.size() && k < 5; ++k) list += (k ? ", " : "") + names[k];
-  return names.size() > 5 ? list + " and " + std::to_string(names.size() - 5) + " more" : list;
-}
-
-// The store's index of each labelled clip, in the rows' order; refuses, listing them, the clips
-// it lacks or holds as they were before their source changed.
-std::vector<std::size_t> labelled_indices(const Opened_store& s, const std::string& labels) {
-  const io::Motion_store& store = s.search.store();
-  std::vector<std::size_t> indices;
-  std::vector<std::string> missing, stale;
-  for (const frontend::Clip_source& clip : frontend::labelled_clips(labels, {})) {
-    const std::optional<std::size_t> at = store.find(clip.file, clip.clip);
-    const std::optional<io::Store_record> record = at ? std::optional(store.record(*at)) : std::nullopt;
-    if (!record) missing.push_back(clip.name());
-    else if (!frontend::up_to_date(*record, clip, recorded_options(*record))) stale.push_back(clip.name());
-    else indices.push_back(*at);
-  }
-  if (missing.empty() && stale.empty()) return indices;
-  std::string message = "the store does not hold every labelled clip as it is now:";
-  if (!missing.empty()) message += " " + std::to_string(missing.size()) + " missing (" + listed_names(missing) + ")";
-  if (!stale.empty())
-    message += " " + std::to_string(stale.size()) + " changed since described (" + listed_names(stale) + ")";
-  throw invalid_input(message + "; describe them again: deformseg.describe_to_store('" + labels + "', '" +
-                          folder_of(s) + "')",
-                      {.file = folder_of(s)});
-}
-
 }  // namespace
 
 py::array stored_similarity_matrix(const Opened_store& store, const similarity::Policy_choice& choice,
                                    const Progress& progress) {
-  const similarity::Default_similarity asked = frontend::store_policy(choice, frontend::Front::python);
-  if (!choice.up.empty() &&
-      frontend::store_description(asked) != frontend::store_description(store.search.policy()))
-    throw invalid_input("up='" + choice.up + "' differs from the store's up direction (MotionStore.description "
-                        "gives it)", {.file = folder_of(store)});
+  store.search.check_policy(choice, frontend::Front::python);
   Eigen::MatrixXd m;
   {
     Interruptible_call call;
@@ -313,8 +254,8 @@ evaluation::Retrieval_scores evaluate_stored(const Opened_store& store, const st
   std::vector<evaluation::Labelled_item> items;
   for (const io::Labelled_clip& row : io::read_motion_labels(labels)) items.push_back(row.item);
   Interruptible_call call;
-  const Selected_clips selected{&store.search.clips(), labelled_indices(store, labels)};
-  return evaluation::evaluate_retrieval(similarity::similarity_matrix(selected, store.search.policy()), items);
+  const std::vector<std::size_t> labelled = store.search.labelled(labels, std::nullopt, frontend::Front::python);
+  return evaluation::evaluate_retrieval(store.search.matrix(labelled), items);
 }
 
 void bind_store(py::module_& m) {

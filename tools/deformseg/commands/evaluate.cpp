@@ -3,13 +3,11 @@
 #include "command.h"
 #include "policy_options.h"
 
-#include <frontend/store.h>
+#include <frontend/store_search.h>
 
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/motion_labels.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/io/stored_motions.h>
-#include <deformseg/similarity/nearest_motions.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/evaluation/retrieval_evaluation.h>
 #include <deformseg/color/strain_colors.h>
@@ -261,53 +259,14 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
   }
 }
 
-// Some clips of a store, in a given order: the labelled ones.
-struct Selected_motions {
-  const io::Stored_motions* stored;
-  std::vector<std::size_t> indices;
-
-  std::size_t size() const { return indices.size(); }
-  similarity::Motion_signature_view view(std::size_t i) const { return stored->view(indices[i]); }
-  similarity::Motion_summary_view summary(std::size_t i) const { return stored->summary(indices[i]); }
-};
-
-// The clip of each labels row in the store, in the rows' order; refuses, listing them, rows whose
-// clip the store lacks or holds as it was before its source changed.
-std::vector<std::size_t> stored_rows(const io::Motion_store& store, const Evaluate_options& o) {
-  const std::vector<frontend::Clip_source> clips = frontend::labelled_clips(o.labels, o.read);
-  std::vector<std::size_t> indices;
-  std::vector<std::string> missing, stale;
-  for (const frontend::Clip_source& clip : clips) {
-    const std::optional<std::size_t> at = store.find(clip.file, clip.clip);
-    if (!at) missing.push_back(clip.name());
-    else if (!frontend::up_to_date(store.record(*at), clip, o.read)) stale.push_back(clip.name());
-    else indices.push_back(*at);
-  }
-  if (missing.empty() && stale.empty()) return indices;
-  const auto listed = [](const std::vector<std::string>& names) {
-    std::string list;
-    for (std::size_t k = 0; k < names.size() && k < 5; ++k) list += (k ? ", " : "") + names[k];
-    return names.size() > 5 ? list + " and " + std::to_string(names.size() - 5) + " more" : list;
-  };
-  std::string message = "the store does not hold every labelled clip as it is now:";
-  if (!missing.empty()) message += " " + std::to_string(missing.size()) + " missing (" + listed(missing) + ")";
-  if (!stale.empty())
-    message += " " + std::to_string(stale.size()) + " changed since described (" + listed(stale) + ")";
-  throw invalid_input(message + "; run: deformseg describe " + o.labels + " --store " + o.store, {.file = o.store});
-}
-
 // The matrix of the labelled clips as the store holds them, the rows as `read.clips`.
 Eigen::MatrixXd matrix_of_store(Read_clips& read, const Evaluate_options& o, Matrix_progress& report) {
-  const io::Stored_motions stored(io::Motion_store::open(o.store));
-  const similarity::Default_similarity policy =
-      frontend::store_policy(frontend::stored_policy_choice(stored.store()), frontend::Front::command_line);
-  const similarity::Default_similarity asked = frontend::store_policy(o.policy, frontend::Front::command_line);
-  if (!o.policy.up.empty() && frontend::store_description(asked) != frontend::store_description(policy))
-    throw invalid_input("--up " + o.policy.up + " differs from the store's up direction", {.file = o.store});
+  const frontend::Store_search library(o.store);
+  library.check_policy(o.policy, frontend::Front::command_line);
   // The rows grouped by file, in the order of first appearance, as read_clips reads them.
   const std::vector<io::Labelled_clip> rows = io::read_motion_labels(o.labels);
-  const std::vector<std::size_t> at = stored_rows(stored.store(), o);
-  Selected_motions selected{&stored, {}};
+  const std::vector<std::size_t> at = library.labelled(o.labels, o.read, frontend::Front::command_line);
+  std::vector<std::size_t> selected;
   std::vector<bool> taken(rows.size(), false);
   for (std::size_t first = 0; first < rows.size(); ++first) {
     if (taken[first]) continue;
@@ -315,12 +274,12 @@ Eigen::MatrixXd matrix_of_store(Read_clips& read, const Evaluate_options& o, Mat
       if (rows[i].file == rows[first].file) {
         taken[i] = true;
         read.clips.push_back(rows[i]);
-        selected.indices.push_back(at[i]);
+        selected.push_back(at[i]);
       }
   }
   progress("comparing " + std::to_string(selected.size()) + " clips of " + o.store + " pair by pair");
   report = Matrix_progress{.descriptions = 0};
-  return similarity::similarity_matrix(selected, policy, std::ref(report));
+  return library.matrix(std::move(selected), std::ref(report));
 }
 
 void run_evaluate(const Evaluate_options& o) {
