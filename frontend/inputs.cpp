@@ -53,16 +53,28 @@ Read_input read_gltf(Input_name name, const Input_options& options, bool first_c
 
 }  // namespace
 
+io::Animation_read_options animation_read_options(const std::string& file, const Input_options& options) {
+  io::Animation_read_options read{.triangulate = options.triangulate, .threads = options.threads,
+                                  .repair = repair_options(file, options), .fps = options.fps};
+  if (!options.topology.empty()) read.topology = options.topology;
+  return read;
+}
+
+bool reads_frame_by_frame(const std::string& file, const Input_options& options) {
+  if (repair_options(file, options).weld) return false;
+  if (!options.topology.empty()) return true;
+  const std::string format = io::animation_format(file);
+  return format != "pc2" && format != "mdd";
+}
+
 Read_input read_input(const std::string& input, const Input_options& options, Front front,
                       bool first_clip_by_default) {
   check(options, front);
   Input_name name = input_name(input, options, front);
   if (io::is_gltf(name.file)) return read_gltf(std::move(name), options, first_clip_by_default);
-  io::Animation_read_options read{.triangulate = options.triangulate, .threads = options.threads,
-                                  .repair = repair_options(name.file, options), .fps = options.fps};
-  if (!options.topology.empty()) read.topology = options.topology;
   io::Repair_report repair;
-  mesh::Surface_mesh_animation animation = io::read_animation(name.file, read, &repair);
+  mesh::Surface_mesh_animation animation =
+      io::read_animation(name.file, animation_read_options(name.file, options), &repair);
   return {std::move(animation), std::move(name), repair, std::nullopt};
 }
 
@@ -74,9 +86,13 @@ void require_motion(const mesh::Surface_mesh_animation& animation, const std::st
 }
 
 nlohmann::json input_record(const Read_input& read, double fps) {
-  return {{"file", read.name.file},
-          {"clip", read.gltf ? nlohmann::json(read.gltf->clip) : nlohmann::json()},
-          {"fps", fps}};
+  nlohmann::json record = input_record(read.name.file, fps);
+  if (read.gltf) record["clip"] = read.gltf->clip;
+  return record;
+}
+
+nlohmann::json input_record(const std::string& file, double fps) {
+  return {{"file", file}, {"clip", nullptr}, {"fps", fps}};
 }
 
 nlohmann::json clips_record(const io::Gltf_contents& contents) {

@@ -6,6 +6,7 @@
 
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/mesh_repair.h>
+#include <deformseg/io/read_animation.h>
 #include <deformseg/mesh/default_mesh.h>
 
 #include <nlohmann/json.hpp>
@@ -77,6 +78,16 @@ void check_clip_applies(const std::vector<std::string>& inputs, const Input_opti
 /// says, defects repaired unless `refuse_defects`.
 io::Repair_options repair_options(const std::string& file, const Input_options& options);
 
+/// How `read_input` reads the animation file `file` that is not glTF (frame files, a folder, a
+/// point cache): with `options`' topology, triangulation, threads, repair (`repair_options`) and fps.
+io::Animation_read_options animation_read_options(const std::string& file, const Input_options& options);
+
+/// True when the animation file `file`, not glTF, can be read frame by frame
+/// (`io::with_frame_source`) as `read_input` reads it whole: not welded (welding compares every
+/// frame), and a point cache only with its topology (without, the reader of whole caches refuses
+/// it, in its words).
+bool reads_frame_by_frame(const std::string& file, const Input_options& options);
+
 /// An animation read, with what reading it found.
 struct Read_input {
   mesh::Surface_mesh_animation animation;
@@ -98,6 +109,9 @@ void require_motion(const mesh::Surface_mesh_animation& animation, const std::st
 
 /// What an input was, for a report: {"file", "clip" (its name as read, or null), "fps"}.
 nlohmann::json input_record(const Read_input& read, double fps);
+
+/// The same for the file `file` of an input not read whole (not glTF, so no clip).
+nlohmann::json input_record(const std::string& file, double fps);
 
 /// The clips of a glTF file as a report: [{"name", "index", "start", "end", "duration", "frames",
 /// "channels"}], frames counted at the rate `contents` were listed at.

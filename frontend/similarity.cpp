@@ -48,14 +48,6 @@ Compared compare_descriptions(const Policy& policy, const Description& da, const
   return out;
 }
 
-// Whether the input `name` can be read frame by frame as read_input reads it whole.
-bool streamable(const Input_name& name, const Input_options& options) {
-  if (io::is_gltf(name.file) || repair_options(name.file, options).weld) return false;
-  if (!options.topology.empty()) return true;
-  const std::string format = io::animation_format(name.file);
-  return format != "pc2" && format != "mdd";  // refused by the reader of whole caches, in its words
-}
-
 }  // namespace
 
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
@@ -72,7 +64,8 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
                                          std::array<std::size_t, 2>& frames) {
   if (choice.policy != "motion-signature") return std::nullopt;
   const std::array<Input_name, 2> names{input_name(inputs[0], options, front), input_name(inputs[1], options, front)};
-  if (!streamable(names[0], options) || !streamable(names[1], options)) return std::nullopt;
+  for (const Input_name& name : names)
+    if (io::is_gltf(name.file) || !reads_frame_by_frame(name.file, options)) return std::nullopt;
   return similarity::with_policy_choice(choice, [&](const auto& policy) -> std::optional<Compared> {
     using Description = typename std::remove_cvref_t<decltype(policy)>::Description;
     if constexpr (!std::is_same_v<Description, similarity::Motion_signature_description>) {
@@ -80,9 +73,7 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
     } else {
       std::array<std::optional<Description>, 2> described;
       for (std::size_t k = 0; k < 2; ++k) {
-        io::Animation_read_options read{.triangulate = options.triangulate, .threads = options.threads,
-                                        .repair = repair_options(names[k].file, options), .fps = options.fps};
-        if (!options.topology.empty()) read.topology = options.topology;
+        const io::Animation_read_options read = animation_read_options(names[k].file, options);
         described[k] = io::with_frame_source(names[k].file, read, [&](auto& source) -> std::optional<Description> {
           frames[k] = source.num_frames();
           if (frames[k] < 2) return std::nullopt;  // refused by the reader of whole animations, in its words

@@ -362,31 +362,19 @@ Described_clip describe_streamed(Source& source, const Clip_source& clip, const 
   return summarized(source.num_frames(), source.frames_per_second(), std::move(description));
 }
 
-// Whether a point cache or a frame sequence is read whole: welded (welding compares every frame,
-// which a stream cannot), or a point cache without its topology (refused by the reader of whole
-// caches, in its words).
-bool read_whole_only(const Clip_source& clip, const Input_options& options, const io::Repair_options& repair) {
-  if (repair.weld) return true;
-  if (!options.topology.empty()) return false;
-  const std::string format = io::animation_format(clip.file);
-  return format == "pc2" || format == "mdd";
-}
-
 // Describes `clip` as `read_input` reads it, frame by frame: a glTF clip from `gltf` (welded, when
 // it is, by what the file fixes: the stream's connectivity is read's); a point cache or frame
 // sequence through `io::with_frame_source` with the same topology, triangulation, repair and fps,
-// unless `read_whole_only`.
+// when it `reads_frame_by_frame`.
 Described_clip describe_clip(const Clip_source& clip, const io::Gltf_file* gltf, const Input_options& options,
                              const similarity::Default_similarity& policy) {
-  const io::Repair_options repair = repair_options(clip.file, options);
   if (gltf) {
-    io::Gltf_frame_source source(*gltf, {.clip = clip.clip, .fps = options.fps, .repair = repair});
+    io::Gltf_frame_source source(*gltf,
+                                 {.clip = clip.clip, .fps = options.fps, .repair = repair_options(clip.file, options)});
     return describe_streamed(source, clip, gltf, options, policy);
   }
-  if (read_whole_only(clip, options, repair)) return describe_whole(clip, nullptr, options, policy);
-  io::Animation_read_options read{.triangulate = options.triangulate, .repair = repair, .fps = options.fps};
-  if (!options.topology.empty()) read.topology = options.topology;
-  return io::with_frame_source(clip.file, read,
+  if (!reads_frame_by_frame(clip.file, options)) return describe_whole(clip, nullptr, options, policy);
+  return io::with_frame_source(clip.file, animation_read_options(clip.file, options),
                                [&](auto& source) { return describe_streamed(source, clip, nullptr, options, policy); });
 }
 

@@ -4,11 +4,9 @@
 #include "policy_options.h"
 
 #include <frontend/similarity.h>
-#include <frontend/store.h>
+#include <frontend/store_search.h>
 
-#include <deformseg/io/stored_motions.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/nearest_motions.h>
 #include <deformseg/similarity/significance.h>
 #include <deformseg/color/strain_colors.h>
 
@@ -89,8 +87,8 @@ void run_similarity(const Similarity_command_options& o) {
              " frames, each described frame by frame");
     nlohmann::json records = nlohmann::json::array();
     for (const std::string& input : o.inputs)
-      records.push_back({{"file", frontend::input_name(input, o.read, frontend::Front::command_line).file},
-                         {"clip", nullptr}, {"fps", o.read.fps}});
+      records.push_back(
+          frontend::input_record(frontend::input_name(input, o.read, frontend::Front::command_line).file, o.read.fps));
     return report_similarity(o, *compared, records, frames[0], frames[1]);
   }
   const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
@@ -131,18 +129,6 @@ void write_heat_map(const Eigen::MatrixXd& m, const Matrix_command_options& o, c
   figure.write(path);
 }
 
-// The policy of a matrix over a store: the store's, which the command's options must not contradict.
-similarity::Default_similarity policy_of_store(const io::Motion_store& store, const Matrix_command_options& o) {
-  const similarity::Default_similarity asked = frontend::store_policy(o.policy, frontend::Front::command_line);
-  const similarity::Default_similarity stored =
-      frontend::store_policy(frontend::stored_policy_choice(store), frontend::Front::command_line);
-  if (!o.policy.up.empty() && frontend::store_description(asked) != frontend::store_description(stored))
-    throw invalid_input("--up " + o.policy.up + " differs from the store's up direction (deformseg store info " +
-                            store.folder().string() + " gives it)",
-                        {.file = store.folder().string()});
-  return stored;
-}
-
 // The matrix of the inputs read and described now, or of the store's clips as described.
 Eigen::MatrixXd matrix_of(const Matrix_command_options& o, std::vector<std::string>& names, nlohmann::json& records) {
   if (o.store.empty()) {
@@ -158,17 +144,17 @@ Eigen::MatrixXd matrix_of(const Matrix_command_options& o, std::vector<std::stri
       return similarity::similarity_matrix(animations, policy, std::ref(report));
     });
   }
-  const io::Stored_motions stored(io::Motion_store::open(o.store));
-  const similarity::Default_similarity policy = policy_of_store(stored.store(), o);
-  for (std::size_t i = 0; i < stored.size(); ++i) {
-    const io::Store_record record = stored.store().record(i);
-    names.push_back(frontend::stored_clip_name(stored.store(), i));
+  const frontend::Store_search library(o.store);
+  library.check_policy(o.policy, frontend::Front::command_line);
+  for (std::size_t i = 0; i < library.size(); ++i) {
+    const io::Store_record record = library.store().record(i);
+    names.push_back(library.name(i));
     const nlohmann::json clip = record.clip.empty() ? nlohmann::json() : nlohmann::json(record.clip);
     records.push_back({{"file", record.path}, {"clip", clip}, {"fps", record.fps}});
   }
-  progress("comparing the " + std::to_string(stored.size()) + " clips of " + o.store + " pair by pair");
+  progress("comparing the " + std::to_string(library.size()) + " clips of " + o.store + " pair by pair");
   Matrix_progress report{.descriptions = 0};
-  return similarity::similarity_matrix(stored, policy, std::ref(report));
+  return library.matrix(std::ref(report));
 }
 
 void run_matrix(const Matrix_command_options& o) {
