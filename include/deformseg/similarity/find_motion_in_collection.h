@@ -58,11 +58,6 @@ std::size_t clip_frame(const C& collection, std::size_t i, std::size_t row) {
     return row;
 }
 
-/// The kernel's dissimilarities of the query's rows to clip b's rows: `frame_dissimilarities`'s matrix.
-inline Eigen::MatrixXd view_dissimilarities(Motion_signature_view a, Motion_signature_view b, double unit) {
-  return dissimilarity_matrix<double>(Motion_signature_dissimilarity(a, b, unit));
-}
-
 }  // namespace internal
 
 /// @brief Where `query` occurs in `collection`: the best `options.count` non-overlapping windows
@@ -101,16 +96,13 @@ std::vector<Clip_match> find_motion_in_collection(const Motion_signature_descrip
   const Find_motion_options per_clip{.count = options.count, .shortest = options.shortest};
   internal::check_find_options(per_clip);
   const Motion_signature_view q = view(query);
-  if (q.rows == 0) throw invalid_input("find_motion_in_collection: the query has no signature");
-  if (collection.size() > 0 && q.width != collection.view(0).width)
-    throw invalid_input("find_motion_in_collection: the query's signatures have " + std::to_string(q.width) +
-                        " values, the collection's " + std::to_string(collection.view(0).width));
+  internal::check_query(collection, q, "find_motion_in_collection");
   if (!(policy.scale > 0)) throw invalid_input("find_motion_in_collection: the scale must be positive");
   const double unit = frame_dissimilarity_unit(q.width, policy.scale);
   std::vector<std::vector<Motion_match>> per(collection.size());
   deformseg::internal::parallel_for(collection.size(), options.threads, [&](std::size_t i) {
     per[i] = internal::find_windows_in(
-        internal::view_dissimilarities(q, collection.view(i), unit),
+        internal::dissimilarity_matrix<double>(Motion_signature_dissimilarity(q, collection.view(i), unit)),
         [&](std::size_t row) { return internal::frame_of_row(query, row); },
         [&](std::size_t row) { return internal::clip_frame(collection, i, row); }, per_clip);
   });

@@ -82,4 +82,17 @@ private:
 
 static_assert(MotionCollection<Motion_collection>);
 
+namespace internal {
+
+// Refuses, naming `who`, a query of no row or of another width than the collection's clips.
+template <MotionCollection C>
+void check_query(const C& collection, Motion_signature_view query, const char* who) {
+  if (query.rows == 0) throw invalid_input(std::string(who) + ": the query has no signature");
+  if (collection.size() > 0 && query.width != collection.view(0).width)
+    throw invalid_input(std::string(who) + ": the query's signatures have " + std::to_string(query.width) +
+                        " values, the collection's " + std::to_string(collection.view(0).width));
+}
+
+}  // namespace internal
+
 }  // namespace deformseg::similarity

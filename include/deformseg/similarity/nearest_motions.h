@@ -304,14 +304,6 @@ Nearest_motions search_others(const C& collection, std::size_t i, double unit, s
   return Query_search<C>(collection, collection.view(i), i, unit, k, threads).run();
 }
 
-template <MotionCollection C>
-void check_query(const C& collection, Motion_signature_view query, const char* who) {
-  if (query.rows == 0) throw invalid_input(std::string(who) + ": the query has no signature");
-  if (collection.size() > 0 && query.width != collection.view(0).width)
-    throw invalid_input(std::string(who) + ": the query's signatures have " + std::to_string(query.width) +
-                        " values, the collection's " + std::to_string(collection.view(0).width));
-}
-
 }  // namespace internal
 
 /// @brief The `options.k` clips of `collection` most similar to `query` under `policy` (the

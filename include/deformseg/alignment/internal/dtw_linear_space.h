@@ -89,6 +89,19 @@ private:
     std::fill(cur + (hi - c0) + 2, cur + width + 1, dtw_unreachable);
   }
 
+  // The costs of row `last` of `rect` (columns c0 - 1..c1), from its edges, a row at a time.
+  std::vector<double> costs_down_to(std::size_t last, const Dtw_rect& rect, std::span<const double> top,
+                                    std::span<const double> left) const {
+    const std::size_t width = rect.width();
+    std::vector<double> above(top.begin(), top.end()), cur(width + 1), row(width);
+    for (std::size_t i = rect.r0; i <= last; ++i) {
+      cur[0] = left[i - rect.r0];
+      sweep_row(i, rect.c0, width, above.data(), cur.data(), row, [](std::size_t, bool, bool) {});
+      std::swap(above, cur);
+    }
+    return above;
+  }
+
   // How a traceback left a rectangle: the cost of its end, and whether it stepped into the row
   // above inside the rectangle's columns, at `column` (rather than into the column before it).
   struct Exit {
@@ -129,13 +142,8 @@ private:
   // above them (at most a block).
   double trace_tail(const Dtw_rect& rect, std::span<const double> top, std::span<const double> left,
                     Pairs& pairs) const {
-    const std::size_t width = rect.width(), last_top = rect.r1 - block_ / width;
-    std::vector<double> above(top.begin(), top.end()), cur(width + 1), row(width);
-    for (std::size_t i = rect.r0; i <= last_top; ++i) {
-      cur[0] = left[i - rect.r0];
-      sweep_row(i, rect.c0, width, above.data(), cur.data(), row, [](std::size_t, bool, bool) {});
-      std::swap(above, cur);
-    }
+    const std::size_t last_top = rect.r1 - block_ / rect.width();
+    const std::vector<double> above = costs_down_to(last_top, rect, top, left);
     const std::size_t top_rows = last_top + 1 - rect.r0;
     const Exit exit = trace_block({last_top + 1, rect.r1, rect.c0, rect.c1}, above, left.subspan(top_rows), pairs);
     if (exit.through_top)
@@ -148,12 +156,7 @@ private:
   double trace_split(const Dtw_rect& rect, std::span<const double> top, std::span<const double> left,
                      Pairs& pairs) const {
     const std::size_t width = rect.width(), mid = rect.r0 + rect.height() / 2 - 1;
-    std::vector<double> above(top.begin(), top.end()), cur(width + 1), row(width);
-    for (std::size_t i = rect.r0; i <= mid; ++i) {
-      cur[0] = left[i - rect.r0];
-      sweep_row(i, rect.c0, width, above.data(), cur.data(), row, [](std::size_t, bool, bool) {});
-      std::swap(above, cur);
-    }
+    std::vector<double> above = costs_down_to(mid, rect, top, left), cur(width + 1), row(width);
     const std::vector<double> middle = above;  // the costs of row mid, columns c0 - 1..c1
     // crossing[k]: where the traceback from (i, c0 - 1 + k) enters row mid, as k there; 0 when it
     // leaves the rectangle through its left side first (column c0 - 1 is not in the rectangle).
