@@ -191,3 +191,94 @@ TEST_CASE("nearest_motions refuses a query of another width, and a policy with a
   CHECK_THROWS_WITH(similarity::nearest_motions(collection.view(0), collection, {}, windowed),
                     Catch::Contains("without a window"));
 }
+
+namespace {
+
+// The blocks of `size` clips (the last one shorter) that cover n clips.
+std::vector<similarity::Clip_range> blocks_of(std::size_t n, std::size_t size) {
+  std::vector<similarity::Clip_range> blocks;
+  for (std::size_t begin = 0; begin < n; begin += size) blocks.push_back({begin, std::min(n, begin + size)});
+  return blocks;
+}
+
+}  // namespace
+
+TEST_CASE("similarity_tile is the matrix's block, bit for bit, for tiles of 1, 3 and 7 clips, on and off the diagonal") {
+  const auto clips = random_collection(23, 20, 16);
+  const similarity::Motion_collection collection(clips);
+  const Eigen::MatrixXd matrix = similarity::similarity_matrix(collection);
+  for (std::size_t size : {std::size_t(1), std::size_t(3), std::size_t(7)})
+    for (const auto rows : blocks_of(clips.size(), size))
+      for (const auto columns : blocks_of(clips.size(), size)) {
+        INFO("rows [" << rows.begin << ", " << rows.end << "), columns [" << columns.begin << ", " << columns.end << ")");
+        const Eigen::MatrixXd tile = similarity::similarity_tile(collection, rows, columns, {}, {}, int(size % 2) + 1);
+        CHECK(tile == matrix.block(rows.begin, columns.begin, rows.size(), columns.size()));
+      }
+  // Overlapping blocks: a pair with both entries in the tile is aligned once, and counted once.
+  std::size_t steps = 0;
+  const Eigen::MatrixXd tile = similarity::similarity_tile(collection, {2, 9}, {5, 12}, {},
+                                                           [&](std::size_t done, std::size_t total) {
+                                                             steps = total;
+                                                             return done <= total;
+                                                           });
+  CHECK(tile == matrix.block(2, 5, 7, 7));
+  CHECK(steps == 7 * 7 - 4 * 3 / 2);  // the 4 x 4 overlap [5, 9) has 6 pairs below its diagonal
+  CHECK(similarity::similarity_tile(collection, {4, 4}, {0, 20}).size() == 0);
+  CHECK_THROWS_WITH(similarity::similarity_tile(collection, {0, 21}, {0, 1}),
+                    Catch::Contains("the rows [0, 21) are not clips of the collection, which holds 20"));
+  CHECK_THROWS_WITH(similarity::similarity_tile(collection, {0, 1}, {3, 2}), Catch::Contains("the columns [3, 2)"));
+}
+
+TEST_CASE("searches among blocks of candidates, merged, equal the search among all: rows of 1, 3 and 7 clips") {
+  const auto clips = random_collection(29, 30, 8);
+  const similarity::Motion_collection collection(clips);
+  const std::size_t n = clips.size();
+  std::mt19937 random(31);
+  const auto query = random_clip(random, 12, 8, 1.5f);
+  for (std::size_t k : {std::size_t(1), std::size_t(4), n + 2}) {
+    const auto whole = similarity::knn_graph(collection, {.k = k});
+    const auto found = similarity::nearest_motions(similarity::view(query), collection, {.k = k});
+    for (std::size_t size : {std::size_t(1), std::size_t(3), std::size_t(7)}) {
+      INFO("k " << k << ", blocks of " << size);
+      std::vector<similarity::Nearest_motions> query_parts;
+      for (const auto candidates : blocks_of(n, size))
+        query_parts.push_back(similarity::nearest_motions(similarity::view(query), collection,
+                                                          {.k = k, .candidates = candidates}));
+      const auto merged_query = similarity::merge_nearest(query_parts, k);
+      CHECK(merged_query.neighbours == found.neighbours);
+      CHECK(merged_query.pruning.candidates == n);
+      for (const auto rows : blocks_of(n, size)) {
+        const auto block = similarity::knn_graph(collection, rows, {.k = k, .threads = 2});
+        REQUIRE(block.size() == rows.size());
+        std::vector<std::vector<similarity::Nearest_motions>> parts;
+        for (const auto candidates : blocks_of(n, size))
+          parts.push_back(similarity::knn_graph(collection, rows, {.k = k, .candidates = candidates}));
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+          const std::size_t i = rows.begin + r;
+          CHECK(block[r].neighbours == whole[i].neighbours);
+          CHECK(block[r].pruning == whole[i].pruning);
+          std::vector<similarity::Nearest_motions> row;
+          for (const auto& part : parts) row.push_back(part[r]);
+          const auto merged = similarity::merge_nearest(row, k);
+          CHECK(merged.neighbours == whole[i].neighbours);
+          CHECK(merged.pruning.candidates == n - 1);
+        }
+      }
+    }
+  }
+  CHECK_THROWS_WITH(similarity::knn_graph(collection, similarity::Clip_range{28, 31}), Catch::Contains("knn_graph: the rows [28, 31)"));
+  CHECK_THROWS_WITH(similarity::nearest_others(collection, 0, {.candidates = similarity::Clip_range{0, 40}}),
+                    Catch::Contains("the candidates [0, 40)"));
+}
+
+TEST_CASE("merge_nearest ranks by value, then index, cuts at k and sums the counts") {
+  using similarity::Nearest_motions;
+  const Nearest_motions a{{{4, 0.9}, {7, 0.5}}, {.candidates = 3, .pruned_by_summary = 1, .aligned = 2}};
+  const Nearest_motions b{{{2, 0.5}, {1, 0.2}}, {.candidates = 5, .pruned_by_rows = 3, .aligned = 2}};
+  const std::vector<Nearest_motions> parts{a, b};
+  const Nearest_motions merged = similarity::merge_nearest(parts, 3);
+  CHECK(merged.neighbours == std::vector<Neighbour>{{4, 0.9}, {2, 0.5}, {7, 0.5}});
+  CHECK(merged.pruning == similarity::Pruning_report{.candidates = 8, .pruned_by_summary = 1, .pruned_by_rows = 3,
+                                                     .aligned = 4});
+  CHECK(similarity::merge_nearest({}, 3).neighbours.empty());
+}

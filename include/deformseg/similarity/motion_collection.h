@@ -1,7 +1,8 @@
 /// @file similarity/motion_collection.h
 /// @brief The `MotionCollection` concept, what the nearest-motion search reads (each clip's
-/// signatures and summary, by index), and `Motion_collection`, its model over descriptions held in
-/// memory; `io::Motion_store` models it over a store on disk.
+/// signatures and summary, by index), `Motion_collection`, its model over descriptions held in
+/// memory (`io::Motion_store` models it over a store on disk), and `Clip_range`, a block of
+/// consecutive clips, the unit of the tiles a cluster computes.
 #pragma once
 
 #include <deformseg/exceptions.h>
@@ -82,7 +83,37 @@ private:
 
 static_assert(MotionCollection<Motion_collection>);
 
+/// @brief Clips `begin` to `end - 1` of a collection: a block of rows or columns of a tile of the
+/// similarity matrix (`similarity_tile`), or the candidates of a search
+/// (`Nearest_motions_options::candidates`).
+struct Clip_range {
+  std::size_t begin = 0;  ///< the first clip
+  std::size_t end = 0;    ///< one past the last clip; `begin <= end`
+  /// @brief The number of clips, `end - begin`.
+  std::size_t size() const { return end - begin; }
+  /// @brief Whether clip `i` is in the block.
+  bool contains(std::size_t i) const { return begin <= i && i < end; }
+  /// @brief Equal bounds.
+  bool operator==(const Clip_range&) const = default;
+};
+
+/// @brief Every clip of `collection`: `{0, collection.size()}`.
+template <MotionCollection C>
+Clip_range all_clips(const C& collection) {
+  return {0, collection.size()};
+}
+
 namespace internal {
+
+// Refuses, naming `who` and `what` (rows, columns, candidates), a block that is not one of the
+// collection's.
+template <MotionCollection C>
+void check_range(const C& collection, Clip_range range, const char* who, const char* what) {
+  if (range.begin > range.end || range.end > collection.size())
+    throw invalid_input(std::string(who) + ": the " + what + " [" + std::to_string(range.begin) + ", " +
+                        std::to_string(range.end) + ") are not clips of the collection, which holds " +
+                        std::to_string(collection.size()));
+}
 
 // Refuses, naming `who`, a query of no row or of another width than the collection's clips.
 template <MotionCollection C>

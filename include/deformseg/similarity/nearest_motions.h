@@ -2,8 +2,9 @@
 /// @brief `nearest_motions`: the k clips of a `MotionCollection` most similar to a query under the
 /// default policy, exactly as `similarity_matrix` ranks them, most of the collection ruled out by
 /// lower bounds before any alignment; `nearest_others`, a clip's k nearest others in its own
-/// collection; `knn_graph`, every clip's k nearest others; and the all-pairs
-/// `similarity_matrix` of a collection.
+/// collection; `knn_graph`, every clip's (or a block's) k nearest others; `merge_nearest`, the
+/// searches of blocks of candidates made one; and the all-pairs `similarity_matrix` of a
+/// collection, and its tiles (`similarity_tile`).
 #pragma once
 
 #include <deformseg/alignment/dtw.h>
@@ -86,6 +87,9 @@ struct Nearest_motions_options {
   /// @brief Called on the calling thread after each batch of queries (see `Progress`), one step a
   /// query; default none.
   Progress progress{};
+  /// @brief The clips searched (default all): a search among a block of the collection, whose
+  /// results over disjoint blocks `merge_nearest` makes the search of their union.
+  std::optional<Clip_range> candidates{};
 };
 
 namespace internal {
@@ -152,11 +156,11 @@ template <MotionCollection C>
 class Query_search {
 public:
   // `self`: the query's index when it is a clip of `collection` (left out, and each pair
-  // oriented as similarity_matrix does: the lower index first).
-  Query_search(const C& collection, Motion_signature_view query, std::optional<std::size_t> self, double unit,
-               std::size_t k, int threads)
+  // oriented as similarity_matrix does: the lower index first); `among`: the candidates.
+  Query_search(const C& collection, Motion_signature_view query, std::optional<std::size_t> self, Clip_range among,
+               double unit, std::size_t k, int threads)
       : collection_(collection), query_(query), summary_(summarize(query)), summary_view_(summary_.view()),
-        self_(self), unit_(unit), k_(k), threads_(threads),
+        self_(self), among_(among), unit_(unit), k_(k), threads_(threads),
         scratch_(std::size_t(deformseg::thread_count(threads, "nearest_motions"))) {}
 
   Nearest_motions run() {
@@ -179,7 +183,7 @@ public:
     while (next < rest.size()) {
       const double threshold = top.threshold();
       std::size_t end = next;
-      while (end < rest.size() && end - next < search_batch && !rules_out(bounds_[rest[end]], threshold)) ++end;
+      while (end < rest.size() && end - next < search_batch && !rules_out(bound(rest[end]), threshold)) ++end;
       if (end == next) break;  // this candidate's bound rules it out, and every later one's is larger
       run_batch(std::span(rest).subspan(next, end - next), threshold, top, result.pruning);
       next = end;
@@ -190,14 +194,16 @@ public:
   }
 
 private:
-  // The order of the search: by summary bound, then by index.
-  bool in_order(std::size_t x, std::size_t y) const {
-    return bounds_[x] != bounds_[y] ? bounds_[x] < bounds_[y] : x < y;
-  }
+  // Candidate c's summary bound and guess (bounds_ and guesses_ hold the candidates' from among_.begin).
+  double bound(std::size_t c) const { return bounds_[c - among_.begin]; }
+  double guess(std::size_t c) const { return guesses_[c - among_.begin]; }
 
-  // The candidates, sorted by their summary bound (bounds_), then by index; and each one's guess.
+  // The order of the search: by summary bound, then by index.
+  bool in_order(std::size_t x, std::size_t y) const { return bound(x) != bound(y) ? bound(x) < bound(y) : x < y; }
+
+  // The candidates, sorted by their summary bound, then by index; and each one's guess.
   std::vector<std::size_t> by_summary_bound() {
-    const std::size_t n = collection_.size();
+    const std::size_t n = among_.size();
     bounds_.assign(n, 0.0);
     guesses_.assign(n, 0.0);
     const Motion_summary_view query = summary_view_;
@@ -207,15 +213,15 @@ private:
     deformseg::internal::parallel_for(
         n, threads_,
         [&](std::size_t i) {
-          const Motion_summary_view clip = collection_.summary(i);
+          const Motion_summary_view clip = collection_.summary(among_.begin + i);
           bounds_[i] = lb_mean(query, clip, unit_);
           guesses_[i] = internal::squared_distance(query.mean(), clip.mean());
         },
         deformseg::internal::Loop_grain{.chunk = 256, .min_parallel = 2048});
     std::vector<std::size_t> order;
     order.reserve(n);
-    for (std::size_t i = 0; i < n; ++i)
-      if (i != self_) order.push_back(i);
+    for (std::size_t c = among_.begin; c < among_.end; ++c)
+      if (c != self_) order.push_back(c);
     std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return in_order(x, y); });
     return order;
   }
@@ -224,9 +230,7 @@ private:
   // a guess, not a bound, at the k nearest.
   std::vector<std::size_t> likeliest(const std::vector<std::size_t>& order) const {
     std::vector<std::size_t> seeds = order;
-    const auto by_guess = [&](std::size_t x, std::size_t y) {
-      return guesses_[x] != guesses_[y] ? guesses_[x] < guesses_[y] : x < y;
-    };
+    const auto by_guess = [&](std::size_t x, std::size_t y) { return guess(x) != guess(y) ? guess(x) < guess(y) : x < y; };
     const std::size_t count = std::min(k_, seeds.size());
     std::nth_element(seeds.begin(), seeds.begin() + std::ptrdiff_t(count), seeds.end(), by_guess);
     seeds.resize(count);
@@ -279,10 +283,11 @@ private:
   Motion_summary summary_;
   Motion_summary_view summary_view_;  // of summary_, checked once
   std::optional<std::size_t> self_;
+  Clip_range among_;
   double unit_;
   std::size_t k_;
   int threads_;
-  std::vector<double> bounds_, guesses_;
+  std::vector<double> bounds_, guesses_;  // of the candidates among_, from among_.begin
   std::vector<Search_scratch> scratch_;  // one per worker of a batch
   std::vector<std::optional<double>> values_;  // a batch's values
   std::vector<Pruning_report> counts_;         // a batch's counts
@@ -297,11 +302,20 @@ inline double search_unit(const Motion_signature_similarity<>& policy, std::size
   return frame_dissimilarity_unit(width, policy.scale);
 }
 
-// Clip i's search among the others of `collection`: the one code path of `nearest_others` and of
+// The candidates `options` names, checked, naming `who`.
+template <MotionCollection C>
+Clip_range candidates_of(const C& collection, const Nearest_motions_options& options, const char* who) {
+  const Clip_range among = options.candidates.value_or(all_clips(collection));
+  check_range(collection, among, who, "candidates");
+  return among;
+}
+
+// Clip i's search among the others of `among`: the one code path of `nearest_others` and of
 // every row of `knn_graph`.
 template <MotionCollection C>
-Nearest_motions search_others(const C& collection, std::size_t i, double unit, std::size_t k, int threads) {
-  return Query_search<C>(collection, collection.view(i), i, unit, k, threads).run();
+Nearest_motions search_others(const C& collection, std::size_t i, Clip_range among, double unit, std::size_t k,
+                              int threads) {
+  return Query_search<C>(collection, collection.view(i), i, among, unit, k, threads).run();
 }
 
 }  // namespace internal
@@ -340,7 +354,8 @@ Nearest_motions nearest_motions(Motion_signature_view query, const C& collection
                                 const Motion_signature_similarity<>& policy = {}) {
   internal::check_query(collection, query, "nearest_motions");
   const double unit = internal::search_unit(policy, query.width, "nearest_motions");
-  return internal::Query_search<C>(collection, query, std::nullopt, unit, options.k, options.threads).run();
+  const Clip_range among = internal::candidates_of(collection, options, "nearest_motions");
+  return internal::Query_search<C>(collection, query, std::nullopt, among, unit, options.k, options.threads).run();
 }
 
 /// @brief The `options.k` clips of `collection` most similar to its own clip `i`, clip i left out:
@@ -370,37 +385,133 @@ Nearest_motions nearest_others(const C& collection, std::size_t i, const Nearest
     throw invalid_input("nearest_others: no clip " + std::to_string(i) + ": the collection holds " +
                         std::to_string(collection.size()));
   const double unit = internal::search_unit(policy, collection.view(i).width, "nearest_others");
-  return internal::search_others(collection, i, unit, options.k, options.threads);
+  const Clip_range among = internal::candidates_of(collection, options, "nearest_others");
+  return internal::search_others(collection, i, among, unit, options.k, options.threads);
 }
 
-/// @brief Every clip's `options.k` nearest other clips of `collection` (itself left out), each
-/// pair's value that of `similarity_matrix` over the collection's clips (entry (i, j) for i < j is
-/// `compare(clip i, clip j)`, and so is entry (j, i)): the k-nearest-neighbour graph, one
-/// `Nearest_motions` per clip, row i exactly `nearest_others(collection, i, options, policy)`.
+/// @brief The `options.k` nearest other clips (itself left out) of each clip of `rows`: row i of
+/// the k-nearest-neighbour graph for i in `rows`, exactly `nearest_others(collection, i, options,
+/// policy)`, each pair's value that of `similarity_matrix` over the collection's clips (entry (i, j)
+/// for i < j is `compare(clip i, clip j)`, and so is entry (j, i)).
+///
+/// A block of rows is the unit of work a cluster hands out: the graph of the whole collection is
+/// the concatenation of the graphs of consecutive blocks, whatever their sizes. With
+/// `options.candidates`, each row is searched among those clips only; `merge_nearest` of the rows
+/// found among disjoint blocks of candidates gives the rows found among their union.
 /// @param collection a `MotionCollection` described with `policy`'s options.
-/// @param options k (default 10), threads (the clips are searched in parallel, each as
-/// `nearest_others` searches on one thread), progress (one step a clip).
+/// @param rows the clips whose neighbours are wanted. @pre `rows.end <= collection.size()` (checked).
+/// @param options k (default 10), threads (the rows are searched in parallel, each as
+/// `nearest_others` searches on one thread; the result and the counts do not depend on it),
+/// progress (one step a row), candidates (default all).
 /// @param policy the scale and alignment of the values (default: the default policy's); no window.
-/// @throws invalid_input when `policy` has a window.
+/// @throws invalid_input when `rows` or the candidates are not blocks of the collection, or when
+/// `policy` has a window.
 /// @throws cancelled as `similarity_matrix`.
+/// @par Complexity `rows.size()` searches as `nearest_motions` over the candidates.
+/// @par Example
+/// @include knn_tiles.cpp
+template <MotionCollection C>
+std::vector<Nearest_motions> knn_graph(const C& collection, Clip_range rows, const Nearest_motions_options& options = {},
+                                       const Motion_signature_similarity<>& policy = {}) {
+  internal::check_range(collection, rows, "knn_graph", "rows");
+  const Clip_range among = internal::candidates_of(collection, options, "knn_graph");
+  std::vector<Nearest_motions> graph(rows.size());
+  if (rows.size() == 0) return graph;
+  const double unit = internal::search_unit(policy, collection.view(rows.begin).width, "knn_graph");
+  deformseg::internal::parallel_for_reporting(
+      rows.size(), options.threads, options.progress, 0, rows.size(), [&](std::size_t r) {
+        graph[r] = internal::search_others(collection, rows.begin + r, among, unit, options.k, 1);
+      });
+  return graph;
+}
+
+/// @brief Every clip's `options.k` nearest other clips of `collection` (itself left out): the
+/// k-nearest-neighbour graph, one `Nearest_motions` per clip, `knn_graph(collection,
+/// all_clips(collection), options, policy)`; row i is exactly `nearest_others(collection, i,
+/// options, policy)`.
 /// @par Complexity N searches as `nearest_motions`: O(N^2 W) for the summary bounds, and the
 /// alignments the bounds do not rule out.
 template <MotionCollection C>
 std::vector<Nearest_motions> knn_graph(const C& collection, const Nearest_motions_options& options = {},
                                        const Motion_signature_similarity<>& policy = {}) {
-  const std::size_t n = collection.size();
-  std::vector<Nearest_motions> graph(n);
-  if (n == 0) return graph;
-  const double unit = internal::search_unit(policy, collection.view(0).width, "knn_graph");
-  deformseg::internal::parallel_for_reporting(n, options.threads, options.progress, 0, n, [&](std::size_t i) {
-    graph[i] = internal::search_others(collection, i, unit, options.k, 1);
+  return knn_graph(collection, all_clips(collection), options, policy);
+}
+
+/// @brief One query's neighbours found among disjoint blocks of candidates (`parts`, in any order),
+/// made the neighbours found among their union: the `k` best of all, by value descending and then
+/// by index ascending (the ranking of every search), and the counts summed.
+///
+/// The neighbours equal, value for value, those of one search among the union (the k best of a
+/// union are among the k best of its parts); the counts are those of the separate searches, which
+/// prune less than one search does.
+/// @param parts the results of one query's searches (`nearest_motions`, `nearest_others` or a row of
+/// `knn_graph`) with the same k or more, among disjoint candidates. @pre no clip in two parts.
+/// @param k the neighbours kept.
+/// @par Complexity O(P log P) for the P neighbours of the parts.
+inline Nearest_motions merge_nearest(std::span<const Nearest_motions> parts, std::size_t k) {
+  Nearest_motions merged;
+  for (const Nearest_motions& part : parts) {
+    merged.neighbours.insert(merged.neighbours.end(), part.neighbours.begin(), part.neighbours.end());
+    merged.pruning += part.pruning;
+  }
+  std::sort(merged.neighbours.begin(), merged.neighbours.end(), internal::ranks_before);
+  if (merged.neighbours.size() > k) merged.neighbours.resize(k);
+  return merged;
+}
+
+/// @brief A tile of the similarity matrix of `collection`'s clips under `policy` (default the
+/// default policy): entry (a, b) is entry (rows.begin + a, columns.begin + b) of
+/// `similarity_matrix(collection)`, bit for bit; entry (i, j) is `policy.compare(clip min(i, j),
+/// clip max(i, j)).value`.
+///
+/// A tile is the unit of work a cluster hands out: the tiles of a partition of the rows and of the
+/// columns make up the matrix, and since it is symmetric the tiles on and above the diagonal
+/// suffice. A pair whose two entries are in the tile is aligned once.
+/// @param collection a `MotionCollection` described with `policy`'s options.
+/// @param rows, columns the tile's clips. @pre both end at most at `collection.size()` (checked).
+/// @param policy the scale and alignment of the values (default: the default policy's); no window.
+/// @param progress one step a pair aligned (see `Progress`); default none.
+/// @param threads the threads (default 0: `default_threads()`); the values do not depend on it.
+/// @throws invalid_input when `rows` or `columns` are not blocks of the collection, or when `policy`
+/// has a window; cancelled as `similarity_matrix`.
+/// @par Complexity one value pass (`alignment::Dtw::mean_cost`, O(n m W)) per pair of the tile,
+/// counted once when both its entries are in it; O(max rows) memory per thread beyond the tile.
+/// @par Example
+/// @include knn_tiles.cpp
+template <MotionCollection C>
+Eigen::MatrixXd similarity_tile(const C& collection, Clip_range rows, Clip_range columns,
+                                const Motion_signature_similarity<>& policy = {}, const Progress& progress = {},
+                                int threads = 0) {
+  internal::check_range(collection, rows, "similarity_tile", "rows");
+  internal::check_range(collection, columns, "similarity_tile", "columns");
+  Eigen::MatrixXd values(Eigen::Index(rows.size()), Eigen::Index(columns.size()));
+  if (values.size() == 0) return values;
+  const double unit = internal::search_unit(policy, collection.view(rows.begin).width, "similarity_tile");
+  // Entry (i, j) is aligned unless it is the mirror, below the diagonal, of an entry of the tile.
+  const auto mirrored = [&](std::size_t i, std::size_t j) { return j < i && rows.contains(j) && columns.contains(i); };
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t i = rows.begin; i < rows.end; ++i)
+    for (std::size_t j = columns.begin; j < columns.end; ++j)
+      if (!mirrored(i, j)) pairs.emplace_back(i, j);
+  const auto at = [&](std::size_t i, std::size_t j) -> double& {
+    return values(Eigen::Index(i - rows.begin), Eigen::Index(j - columns.begin));
+  };
+  deformseg::internal::parallel_for_reporting(pairs.size(), threads, progress, 0, pairs.size(), [&](std::size_t p) {
+    const auto [i, j] = pairs[p];
+    Pruning_report unused;
+    at(i, j) = *internal::aligned_value(collection.view(std::min(i, j)), collection.view(std::max(i, j)), unit, {},
+                                        {}, unused);
   });
-  return graph;
+  for (std::size_t i = rows.begin; i < rows.end; ++i)
+    for (std::size_t j = columns.begin; j < columns.end; ++j)
+      if (mirrored(i, j)) at(i, j) = at(j, i);
+  return values;
 }
 
 /// @brief The similarity of every pair of `collection`'s clips under `policy` (default the default
 /// policy): entry (i, j) and (j, i), i <= j, is `policy.compare(clip i, clip j).value`, bit for
-/// bit the matrix `similarity_matrix` gives for the animations the clips were described from.
+/// bit the matrix `similarity_matrix` gives for the animations the clips were described from; the
+/// one tile `similarity_tile(collection, all_clips(collection), all_clips(collection))`.
 /// @param collection a `MotionCollection` described with `policy`'s options.
 /// @param policy the scale and alignment of the values (default: the default policy's); no window.
 /// @param progress one step a pair i <= j (see `Progress`); default none.
@@ -410,22 +521,7 @@ std::vector<Nearest_motions> knn_graph(const C& collection, const Nearest_motion
 template <MotionCollection C>
 Eigen::MatrixXd similarity_matrix(const C& collection, const Motion_signature_similarity<>& policy = {},
                                   const Progress& progress = {}) {
-  const std::size_t n = collection.size();
-  const auto size = Eigen::Index(n);
-  Eigen::MatrixXd values(size, size);
-  if (n == 0) return values;
-  const double unit = internal::search_unit(policy, collection.view(0).width, "similarity_matrix");
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  pairs.reserve(n * (n + 1) / 2);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i; j < n; ++j) pairs.emplace_back(i, j);
-  deformseg::internal::parallel_for_reporting(pairs.size(), 0, progress, 0, pairs.size(), [&](std::size_t p) {
-    const auto [i, j] = pairs[p];
-    Pruning_report unused;
-    const double v = *internal::aligned_value(collection.view(i), collection.view(j), unit, {}, {}, unused);
-    values(Eigen::Index(i), Eigen::Index(j)) = values(Eigen::Index(j), Eigen::Index(i)) = v;
-  });
-  return values;
+  return similarity_tile(collection, all_clips(collection), all_clips(collection), policy, progress);
 }
 
 }  // namespace deformseg::similarity
