@@ -511,6 +511,58 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
   return report;
 }
 
+Description_plan plan_description(const std::string& folder, const std::vector<Clip_source>& clips,
+                                  const Input_options& options, const similarity::Default_similarity& policy,
+                                  bool hash) {
+  std::error_code error;
+  const bool exists = std::filesystem::exists(std::filesystem::path(folder) / "store.json", error);
+  const io::Motion_store store = exists ? io::Motion_store::open(folder) : io::Motion_store{};
+  if (exists && nlohmann::json::parse(store.description()) != nlohmann::json::parse(store_description(policy)))
+    throw invalid_input("the store's clips were described with other options (deformseg store info " + folder +
+                            " gives them) than " + store_description(policy),
+                        {.file = folder});
+  Description_plan plan;
+  std::vector<io::Store_record> records(clips.size());
+  plan.order = clips_to_describe(clips, options, hash, store, records, plan.report);
+  plan.report.clips = store.size();
+  return plan;
+}
+
+Describe_report merge_stores(const std::string& folder, const std::vector<std::string>& parts,
+                             const std::function<void(const std::string&)>& say) {
+  Describe_report report;
+  if (parts.empty()) {
+    std::error_code error;
+    if (std::filesystem::exists(std::filesystem::path(folder) / "store.json", error))
+      report.clips = io::Motion_store::open(folder).size();
+    return report;
+  }
+  const io::Motion_store first = io::Motion_store::open(parts.front());
+  io::Store_append append(folder, first.description(), first.summary_width(), first.summary_layout());
+  for (const std::string& name : parts) {
+    const io::Motion_store part = io::Motion_store::open(name);
+    if (part.description() != first.description() || part.summary_layout() != first.summary_layout())
+      throw invalid_input("this part's clips were described with other options than " + parts.front() + "'s",
+                          {.file = name});
+    say("merging " + std::to_string(part.size()) + " clip(s) of " + name);
+    for (std::size_t i = 0; i < part.size(); ++i) {
+      const io::Store_record record = part.record(i);
+      const std::vector<std::uint32_t> frames(part.frames(i).begin(), part.frames(i).end());
+      const std::string clip_name = stored_clip_name(part, i);
+      if (const std::optional<std::size_t> at = append.store().find(record.path, record.clip)) {
+        append.replace(*at, record, part.view(i), frames, part.summary(i));
+        report.redescribed.push_back(clip_name);
+      } else {
+        append.add(record, part.view(i), frames, part.summary(i));
+        report.described.push_back(clip_name);
+      }
+    }
+  }
+  append.commit();
+  report.clips = append.size();
+  return report;
+}
+
 std::string stored_clip_name(const io::Motion_store& store, std::size_t i) {
   const io::Store_record record = store.record(i);
   return record.clip.empty() ? record.path : record.path + "#" + record.clip;

@@ -112,6 +112,35 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
                                     const Input_options& options, const similarity::Default_similarity& policy,
                                     bool hash, const std::function<void(const std::string&)>& say);
 
+/// What describing `clips` into a store would do, before any is described.
+struct Description_plan {
+  /// The indices in `clips` of those to describe, in the order they are appended (a file's
+  /// together, files in the order of their first clips).
+  std::vector<std::size_t> order;
+  /// `skipped` filled (the unchanged clips), `clips` the store's count now.
+  Describe_report report;
+};
+
+/// Which of `clips`, read with `options`, the store in `folder` lacks or holds changed (see
+/// `unchanged`): what `describe_into_store` would describe, in its order. A missing folder is an
+/// empty store.
+/// @throws invalid_input naming the store when it cannot be opened or holds clips described with
+/// other options than `policy`'s, or the file whose record cannot be made.
+Description_plan plan_description(const std::string& folder, const std::vector<Clip_source>& clips,
+                                  const Input_options& options, const similarity::Default_similarity& policy,
+                                  bool hash);
+
+/// Appends the clips of the stores `parts`, in their order, into the store in `folder` (made when
+/// missing) as they are: their records, signatures, frames and summaries; a clip the store holds
+/// already is replaced at its index. One commit at the end: the store is the merge of stores
+/// described apart (a cluster's workers each describe a part; one writer merges them). `say` gets
+/// a line per part.
+/// @throws invalid_input naming the part or the store when a part cannot be opened, the parts'
+/// descriptions differ from each other or from the store's, or the store cannot be written; the
+/// store is then as it was.
+Describe_report merge_stores(const std::string& folder, const std::vector<std::string>& parts,
+                             const std::function<void(const std::string&)>& say);
+
 /// A store's clip `i` named for reports: "FILE" or "FILE#CLIP".
 std::string stored_clip_name(const io::Motion_store& store, std::size_t i);
 

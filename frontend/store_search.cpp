@@ -37,6 +37,7 @@ similarity::Motion_signature_description Store_search::describe(const mesh::Surf
 similarity::Nearest_motions Store_search::nearest(const mesh::Surface_mesh_animation& query,
                                                   const similarity::Nearest_motions_options& options) const {
   if (size() == 0) throw invalid_input("the store holds no clip", {.file = store().folder().string()});
+  check_range(options.candidates, "candidates");
   const similarity::Motion_signature_description description = describe(query);
   return similarity::nearest_motions(similarity::view(description), clips_, options, policy_);
 }
@@ -46,6 +47,7 @@ similarity::Nearest_motions Store_search::nearest_to_clip(std::size_t i,
   if (i >= size())
     throw invalid_input("no clip " + std::to_string(i) + ": the store holds " + std::to_string(size()) + " clips",
                         {.file = store().folder().string()});
+  check_range(options.candidates, "candidates");
   return similarity::nearest_others(clips_, i, options, policy_);
 }
 
@@ -56,8 +58,25 @@ std::vector<similarity::Clip_match> Store_search::find(const mesh::Surface_mesh_
 }
 
 std::vector<similarity::Nearest_motions> Store_search::knn_graph(
-    const similarity::Nearest_motions_options& options) const {
-  return similarity::knn_graph(clips_, options, policy_);
+    const similarity::Nearest_motions_options& options, std::optional<similarity::Clip_range> rows) const {
+  check_range(rows, "rows");
+  check_range(options.candidates, "candidates");
+  return similarity::knn_graph(clips_, rows.value_or(similarity::all_clips(clips_)), options, policy_);
+}
+
+Eigen::MatrixXd Store_search::tile(similarity::Clip_range rows, similarity::Clip_range columns,
+                                   const Progress& progress, int threads) const {
+  check_range(rows, "rows");
+  check_range(columns, "columns");
+  return similarity::similarity_tile(clips_, rows, columns, policy_, progress, threads);
+}
+
+void Store_search::check_range(std::optional<similarity::Clip_range> range, const char* what) const {
+  if (range && (range->begin > range->end || range->end > size()))
+    throw invalid_input(std::string("the ") + what + " [" + std::to_string(range->begin) + ", " +
+                            std::to_string(range->end) + ") are not clips of the store, which holds " +
+                            std::to_string(size()),
+                        {.file = store().folder().string()});
 }
 
 Eigen::MatrixXd Store_search::matrix(const Progress& progress) const {

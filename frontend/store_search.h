@@ -36,15 +36,19 @@ class Store_search {
   /// `query` described as the store's clips were.
   similarity::Motion_signature_description describe(const mesh::Surface_mesh_animation& query) const;
   /// The `options.k` clips nearest to `query` (`similarity::nearest_motions`).
-  /// @throws invalid_input when the store holds no clip.
+  /// @throws invalid_input naming the store when it holds no clip, or when the candidates are not a
+  /// block of its clips.
   similarity::Nearest_motions nearest(const mesh::Surface_mesh_animation& query,
                                       const similarity::Nearest_motions_options& options) const;
   /// The `options.k` clips nearest to clip `i` of the store, itself left out
   /// (`similarity::nearest_others`): row `i` of `knn_graph`, the same neighbours, values and counts.
   /// @throws invalid_input naming the index when the store has no clip `i`.
   similarity::Nearest_motions nearest_to_clip(std::size_t i, const similarity::Nearest_motions_options& options) const;
-  /// Every clip's `options.k` nearest others (`similarity::knn_graph`).
-  std::vector<similarity::Nearest_motions> knn_graph(const similarity::Nearest_motions_options& options) const;
+  /// The `options.k` nearest others of each clip of `rows` (default all: the whole graph), among
+  /// `options.candidates` (`similarity::knn_graph`).
+  /// @throws invalid_input naming the store when `rows` or the candidates are not blocks of its clips.
+  std::vector<similarity::Nearest_motions> knn_graph(const similarity::Nearest_motions_options& options,
+                                                     std::optional<similarity::Clip_range> rows = {}) const;
   /// Where `query` occurs in the store (`similarity::find_motion_in_collection`): the best
   /// `options.count` non-overlapping windows over all its clips, each in its clip's stored frames,
   /// valued on the descriptions as stored (1 minus the mean dissimilarity along the warping path).
@@ -53,6 +57,10 @@ class Store_search {
                                            const similarity::Find_in_collection_options& options) const;
   /// The similarity of every pair of the store's clips (`similarity::similarity_matrix`).
   Eigen::MatrixXd matrix(const Progress& progress = {}) const;
+  /// A tile of the matrix: rows `rows`, columns `columns` (`similarity::similarity_tile`).
+  /// @throws invalid_input naming the store when `rows` or `columns` are not blocks of its clips.
+  Eigen::MatrixXd tile(similarity::Clip_range rows, similarity::Clip_range columns, const Progress& progress = {},
+                       int threads = 0) const;
   /// The similarity of every pair of clips `indices` of the store, in that order.
   /// @pre every index is below `size()`.
   Eigen::MatrixXd matrix(std::vector<std::size_t> indices, const Progress& progress = {}) const;
@@ -71,6 +79,9 @@ class Store_search {
                                     Front front) const;
 
  private:
+  // Refuses, naming the store, a block (`what`: rows, columns, candidates) that is not one of its clips.
+  void check_range(std::optional<similarity::Clip_range> range, const char* what) const;
+
   io::Stored_motions clips_;
   similarity::Default_similarity policy_;
 };

@@ -103,6 +103,38 @@ py::dict describe_to_store(const py::object& inputs, const std::filesystem::path
                   "redescribed"_a = report.redescribed, "skipped"_a = report.skipped, "poses_left_out"_a = poses);
 }
 
+// What `describe` of deformseg.distributed hands out: the clips describe_to_store would describe, in
+// its order, named as inputs name them ('FILE' or 'FILE#CLIP'), and those it would skip.
+py::dict describe_plan(const py::object& inputs, const std::filesystem::path& store,
+                       const frontend::Input_options& options, const similarity::Policy_choice& choice, bool hash) {
+  const std::vector<std::string> paths = input_paths(inputs);
+  const similarity::Default_similarity policy = frontend::store_policy(choice, frontend::Front::python);
+  frontend::check(options, frontend::Front::python);
+  frontend::check_clip_applies(paths, options, frontend::Front::python);
+  std::vector<std::string> poses, described;
+  frontend::Description_plan plan;
+  {
+    Interruptible_call call;
+    const std::vector<frontend::Clip_source> clips = frontend::clip_sources(paths, options, poses);
+    plan = frontend::plan_description(store.string(), clips, options, policy, hash);
+    for (const std::size_t i : plan.order) described.push_back(clips[i].name());
+  }
+  return py::dict("store"_a = store.string(), "clips"_a = plan.report.clips, "describe"_a = described,
+                  "skipped"_a = plan.report.skipped, "poses_left_out"_a = poses);
+}
+
+py::dict merge_stores(const std::filesystem::path& store, const std::vector<std::filesystem::path>& parts) {
+  std::vector<std::string> folders;
+  for (const auto& part : parts) folders.push_back(part.string());
+  frontend::Describe_report report;
+  {
+    Interruptible_call call;
+    report = frontend::merge_stores(store.string(), folders, [](const std::string&) {});
+  }
+  return py::dict("store"_a = store.string(), "clips"_a = report.clips, "described"_a = report.described,
+                  "redescribed"_a = report.redescribed);
+}
+
 Opened_store open_store_at(const std::filesystem::path& folder, const std::string& verify) {
   const io::Verify how = verify_of(verify);
   Interruptible_call call;
@@ -121,6 +153,20 @@ std::size_t clip_index(const Opened_store& s, long long i) {
 void check_search(std::size_t k, int threads) {
   if (k == 0) refuse("k must be at least 1");
   thread_count(threads, "threads");
+}
+
+// A block of the store's clips given as a Python range of step 1 (None: all); the store checks
+// that it holds them.
+std::optional<similarity::Clip_range> clip_range(const py::object& range, const char* name) {
+  if (range.is_none()) return std::nullopt;
+  if (!py::isinstance(range, py::module_::import("builtins").attr("range")))
+    throw py::type_error(std::string(name) + ": expected a range of clips (range(begin, end)) or None, got " +
+                         type_name(range));
+  const long long begin = range.attr("start").cast<long long>(), end = range.attr("stop").cast<long long>();
+  if (range.attr("step").cast<long long>() != 1 || begin < 0 || end < begin)
+    refuse(std::string(name) + ": expected range(begin, end) with 0 <= begin <= end and step 1, got " +
+           py::repr(range).cast<std::string>());
+  return similarity::Clip_range{std::size_t(begin), std::size_t(end)};
 }
 
 py::dict record_dict(const Opened_store& s, std::size_t i) {
@@ -150,24 +196,30 @@ py::dict nearest_dict(const Opened_store& s, const similarity::Nearest_motions& 
   return py::dict("neighbours"_a = neighbours, "pruning"_a = pruning_dict(found.pruning));
 }
 
-py::dict search(const Opened_store& s, const Animation& query, std::size_t k, int threads) {
+py::dict search(const Opened_store& s, const Animation& query, std::size_t k, const py::object& candidates,
+                int threads) {
   check_search(k, threads);
   require_motion(query.mesh, "query");
+  const similarity::Nearest_motions_options options{.k = k, .threads = threads,
+                                                    .candidates = clip_range(candidates, "candidates")};
   similarity::Nearest_motions found;
   {
     Interruptible_call call;
-    found = s.search.nearest(query.mesh, {.k = k, .threads = threads});
+    found = s.search.nearest(query.mesh, options);
   }
   return nearest_dict(s, found);
 }
 
-py::dict nearest_to_clip(const Opened_store& s, long long i, std::size_t k, int threads) {
+py::dict nearest_to_clip(const Opened_store& s, long long i, std::size_t k, const py::object& candidates,
+                         int threads) {
   check_search(k, threads);
   const std::size_t clip = clip_index(s, i);
+  const similarity::Nearest_motions_options options{.k = k, .threads = threads,
+                                                    .candidates = clip_range(candidates, "candidates")};
   similarity::Nearest_motions found;
   {
     Interruptible_call call;
-    found = s.search.nearest_to_clip(clip, {.k = k, .threads = threads});
+    found = s.search.nearest_to_clip(clip, options);
   }
   return nearest_dict(s, found);
 }
@@ -195,12 +247,16 @@ py::list find_in_store(const Opened_store& s, const Animation& query, std::size_
   return out;
 }
 
-py::list knn_graph(const Opened_store& s, std::size_t k, int threads) {
+py::list knn_graph(const Opened_store& s, std::size_t k, const py::object& rows, const py::object& candidates,
+                   int threads) {
   check_search(k, threads);
+  const similarity::Nearest_motions_options options{.k = k, .threads = threads,
+                                                    .candidates = clip_range(candidates, "candidates")};
+  const std::optional<similarity::Clip_range> block = clip_range(rows, "rows");
   std::vector<similarity::Nearest_motions> graph;
   {
     Interruptible_call call;
-    graph = s.search.knn_graph({.k = k, .threads = threads});
+    graph = s.search.knn_graph(options, block);
   }
   py::list out;
   for (const similarity::Nearest_motions& node : graph) out.append(nearest_dict(s, node));
@@ -238,6 +294,32 @@ Opened_store store_of_state(const py::object& state) {
 
 }  // namespace
 
+namespace {
+
+// An Eigen matrix as a NumPy float64 array that owns it (column-major, as Eigen keeps it).
+py::array array_of(Eigen::MatrixXd m) {
+  const auto rows = py::ssize_t(m.rows()), columns = py::ssize_t(m.cols()), item = py::ssize_t(sizeof(double));
+  return owning(std::move(m), +[](const Eigen::MatrixXd& x) { return x.data(); }, {rows, columns},
+                {item, rows * item});
+}
+
+// The store's matrix, or its tile of `rows` and `columns` when either is given (the other then all).
+py::array matrix_or_tile(const Opened_store& s, const py::object& rows, const py::object& columns,
+                         const std::optional<py::function>& progress, int threads) {
+  thread_count(threads, "threads");
+  const std::optional<similarity::Clip_range> r = clip_range(rows, "rows"), c = clip_range(columns, "columns");
+  if (!r && !c) return stored_similarity_matrix(s, {}, progress_of(progress));
+  const similarity::Clip_range all = similarity::all_clips(s.search.clips());
+  Eigen::MatrixXd m;
+  {
+    Interruptible_call call;
+    m = s.search.tile(r.value_or(all), c.value_or(all), progress_of(progress), threads);
+  }
+  return array_of(std::move(m));
+}
+
+}  // namespace
+
 py::array stored_similarity_matrix(const Opened_store& store, const similarity::Policy_choice& choice,
                                    const Progress& progress) {
   store.search.check_policy(choice, frontend::Front::python);
@@ -246,8 +328,7 @@ py::array stored_similarity_matrix(const Opened_store& store, const similarity::
     Interruptible_call call;
     m = store.search.matrix(progress);
   }
-  const auto n = py::ssize_t(m.rows()), item = py::ssize_t(sizeof(double));
-  return owning(std::move(m), +[](const Eigen::MatrixXd& x) { return x.data(); }, {n, n}, {item, n * item});
+  return array_of(std::move(m));
 }
 
 evaluation::Retrieval_scores evaluate_stored(const Opened_store& store, const std::string& labels) {
@@ -319,7 +400,7 @@ readable while another process appends to it; this object goes on showing what i
       .def("frames", &frames, "i"_a,
            "Clip i's frame numbers, one per row of its signatures: an (R,) uint32 read-only view (no copy). "
            "Complexity O(1).")
-      .def("search", &search, "query"_a, "k"_a = 10, py::kw_only(), "threads"_a = 0,
+      .def("search", &search, "query"_a, "k"_a = 10, py::kw_only(), "candidates"_a = py::none(), "threads"_a = 0,
            R"doc(The k clips of the store that move most like the Animation `query` (the tool's
 `search`): `query` described as the clips were, then searched exactly, with lower bounds and
 early abandoning (chapter 14). Returns a dict: neighbours, a list of dicts of rank (from 1), index,
@@ -327,13 +408,17 @@ name, path, clip and value (similarity(query, clip).value under the store's poli
 similarity_matrix gives it), best first, ties by index; and pruning, a dict of the counts
 candidates, pruned_by_summary, pruned_by_rows, abandoned, aligned, rows_aligned, rows_abandoned
 and pruned_share (the share of candidates never aligned whole). k (default 10): at most the
-store's size come back. threads (default 0: all): the result and the counts do not depend on it.
+store's size come back. candidates (default None: all): a range(begin, end) of the store's clips,
+the only ones searched (deformseg.distributed merges the searches of blocks). threads (default 0:
+all): the result and the counts do not depend on it.
 Raises InvalidInput for k = 0, a query of one frame, an empty store. Complexity one description
 of the query, at worst N alignments. Releases the GIL.)doc")
-      .def("nearest_to_clip", &nearest_to_clip, "i"_a, "k"_a = 10, py::kw_only(), "threads"_a = 0,
+      .def("nearest_to_clip", &nearest_to_clip, "i"_a, "k"_a = 10, py::kw_only(), "candidates"_a = py::none(),
+           "threads"_a = 0,
            "The k clips nearest to clip i of the store, itself left out (the tool's `search --clip-index I`): "
-           "a dict as `search` gives, default k 10, threads 0 (all). Raises InvalidInput naming the store for "
-           "an index out of range. Complexity at worst N alignments. Releases the GIL.")
+           "a dict as `search` gives, default k 10, candidates None (all; or a range of clips, as search's), "
+           "threads 0 (all). Raises InvalidInput naming the store for an index or a range out of range. "
+           "Complexity at worst N alignments. Releases the GIL.")
       .def("find", &find_in_store, "query"_a, "count"_a = 3, py::kw_only(), "shortest"_a = 0.5, "threads"_a = 0,
            R"doc(Where the Animation `query` occurs in the store's clips (the tool's `find --store`):
 at most `count` (default 3) non-overlapping windows over all the clips, best first (ties by clip
@@ -345,22 +430,40 @@ shortest (default 0.5): a window spans from `shortest` to 1 / `shortest` times t
 threads (default 0: all): the result does not depend on it. Raises InvalidInput for count = 0, a
 shortest outside (0, 1], a query of one frame, an empty store. Complexity O(Tq Tc / shortest^2)
 per clip of Tc rows. Releases the GIL.)doc")
-      .def("knn_graph", &knn_graph, "k"_a = 10, py::kw_only(), "threads"_a = 0,
+      .def("knn_graph", &knn_graph, "k"_a = 10, py::kw_only(), "rows"_a = py::none(), "candidates"_a = py::none(),
+           "threads"_a = 0,
            "Every clip's k nearest other clips (the tool's `knn-graph`): a list, per clip in the store's "
-           "order, of dicts as `search` gives (default k 10, threads 0: all). Complexity at worst N^2 "
-           "alignments, in practice far fewer (chapter 14). Releases the GIL.")
-      .def(
-          "matrix",
-          [](const Opened_store& s, const std::optional<py::function>& progress) {
-            return stored_similarity_matrix(s, {}, progress_of(progress));
-          },
-          py::kw_only(), "progress"_a = py::none(),
-          "The similarity of every pair of the store's clips as described: an (N, N) float64 array, as "
-          "similarity_matrix(store) and the tool's `matrix --store` give it. progress (default None): as "
-          "similarity_matrix's. Complexity N (N + 1) / 2 alignments. Releases the GIL.")
+           "order, of dicts as `search` gives (default k 10, threads 0: all). rows (default None: all): a "
+           "range(begin, end) of clips, whose rows alone are found (the graph is the concatenation of its "
+           "blocks of rows); candidates (default None: all): a range of the clips searched, as search's. "
+           "Complexity at worst N^2 alignments, in practice far fewer (chapter 14). Releases the GIL.")
+      .def("matrix", &matrix_or_tile, py::kw_only(), "rows"_a = py::none(), "columns"_a = py::none(),
+           "progress"_a = py::none(), "threads"_a = 0,
+           "The similarity of every pair of the store's clips as described: an (N, N) float64 array, as "
+           "similarity_matrix(store) and the tool's `matrix --store` give it. rows, columns (default None: "
+           "all): ranges of clips, range(begin, end), for a tile of the matrix, bit for bit its block (a pair "
+           "whose two entries are in the tile is aligned once). progress (default None): as "
+           "similarity_matrix's, a step a pair. threads (default 0: all; the whole matrix takes the default "
+           "threads): the values do not depend on it. Complexity a value pass per pair, N (N + 1) / 2 for the "
+           "whole matrix. Releases the GIL.")
       .def("__repr__", [](const Opened_store& s) {
         return "<deformseg.MotionStore " + folder_of(s) + ": " + std::to_string(s.search.size()) + " clips>";
       });
+
+  // deformseg.distributed's halves of describe_to_store: the plan on the client, the merge of the
+  // workers' part stores by one writer.
+  define_function<describe_table, Types<const py::object&, const std::filesystem::path&>, Types<bool>,
+                  frontend::Input_options, similarity::Policy_choice>(
+      m, "_describe_plan",
+      "The clips describe_to_store(inputs, store, ...) would describe, in its order, and those it would skip: "
+      "a dict of store, clips (the store's count now), describe and skipped (the clips' names), "
+      "poses_left_out. Raises InvalidInput as describe_to_store. Releases the GIL.",
+      &describe_plan, std::tuple{py::arg("inputs"), py::arg("store"), py::kw_only()},
+      std::tuple{py::arg_v("hash", false)});
+  m.def("_merge_stores", &merge_stores, "store"_a, "parts"_a,
+        "Appends the clips of the stores `parts`, in order, into `store` (a clip it holds already replaced at "
+        "its index), in one commit: a dict of store, clips, described and redescribed. Raises InvalidInput "
+        "naming the part or the store; the store is then as it was. Releases the GIL.");
 
   m.def("open_store", &open_store_at, "folder"_a, "verify"_a = "structure",
         R"doc(Opens the motion store in `folder` (made by describe_to_store or `deformseg describe --store`)
