@@ -1,0 +1,447 @@
+"""A motion library on a Dask cluster: describe clips into a store, its similarity matrix, its
+k-nearest-neighbour graph and searches, as tasks on ``dask.distributed`` workers.
+
+Each function takes a ``distributed.Client`` (``client=None``: a ``LocalCluster`` of one worker
+process per core, started for the call and closed after it) and gives exactly what the in-process
+functions give, bit for bit, whatever the number of workers and the sizes of the tasks: a task is a
+tile of the matrix (``MotionStore.matrix(rows=..., columns=...)``), a block of rows of the graph
+(``MotionStore.knn_graph(rows=..., candidates=...)``), a block of queries, or a batch of clips to
+describe. Workers open the store by its path, so the store and the clips' files must be where
+every worker reads them (one machine, or a shared filesystem), and cache it per process.
+
+Describing: the client plans which clips to describe (those the store lacks or holds changed),
+each task describes a batch into a part store of its own, and the client, the one writer, merges
+the parts into the store in the clips' order in one commit: the store is the one
+``describe_to_store`` writes. A task rerun after a worker died writes a new part; the one its
+future returns is merged.
+
+The task keys start with ``deformseg-describe``, ``deformseg-matrix``, ``deformseg-knn`` and
+``deformseg-search``, as the dashboard's task stream shows them; ``progress=True`` shows
+``distributed.progress``. Chapter 15 of the manual gives the recipes for Slurm and Kubernetes and
+how to size the tasks.
+"""
+import contextlib
+import dataclasses
+import functools
+import json
+import math
+import os
+import shutil
+import uuid
+
+import numpy as np
+
+try:
+    import distributed as _dask
+except ImportError as error:  # pragma: no cover - the message is the point
+    raise ImportError("deformseg.distributed needs Dask's distributed package (Debian: python3-distributed, "
+                      "pip: distributed)") from error
+
+from . import _deformseg
+from ._deformseg import InvalidInput
+
+__all__ = ["KnnGraph", "TiledMatrix", "describe", "knn_graph", "matrix", "open_matrix", "search"]
+
+_PRUNING = ("candidates", "pruned_by_summary", "pruned_by_rows", "abandoned", "aligned", "rows_aligned",
+            "rows_abandoned")
+_MATRIX_FORMAT = "deformseg-matrix-tiles"
+
+
+# ---- the cluster ---------------------------------------------------------------------------------
+
+@contextlib.contextmanager
+def _client_of(client):
+    """`client`, or a LocalCluster of one single-threaded worker process per core for the call."""
+    if client is not None:
+        yield client
+        return
+    with _dask.LocalCluster(n_workers=os.cpu_count() or 1, threads_per_worker=1, processes=True,
+                            dashboard_address=":0") as cluster, _dask.Client(cluster) as local:
+        yield local
+
+
+def _threads(client):
+    """The worker threads of the cluster, at least 1."""
+    return max(1, sum(client.nthreads().values()))
+
+
+def _run(client, futures, progress):
+    """The futures' results in their order; on the first error the others are cancelled and it is raised."""
+    if progress:
+        _dask.progress(futures)
+    try:
+        return client.gather(futures)
+    except BaseException:
+        client.cancel(futures)
+        raise
+
+
+def _keys(kind, count):
+    """Task keys `deformseg-KIND-RUN-I`: named for the dashboard, unique to the run."""
+    run = uuid.uuid4().hex[:12]
+    return [f"deformseg-{kind}-{run}-{i}" for i in range(count)]
+
+
+def _blocks(n, size):
+    """The ranges of `size` clips (the last one shorter) that cover n clips."""
+    return [range(b, min(n, b + size)) for b in range(0, n, size)]
+
+
+def _checked_size(value, name):
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, int) or value < 1:
+        raise ValueError(f"{name} must be a positive integer or None, got {value!r}")
+    return value
+
+
+# ---- the store, on the workers -------------------------------------------------------------------
+
+def _folder_of(store):
+    """A store (a MotionStore or its folder) as an absolute folder, which every worker can open."""
+    folder = store.folder if isinstance(store, _deformseg.MotionStore) else os.fspath(store)
+    return os.path.abspath(folder)
+
+
+@functools.lru_cache(maxsize=4)
+def _opened(folder, stamp):
+    del stamp  # part of the key: a store committed again since is opened again
+    return _deformseg.open_store(folder)
+
+
+def _store(folder, generation):
+    """The store in `folder`, opened once per worker process and commit; refused when it is no longer
+    the generation the run started on."""
+    manifest = os.stat(os.path.join(folder, "store.json"))
+    store = _opened(folder, (manifest.st_mtime_ns, manifest.st_size, manifest.st_ino))
+    if store.generation != generation:
+        raise InvalidInput(f"{folder}: the store was appended to during the run (generation {store.generation}, "
+                           f"the run started at {generation}); run it again")
+    return store
+
+
+def _opened_on_client(store):
+    folder = _folder_of(store)
+    opened = _deformseg.open_store(folder)
+    return folder, opened
+
+
+# ---- describing ----------------------------------------------------------------------------------
+
+def _describe_batch(names, root, options, on_error):
+    """Task: describes clips `names` into a new part store below `root`; returns (its folder or None,
+    the clips that could not be described with their errors, when `on_error` is 'skip')."""
+    part = os.path.join(root, uuid.uuid4().hex)
+    try:
+        _deformseg.describe_to_store(names, part, threads=1, **options)
+        return part, []
+    except InvalidInput:
+        if on_error == "raise":
+            shutil.rmtree(part, ignore_errors=True)
+            raise
+    shutil.rmtree(part, ignore_errors=True)  # one commit per batch: nothing of it was written
+    failed = []
+    for name in names:
+        try:
+            _deformseg.describe_to_store([name], part, threads=1, **options)
+        except InvalidInput as error:
+            failed.append({"name": name, "error": str(error)})
+    return (part if len(failed) < len(names) else None), failed
+
+
+def describe(inputs, store, client=None, *, clips_per_task=None, on_error="raise", parts=None, progress=False,
+             hash=False, **options):
+    """Describes clips into the motion store in the folder `store` on the cluster, as
+    describe_to_store(inputs, store, hash=hash, **options) does: the same store, byte for byte.
+
+    inputs, options (fps, topology, triangulate, weld, refuse_defects, clip, up) and hash are
+    describe_to_store's; the clips to describe are planned on the client (new and changed ones,
+    unchanged ones skipped), described in batches of `clips_per_task` (default: about four batches
+    per worker thread, at most 32 clips) each into a part store of its own below `parts` (default
+    a hidden folder beside the store, removed after), then merged into the store by the client, the
+    one writer, in one commit. on_error: 'raise' (default) stops at the first clip that cannot be
+    read or described, raising InvalidInput naming its file, and leaves the store as it was; 'skip'
+    leaves such clips out and lists them. Returns describe_to_store's dict, with 'failed': a list
+    of dicts of name and error.
+    """
+    if on_error not in ("raise", "skip"):
+        raise ValueError(f"on_error must be 'raise' or 'skip', got {on_error!r}")
+    clips_per_task = _checked_size(clips_per_task, "clips_per_task")
+    if "threads" in options:
+        raise TypeError("describe: the workers' threads are the cluster's (each task describes on one)")
+    folder = _folder_of(store)
+    plan = _deformseg._describe_plan(inputs, folder, hash=hash, **options)
+    worker_options = {name: value for name, value in options.items() if name != "clip"}
+    worker_options["hash"] = hash
+    names = plan["describe"]
+    root = os.path.join(os.path.abspath(parts) if parts else os.path.dirname(folder),
+                        f".{os.path.basename(folder)}.parts-{uuid.uuid4().hex[:12]}")
+    failed, merged = [], {"clips": plan["clips"], "described": [], "redescribed": []}
+    try:
+        if names:
+            with _client_of(client) as c:
+                size = clips_per_task or max(1, min(32, math.ceil(len(names) / (4 * _threads(c)))))
+                batches = [names[b:b + size] for b in range(0, len(names), size)]
+                keys = _keys("describe", len(batches))
+                futures = [c.submit(_describe_batch, batch, root, worker_options, on_error, key=key)
+                           for batch, key in zip(batches, keys)]
+                results = _run(c, futures, progress)
+            for _, batch_failed in results:
+                failed += batch_failed
+            merged = _deformseg._merge_stores(folder, [part for part, _ in results if part is not None])
+    finally:
+        shutil.rmtree(root, ignore_errors=True)
+    return {"store": folder, "clips": merged["clips"], "described": merged["described"],
+            "redescribed": merged["redescribed"], "skipped": plan["skipped"],
+            "poses_left_out": plan["poses_left_out"], "failed": failed}
+
+
+# ---- the matrix, by tiles ------------------------------------------------------------------------
+
+def _tile_name(rows, columns):
+    return f"tile-{rows.start:09d}-{columns.start:09d}.npy"
+
+
+def _matrix_tile(folder, generation, rows, columns, out):
+    """Task: the tile of `rows` and `columns`, saved into `out` whole or not at all."""
+    values = _store(folder, generation).matrix(rows=rows, columns=columns, threads=1)
+    name = _tile_name(rows, columns)
+    partial = os.path.join(out, f".{name}.{uuid.uuid4().hex}")
+    with open(partial, "wb") as f:
+        np.save(f, values)
+    os.replace(partial, os.path.join(out, name))
+    return name
+
+
+def _default_tile(store, threads):
+    """Tiles of about a second at about 20 microseconds per aligned row pair, and at least four tasks
+    per worker thread."""
+    n = len(store)
+    if n == 0:
+        return 1
+    rows = np.mean([store.signatures(i).shape[0] for i in range(0, n, max(1, n // 256))])
+    by_time = max(1, int(math.sqrt(1.0 / (20e-6 * rows * rows))))
+    by_tasks = max(1, math.ceil(n / math.ceil(math.sqrt(8 * threads))))
+    return min(by_time, by_tasks)
+
+
+def _clear_matrix_folder(out):
+    """Makes `out` ready for a new matrix: created when missing, an earlier matrix's files removed
+    (its manifest first, so that no manifest ever names tiles of two runs); refuses other files."""
+    os.makedirs(out, exist_ok=True)
+    entries = sorted(os.listdir(out))
+    others = [e for e in entries if e != "matrix.json" and not e.startswith(("tile-", ".tile-", ".matrix.json."))]
+    if others:
+        raise InvalidInput(f"{out}: the folder holds files that are not a matrix's ({', '.join(others[:3])}); "
+                           "name an empty folder or an earlier matrix's")
+    for entry in sorted(entries, key=lambda e: e != "matrix.json"):
+        os.remove(os.path.join(out, entry))
+
+
+def matrix(store, client=None, *, out, tile=None, progress=False):
+    """The similarity of every pair of the store's clips, as MotionStore.matrix() gives it, bit for
+    bit, computed by tiles on the cluster and written by the workers into the folder `out` (made
+    when missing; an earlier matrix there is replaced): one .npy file per tile on or above the
+    diagonal, and matrix.json, written last, listing them. Never gathered on the client: read it
+    with the returned TiledMatrix (or open_matrix(out) later). tile (default: tiles of about a
+    second and at least four tasks per worker thread): the clips per side of a tile.
+    """
+    tile = _checked_size(tile, "tile")
+    folder, opened = _opened_on_client(store)
+    n, generation = len(opened), opened.generation
+    out = os.path.abspath(os.fspath(out))
+    _clear_matrix_folder(out)
+    with _client_of(client) as c:
+        size = tile or _default_tile(opened, _threads(c))
+        blocks = _blocks(n, size)
+        pairs = [(r, c_) for i, r in enumerate(blocks) for c_ in blocks[i:]]
+        futures = [c.submit(_matrix_tile, folder, generation, r, c_, out, key=key)
+                   for (r, c_), key in zip(pairs, _keys("matrix", len(pairs)))]
+        names = _run(c, futures, progress)
+    manifest = {"format": _MATRIX_FORMAT, "version": 1, "store": folder, "generation": generation, "clips": n,
+                "tile": size, "tiles": [[r.start, c_.start, name] for (r, c_), name in zip(pairs, names)]}
+    partial = os.path.join(out, f".matrix.json.{uuid.uuid4().hex}")
+    with open(partial, "w") as f:
+        json.dump(manifest, f, indent=1)
+        f.flush()
+        os.fsync(f.fileno())
+    os.replace(partial, os.path.join(out, "matrix.json"))
+    return TiledMatrix(out)
+
+
+class TiledMatrix:
+    """A similarity matrix written by tiles (matrix(..., out=F)), read a block at a time: m[rows,
+    columns] with slices (of step 1) or integers gives a NumPy array, assembled from the tiles it
+    crosses (those below the diagonal as their mirrors' transposes); np.asarray(m) the whole
+    matrix. Tiles are memory-mapped, so a block reads only its bytes."""
+
+    def __init__(self, folder):
+        self.folder = os.path.abspath(os.fspath(folder))
+        path = os.path.join(self.folder, "matrix.json")
+        try:
+            with open(path) as f:
+                manifest = json.load(f)
+        except FileNotFoundError:
+            raise InvalidInput(f"{path}: no matrix here (matrix.json is written last: the run did not finish)")
+        except (OSError, ValueError) as error:
+            raise InvalidInput(f"{path}: not a matrix's manifest: {error}") from None
+        if not isinstance(manifest, dict) or manifest.get("format") != _MATRIX_FORMAT or manifest.get("version") != 1:
+            raise InvalidInput(f"{path}: not a version 1 {_MATRIX_FORMAT} manifest")
+        self.store, self.generation = manifest["store"], manifest["generation"]
+        self.tile, n = manifest["tile"], manifest["clips"]
+        self.shape = (n, n)
+        self._files = {(r, c): name for r, c, name in manifest["tiles"]}
+
+    def __repr__(self):
+        return f"<deformseg.distributed.TiledMatrix {self.folder}: {self.shape[0]} clips, tiles of {self.tile}>"
+
+    def _tile(self, r, c):
+        """The tile whose first row is r and first column c (or its mirror's transpose)."""
+        if r <= c:
+            return np.load(os.path.join(self.folder, self._files[(r, c)]), mmap_mode="r")
+        return self._tile(c, r).T
+
+    def _range(self, key, name):
+        n = self.shape[0]
+        if isinstance(key, (int, np.integer)):
+            if not -n <= key < n:
+                raise IndexError(f"{name} {key} is out of range for {n} clips")
+            key = int(key) % n
+            return range(key, key + 1), True
+        if isinstance(key, slice) and key.step in (None, 1):
+            return range(*key.indices(n))[:], False
+        raise TypeError(f"{name}: expected an integer or a slice of step 1, got {key!r}")
+
+    def __getitem__(self, key):
+        rows, columns = key if isinstance(key, tuple) else (key, slice(None))
+        (rows, drop_row), (columns, drop_column) = self._range(rows, "row"), self._range(columns, "column")
+        out = np.empty((len(rows), len(columns)))
+        t = self.tile
+        for r in range(rows.start // t * t, rows.stop, t) if len(rows) else ():
+            for c in range(columns.start // t * t, columns.stop, t) if len(columns) else ():
+                r0, r1 = max(r, rows.start), min(r + t, rows.stop)
+                c0, c1 = max(c, columns.start), min(c + t, columns.stop)
+                out[r0 - rows.start:r1 - rows.start, c0 - columns.start:c1 - columns.start] = \
+                    self._tile(r, c)[r0 - r:r1 - r, c0 - c:c1 - c]
+        if drop_row:
+            out = out[0]
+        if drop_column:
+            out = out[..., 0]
+        return out
+
+    def __array__(self, dtype=None):
+        whole = self[:, :]
+        return whole if dtype is None else whole.astype(dtype)
+
+
+def open_matrix(folder):
+    """The matrix that matrix(..., out=folder) wrote, as a TiledMatrix. Raises InvalidInput naming
+    the manifest when the folder holds none (the run did not finish) or not one of this format."""
+    return TiledMatrix(folder)
+
+
+# ---- the k-nearest-neighbour graph and searches --------------------------------------------------
+
+@dataclasses.dataclass
+class KnnGraph:
+    """Every clip's k nearest other clips, as arrays: index[i] the clips' indices, value[i] their
+    values (MotionStore.knn_graph's, bit for bit), best first, ties by index; rows with fewer than k
+    (a store of k clips or fewer) padded with -1 and NaN. pruning: the counts of all the searches,
+    summed (with blocks of candidates, each block's search prunes on its own)."""
+    index: np.ndarray
+    value: np.ndarray
+    pruning: dict
+
+    def __len__(self):
+        return len(self.index)
+
+
+def _arrays(found, k):
+    """Searches' results (dicts as search gives) as (index, value, counts) arrays, padded to k."""
+    index = np.full((len(found), k), -1, dtype=np.int64)
+    value = np.full((len(found), k), np.nan)
+    for row, result in enumerate(found):
+        for column, neighbour in enumerate(result["neighbours"]):
+            index[row, column], value[row, column] = neighbour["index"], neighbour["value"]
+    counts = np.array([[result["pruning"][name] for name in _PRUNING] for result in found], dtype=np.int64)
+    return index, value, counts.reshape(len(found), len(_PRUNING))
+
+
+def _knn_block(folder, generation, k, rows, candidates):
+    """Task: the rows `rows` of the graph among `candidates`, as arrays."""
+    found = _store(folder, generation).knn_graph(k, rows=rows, candidates=candidates, threads=1)
+    return _arrays(found, k)
+
+
+def _merge(parts, k):
+    """Per row, the k best of the parts' neighbours (found among disjoint candidates): value
+    descending, then index ascending, as merge_nearest ranks; the counts summed."""
+    index = np.concatenate([p[0] for p in parts], axis=1)
+    value = np.concatenate([p[1] for p in parts], axis=1)
+    missing = index < 0
+    order = np.lexsort((np.where(missing, np.iinfo(np.int64).max, index), np.where(missing, np.inf, -value)))[:, :k]
+    return np.take_along_axis(index, order, axis=1), np.take_along_axis(value, order, axis=1), sum(p[2] for p in parts)
+
+
+def _pruning(counts):
+    total = {name: int(v) for name, v in zip(_PRUNING, counts.sum(axis=0))}
+    total["pruned_share"] = (total["candidates"] - total["aligned"]) / total["candidates"] if total["candidates"] else 0.0
+    return total
+
+
+def knn_graph(store, k=10, client=None, *, rows_per_task=None, candidates_per_task=None, progress=False):
+    """Every clip's k nearest other clips, as MotionStore.knn_graph(k) gives them (neighbours and
+    values bit for bit), computed on the cluster by blocks of `rows_per_task` rows (default: about
+    eight blocks per worker thread, at most 64 rows), each searched among all the clips, or, with
+    `candidates_per_task`, among blocks of that many (the searches of a row merged on the client:
+    more tasks, less pruning). Returns a KnnGraph of arrays; the counts equal the in-process
+    graph's without candidate blocks."""
+    if k < 1:
+        raise ValueError("k must be at least 1")
+    rows_per_task = _checked_size(rows_per_task, "rows_per_task")
+    candidates_per_task = _checked_size(candidates_per_task, "candidates_per_task")
+    folder, opened = _opened_on_client(store)
+    n, generation = len(opened), opened.generation
+    with _client_of(client) as c:
+        size = rows_per_task or max(1, min(64, math.ceil(n / (8 * _threads(c)))))
+        row_blocks = _blocks(n, size)
+        candidate_blocks = _blocks(n, candidates_per_task) if candidates_per_task else [None]
+        work = [(r, b) for r in row_blocks for b in candidate_blocks]
+        futures = [c.submit(_knn_block, folder, generation, k, r, b, key=key)
+                   for (r, b), key in zip(work, _keys("knn", len(work)))]
+        results = _run(c, futures, progress)
+    per_row_block = [results[i:i + len(candidate_blocks)] for i in range(0, len(results), len(candidate_blocks))]
+    merged = [parts[0] if len(parts) == 1 else _merge(parts, k) for parts in per_row_block]
+    if not merged:
+        return KnnGraph(np.empty((0, k), np.int64), np.empty((0, k)), _pruning(np.zeros((0, len(_PRUNING)))))
+    return KnnGraph(np.concatenate([m[0] for m in merged]), np.concatenate([m[1] for m in merged]),
+                    _pruning(np.concatenate([m[2] for m in merged])))
+
+
+def _search_block(folder, generation, queries, k):
+    """Task: each query (an Animation or a path read_animation reads) searched in the store."""
+    store = _store(folder, generation)
+    return [store.search(q if isinstance(q, _deformseg.Animation) else _deformseg.read_animation(q), k, threads=1)
+            for q in queries]
+
+
+def search(queries, store, k=10, client=None, *, queries_per_task=None, progress=False):
+    """Each query's k nearest clips of the store, as MotionStore.search(query, k) gives them (a
+    list of its dicts, in the queries' order, counts included), searched on the cluster in blocks
+    of `queries_per_task` (default: about four blocks per worker thread). A query is an Animation,
+    or a path (with #CLIP) that read_animation reads with its defaults on the worker."""
+    if k < 1:
+        raise ValueError("k must be at least 1")
+    queries_per_task = _checked_size(queries_per_task, "queries_per_task")
+    queries = list(queries)
+    for i, q in enumerate(queries):
+        if not isinstance(q, (_deformseg.Animation, str, os.PathLike)):
+            raise TypeError(f"queries[{i}]: expected an Animation or a path, got {type(q).__name__}")
+    queries = [q if isinstance(q, _deformseg.Animation) else os.path.abspath(os.fspath(q)) for q in queries]
+    folder, opened = _opened_on_client(store)
+    with _client_of(client) as c:
+        size = queries_per_task or max(1, math.ceil(len(queries) / (4 * _threads(c))))
+        blocks = [queries[b:b + size] for b in range(0, len(queries), size)]
+        futures = [c.submit(_search_block, folder, opened.generation, block, k, key=key)
+                   for block, key in zip(blocks, _keys("search", len(blocks)))]
+        return [found for block in _run(c, futures, progress) for found in block]
