@@ -303,13 +303,12 @@ py::array array_of(Eigen::MatrixXd m) {
                 {item, rows * item});
 }
 
-// The store's matrix, or its tile of `rows` and `columns` when either is given (the other then all).
+// The store's tile of `rows` and `columns` (each default all: the whole matrix).
 py::array matrix_or_tile(const Opened_store& s, const py::object& rows, const py::object& columns,
                          const std::optional<py::function>& progress, int threads) {
   thread_count(threads, "threads");
   const std::optional<similarity::Clip_range> r = clip_range(rows, "rows"), c = clip_range(columns, "columns");
-  if (!r && !c) return stored_similarity_matrix(s, {}, progress_of(progress));
-  const similarity::Clip_range all = similarity::all_clips(s.search.clips());
+  const similarity::Clip_range all = similarity::all_clips(s.search.clips());  // the whole matrix is the one tile
   Eigen::MatrixXd m;
   {
     Interruptible_call call;
@@ -443,9 +442,8 @@ per clip of Tc rows. Releases the GIL.)doc")
            "similarity_matrix(store) and the tool's `matrix --store` give it. rows, columns (default None: "
            "all): ranges of clips, range(begin, end), for a tile of the matrix, bit for bit its block (a pair "
            "whose two entries are in the tile is aligned once). progress (default None): as "
-           "similarity_matrix's, a step a pair. threads (default 0: all; the whole matrix takes the default "
-           "threads): the values do not depend on it. Complexity a value pass per pair, N (N + 1) / 2 for the "
-           "whole matrix. Releases the GIL.")
+           "similarity_matrix's, a step a pair. threads (default 0: all): the values do not depend on it. "
+           "Complexity a value pass per pair, N (N + 1) / 2 for the whole matrix. Releases the GIL.")
       .def("__repr__", [](const Opened_store& s) {
         return "<deformseg.MotionStore " + folder_of(s) + ": " + std::to_string(s.search.size()) + " clips>";
       });

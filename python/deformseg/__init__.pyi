@@ -103,15 +103,27 @@ class MotionStore:
     def signatures(self, i: int) -> npt.NDArray[np.float32]: ...  # (R, W), read-only view of the mapping
     def frames(self, i: int) -> npt.NDArray[np.uint32]: ...  # (R,), read-only view
     # A dict: neighbours (dicts of rank, index, name, path, clip, value) and pruning (the counts).
-    def search(self, query: Animation, k: int = 10, *, threads: int = 0) -> dict[str, Any]: ...
-    def nearest_to_clip(self, i: int, k: int = 10, *, threads: int = 0) -> dict[str, Any]: ...
-    def knn_graph(self, k: int = 10, *, threads: int = 0) -> List[dict[str, Any]]: ...  # per clip, as search
+    # candidates, rows, columns: a block of the store's clips, range(begin, end); None: all.
+    def search(
+        self, query: Animation, k: int = 10, *, candidates: Optional[range] = None, threads: int = 0
+    ) -> dict[str, Any]: ...
+    def nearest_to_clip(
+        self, i: int, k: int = 10, *, candidates: Optional[range] = None, threads: int = 0
+    ) -> dict[str, Any]: ...
+    def knn_graph(  # per clip of rows, as search
+        self, k: int = 10, *, rows: Optional[range] = None, candidates: Optional[range] = None, threads: int = 0
+    ) -> List[dict[str, Any]]: ...
     def find(  # windows: index, name, path, clip, first, last, value, alignment
         self, query: Animation, count: int = 3, *, shortest: float = 0.5, threads: int = 0
     ) -> List[dict[str, Any]]: ...
     def matrix(
-        self, *, progress: Optional[Callable[[int, int], Optional[bool]]] = None
-    ) -> npt.NDArray[np.float64]: ...  # (N, N)
+        self,
+        *,
+        rows: Optional[range] = None,
+        columns: Optional[range] = None,
+        progress: Optional[Callable[[int, int], Optional[bool]]] = None,
+        threads: int = 0,
+    ) -> npt.NDArray[np.float64]: ...  # (N, N), or the tile (len(rows), len(columns))
 
 def open_store(folder: _Path, verify: Literal["structure", "checksums"] = "structure") -> MotionStore: ...
 # A dict: store, clips, described, redescribed, skipped (lists of clip names) and poses_left_out.

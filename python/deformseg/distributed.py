@@ -214,13 +214,13 @@ def _matrix_tile(folder, generation, rows, columns, out):
 
 
 def _default_tile(store, threads):
-    """Tiles of about a second at about 20 microseconds per aligned row pair, and at least four tasks
-    per worker thread."""
+    """The clips per side of tiles of about a second (an aligned pair of rows takes some 15 ns on a
+    2020s core), and at least four tasks per worker thread."""
     n = len(store)
     if n == 0:
         return 1
     rows = np.mean([store.signatures(i).shape[0] for i in range(0, n, max(1, n // 256))])
-    by_time = max(1, int(math.sqrt(1.0 / (20e-6 * rows * rows))))
+    by_time = max(1, int(math.sqrt(1.0 / (15e-9 * rows * rows))))
     by_tasks = max(1, math.ceil(n / math.ceil(math.sqrt(8 * threads))))
     return min(by_time, by_tasks)
 
@@ -442,6 +442,9 @@ def search(queries, store, k=10, client=None, *, queries_per_task=None, progress
     with _client_of(client) as c:
         size = queries_per_task or max(1, math.ceil(len(queries) / (4 * _threads(c))))
         blocks = [queries[b:b + size] for b in range(0, len(queries), size)]
+        # Animations sent to the workers directly, not through the scheduler.
+        sent = [c.scatter(block, hash=False) if any(isinstance(q, _deformseg.Animation) for q in block) else block
+                for block in blocks]
         futures = [c.submit(_search_block, folder, opened.generation, block, k, key=key)
-                   for block, key in zip(blocks, _keys("search", len(blocks)))]
+                   for block, key in zip(sent, _keys("search", len(blocks)))]
         return [found for block in _run(c, futures, progress) for found in block]

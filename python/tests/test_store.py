@@ -170,6 +170,43 @@ def test_search_knn_graph_and_nearest_to_clip_equal_the_sorted_matrix_rows(descr
         assert store.nearest_to_clip(i, 3)["neighbours"] == node["neighbours"]
 
 
+def test_tiles_blocks_of_rows_and_candidates_are_blocks_of_the_whole(described):
+    folder, animations = described[1], described[3]
+    store = deformseg.open_store(folder)
+    m, n = store.matrix(), len(store)
+    assert np.array_equal(store.matrix(threads=1), m)
+    for rows, columns in [(range(0, 3), range(2, 7)), (range(4, 7), range(0, 4)), (range(5, 5), range(0, n))]:
+        assert np.array_equal(store.matrix(rows=rows, columns=columns, threads=1), m[rows.start:rows.stop,
+                                                                                      columns.start:columns.stop])
+    assert np.array_equal(store.matrix(rows=range(1, 3)), m[1:3])  # columns default to all
+    graph = store.knn_graph(3)
+    assert store.knn_graph(3, rows=range(2, 5)) == graph[2:5]
+    block = range(0, 4)
+    found = store.knn_graph(3, candidates=block)
+    for i, node in enumerate(found):
+        expected = [(j, m[i, j]) for j in block if j != i]
+        expected.sort(key=lambda x: (-x[1], x[0]))
+        assert [(x["index"], x["value"]) for x in node["neighbours"]] == expected[:3]
+        assert node["pruning"]["candidates"] == len(block) - (i in block)
+    in_block = store.search(animations[0], k=2, candidates=range(3, n))["neighbours"]
+    assert [(x["index"], x["value"]) for x in in_block] == [p for p in ranked(m[0]) if p[0] >= 3][:2]
+    assert store.nearest_to_clip(1, 2, candidates=range(0, 2))["neighbours"][0]["index"] == 0
+
+
+def test_blocks_of_clips_are_ranges_of_the_store(described):
+    store = deformseg.open_store(described[1])
+    n = len(store)
+    for call in (lambda: store.matrix(rows=range(0, n + 1)), lambda: store.knn_graph(rows=range(2, n + 3)),
+                 lambda: store.search(described[3][0], candidates=range(1, n + 1))):
+        with pytest.raises(deformseg.InvalidInput, match=rf"are not clips of the store, which holds {n}") as error:
+            call()
+        assert error.value.file == str(described[1])
+    with pytest.raises(deformseg.InvalidInput, match=r"columns: expected range\(begin, end\) with .* step 1"):
+        store.matrix(columns=range(0, 4, 2))
+    with pytest.raises(TypeError, match="rows: expected a range of clips"):
+        store.knn_graph(rows=(0, 2))
+
+
 def test_the_search_refuses_bad_arguments(described, grid):
     store = deformseg.open_store(described[1])
     faces, frames = grid(3, 3, 4)
