@@ -149,6 +149,28 @@ def _describe_batch(names, root, options, on_error):
     return (part if len(failed) < len(names) else None), failed
 
 
+def _plan(inputs, folder, on_error, options):
+    """The clips to describe (_describe_plan's dict) and the inputs that cannot be planned (a glTF
+    file that cannot be parsed, a missing file), with on_error 'skip': planned one by one, the
+    others then planned together, so that the order is describe_to_store's for them."""
+    try:
+        return _deformseg._describe_plan(inputs, folder, **options), []
+    except InvalidInput as first_error:
+        if on_error == "raise":
+            raise
+        paths = [inputs] if isinstance(inputs, (str, os.PathLike)) else list(inputs)
+        good, failed = [], []
+        for path in paths:
+            try:
+                _deformseg._describe_plan([path], folder, **options)
+                good.append(path)
+            except InvalidInput as error:
+                failed.append({"name": os.fspath(path), "error": str(error)})
+        if not good:
+            raise first_error
+        return _deformseg._describe_plan(good, folder, **options), failed
+
+
 def describe(inputs, store, client=None, *, clips_per_task=None, on_error="raise", parts=None, progress=False,
              hash=False, **options):
     """Describes clips into the motion store in the folder `store` on the cluster, as
@@ -159,10 +181,11 @@ def describe(inputs, store, client=None, *, clips_per_task=None, on_error="raise
     unchanged ones skipped), described in batches of `clips_per_task` (default: about four batches
     per worker thread, at most 32 clips) each into a part store of its own below `parts` (default
     a hidden folder beside the store, removed after), then merged into the store by the client, the
-    one writer, in one commit. on_error: 'raise' (default) stops at the first clip that cannot be
-    read or described, raising InvalidInput naming its file, and leaves the store as it was; 'skip'
-    leaves such clips out and lists them. Returns describe_to_store's dict, with 'failed': a list
-    of dicts of name and error.
+    one writer, in one commit. on_error: 'raise' (default) stops at the first clip (or input) that
+    cannot be read or described, raising InvalidInput naming its file, and leaves the store as it
+    was; 'skip' leaves such clips and inputs out and lists them. Returns describe_to_store's dict,
+    with 'failed': a list of dicts of name (the clip, or the input that could not be listed) and
+    error.
     """
     if on_error not in ("raise", "skip"):
         raise ValueError(f"on_error must be 'raise' or 'skip', got {on_error!r}")
@@ -170,13 +193,13 @@ def describe(inputs, store, client=None, *, clips_per_task=None, on_error="raise
     if "threads" in options:
         raise TypeError("describe: the workers' threads are the cluster's (each task describes on one)")
     folder = _folder_of(store)
-    plan = _deformseg._describe_plan(inputs, folder, hash=hash, **options)
+    plan, failed = _plan(inputs, folder, on_error, dict(options, hash=hash))
     worker_options = {name: value for name, value in options.items() if name != "clip"}
     worker_options["hash"] = hash
     names = plan["describe"]
     root = os.path.join(os.path.abspath(parts) if parts else os.path.dirname(folder),
                         f".{os.path.basename(folder)}.parts-{uuid.uuid4().hex[:12]}")
-    failed, merged = [], {"clips": plan["clips"], "described": [], "redescribed": []}
+    merged = {"clips": plan["clips"], "described": [], "redescribed": []}
     try:
         if names:
             with _client_of(client) as c:

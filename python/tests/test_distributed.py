@@ -184,6 +184,8 @@ def write_frames(folder, broken=False):
 
 def test_an_unreadable_clip_stops_the_run_or_is_skipped(client, fox, tmp_path):
     good, bad = write_frames(tmp_path / "good"), write_frames(tmp_path / "bad", broken=True)
+    truncated = tmp_path / "truncated.glb"
+    truncated.write_bytes(fox.read_bytes()[:5000])
     inputs = [f"{fox}#Walk", str(good), str(bad), f"{fox}#Run"]
     folder = tmp_path / "S"
     deformseg.describe_to_store(f"{fox}#Survey", folder)
@@ -191,11 +193,14 @@ def test_an_unreadable_clip_stops_the_run_or_is_skipped(client, fox, tmp_path):
     with pytest.raises(deformseg.InvalidInput, match=r"bad/frame2\.obj:4: frame 2: a v line needs 3 coordinates"):
         dd.describe(inputs, folder, client, clips_per_task=1)
     assert {p.name: p.read_bytes() for p in folder.iterdir()} == before  # as it was
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["S", "bad", "good"]  # no part left
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["S", "bad", "good", "truncated.glb"]  # no part left
 
-    report = dd.describe(inputs, folder, client, clips_per_task=3, on_error="skip")
-    assert [f["name"] for f in report["failed"]] == [str(bad.resolve())]
-    assert "frame2.obj" in report["failed"][0]["error"]
+    with pytest.raises(deformseg.InvalidInput, match="truncated.glb"):
+        dd.describe([*inputs, truncated], folder, client)  # found by the plan, on the client
+
+    report = dd.describe([*inputs, truncated], folder, client, clips_per_task=3, on_error="skip")
+    assert [f["name"] for f in report["failed"]] == [str(truncated), str(bad.resolve())]
+    assert "truncated.glb" in report["failed"][0]["error"] and "frame2.obj" in report["failed"][1]["error"]
     assert report["described"] == [f"{fox.resolve()}#Walk", f"{fox.resolve()}#Run", str(good.resolve())]
     store = deformseg.open_store(folder, verify="checksums")
     assert len(store) == 4 and store.index_of(str(bad.resolve())) is None
