@@ -42,6 +42,13 @@ similarity::Nearest_motions Store_search::nearest(const mesh::Surface_mesh_anima
   return similarity::nearest_motions(similarity::view(description), clips_, options, policy_);
 }
 
+similarity::Nearest_motions Store_search::nearest(similarity::Motion_signature_view query,
+                                                  const similarity::Nearest_motions_options& options) const {
+  if (size() == 0) throw invalid_input("the store holds no clip", {.file = store().folder().string()});
+  check_range(options.candidates, "candidates");
+  return similarity::nearest_motions(query, clips_, options, policy_);
+}
+
 similarity::Nearest_motions Store_search::nearest_to_clip(std::size_t i,
                                                           const similarity::Nearest_motions_options& options) const {
   if (i >= size())

@@ -40,6 +40,11 @@ class Store_search {
   /// block of its clips.
   similarity::Nearest_motions nearest(const mesh::Surface_mesh_animation& query,
                                       const similarity::Nearest_motions_options& options) const;
+  /// The `options.k` clips nearest to the query described as `query` (by `describe`).
+  /// @throws invalid_input as the other `nearest`, and when `query` has no row or another width
+  /// than the store's clips.
+  similarity::Nearest_motions nearest(similarity::Motion_signature_view query,
+                                      const similarity::Nearest_motions_options& options) const;
   /// The `options.k` clips nearest to clip `i` of the store, itself left out
   /// (`similarity::nearest_others`): row `i` of `knn_graph`, the same neighbours, values and counts.
   /// @throws invalid_input naming the index when the store has no clip `i`.

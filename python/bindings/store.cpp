@@ -196,18 +196,47 @@ py::dict nearest_dict(const Opened_store& s, const similarity::Nearest_motions& 
   return py::dict("neighbours"_a = neighbours, "pruning"_a = pruning_dict(found.pruning));
 }
 
-py::dict search(const Opened_store& s, const Animation& query, std::size_t k, const py::object& candidates,
+// A query's description as MotionStore.describe gives it: an (R, W) float32 array, R >= 1,
+// dimension-major (Fortran order; another layout is copied into it).
+using Described_query = py::array_t<float, py::array::f_style | py::array::forcecast>;
+
+py::dict search(const Opened_store& s, const py::object& query, std::size_t k, const py::object& candidates,
                 int threads) {
   check_search(k, threads);
-  require_motion(query.mesh, "query");
   const similarity::Nearest_motions_options options{.k = k, .threads = threads,
                                                     .candidates = clip_range(candidates, "candidates")};
   similarity::Nearest_motions found;
-  {
+  if (py::isinstance<Animation>(query)) {
+    const Animation& animation = query.cast<const Animation&>();
+    require_motion(animation.mesh, "query");
     Interruptible_call call;
-    found = s.search.nearest(query.mesh, options);
+    found = s.search.nearest(animation.mesh, options);
+  } else if (py::isinstance<py::array>(query)) {
+    const auto described = Described_query::ensure(query);
+    if (!described || described.ndim() != 2 || described.shape(0) < 1)
+      refuse("query: expected an Animation or its description, an (R, W) float32 array of R >= 1 rows (as "
+             "MotionStore.describe gives it)");
+    const similarity::Motion_signature_view view{described.data(), std::size_t(described.shape(0)),
+                                                 std::size_t(described.shape(1))};
+    Interruptible_call call;
+    found = s.search.nearest(view, options);
+  } else {
+    throw py::type_error("query: expected an Animation or an (R, W) float32 array, got " + type_name(query));
   }
   return nearest_dict(s, found);
+}
+
+// The query described as the store's clips were: (R, W) float32, dimension-major as the store keeps them.
+py::array describe_query(const Opened_store& s, const Animation& query) {
+  require_motion(query.mesh, "query");
+  similarity::Motion_signature_description d;
+  {
+    Interruptible_call call;
+    d = s.search.describe(query.mesh);
+  }
+  const auto rows = py::ssize_t(d.signatures.rows()), item = py::ssize_t(sizeof(float));
+  return owning(std::move(d.signatures), +[](const Eigen::MatrixXf& x) { return x.data(); },
+                {rows, py::ssize_t(d.signatures.cols())}, {item, rows * item});
 }
 
 py::dict nearest_to_clip(const Opened_store& s, long long i, std::size_t k, const py::object& candidates,
@@ -399,9 +428,15 @@ readable while another process appends to it; this object goes on showing what i
       .def("frames", &frames, "i"_a,
            "Clip i's frame numbers, one per row of its signatures: an (R,) uint32 read-only view (no copy). "
            "Complexity O(1).")
+      .def("describe", &describe_query, "query"_a,
+           "The Animation `query` described as the store's clips were (the store's policy and up "
+           "direction): its signatures, an (R, W) float32 array in Fortran order, which `search` takes as "
+           "the query (a description is small to send where the search runs). Complexity linear in the "
+           "animation's size. Releases the GIL.")
       .def("search", &search, "query"_a, "k"_a = 10, py::kw_only(), "candidates"_a = py::none(), "threads"_a = 0,
            R"doc(The k clips of the store that move most like the Animation `query` (the tool's
-`search`): `query` described as the clips were, then searched exactly, with lower bounds and
+`search`), or like a query described by `describe`: `query` described as the clips were, then
+searched exactly, with lower bounds and
 early abandoning (chapter 14). Returns a dict: neighbours, a list of dicts of rank (from 1), index,
 name, path, clip and value (similarity(query, clip).value under the store's policy, exactly as
 similarity_matrix gives it), best first, ties by index; and pruning, a dict of the counts

@@ -104,8 +104,14 @@ class MotionStore:
     def frames(self, i: int) -> npt.NDArray[np.uint32]: ...  # (R,), read-only view
     # A dict: neighbours (dicts of rank, index, name, path, clip, value) and pruning (the counts).
     # candidates, rows, columns: a block of the store's clips, range(begin, end); None: all.
-    def search(
-        self, query: Animation, k: int = 10, *, candidates: Optional[range] = None, threads: int = 0
+    def describe(self, query: Animation) -> npt.NDArray[np.float32]: ...  # (R, W), Fortran order
+    def search(  # query: an Animation or its description by describe
+        self,
+        query: Union[Animation, npt.NDArray[np.float32]],
+        k: int = 10,
+        *,
+        candidates: Optional[range] = None,
+        threads: int = 0,
     ) -> dict[str, Any]: ...
     def nearest_to_clip(
         self, i: int, k: int = 10, *, candidates: Optional[range] = None, threads: int = 0

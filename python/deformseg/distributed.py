@@ -442,9 +442,9 @@ def knn_graph(store, k=10, client=None, *, rows_per_task=None, candidates_per_ta
 
 
 def _search_block(folder, generation, queries, k):
-    """Task: each query (an Animation or a path read_animation reads) searched in the store."""
+    """Task: each query (a description, or a path read_animation reads) searched in the store."""
     store = _store(folder, generation)
-    return [store.search(q if isinstance(q, _deformseg.Animation) else _deformseg.read_animation(q), k, threads=1)
+    return [store.search(q if isinstance(q, np.ndarray) else _deformseg.read_animation(q), k, threads=1)
             for q in queries]
 
 
@@ -452,7 +452,8 @@ def search(queries, store, k=10, client=None, *, queries_per_task=None, progress
     """Each query's k nearest clips of the store, as MotionStore.search(query, k) gives them (a
     list of its dicts, in the queries' order, counts included), searched on the cluster in blocks
     of `queries_per_task` (default: about four blocks per worker thread). A query is an Animation,
-    or a path (with #CLIP) that read_animation reads with its defaults on the worker."""
+    described on the client (MotionStore.describe: a description is small to send), or a path (with
+    #CLIP) that read_animation reads with its defaults on the worker."""
     if k < 1:
         raise ValueError("k must be at least 1")
     queries_per_task = _checked_size(queries_per_task, "queries_per_task")
@@ -460,14 +461,13 @@ def search(queries, store, k=10, client=None, *, queries_per_task=None, progress
     for i, q in enumerate(queries):
         if not isinstance(q, (_deformseg.Animation, str, os.PathLike)):
             raise TypeError(f"queries[{i}]: expected an Animation or a path, got {type(q).__name__}")
-    queries = [q if isinstance(q, _deformseg.Animation) else os.path.abspath(os.fspath(q)) for q in queries]
     folder, opened = _opened_on_client(store)
     with _client_of(client) as c:
         size = queries_per_task or max(1, math.ceil(len(queries) / (4 * _threads(c))))
-        blocks = [queries[b:b + size] for b in range(0, len(queries), size)]
-        # Animations sent to the workers directly, not through the scheduler.
-        sent = [c.scatter(block, hash=False) if any(isinstance(q, _deformseg.Animation) for q in block) else block
-                for block in blocks]
-        futures = [c.submit(_search_block, folder, opened.generation, block, k, key=key)
-                   for block, key in zip(sent, _keys("search", len(blocks)))]
+        keys = _keys("search", math.ceil(len(queries) / size))
+        futures = []
+        for b, key in zip(range(0, len(queries), size), keys):  # a block sent as soon as it is described
+            block = [opened.describe(q) if isinstance(q, _deformseg.Animation) else os.path.abspath(os.fspath(q))
+                     for q in queries[b:b + size]]
+            futures.append(c.submit(_search_block, folder, opened.generation, block, k, key=key))
         return [found for block in _run(c, futures, progress) for found in block]

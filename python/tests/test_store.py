@@ -193,6 +193,22 @@ def test_tiles_blocks_of_rows_and_candidates_are_blocks_of_the_whole(described):
     assert store.nearest_to_clip(1, 2, candidates=range(0, 2))["neighbours"][0]["index"] == 0
 
 
+def test_a_query_described_by_the_store_searches_as_the_animation(described):
+    store = deformseg.open_store(described[1])
+    query = described[3][2]
+    description = store.describe(query)
+    assert description.dtype == np.float32 and description.shape[1] == store.width
+    assert description.flags.f_contiguous
+    assert store.search(description, k=4) == store.search(query, k=4)
+    assert store.search(np.ascontiguousarray(description), k=4) == store.search(query, k=4)  # copied to its layout
+    with pytest.raises(deformseg.InvalidInput, match=f"have 3 values, the collection's {store.width}"):
+        store.search(description[:, :3])
+    with pytest.raises(deformseg.InvalidInput, match="an .R, W. float32 array of R >= 1 rows"):
+        store.search(description[:0])
+    with pytest.raises(TypeError, match="query: expected an Animation or an .R, W. float32 array, got list"):
+        store.search([1.0])
+
+
 def test_blocks_of_clips_are_ranges_of_the_store(described):
     store = deformseg.open_store(described[1])
     n = len(store)
