@@ -210,6 +210,23 @@ def test_an_unreadable_clip_stops_the_run_or_is_skipped(client, fox, tmp_path):
     assert np.array_equal(store.matrix(), deformseg.open_store(expected).matrix())  # a file's clips together
 
 
+def test_a_store_appended_to_during_a_run_is_refused_by_the_tasks(client, fox, tmp_path):
+    folder = tmp_path / "S"
+    deformseg.describe_to_store(f"{fox}#Walk", folder)
+    generation = deformseg.open_store(folder).generation
+    deformseg.describe_to_store(f"{fox}#Run", folder)  # as if another process appended meanwhile
+    future = client.submit(dd._knn_block, str(folder), generation, 1, range(0, 1), None)
+    with pytest.raises(deformseg.InvalidInput, match=f"appended to during the run .generation {generation + 1}"):
+        future.result()
+    with pytest.raises(deformseg.InvalidInput, match="matrix.json: no matrix here"):
+        dd.open_matrix(tmp_path)
+    (tmp_path / "M").mkdir()
+    (tmp_path / "M" / "notes.txt").write_text("mine")
+    with pytest.raises(deformseg.InvalidInput, match=r"holds files that are not a matrix's \(notes.txt\)"):
+        dd.matrix(folder, client, out=tmp_path / "M")
+    assert (tmp_path / "M" / "notes.txt").read_text() == "mine"
+
+
 # ---- the scheduler-file recipe ---------------------------------------------------------------------
 
 def test_the_scheduler_file_recipe_on_the_loopback_address(reference, tmp_path):
