@@ -153,6 +153,12 @@ def test_without_a_client_a_local_cluster_is_started_for_the_call(reference):
     assert graph_equals(dd.knn_graph(store, 4), expected)
 
 
+def test_progress_shows_dask_s_bar(client, reference, capsys):
+    store, _, expected = reference
+    assert graph_equals(dd.knn_graph(store, 4, client, rows_per_task=2, progress=True), expected)
+    assert "100% Completed" in capsys.readouterr().out
+
+
 # ---- faults ---------------------------------------------------------------------------------------
 
 def test_a_worker_killed_during_the_matrix_changes_nothing(client, reference, kill_once, tmp_path):
