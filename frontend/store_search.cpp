@@ -37,9 +37,8 @@ similarity::Motion_signature_description Store_search::describe(const mesh::Surf
 similarity::Nearest_motions Store_search::nearest(const mesh::Surface_mesh_animation& query,
                                                   const similarity::Nearest_motions_options& options) const {
   if (size() == 0) throw invalid_input("the store holds no clip", {.file = store().folder().string()});
-  check_range(options.candidates, "candidates");
-  const similarity::Motion_signature_description description = describe(query);
-  return similarity::nearest_motions(similarity::view(description), clips_, options, policy_);
+  check_range(options.candidates, "candidates");  // before describing the query
+  return nearest(similarity::view(describe(query)), options);
 }
 
 similarity::Nearest_motions Store_search::nearest(similarity::Motion_signature_view query,
