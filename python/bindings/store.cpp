@@ -22,6 +22,7 @@
 #include <array>
 #include <cstddef>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -276,6 +277,43 @@ py::list find_in_store(const Opened_store& s, const Animation& query, std::size_
   return out;
 }
 
+// One query's search results (dicts as search gives) among disjoint blocks of candidates, merged by
+// similarity::merge_nearest: each neighbour's dict kept, its rank renumbered.
+py::dict merge_nearest(const py::sequence& parts, std::size_t k) {
+  std::vector<similarity::Nearest_motions> found(parts.size());
+  std::map<std::size_t, py::dict> dict_of;
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    const std::string where = "parts[" + std::to_string(p) + "]";
+    if (!py::isinstance<py::dict>(parts[p]))
+      throw py::type_error(where + ": expected a dict as MotionStore.search gives, got " + type_name(parts[p]));
+    const auto part = parts[p].cast<py::dict>();
+    if (!part.contains("neighbours") || !part.contains("pruning"))
+      refuse(where + ": expected the dict of a search, with neighbours and pruning");
+    for (const py::handle n : part["neighbours"].cast<py::list>()) {
+      const auto neighbour = n.cast<py::dict>();
+      const auto index = neighbour["index"].cast<std::size_t>();
+      if (dict_of.count(index)) refuse(where + ": clip " + std::to_string(index) + " is in two parts");
+      found[p].neighbours.push_back({index, neighbour["value"].cast<double>()});
+      dict_of[index] = neighbour;
+    }
+    const auto counts = part["pruning"].cast<py::dict>();
+    similarity::Pruning_report& r = found[p].pruning;
+    for (auto [name, field] : {std::pair{"candidates", &r.candidates}, {"pruned_by_summary", &r.pruned_by_summary},
+                               {"pruned_by_rows", &r.pruned_by_rows}, {"abandoned", &r.abandoned},
+                               {"aligned", &r.aligned}, {"rows_aligned", &r.rows_aligned},
+                               {"rows_abandoned", &r.rows_abandoned}})
+      *field = counts[name].cast<std::size_t>();
+  }
+  const similarity::Nearest_motions merged = similarity::merge_nearest(found, k);
+  py::list neighbours;
+  for (std::size_t r = 0; r < merged.neighbours.size(); ++r) {
+    py::dict neighbour(dict_of.at(merged.neighbours[r].index));  // a copy, its rank renumbered
+    neighbour["rank"] = r + 1;
+    neighbours.append(neighbour);
+  }
+  return py::dict("neighbours"_a = neighbours, "pruning"_a = pruning_dict(merged.pruning));
+}
+
 py::list knn_graph(const Opened_store& s, std::size_t k, const py::object& rows, const py::object& candidates,
                    int threads) {
   check_search(k, threads);
@@ -497,6 +535,14 @@ per clip of Tc rows. Releases the GIL.)doc")
         "Appends the clips of the stores `parts`, in order, into `store` (a clip it holds already replaced at "
         "its index), in one commit: a dict of store, clips, described and redescribed. Raises InvalidInput "
         "naming the part or the store; the store is then as it was. Releases the GIL.");
+
+  m.def("merge_nearest", &merge_nearest, "parts"_a, "k"_a = 10,
+        "One query's searches among disjoint blocks of a store's clips (dicts as MotionStore.search, "
+        "nearest_to_clip or a row of knn_graph give them with candidates=...) made its search among their "
+        "union: a dict as search gives, the k (default 10) best neighbours of all, by value descending and then "
+        "index (their dicts kept, ranks renumbered), the pruning counts summed. The neighbours and values equal "
+        "those of one search among the union; the counts are the separate searches'. Raises InvalidInput for a "
+        "clip in two parts or a dict that is not a search's. Complexity O(P log P) for P neighbours.");
 
   m.def("open_store", &open_store_at, "folder"_a, "verify"_a = "structure",
         R"doc(Opens the motion store in `folder` (made by describe_to_store or `deformseg describe --store`)

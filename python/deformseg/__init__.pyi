@@ -132,6 +132,8 @@ class MotionStore:
     ) -> npt.NDArray[np.float64]: ...  # (N, N), or the tile (len(rows), len(columns))
 
 def open_store(folder: _Path, verify: Literal["structure", "checksums"] = "structure") -> MotionStore: ...
+# One query's searches among disjoint blocks of clips, merged: a dict as MotionStore.search gives.
+def merge_nearest(parts: Sequence[dict[str, Any]], k: int = 10) -> dict[str, Any]: ...
 # A dict: store, clips, described, redescribed, skipped (lists of clip names) and poses_left_out.
 def describe_to_store(
     inputs: Union[_Path, Sequence[_Path]],  # animations, glTF files (every clip), labels CSVs

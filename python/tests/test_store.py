@@ -209,6 +209,25 @@ def test_a_query_described_by_the_store_searches_as_the_animation(described):
         store.search([1.0])
 
 
+def test_merge_nearest_makes_searches_of_blocks_the_search_of_all(described):
+    store = deformseg.open_store(described[1])
+    n, query = len(store), described[3][1]
+    whole = store.search(query, k=4)
+    for size in (1, 3):
+        parts = [store.search(query, k=4, candidates=range(b, min(n, b + size))) for b in range(0, n, size)]
+        merged = deformseg.merge_nearest(parts, 4)
+        assert merged["neighbours"] == whole["neighbours"]  # the dicts too, ranks renumbered
+        assert merged["pruning"]["candidates"] == n
+    graph = store.knn_graph(2)
+    rows = [store.knn_graph(2, candidates=block) for block in (range(0, 3), range(3, n))]
+    assert [deformseg.merge_nearest([rows[0][i], rows[1][i]], 2)["neighbours"] for i in range(n)] == \
+        [row["neighbours"] for row in graph]
+    with pytest.raises(deformseg.InvalidInput, match=r"parts.1.: clip \d+ is in two parts"):
+        deformseg.merge_nearest([whole, whole])
+    with pytest.raises(TypeError, match="parts.0.: expected a dict as MotionStore.search gives, got int"):
+        deformseg.merge_nearest([3])
+
+
 def test_blocks_of_clips_are_ranges_of_the_store(described):
     store = deformseg.open_store(described[1])
     n = len(store)
