@@ -45,6 +45,7 @@ __all__ = ["KnnGraph", "TiledMatrix", "describe", "knn_graph", "matrix", "open_m
 _PRUNING = ("candidates", "pruned_by_summary", "pruned_by_rows", "abandoned", "aligned", "rows_aligned",
             "rows_abandoned")
 _MATRIX_FORMAT = "deformseg-matrix-tiles"
+_STOP = "stop"  # in a describe run's folder of parts: the run failed, tasks not yet started return
 
 
 # ---- the cluster ---------------------------------------------------------------------------------
@@ -65,14 +66,21 @@ def _threads(client):
     return max(1, sum(client.nthreads().values()))
 
 
-def _run(client, futures, progress):
-    """The futures' results in their order; on the first error the others are cancelled and it is raised."""
+def _run(client, futures, progress, stop=None):
+    """The futures' results in their order. On the first error, it is raised after the others are
+    cancelled, or, with `stop`, after `stop()` and every task has ended (a task already running
+    cannot be cancelled: `stop` tells those not yet started to return at once, so that nothing
+    writes after the caller cleans up)."""
     if progress:
         _dask.progress(futures)
     try:
         return client.gather(futures)
     except BaseException:
-        client.cancel(futures)
+        if stop is None:
+            client.cancel(futures)
+        else:
+            stop()
+            _dask.wait(futures)
         raise
 
 
@@ -131,6 +139,8 @@ def _opened_on_client(store):
 def _describe_batch(names, root, options, on_error):
     """Task: describes clips `names` into a new part store below `root`; returns (its folder or None,
     the clips that could not be described with their errors, when `on_error` is 'skip')."""
+    if os.path.exists(os.path.join(root, _STOP)):  # the run failed: nothing more to write
+        return None, []
     part = os.path.join(root, uuid.uuid4().hex)
     try:
         _deformseg.describe_to_store(names, part, threads=1, **options)
@@ -206,9 +216,10 @@ def describe(inputs, store, client=None, *, clips_per_task=None, on_error="raise
                 size = clips_per_task or max(1, min(32, math.ceil(len(names) / (4 * _threads(c)))))
                 batches = [names[b:b + size] for b in range(0, len(names), size)]
                 keys = _keys("describe", len(batches))
+                os.makedirs(root)
                 futures = [c.submit(_describe_batch, batch, root, worker_options, on_error, key=key)
                            for batch, key in zip(batches, keys)]
-                results = _run(c, futures, progress)
+                results = _run(c, futures, progress, stop=lambda: open(os.path.join(root, _STOP), "w").close())
             for _, batch_failed in results:
                 failed += batch_failed
             merged = _deformseg._merge_stores(folder, [part for part, _ in results if part is not None])
