@@ -3,9 +3,13 @@
 /// mesh readers that choose by extension, mesh repair.
 #pragma once
 
+#include <deformseg/io/character_files.h>
 #include <deformseg/io/frame_sequence.h>
 #if DEFORMSEG_HAS_GLTF
 #include <deformseg/io/gltf.h>
+#endif
+#if DEFORMSEG_HAS_ASSIMP
+#include <deformseg/io/fbx_collada.h>
 #endif
 #include <deformseg/io/files.h>
 #include <deformseg/io/frame_stream.h>

@@ -99,13 +99,6 @@ inline bool glob_match(std::string_view pattern, std::string_view name) {
 
 inline bool has_wildcard(std::string_view s) { return s.find_first_of("*?") != std::string_view::npos; }
 
-inline std::string lower_extension(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
-
 inline bool is_frame_extension(const std::string& extension) {
   return extension == ".obj" || extension == ".off" || extension == ".ply";
 }

@@ -334,7 +334,7 @@ private:
 /// reads: a glTF clip (`Gltf_frame_source`; "FILE.glb#CLIP" or `options.clip` names it), a point
 /// cache (`Point_cache_frame_source`, with `options.topology`) or a sequence of frame files
 /// (`Frame_sequence_source`); returns what `f` returns.
-/// @param input a glTF file (maybe followed by "#CLIP"), a folder or glob of frame files, or a
+/// @param input a glTF, FBX or Collada file (maybe followed by "#CLIP"), a folder or glob of frame files, or a
 /// `.pc2` or `.mdd` file, as for `read_animation`.
 /// @param options as `read_animation`: `topology`, `triangulate`, `repair` (default: the format's,
 /// which welds glTF only; welding a point cache or frame files is refused), `clip`, `fps`
@@ -346,11 +346,11 @@ private:
 /// @par Complexity that of opening the source.
 template <class F>
 decltype(auto) with_frame_source(const std::string& input, const Animation_read_options& options, F&& f) {
-  if (const auto [file, clip] = split_clip_suffix(input); clip || is_gltf(input)) {
+  if (const auto [file, clip] = split_clip_suffix(input); clip || is_character_file(input)) {
     if (clip && !options.clip.empty())
       throw invalid_input("the clip is given twice: by the clip option and after '#'", {.file = input});
     if (options.topology)
-      throw invalid_input("a glTF file has its own connectivity: no topology mesh applies", {.file = input});
+      throw invalid_input("a character file (glTF, FBX, Collada) has its own connectivity: no topology mesh applies", {.file = input});
 #if DEFORMSEG_HAS_GLTF
     const Gltf_file gltf(file);
     const std::string name = clip ? *clip : options.clip;
@@ -359,7 +359,7 @@ decltype(auto) with_frame_source(const std::string& input, const Animation_read_
         gltf, {.clip = name, .fps = options.fps, .repair = options.repair.value_or(Gltf_read_options{}.repair)});
     return f(source);
 #else
-    throw invalid_input("this deformseg was built without tinygltf, which reads glTF files", {.file = input});
+    throw invalid_input("this deformseg was built without tinygltf, which reads glTF, FBX and Collada files", {.file = input});
 #endif
   }
   const Frame_stream_options stream{.topology = options.topology,

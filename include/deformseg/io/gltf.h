@@ -17,12 +17,19 @@
 #include <deformseg/mesh/default_mesh.h>
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
+#include <deformseg/io/character_files.h>
 #include <deformseg/io/internal/gltf_animation.h>
 #include <deformseg/io/internal/gltf_mesh.h>
 #include <deformseg/io/internal/gltf_welding.h>
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/threads.h>
+
+// FBX and Collada files are read when deformseg was configured with Assimp (its CMake target then
+// defines DEFORMSEG_HAS_ASSIMP and links assimp::assimp).
+#if DEFORMSEG_HAS_ASSIMP
+#include <deformseg/io/fbx_collada.h>
+#endif
 
 #include <tiny_gltf.h>
 
@@ -148,8 +155,17 @@ inline bool starts_with_glb_magic(const std::filesystem::path& path) {
   return in.gcount() == 4 && std::string(magic, 4) == "glTF";
 }
 
-/// Parses a .gltf or .glb file (told apart by the GLB magic, not the extension).
+/// Parses a .gltf or .glb file (told apart by the GLB magic, not the extension), or an FBX or
+/// Collada file (told by its extension) into the same structures.
 inline tinygltf::Model load_model(const std::filesystem::path& path) {
+  if (is_fbx_or_collada(path)) {
+#if DEFORMSEG_HAS_ASSIMP
+    return fbx_collada_model(path);
+#else
+    throw invalid_input("this deformseg was built without Assimp, which reads FBX and Collada files (Debian: "
+                        "libassimp-dev; link assimp::assimp and define DEFORMSEG_HAS_ASSIMP=1)");
+#endif
+  }
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
     throw invalid_input("cannot open the glTF file: it does not exist or is not a file");
@@ -242,8 +258,8 @@ struct Loaded_file {
   Rig rig{};
 };
 
-inline Loaded_file load_file(const std::filesystem::path& path) {
-  Loaded_file file{.model = load_model(path)};
+inline Loaded_file load_file(tinygltf::Model model) {
+  Loaded_file file{.model = std::move(model)};
   check_extensions(file.model);
   file.rig = read_rig(file.model);
   if (file.rig.geometry.triangles.empty())
@@ -388,7 +404,8 @@ private:
   internal::gltf::Pose_scratch scratch_{};
 };
 
-/// @brief A glTF 2.0 file parsed once, to sample any number of its clips: parsing dominates the
+/// @brief A glTF 2.0 file (or an FBX or Collada file, written into glTF's structures by
+/// `fbx_collada_model`) parsed once, to sample any number of its clips: parsing dominates the
 /// reading of a character of a few thousand vertices, so reading many clips of one file through
 /// a `Gltf_file` is many times faster than calling `sample_gltf` for each.
 ///
@@ -410,16 +427,32 @@ private:
 class Gltf_file {
 public:
   /// @brief Parses `path` and reads the scene's geometry (not its clips).
-  /// @param path a `.gltf` (JSON, with external or data-URI buffers) or `.glb` file; told apart
-  /// by content.
+  /// @param path a `.gltf` (JSON, with external or data-URI buffers) or `.glb` file, told apart
+  /// by content; or, when deformseg was built with Assimp (`DEFORMSEG_HAS_ASSIMP`), an FBX or
+  /// Collada file (`.fbx`, `.dae`, told by the extension), read as `fbx_collada_model` writes it.
   /// @throws invalid_input naming the file (and the mesh, accessor or node) for: a file that
-  /// does not exist or that tinygltf cannot parse (its message); Draco or meshopt compression,
+  /// does not exist or that tinygltf cannot parse (its message); an FBX or Collada file that
+  /// `fbx_collada_model` refuses, or without Assimp; Draco or meshopt compression,
   /// or another required extension deformseg does not know (KHR_mesh_quantization is read); a
   /// scene without triangle; an accessor or buffer view outside its buffer, a count that
   /// disagrees, an index out of range; a node hierarchy that is not a forest; more than 2^26
   /// vertices.
   /// @par Complexity O(file size).
   explicit Gltf_file(const std::filesystem::path& path) : path_(path), file_(load(path)) {}
+
+  /// @brief Reads the scene of a model parsed or built in memory (by tinygltf, or by
+  /// `fbx_collada_model`), as the constructor from a path reads a file's.
+  /// @param name the name errors give as the file's.
+  /// @param model the model, kept by the `Gltf_file`.
+  /// @throws invalid_input naming `name`, for the same malformed scenes as the constructor from a path.
+  /// @par Complexity O(size of the model).
+  Gltf_file(std::filesystem::path name, tinygltf::Model model) : path_(std::move(name)) {
+    try {
+      file_ = internal::gltf::load_file(std::move(model));
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path_.string()});
+    }
+  }
 
   /// @brief The file's path as given.
   const std::filesystem::path& path() const noexcept { return path_; }
@@ -522,7 +555,7 @@ public:
 private:
   static internal::gltf::Loaded_file load(const std::filesystem::path& path) {
     try {
-      return internal::gltf::load_file(path);
+      return internal::gltf::load_file(internal::gltf::load_model(path));
     } catch (const invalid_input& e) {
       throw e.located({.file = path.string()});
     }

@@ -6,6 +6,7 @@
 #include <deformseg/mesh/default_mesh.h>
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
+#include <deformseg/io/character_files.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/point_cache.h>
@@ -56,32 +57,24 @@ struct Animation_read_options {
   double fps = 30;
 };
 
-/// @brief Whether `input` names a glTF file, by its extension (`.gltf` or `.glb`, in any case).
-/// @par Complexity O(length of the name).
-/// @par Example
-/// @include is_gltf.cpp
-inline bool is_gltf(const std::filesystem::path& input) {
-  const std::string extension = internal::lower_extension(input);
-  return extension == ".gltf" || extension == ".glb";
-}
-
-/// @brief "Fox.glb#Walk" split into the glTF file and the clip after its last '#': `{"Fox.glb",
-/// "Walk"}`; any other input (no '#', or none after a glTF file name) whole, with no clip.
+/// @brief "Fox.glb#Walk" split into the character file (glTF, FBX or Collada: see
+/// `is_character_file`) and the clip after its last '#': `{"Fox.glb", "Walk"}`; any other input
+/// (no '#', or none after a character file's name) whole, with no clip.
 /// @par Complexity O(length of the name).
 inline std::pair<std::string, std::optional<std::string>> split_clip_suffix(const std::string& input) {
   const std::size_t hash = input.rfind('#');
-  if (hash == std::string::npos || !is_gltf(input.substr(0, hash))) return {input, std::nullopt};
+  if (hash == std::string::npos || !is_character_file(input.substr(0, hash))) return {input, std::nullopt};
   return {input.substr(0, hash), input.substr(hash + 1)};
 }
 
-/// @brief The format of an input, by its extension: "gltf" or "glb" (with or without a "#CLIP"
-/// after it), "pc2" or "mdd" for a point cache, else that of its frame files ("obj", "off" or "ply").
+/// @brief The format of an input, by its extension: "gltf", "glb", "fbx" or "dae" (with or without
+/// a "#CLIP" after it), "pc2" or "mdd" for a point cache, else that of its frame files ("obj", "off" or "ply").
 /// @throws invalid_input when the input is a frame sequence with no frame file.
 /// @par Complexity that of listing the folder, for a frame sequence.
 inline std::string animation_format(const std::string& input) {
   const auto extension = [](const std::filesystem::path& path) { return internal::lower_extension(path).substr(1); };
   const std::string ext = internal::lower_extension(split_clip_suffix(input).first);
-  if (ext == ".pc2" || ext == ".mdd" || ext == ".gltf" || ext == ".glb") return ext.substr(1);
+  if (ext == ".pc2" || ext == ".mdd" || is_character_file(split_clip_suffix(input).first)) return ext.substr(1);
   return extension(list_frame_files(input).front());
 }
 
@@ -89,13 +82,14 @@ inline std::string animation_format(const std::string& input) {
 
 namespace deformseg::io::internal {
 
-/// `read_animation` of a glTF file: `read_gltf` with the options that apply to it.
+/// `read_animation` of a character file (glTF, FBX, Collada): `Gltf_file::read` with the options
+/// that apply to it.
 template <class Graph, class Coordinate>
 mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input,
                                                         const io::Animation_read_options& options,
                                                         io::Repair_report* report) {
   if (options.topology)
-    throw invalid_input("a glTF file has its own connectivity: no topology mesh applies", {.file = input});
+    throw invalid_input("a character file (glTF, FBX, Collada) has its own connectivity: no topology mesh applies", {.file = input});
 #if DEFORMSEG_HAS_GLTF
   const io::Gltf_file file(input);
   io::require_clip_choice(file, options.clip);
@@ -108,7 +102,7 @@ mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input
   return animation;
 #else
   static_cast<void>(report);
-  throw invalid_input("this deformseg was built without tinygltf, which reads glTF files (Debian: "
+  throw invalid_input("this deformseg was built without tinygltf, which reads glTF, FBX and Collada files (Debian: "
                       "libtinygltf-dev; link TinyGLTF::TinyGLTF and define DEFORMSEG_HAS_GLTF=1)",
                       {.file = input});
 #endif
@@ -118,30 +112,32 @@ mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input
 
 namespace deformseg::io {
 
-/// @brief Reads an animation: a glTF clip (`.gltf`, `.glb`, see `read_gltf`; "FILE.glb#CLIP" names
-/// the clip, as `options.clip` does; a file of several clips needs one named), a point cache
+/// @brief Reads an animation: a clip of a character file (glTF `.gltf`, `.glb`, see `read_gltf`;
+/// FBX `.fbx` or Collada `.dae`, see `fbx_collada_model`; "FILE.glb#CLIP" names the clip, as
+/// `options.clip` does; a file of several clips needs one named), a point cache
 /// (`.pc2`, `.mdd`, with `options.topology`), or a sequence of frame files given as a folder or a
 /// glob pattern (see `read_frame_sequence`).
 ///
 /// For frames and point caches the triangles of the topology (or the first frame) are read, then
 /// the positions of every frame, and `repair_triangles` repairs or refuses the triangles (before
 /// the positions are read, unless it welds, which compares every frame). Vertex `i` of a point
-/// cache is vertex `i` of the topology file. A glTF clip is sampled at `options.fps`, then given
+/// cache is vertex `i` of the topology file. A character's clip is sampled at `options.fps`, then given
 /// the connectivity every clip of its file shares (`Gltf_file::repair`: welded by what the file
 /// fixes, and repaired). Every format's animation has the frame rate `options.fps`.
 ///
 /// @tparam Graph the connectivity type, a `FaceGraph` (default `Surface_mesh`).
 /// @tparam Coordinate the stored coordinate type (default `double`).
-/// @param input a glTF file (maybe followed by "#CLIP"), a folder or glob of frame files, or a
+/// @param input a glTF, FBX or Collada file (maybe followed by "#CLIP"), a folder or glob of frame files, or a
 /// `.pc2` or `.mdd` file.
 /// @param options `topology` (default none), `triangulate` (default false), `threads` (default 0:
 /// all), `repair` (default: the format's; defects repaired, glTF welded), `clip` (default: the
 /// only one) for glTF, and `fps` (default 30): the rate a glTF clip is sampled at, the rate of
 /// frame files and point caches.
 /// @param report where to store what the repair changed, when not null (default null).
-/// @pre a point cache comes with `options.topology`; a glTF file comes with no `topology`, a clip
-/// (after '#' or in `options.clip`, not both) unless it holds one clip or none, and deformseg was
-/// built with tinygltf (`DEFORMSEG_HAS_GLTF`); every frame is valid (see the readers).
+/// @pre a point cache comes with `options.topology`; a character file comes with no `topology`, a
+/// clip (after '#' or in `options.clip`, not both) unless it holds one clip or none, and deformseg
+/// was built with tinygltf (`DEFORMSEG_HAS_GLTF`), and for FBX and Collada with Assimp
+/// (`DEFORMSEG_HAS_ASSIMP`); every frame is valid (see the readers).
 /// @throws invalid_input naming the file, line or frame of the first problem found; with
 /// `Defect_policy::refuse`, the first defect of the connectivity, located at its file.
 /// @par Complexity linear in the size of the input, plus the repair's (see `repair_triangles`).
@@ -157,7 +153,7 @@ mesh::Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input,
     named.clip = *clip;
     return internal::read_gltf_input<Graph, Coordinate>(file, named, report);
   }
-  if (is_gltf(input)) return internal::read_gltf_input<Graph, Coordinate>(input, options, report);
+  if (is_character_file(input)) return internal::read_gltf_input<Graph, Coordinate>(input, options, report);
   const Repair_options repair = options.repair.value_or(Repair_options{});
   const std::string format = animation_format(input);
   if (format != "pc2" && format != "mdd")

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <bit>
 #include <cerrno>
+#include <cctype>
 #include <charconv>
 #include <concepts>
 #include <cstddef>
@@ -214,6 +215,14 @@ T load(const char* in) noexcept {
   for (std::size_t k = 0; k < sizeof(T); ++k)
     bits |= Word_bits<T>(static_cast<unsigned char>(in[byte_position(order, k, sizeof(T))])) << (8 * k);
   return std::bit_cast<T>(bits);
+}
+
+/// The extension of `path` (with its dot) in lower case.
+inline std::string lower_extension(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
 }
 
 }  // namespace deformseg::io::internal
