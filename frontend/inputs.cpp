@@ -17,11 +17,11 @@ void check(const Input_options& options, Front front) {
 Input_name input_name(const std::string& input, const Input_options& options, Front front) {
   auto [file, clip] = io::split_clip_suffix(input);
   const auto refuse_for = [&](const std::string& message) { throw invalid_input(message, {.file = file}); };
-  const bool gltf = io::is_gltf(file);
+  const bool gltf = io::is_character_file(file);
   if (!gltf && !options.clip.empty())
-    refuse_for(spelled("clip", front) + " applies to glTF files only");
+    refuse_for(spelled("clip", front) + " applies to character files (glTF, FBX, Collada) only");
   if (gltf && !options.topology.empty())
-    refuse_for(spelled("topology", front) + " does not apply to a glTF file: it has its own");
+    refuse_for(spelled("topology", front) + " does not apply to a character file (glTF, FBX, Collada): it has its own");
   return {std::move(file), clip.value_or(options.clip)};
 }
 
@@ -34,7 +34,7 @@ void check_clip_applies(const std::vector<std::string>& inputs, const Input_opti
 }
 
 io::Repair_options repair_options(const std::string& file, const Input_options& options) {
-  return {.weld = options.weld.value_or(io::is_gltf(file)),
+  return {.weld = options.weld.value_or(io::is_character_file(file)),
           .defects = options.refuse_defects ? io::Defect_policy::refuse : io::Defect_policy::repair};
 }
 
@@ -71,7 +71,7 @@ Read_input read_input(const std::string& input, const Input_options& options, Fr
                       bool first_clip_by_default) {
   check(options, front);
   Input_name name = input_name(input, options, front);
-  if (io::is_gltf(name.file)) return read_gltf(std::move(name), options, first_clip_by_default);
+  if (io::is_character_file(name.file)) return read_gltf(std::move(name), options, first_clip_by_default);
   io::Repair_report repair;
   mesh::Surface_mesh_animation animation =
       io::read_animation(name.file, animation_read_options(name.file, options), &repair);
@@ -107,7 +107,7 @@ nlohmann::json clips_record(const io::Gltf_contents& contents) {
 
 nlohmann::json clips_of(const std::string& path, double fps) {
   mesh::check_frames_per_second(fps, "fps", {.file = path});
-  if (!io::is_gltf(path)) throw invalid_input("clips are listed for glTF files (.glb, .gltf) only", {.file = path});
+  if (!io::is_character_file(path)) throw invalid_input("clips are listed for character files (.glb, .gltf, .fbx, .dae) only", {.file = path});
   return clips_record(io::gltf_contents(path, fps));
 }
 

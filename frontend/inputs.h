@@ -21,11 +21,11 @@ namespace deformseg::frontend {
 
 /// How to read the inputs of a command or a function; one set for all its inputs.
 struct Input_options {
-  std::string clip{};         ///< glTF: a clip's name or index; empty: the input's own ("FILE#CLIP"), or the only one
+  std::string clip{};         ///< character files: a clip's name or index; empty: the input's own ("FILE#CLIP"), or the only one
   double fps = 30;            ///< glTF's sampling rate; frame files' and point caches' playing rate
   std::string topology{};     ///< the connectivity of point caches; empty: none
   bool triangulate = false;   ///< fan-triangulate polygons instead of refusing them
-  std::optional<bool> weld{};  ///< none: the format's rule (glTF welded, others not)
+  std::optional<bool> weld{};  ///< none: the format's rule (character files welded, others not)
   bool refuse_defects = false;  ///< fail on degenerate or non-manifold triangles instead of repairing them
   int threads = 0;              ///< 0: all
 };
@@ -34,12 +34,12 @@ struct Input_options {
 inline constexpr std::tuple input_parameters{
     Parameter<Input_options, std::string>{
         "clip", &Input_options::clip,
-        "glTF: the clip to read, by name or index, for every input that names none after '#' (FILE.glb#CLIP); "
+        "glTF, FBX, Collada: the clip to read, by name or index, for every input that names none after '#' (FILE.glb#CLIP); "
         "required for a file of several clips",
         Parameter_kind::clip},
     Parameter<Input_options, double>{
         "fps", &Input_options::fps,
-        "Frames per second: glTF clips are sampled at it; frame files and point caches play at it. Default: 30"},
+        "Frames per second: glTF, FBX and Collada clips are sampled at it; frame files and point caches play at it. Default: 30"},
     Parameter<Input_options, std::string>{"topology", &Input_options::topology,
                                           "A mesh file giving the connectivity of point caches (required for them)",
                                           Parameter_kind::file},
@@ -47,7 +47,7 @@ inline constexpr std::tuple input_parameters{
                                    "Fan-triangulate polygons instead of refusing them"},
     Parameter<Input_options, std::optional<bool>>{
         "weld", &Input_options::weld,
-        "Weld the vertices that coincide in every frame. Default: glTF files welded (every clip of a file then has "
+        "Weld the vertices that coincide in every frame. Default: glTF, FBX and Collada files welded (every clip of a file then has "
         "one mesh), frame sequences and point caches not"},
     Parameter<Input_options, bool>{"refuse_defects", &Input_options::refuse_defects,
                                    "Fail on degenerate, duplicate or non-manifold triangles instead of repairing them"},
@@ -66,7 +66,7 @@ struct Input_name {
 };
 
 /// `input` split into its file and its clip (after '#', else `options.clip`), refusing what does
-/// not apply to its format: a clip for a file that is not glTF, a topology for a glTF file.
+/// not apply to its format: a clip for a file that is not a character file, a topology for one.
 /// @throws invalid_input naming the input.
 Input_name input_name(const std::string& input, const Input_options& options, Front front);
 
@@ -117,8 +117,8 @@ nlohmann::json input_record(const std::string& file, double fps);
 /// "channels"}], frames counted at the rate `contents` were listed at.
 nlohmann::json clips_record(const io::Gltf_contents& contents);
 
-/// The clips of the glTF file `path` (one without '#'), as `clips_record`.
-/// @throws invalid_input naming the file, when it is not a glTF file or cannot be read.
+/// The clips of the character file `path` (glTF, FBX, Collada; one without '#'), as `clips_record`.
+/// @throws invalid_input naming the file, when it is not a character file or cannot be read.
 nlohmann::json clips_of(const std::string& path, double fps);
 
 /// The repair report as JSON: every count, by name.

@@ -65,7 +65,7 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
   if (choice.policy != "motion-signature") return std::nullopt;
   const std::array<Input_name, 2> names{input_name(inputs[0], options, front), input_name(inputs[1], options, front)};
   for (const Input_name& name : names)
-    if (io::is_gltf(name.file) || !reads_frame_by_frame(name.file, options)) return std::nullopt;
+    if (io::is_character_file(name.file) || !reads_frame_by_frame(name.file, options)) return std::nullopt;
   return similarity::with_policy_choice(choice, [&](const auto& policy) -> std::optional<Compared> {
     using Description = typename std::remove_cvref_t<decltype(policy)>::Description;
     if constexpr (!std::is_same_v<Description, similarity::Motion_signature_description>) {

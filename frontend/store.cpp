@@ -70,10 +70,10 @@ std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_o
   for (const io::Labelled_clip& row : rows) ++rows_of_file[row.file];
   for (const io::Labelled_clip& row : rows) {
     const std::string file = row.file.string();
-    if (!io::is_gltf(row.file)) {
+    if (!io::is_character_file(row.file)) {
       if (rows_of_file[row.file] > 1)
         throw invalid_input("lists " + std::to_string(rows_of_file[row.file]) + " clips of " + file +
-                                ", which is not a glTF file and holds one animation",
+                                ", which is not a character file (glTF, FBX, Collada) and holds one animation",
                             {.file = labels});
       out.push_back({canonical_path(file), ""});
       continue;
@@ -148,7 +148,7 @@ std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, co
       continue;
     }
     const Input_name name = input_name(input, options, Front::command_line);
-    if (io::is_gltf(name.file)) add_gltf_clips(name.file, name.clip, options.fps, all, poses);
+    if (io::is_character_file(name.file)) add_gltf_clips(name.file, name.clip, options.fps, all, poses);
     else all.push_back({canonical_path(name.file), ""});
   }
   std::vector<Clip_source> once;  // a clip named twice is described once
@@ -385,7 +385,7 @@ public:
   // For the clips `order` names.
   Gltf_parses(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& order) {
     for (const std::size_t i : order)
-      if (io::is_gltf(clips[i].file)) ++files_[clips[i].file].clips_left;
+      if (io::is_character_file(clips[i].file)) ++files_[clips[i].file].clips_left;
   }
 
   // The parsed file; a parse that failed throws again for each of its clips.
@@ -495,7 +495,7 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
     // loop of several threads run on one), and a failure gives the lowest clip's error.
     deformseg::internal::parallel_for(count, options.threads, [&](std::size_t k) {
       const Clip_source& clip = clips[order[first + k]];
-      const std::shared_ptr<const io::Gltf_file> gltf = io::is_gltf(clip.file) ? parses.acquire(clip.file) : nullptr;
+      const std::shared_ptr<const io::Gltf_file> gltf = io::is_character_file(clip.file) ? parses.acquire(clip.file) : nullptr;
       described[k] = describe_clip(clip, gltf.get(), options, policy);
       if (gltf) parses.release(clip.file);
     });

@@ -133,15 +133,16 @@ Complexity O(T V + F).)doc")
 
   define_function<frontend::input_parameters, Types<const std::filesystem::path&>, Types<>, frontend::Input_options>(
       m, "read_animation",
-      R"doc(Reads an animation: a glTF clip (.glb, .gltf; "FILE.glb#CLIP" or `clip`, by name or index:
+      R"doc(Reads an animation: a clip of a character file, glTF (.glb, .gltf), FBX (.fbx) or Collada
+(.dae) ("FILE.fbx#CLIP" or `clip`, by name or index:
 needed when the file holds several, which are then listed in the error; a file of one clip gives
 it; `clips` lists them), a folder of frame files (.obj, .off, .ply, in natural order), a glob
 pattern, or a point cache (.pc2, .mdd) with `topology` (a mesh file). `fps` is the frame rate of
-every format (`Animation.fps`). glTF vertices are welded by what the file fixes (the same rest
+every format (`Animation.fps`). A character's vertices are welded by what the file fixes (the same rest
 position, skin weights and morph deltas), so that every clip of a file has one mesh.
 `Animation.repair` says what the repair changed. Raises InvalidInput naming the file, line and
 frame of the first problem, or for an option that does not apply (clip for frames, topology for
-glTF), as the tool does: the rules are the front end's (frontend/inputs.h) that the tool follows.
+a character file), as the tool does: the rules are the front end's (frontend/inputs.h) that the tool follows.
 Complexity linear in the input's size. Releases the GIL.)doc",
       [](const std::filesystem::path& path, const frontend::Input_options& options) {
         frontend::check_clip_applies({path.string()}, options, frontend::Front::python);
@@ -162,10 +163,10 @@ Complexity linear in the input's size. Releases the GIL.)doc",
         return python_of(clips);
       },
       "path"_a, "fps"_a = frontend::Input_options{}.fps,
-      R"doc(The clips of a glTF file (.glb, .gltf), in the file's order: a list of dicts with name, index
+      R"doc(The clips of a character file (.glb, .gltf, .fbx, .dae), in the file's order: a list of dicts with name, index
 (what `read_animation`'s `clip` takes, as does the name), start, end and duration (seconds),
 frames (sampled at `fps`, default 30) and channels. Raises InvalidInput naming the file when it is
-not a glTF file or cannot be read. Complexity linear in the file's size. Releases the GIL.)doc");
+not a character file or cannot be read. Complexity linear in the file's size. Releases the GIL.)doc");
 }
 
 }  // namespace deformseg::python

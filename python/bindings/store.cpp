@@ -74,7 +74,7 @@ std::vector<std::string> input_paths(const py::object& inputs) {
   std::vector<std::string> paths;
   for (std::size_t i = 0; i < sequence.size(); ++i)
     paths.push_back(path_text(sequence[i], "inputs[" + std::to_string(i) + "]"));
-  if (paths.empty()) refuse("inputs: no input; name animations, glTF files or labels CSVs");
+  if (paths.empty()) refuse("inputs: no input; name animations, character files (glTF, FBX, Collada) or labels CSVs");
   return paths;
 }
 
@@ -558,7 +558,7 @@ deformseg does not write. Complexity O(clips), or O(bytes) with 'checksums'. Rel
       R"doc(Describes clips once into the motion store in the folder `store` (made when missing), as the
 tool's `deformseg describe INPUTS --store S`: `inputs` a path or a sequence of paths, each an
 animation as read_animation reads it (frame files, a folder, a glob, a point cache with
-`topology`, FILE.glb#CLIP), a glTF file without a clip (every clip of 2 frames or more; its poses
+`topology`, FILE.glb#CLIP), a glTF, FBX or Collada file without a clip (every clip of 2 frames or more; its poses
 of one frame are left out and listed), or a labels CSV (evaluate's: the clip of each row). New
 clips are added, changed ones described again in place, unchanged ones skipped: a clip is
 unchanged when its path, clip, input options, size and modification time (with hash=True, the

@@ -12,7 +12,7 @@ namespace deformseg::tool {
 namespace {
 
 const char* const input_help =
-    "a glTF file (.glb, .gltf; a clip as FILE.glb#CLIP or by --clip), a folder of frames (.obj, .off, .ply; natural "
+    "a character file (glTF .glb, .gltf; FBX .fbx; Collada .dae; a clip as FILE.glb#CLIP or by --clip), a folder of frames (.obj, .off, .ply; natural "
     "order), a quoted glob pattern, or a point cache (.pc2, .mdd) with --topology";
 
 }  // namespace

@@ -1,4 +1,4 @@
-// deformseg convert INPUT OUT: an animation (a glTF clip, a point cache, frames) written as a
+// deformseg convert INPUT OUT: an animation (a glTF, FBX or Collada clip, a point cache, frames) written as a
 // frame sequence, or as a point cache with its topology mesh.
 #include "command.h"
 
@@ -54,7 +54,7 @@ std::vector<std::filesystem::path> write(const mesh::Surface_mesh_animation& ani
 void add_convert_command(CLI::App& app) {
   auto o = std::make_shared<Convert_options>();
   CLI::App* command = app.add_subcommand(
-      "convert", "Write an animation (a glTF clip, a point cache, frames) as a frame sequence, or as "
+      "convert", "Write an animation (a clip of a glTF, FBX or Collada file, a point cache, frames) as a frame sequence, or as "
                  "a point cache with its topology mesh");
   add_input(*command, o->input, o->read);
   command->add_option("out", o->out, "Folder to write into (created when missing)")->required()->check(output_folder());

@@ -63,7 +63,7 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
     for (const std::size_t i : lost)
       out.skipped.push_back(file.string() + " clip '" + rows[i].item.clip + "': " + e.what());
   };
-  if (!io::is_gltf(file)) {
+  if (!io::is_character_file(file)) {
     try {
       Input_options frames = o.read;
       frames.clip.clear();  // --clip is for the glTF rows
@@ -103,9 +103,9 @@ Read_clips read_clips(const std::vector<io::Labelled_clip>& rows, const Evaluate
     std::vector<std::size_t> of_file;
     for (std::size_t i = 0; i < rows.size(); ++i)
       if (rows[i].file == file) of_file.push_back(i);
-    if (!io::is_gltf(file) && of_file.size() > 1)
+    if (!io::is_character_file(file) && of_file.size() > 1)
       throw invalid_input("lists " + std::to_string(of_file.size()) + " clips of " + file.string() +
-                          ", which is not a glTF file and holds one animation", {.file = o.labels});
+                          ", which is not a character file (glTF, FBX, Collada) and holds one animation", {.file = o.labels});
     progress("reading " + std::to_string(of_file.size()) + " clip(s) of " + file.string());
     read_file_clips(file, of_file, rows, o, out);
   }

@@ -1,5 +1,5 @@
-// deformseg info INPUT: what an animation is made of; for a glTF file also its clips, skins and
-// meshes; and what repairing its mesh changed.
+// deformseg info INPUT: what an animation is made of; for a character file (glTF, FBX, Collada)
+// also its clips, skins and meshes; and what repairing its mesh changed.
 #include "command.h"
 #include "motion_box.h"
 
@@ -19,11 +19,11 @@ struct Info_options {
   std::string json;
 };
 
-// --files lists a frame sequence's files; a glTF file or a point cache has none.
+// --files lists a frame sequence's files; a character file or a point cache has none.
 void check_files_option(const Info_options& o) {
   if (!o.files) return;
   const std::string format = io::animation_format(o.input);
-  if (format == "gltf" || format == "glb" || format == "pc2" || format == "mdd")
+  if (io::is_character_file(io::split_clip_suffix(o.input).first) || format == "pc2" || format == "mdd")
     throw invalid_input("--files lists the frame files of a folder or glob; this input is one " + format + " file",
                         {.file = io::split_clip_suffix(o.input).first});
 }
@@ -33,7 +33,8 @@ nlohmann::json bounding_box(const mesh::Surface_mesh_animation& animation) {
   return {{"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}};
 }
 
-// The clips, skins and meshes of a glTF file, and the clip read.
+// The clips, skins and meshes of a character file (an FBX or Collada file's as glTF holds them),
+// and the clip read.
 nlohmann::json gltf_json(const std::string& file, double fps, const io::Gltf_read_report& read) {
   const io::Gltf_contents contents = io::gltf_contents(file, fps);
   const nlohmann::json clips = frontend::clips_record(contents);
@@ -121,7 +122,7 @@ void add_info_command(CLI::App& app) {
   auto options = std::make_shared<Info_options>();
   CLI::App* command = app.add_subcommand(
       "info", "Frames, vertices, triangles, bounding box over all frames, format, memory used and what "
-              "the repair of the mesh changed; for glTF also the clips, skins and meshes (of a file of several "
+              "the repair of the mesh changed; for glTF, FBX and Collada also the clips, skins and meshes (of a file of several "
               "clips with none named, the first clip is read, and named)");
   add_input(*command, options->input, options->read);
   command->add_flag("--files", options->files,

@@ -63,7 +63,7 @@ void run_describe(const Describe_options& o) {
   write_outputs(document, o.json, [&] {
     std::cout << "described    " << report.described.size() << "\nre-described " << report.redescribed.size()
               << "\nskipped      " << report.skipped.size() << " (unchanged)\nleft out     " << poses.size()
-              << " (poses of 1 frame in glTF files read whole)\nstore        " << o.store << ", "
+              << " (poses of 1 frame in character files read whole)\nstore        " << o.store << ", "
               << report.clips << " clips\n";
     for (const auto& name : report.described) std::cout << "  described    " << name << '\n';
     for (const auto& name : report.redescribed) std::cout << "  re-described " << name << '\n';
@@ -259,7 +259,7 @@ void add_describe_command(CLI::App& app) {
       "describe", "Describe clips once into a motion store: new clips are added, changed ones described again, "
                   "unchanged ones skipped");
   add_inputs(*command, "inputs", o->inputs, 1, -1, o->read,
-             "The clips: every clip of a glTF file that names none, or a labels CSV (evaluate's) for its rows; or");
+             "The clips: every clip of a glTF, FBX or Collada file that names none, or a labels CSV (evaluate's) for its rows; or");
   add_parameter(*command, std::get<3>(frontend::policy_parameters), o->policy.up);
   add_store_option(*command, o->store, "The store's folder (made when missing)");
   command->add_flag("--hash", o->hash,
