@@ -233,3 +233,31 @@ def test_reference_mesh_as_tool(tool, tubes, tmp_path, csv_matrix):
     assert np.array_equal(deformseg.frame_distances(a, reference_mesh=rest), csv_matrix(tmp_path / "d.csv", np.float32))
     document = tool("spatiotemporal", folder, "--reference-mesh", rest, "--threshold", "0.1", "--json", "-")
     check_evolving_graph(deformseg.evolving_graph(a, reference_mesh=rest, threshold=0.1), document)
+
+
+# ---- FBX and Collada characters ------------------------------------------------------------------
+
+@pytest.fixture(scope="session")
+def fbx_collada(characters):
+    folder = characters.parent / "fbx-collada"
+    if not (folder / "quat_man.fbx").exists():
+        pytest.skip(f"{folder} not found: the shared FBX and Collada characters are not beside the repository")
+    return folder
+
+
+def test_fbx_and_collada_read_as_tool(tool, fbx_collada):
+    man, max_walk, maya_walk = (fbx_collada / "quat_man.fbx", fbx_collada / "astroboy_walk_max.dae",
+                                fbx_collada / "astroboy_walk_maya.dae")
+    listed = deformseg.clips(man, fps=24)
+    assert [c["name"] for c in listed] == [c["name"] for c in tool("info", f"{man}#0", "--json", "-")["gltf"]["clips"]]
+    punch = next(c for c in listed if c["name"].endswith("|Punch"))
+    assert punch["frames"] == 25 and punch["index"] == 5
+    animation = deformseg.read_animation(f"{man}#{punch['name']}", fps=24)
+    info = tool("info", f"{man}#{punch['name']}", "--fps", "24", "--json", "-")
+    assert (animation.num_frames, animation.num_vertices) == (info["frames"], info["vertices"]) == (25, 791)
+    with pytest.raises(deformseg.InvalidInput, match="holds 9 clips: name the one to read"):
+        deformseg.read_animation(man)
+    document = tool("similarity", max_walk, maya_walk, "--json", "-")
+    s = deformseg.similarity(deformseg.read_animation(max_walk), deformseg.read_animation(maya_walk))
+    check_similarity(s, document)
+    assert s.value >= 0.9

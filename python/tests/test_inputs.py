@@ -138,7 +138,7 @@ def test_clips_lists_a_gltf_files_clips(fox, tmp_path):
     # The frames at another rate: those read at it.
     at_12 = deformseg.clips(pathlib.Path(fox), fps=12)
     assert at_12[2]["frames"] == deformseg.read_animation(fox, clip="Run", fps=12).num_frames < clips[2]["frames"]
-    with pytest.raises(deformseg.InvalidInput, match="glTF files .* only") as error:
+    with pytest.raises(deformseg.InvalidInput, match=r"character files \(.glb, .gltf, .fbx, .dae\) only") as error:
         deformseg.clips(tmp_path)
     assert error.value.file == str(tmp_path)
     with pytest.raises(deformseg.InvalidInput, match="fps"):

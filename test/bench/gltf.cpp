@@ -8,8 +8,16 @@
 // - KayKit: each Adventurers body of the shared data (../shared/data/characters, or
 //   $DEFORMSEG_DATA_DIR/characters), read whole: parsed, then every one of its 76 clips sampled
 //   at 30 fps. Skipped when the data is absent.
+// - FBX and Collada: each character of ../shared/data/fbx-collada read whole (Assimp's parse, the
+//   scene written as glTF, every clip sampled at 30 fps on 1 thread), against the same scene
+//   saved as .glb (fbx_collada_model, then tinygltf) read by the glTF path: skinned vertices per
+//   second of both, at three sizes (4734, 14643 and 19554 vertices before welding).
 #include <deformseg/io/gltf.h>
 #include <deformseg/threads.h>
+
+#if DEFORMSEG_HAS_ASSIMP
+#include <deformseg/io/fbx_collada.h>
+#endif
 
 #include <tiny_gltf.h>
 
@@ -24,6 +32,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -205,8 +214,49 @@ void kaykit_every_clip(benchmark::State& state, const std::string& body) {
   state.counters["frames"] = benchmark::Counter(double(frames), benchmark::Counter::kAvgIterations);
 }
 
+#if DEFORMSEG_HAS_ASSIMP
+// `name` of the shared FBX and Collada characters, and the same scene saved as a .glb file.
+std::pair<fs::path, fs::path> fbx_collada_and_glb(const std::string& name) {
+  const char* dir = std::getenv("DEFORMSEG_DATA_DIR");
+  const fs::path source = fs::path(dir && *dir ? dir : DEFORMSEG_DATA_DIR) / "fbx-collada" / name;
+  const fs::path glb = fs::temp_directory_path() / ("deformseg_bench_" + name + ".glb");
+  if (fs::exists(source) && !fs::exists(glb)) {
+    tinygltf::Model model = deformseg::io::fbx_collada_model(source);
+    if (!tinygltf::TinyGLTF().WriteGltfSceneToFile(&model, glb.string(), false, true, false, true))
+      throw std::runtime_error("cannot write " + glb.string());
+  }
+  return {source, glb};
+}
+
+// Reads `name` whole, from its own file (`as_glb` false) or from the .glb of its scene.
+void character_every_clip(benchmark::State& state, const std::string& name, bool as_glb) {
+  const auto [source, glb] = fbx_collada_and_glb(name);
+  if (!fs::exists(source)) {
+    state.SkipWithError(("no " + source.string()).c_str());
+    return;
+  }
+  std::size_t vertices = 0;
+  for (auto _ : state) {
+    const deformseg::io::Gltf_file file(as_glb ? glb : source);
+    for (const std::string& clip : file.clip_names()) {
+      const auto sampled = file.sample({.clip = clip, .threads = 1});
+      vertices += sampled.report.frames * sampled.num_vertices;
+    }
+  }
+  state.SetItemsProcessed(std::int64_t(vertices));
+}
+#endif
+
 }  // namespace
 
+#if DEFORMSEG_HAS_ASSIMP
+BENCHMARK_CAPTURE(character_every_clip, man_fbx, std::string("quat_man.fbx"), false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(character_every_clip, man_glb, std::string("quat_man.fbx"), true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(character_every_clip, astroboy_dae, std::string("astroboy_walk_max.dae"), false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(character_every_clip, astroboy_glb, std::string("astroboy_walk_max.dae"), true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(character_every_clip, stormtrooper_dae, std::string("stormtrooper.dae"), false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(character_every_clip, stormtrooper_glb, std::string("stormtrooper.dae"), true)->Unit(benchmark::kMillisecond);
+#endif
 BENCHMARK(skinning_one_thread)->Unit(benchmark::kMillisecond);
 BENCHMARK(skinning_all_threads)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(kaykit_every_clip, Knight, std::string("Knight.glb"))->Unit(benchmark::kMillisecond);

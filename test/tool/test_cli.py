@@ -91,4 +91,4 @@ def test_weld_excludes_no_weld(tool):
 
 # Options that do not apply to the input are refused before anything is read.
 def test_clip_without_gltf(tool, synth_obj):
-    fails(tool("info", synth_obj[0], "--clip", "Walk"), "--clip applies to glTF files only")
+    fails(tool("info", synth_obj[0], "--clip", "Walk"), "--clip applies to character files (glTF, FBX, Collada) only")

@@ -1,0 +1,482 @@
+// FBX and Collada reader: a Collada file written here with positions computed by hand, Assimp
+// scenes built here for the adapter's cases (morph targets, influences, units, missing targets),
+// and the shared characters (../shared/data/fbx-collada).
+#include "test_support.h"
+
+#if DEFORMSEG_HAS_ASSIMP
+
+#include <deformseg/io/fbx_collada.h>
+#include <deformseg/io/gltf.h>
+#include <deformseg/io/read_animation.h>
+#include <deformseg/similarity/motion_similarity.h>
+
+#include <assimp/scene.h>
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace fbx_collada_test {
+
+namespace ds = deformseg;
+namespace fs = std::filesystem;
+using deformseg::test::data_dir;
+using deformseg::test::write_file;
+using Catch::Matchers::Contains;
+
+// ---- A Collada file written here -------------------------------------------------------------
+
+// A strip of two quads along x, bones "root" (at the origin) and "tip" (at x = 1); the middle
+// vertices weigh 1 on each bone (weights that sum to 2, as files leave them). The clip "bend"
+// turns the tip by 90 degrees about z in 1 s, as matrices. `extra_controller` goes in the
+// controllers' library and `skin_source` is what the skin deforms.
+std::string two_bone_collada(const std::string& skin_source = "#strip", const std::string& extra_controller = "",
+                             const std::string& channel_target = "tip/transform") {
+  const std::string accessor_3 =
+      R"(<param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>)";
+  return R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+ <asset><unit name="meter" meter="1"/><up_axis>Y_UP</up_axis></asset>
+ <library_geometries>
+  <geometry id="strip" name="strip"><mesh>
+   <source id="strip-positions"><float_array id="strip-positions-array" count="18">0 0 0 1 0 0 2 0 0 0 1 0 1 1 0 2 1 0</float_array>
+    <technique_common><accessor source="#strip-positions-array" count="6" stride="3">)" +
+         accessor_3 + R"(</accessor></technique_common></source>
+   <vertices id="strip-vertices"><input semantic="POSITION" source="#strip-positions"/></vertices>
+   <triangles count="4"><input semantic="VERTEX" source="#strip-vertices" offset="0"/><p>0 1 4 0 4 3 1 2 5 1 5 4</p></triangles>
+  </mesh></geometry>
+  <geometry id="raised" name="raised"><mesh>
+   <source id="raised-positions"><float_array id="raised-positions-array" count="18">0 0 1 1 0 1 2 0 1 0 1 1 1 1 1 2 1 1</float_array>
+    <technique_common><accessor source="#raised-positions-array" count="6" stride="3">)" +
+         accessor_3 + R"(</accessor></technique_common></source>
+   <vertices id="raised-vertices"><input semantic="POSITION" source="#raised-positions"/></vertices>
+   <triangles count="4"><input semantic="VERTEX" source="#raised-vertices" offset="0"/><p>0 1 4 0 4 3 1 2 5 1 5 4</p></triangles>
+  </mesh></geometry>
+ </library_geometries>
+ <library_controllers>)" +
+         extra_controller + R"(
+  <controller id="skin"><skin source=")" +
+         skin_source + R"(">
+   <bind_shape_matrix>1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1</bind_shape_matrix>
+   <source id="skin-joints"><Name_array id="skin-joints-array" count="2">root tip</Name_array>
+    <technique_common><accessor source="#skin-joints-array" count="2" stride="1"><param name="JOINT" type="name"/></accessor></technique_common></source>
+   <source id="skin-binds"><float_array id="skin-binds-array" count="32">1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1 1 0 0 -1 0 1 0 0 0 0 1 0 0 0 0 1</float_array>
+    <technique_common><accessor source="#skin-binds-array" count="2" stride="16"><param name="TRANSFORM" type="float4x4"/></accessor></technique_common></source>
+   <source id="skin-weights"><float_array id="skin-weights-array" count="1">1</float_array>
+    <technique_common><accessor source="#skin-weights-array" count="1" stride="1"><param name="WEIGHT" type="float"/></accessor></technique_common></source>
+   <joints><input semantic="JOINT" source="#skin-joints"/><input semantic="INV_BIND_MATRIX" source="#skin-binds"/></joints>
+   <vertex_weights count="6"><input semantic="JOINT" source="#skin-joints" offset="0"/><input semantic="WEIGHT" source="#skin-weights" offset="1"/>
+    <vcount>1 2 1 1 2 1</vcount><v>0 0 0 0 1 0 1 0 0 0 0 0 1 0 1 0</v></vertex_weights>
+  </skin></controller>
+ </library_controllers>
+ <library_animations><animation id="bend" name="bend">
+  <source id="bend-input"><float_array id="bend-input-array" count="2">0 1</float_array>
+   <technique_common><accessor source="#bend-input-array" count="2" stride="1"><param name="TIME" type="float"/></accessor></technique_common></source>
+  <source id="bend-output"><float_array id="bend-output-array" count="32">1 0 0 1 0 1 0 0 0 0 1 0 0 0 0 1 0 -1 0 1 1 0 0 0 0 0 1 0 0 0 0 1</float_array>
+   <technique_common><accessor source="#bend-output-array" count="2" stride="16"><param name="TRANSFORM" type="float4x4"/></accessor></technique_common></source>
+  <source id="bend-interpolation"><Name_array id="bend-interpolation-array" count="2">LINEAR LINEAR</Name_array>
+   <technique_common><accessor source="#bend-interpolation-array" count="2" stride="1"><param name="INTERPOLATION" type="name"/></accessor></technique_common></source>
+  <sampler id="bend-sampler"><input semantic="INPUT" source="#bend-input"/><input semantic="OUTPUT" source="#bend-output"/><input semantic="INTERPOLATION" source="#bend-interpolation"/></sampler>
+  <channel source="#bend-sampler" target=")" +
+         channel_target + R"("/>
+ </animation></library_animations>
+ <library_visual_scenes><visual_scene id="scene">
+  <node id="root" name="root" sid="root" type="JOINT"><matrix sid="transform">1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1</matrix>
+   <node id="tip" name="tip" sid="tip" type="JOINT"><matrix sid="transform">1 0 0 1 0 1 0 0 0 0 1 0 0 0 0 1</matrix></node>
+  </node>
+  <node id="body" name="body"><instance_controller url="#skin"><skeleton>#root</skeleton></instance_controller></node>
+ </visual_scene></library_visual_scenes>
+ <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)";
+}
+
+// The distinct positions of frame `t`, sorted: what two readings of one clip share whatever
+// their vertex order and splitting.
+std::vector<std::array<double, 3>> distinct_positions(const ds::io::Sampled_gltf& sampled, std::size_t t) {
+  std::vector<std::array<double, 3>> points;
+  for (std::size_t v = 0; v < sampled.num_vertices; ++v) {
+    const double* p = sampled.positions.data() + 3 * (t * sampled.num_vertices + v);
+    points.push_back({p[0], p[1], p[2]});
+  }
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
+// Whether `points` holds a point within `tolerance` of `expected`.
+bool holds(const std::vector<std::array<double, 3>>& points, const std::array<double, 3>& expected,
+           double tolerance = 1e-6) {
+  return std::any_of(points.begin(), points.end(), [&](const std::array<double, 3>& p) {
+    return std::hypot(p[0] - expected[0], p[1] - expected[1], p[2] - expected[2]) <= tolerance;
+  });
+}
+
+TEST_CASE("fbx_collada: a two-bone Collada strip, weights normalised, keys in seconds", "[fbx][collada]") {
+  const fs::path path = write_file("collada/two_bones.dae", two_bone_collada());
+  const ds::io::Gltf_file file(path);
+  REQUIRE(file.clip_names().size() == 1);
+  const ds::io::Sampled_gltf sampled = file.sample({.fps = 2});
+  REQUIRE(sampled.report.frames == 3);  // 0, 0.5 and 1 s
+  CHECK(sampled.num_vertices == 12);    // Assimp gives each triangle corner a vertex of its own
+  CHECK(file.repair().source_vertex.size() == 6);
+  const auto rest = distinct_positions(sampled, 0);
+  for (const std::array<double, 3> p : {std::array<double, 3>{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}})
+    CHECK(holds(rest, p));
+  // At 0.5 s the tip has turned by 45 degrees about its joint at (1, 0, 0).
+  const double h = std::sqrt(0.5);
+  const auto half = distinct_positions(sampled, 1);
+  CHECK(holds(half, {1 + h, h, 0}));          // (2, 0, 0), on the tip only
+  CHECK(holds(half, {1, 0, 0}));              // the joint itself
+  CHECK(holds(half, {(1 + 1 - h) / 2, (1 + h) / 2, 0}));  // (1, 1, 0), half on each bone
+  // At 1 s by 90 degrees: (2, 0, 0) -> (1, 1, 0), (2, 1, 0) -> (0, 1, 0), (1, 1, 0) -> (0.5, 0.5, 0).
+  const auto bent = distinct_positions(sampled, 2);
+  CHECK(holds(bent, {1, 1, 0}));
+  CHECK(holds(bent, {0, 1, 0}));
+  CHECK(holds(bent, {0.5, 0.5, 0}));
+  CHECK(holds(bent, {0, 0, 0}));
+}
+
+TEST_CASE("fbx_collada: read_animation reads FILE.dae#CLIP, welded, and info lists its clip", "[fbx][collada][io]") {
+  const fs::path path = write_file("collada/two_bones_read.dae", two_bone_collada());
+  const std::string clip = ds::io::Gltf_file(path).clip_names().front();
+  CHECK(ds::io::is_character_file(path));
+  CHECK(ds::io::is_fbx_or_collada("X.FBX"));
+  CHECK(ds::io::split_clip_suffix("walk.fbx#Run") == std::pair<std::string, std::optional<std::string>>{"walk.fbx", "Run"});
+  CHECK(ds::io::animation_format(path.string() + "#" + clip) == "dae");
+  const auto animation = ds::io::read_animation(path.string() + "#" + clip, {.fps = 4});
+  CHECK(animation.num_frames() == 5);
+  CHECK(animation.num_vertices() == 6);
+  CHECK(animation.num_faces() == 4);
+  CHECK(animation.frames_per_second() == 4);
+  const ds::io::Gltf_contents contents = ds::io::gltf_contents(path, 4);
+  REQUIRE(contents.clips.size() == 1);
+  CHECK(contents.clips[0].frames == 5);
+  REQUIRE(contents.skins.size() == 1);
+  CHECK(contents.skins[0].joints == 2);
+  CHECK(contents.vertices == 12);  // before welding
+  CHECK_THROWS_WITH(ds::io::read_animation(path.string() + "#walk"),
+                    Contains("two_bones_read.dae") && Contains("no clip 'walk'") && Contains(clip));
+  CHECK_THROWS_WITH(ds::io::read_animation(path.string(), {.topology = "t.obj"}), Contains("own connectivity"));
+}
+
+TEST_CASE("fbx_collada: a Collada morph under a skin, which Assimp drops, is refused", "[fbx][collada]") {
+  const std::string morph = R"(
+  <controller id="morph"><morph source="#strip" method="NORMALIZED">
+   <source id="morph-targets"><IDREF_array id="morph-targets-array" count="1">raised</IDREF_array>
+    <technique_common><accessor source="#morph-targets-array" count="1" stride="1"><param name="IDREF" type="IDREF"/></accessor></technique_common></source>
+   <source id="morph-weights"><float_array id="morph-weights-array" count="1">0.5</float_array>
+    <technique_common><accessor source="#morph-weights-array" count="1" stride="1"><param name="MORPH_WEIGHT" type="float"/></accessor></technique_common></source>
+   <targets><input semantic="MORPH_TARGET" source="#morph-targets"/><input semantic="MORPH_WEIGHT" source="#morph-weights"/></targets>
+  </morph></controller>)";
+  const fs::path path = write_file("collada/morph_under_skin.dae", two_bone_collada("#morph", morph));
+  CHECK_THROWS_WITH(ds::io::Gltf_file(path), Contains("morph_under_skin.dae") && Contains("morph"));
+}
+
+TEST_CASE("fbx_collada: files Assimp cannot parse, or that are missing, are refused, named", "[fbx][collada]") {
+  const fs::path garbage = write_file("collada/garbage.fbx", "this is not an FBX file at all\n");
+  CHECK_THROWS_WITH(ds::io::Gltf_file(garbage), Contains("garbage.fbx") && Contains("not a valid FBX file"));
+  const std::string text = two_bone_collada();
+  const fs::path truncated = write_file("collada/truncated.dae", text.substr(0, text.size() / 2));
+  CHECK_THROWS_WITH(ds::io::Gltf_file(truncated), Contains("truncated.dae") && Contains("Collada"));
+  CHECK_THROWS_WITH(ds::io::Gltf_file("no/such/file.dae"), Contains("file.dae") && Contains("does not exist"));
+  CHECK_THROWS_WITH(ds::io::fbx_collada_model("scene.obj"), Contains("not an FBX or Collada file"));
+}
+
+// ---- The adapter on Assimp scenes built here -------------------------------------------------
+
+// A scene of one triangle (vertices at x = 0, 1 and y = 1) under node "body", with bones and
+// channels added by each test; its root "root" has child "body".
+struct Scene_builder {
+  aiScene* scene = new aiScene;
+
+  Scene_builder() {
+    scene->mRootNode = new aiNode("root");
+    aiNode* body = new aiNode("body");
+    body->mParent = scene->mRootNode;
+    scene->mRootNode->addChildren(1, &body);
+    aiMesh* mesh = new aiMesh;
+    mesh->mName = "triangle";
+    mesh->mPrimitiveTypes = aiPrimitiveType_TRIANGLE;
+    mesh->mNumVertices = 3;
+    mesh->mVertices = new aiVector3D[3]{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    mesh->mNumFaces = 1;
+    mesh->mFaces = new aiFace[1];
+    mesh->mFaces[0].mNumIndices = 3;
+    mesh->mFaces[0].mIndices = new unsigned[3]{0, 1, 2};
+    scene->mNumMeshes = 1;
+    scene->mMeshes = new aiMesh*[1]{mesh};
+    body->mNumMeshes = 1;
+    body->mMeshes = new unsigned[1]{0};
+  }
+  ~Scene_builder() { delete scene; }
+  Scene_builder(const Scene_builder&) = delete;
+  Scene_builder& operator=(const Scene_builder&) = delete;
+
+  aiMesh& mesh() { return *scene->mMeshes[0]; }
+
+  /// A clip of one channel on `node`, its position keys (time in ticks, x) at 10 ticks per second.
+  void add_clip(const std::string& node, const std::vector<std::pair<double, float>>& x_keys) {
+    aiNodeAnim* channel = new aiNodeAnim;
+    channel->mNodeName = node;
+    channel->mNumPositionKeys = unsigned(x_keys.size());
+    channel->mPositionKeys = new aiVectorKey[x_keys.size()];
+    for (std::size_t k = 0; k < x_keys.size(); ++k)
+      channel->mPositionKeys[k] = aiVectorKey(x_keys[k].first, aiVector3D(x_keys[k].second, 0, 0));
+    aiAnimation* clip = new aiAnimation;
+    clip->mName = "slide";
+    clip->mTicksPerSecond = 10;
+    clip->mNumChannels = 1;
+    clip->mChannels = new aiNodeAnim*[1]{channel};
+    scene->mNumAnimations = 1;
+    scene->mAnimations = new aiAnimation*[1]{clip};
+  }
+};
+
+ds::io::Sampled_gltf sample_scene(const aiScene& scene, double fps = 10, double metres = 1) {
+  return ds::io::Gltf_file("scene", ds::io::internal::assimp::model_of(scene, metres)).sample({.fps = fps});
+}
+
+TEST_CASE("fbx_collada adapter: a rigid mesh follows its node's keys, in ticks per second, in metres", "[fbx]") {
+  Scene_builder built;
+  built.add_clip("body", {{0, 0}, {10, 2}});  // x from 0 to 2 in 10 ticks = 1 s
+  const ds::io::Sampled_gltf sampled = sample_scene(*built.scene, 2, 0.5);
+  REQUIRE(sampled.report.frames == 3);
+  CHECK(sampled.report.end == Approx(1));
+  // At 0.5 s the body is at x = 1, scaled by 0.5 m per unit: the vertex (1, 0, 0) is at 1.
+  CHECK(sampled.positions[9 + 3] == Approx(1.0));
+  CHECK(sampled.positions[9 + 7] == Approx(0.5));
+}
+
+TEST_CASE("fbx_collada adapter: a channel on a node the scene lacks is refused, named", "[fbx]") {
+  Scene_builder built;
+  built.add_clip("ghost", {{0, 0}, {10, 2}});
+  CHECK_THROWS_WITH(sample_scene(*built.scene), Contains("'slide'") && Contains("ghost") && Contains("no such node"));
+  Scene_builder pivot;
+  pivot.add_clip("hips_$AssimpFbx$_PreRotation", {{0, 0}});
+  CHECK_THROWS_WITH(sample_scene(*pivot.scene), Contains("$AssimpFbx$") && Contains("FBX pivot"));
+}
+
+TEST_CASE("fbx_collada adapter: morph targets, absolute in Assimp, move by their weighted deltas", "[fbx]") {
+  Scene_builder built;
+  aiMesh& mesh = built.mesh();
+  aiAnimMesh* raised = new aiAnimMesh;
+  raised->mNumVertices = 3;
+  raised->mVertices = new aiVector3D[3]{{0, 0, 2}, {1, 0, 2}, {0, 1, 2}};
+  mesh.mNumAnimMeshes = 1;
+  mesh.mAnimMeshes = new aiAnimMesh*[1]{raised};
+  aiMeshMorphAnim* channel = new aiMeshMorphAnim;
+  channel->mName = "body";
+  channel->mNumKeys = 2;
+  channel->mKeys = new aiMeshMorphKey[2];
+  for (unsigned k = 0; k < 2; ++k) {
+    channel->mKeys[k].mTime = 10.0 * k;
+    channel->mKeys[k].mNumValuesAndWeights = 1;
+    channel->mKeys[k].mValues = new unsigned[1]{0};
+    channel->mKeys[k].mWeights = new double[1]{k == 0 ? 0.0 : 0.5};
+  }
+  aiAnimation* clip = new aiAnimation;
+  clip->mName = "rise";
+  clip->mTicksPerSecond = 10;
+  clip->mNumMorphMeshChannels = 1;
+  clip->mMorphMeshChannels = new aiMeshMorphAnim*[1]{channel};
+  built.scene->mNumAnimations = 1;
+  built.scene->mAnimations = new aiAnimation*[1]{clip};
+  const ds::io::Sampled_gltf sampled = sample_scene(*built.scene, 2);
+  REQUIRE(sampled.report.frames == 3);
+  for (std::size_t v = 0; v < 3; ++v) {
+    CHECK(sampled.positions[3 * v + 2] == 0);                  // weight 0
+    CHECK(sampled.positions[9 + 3 * v + 2] == Approx(0.5));    // 0.25 of the delta 2
+    CHECK(sampled.positions[18 + 3 * v + 2] == Approx(1.0));   // 0.5 of it
+  }
+  channel->mKeys[1].mValues[0] = 3;  // a target the mesh does not have
+  CHECK_THROWS_WITH(sample_scene(*built.scene), Contains("'rise'") && Contains("target 3 of 1"));
+}
+
+TEST_CASE("fbx_collada adapter: the 8 largest influences of 9 are kept, a bone naming no node refused", "[fbx]") {
+  Scene_builder built;
+  aiMesh& mesh = built.mesh();
+  // Nine bones under the root, each a node of its own: bone k moves by k along x in the clip, and
+  // weighs k + 1 on vertex 0; the smallest, bone 0, is dropped.
+  aiNode* root = built.scene->mRootNode;
+  std::vector<aiNode*> joints;
+  for (int k = 0; k < 9; ++k) {
+    joints.push_back(new aiNode("bone" + std::to_string(k)));
+    joints.back()->mParent = root;
+  }
+  root->addChildren(9, joints.data());
+  mesh.mNumBones = 9;
+  mesh.mBones = new aiBone*[9];
+  aiAnimation* clip = new aiAnimation;
+  clip->mName = "spread";
+  clip->mTicksPerSecond = 1;
+  clip->mNumChannels = 9;
+  clip->mChannels = new aiNodeAnim*[9];
+  for (unsigned k = 0; k < 9; ++k) {
+    aiBone* bone = mesh.mBones[k] = new aiBone;
+    bone->mName = "bone" + std::to_string(k);
+    bone->mNumWeights = 1;
+    bone->mWeights = new aiVertexWeight[1]{aiVertexWeight(0, float(k + 1))};
+    aiNodeAnim* channel = clip->mChannels[k] = new aiNodeAnim;
+    channel->mNodeName = bone->mName;
+    channel->mNumPositionKeys = 1;
+    channel->mPositionKeys = new aiVectorKey[1]{aiVectorKey(0, aiVector3D(float(k), 0, 0))};
+  }
+  built.scene->mNumAnimations = 1;
+  built.scene->mAnimations = new aiAnimation*[1]{clip};
+  const ds::io::Sampled_gltf sampled = sample_scene(*built.scene);
+  // Bones 1 to 8, weights 2 to 9 (sum 44): x = sum k (k + 1) / 44 over k = 1..8 = 240 / 44.
+  CHECK(sampled.positions[0] == Approx(240.0 / 44));
+  mesh.mBones[4]->mName = "nobody";
+  CHECK_THROWS_WITH(sample_scene(*built.scene), Contains("'triangle'") && Contains("bone 'nobody' names no node"));
+}
+
+TEST_CASE("fbx_collada adapter: an FBX unit factor gives metres", "[fbx]") {
+  Scene_builder built;
+  built.scene->mMetaData = aiMetadata::Alloc(1);
+  built.scene->mMetaData->Set(0, "UnitScaleFactor", 2.54f);  // inches
+  CHECK(ds::io::internal::assimp::metres_per_unit(*built.scene) == Approx(0.0254));
+  built.scene->mMetaData->Set(0, "UnitScaleFactor", -1.0f);
+  CHECK_THROWS_WITH(ds::io::internal::assimp::metres_per_unit(*built.scene), Contains("UnitScaleFactor"));
+}
+
+// ---- The shared characters (../shared/data/fbx-collada, SOURCE.md) ---------------------------
+
+fs::path character(const std::string& name) { return data_dir() / "fbx-collada" / name; }
+
+// The diagonal of the box of the first `frames` frames (default all).
+double diagonal(const ds::io::Sampled_gltf& sampled, std::size_t frames = SIZE_MAX) {
+  std::array<double, 3> low{INFINITY, INFINITY, INFINITY}, high{-INFINITY, -INFINITY, -INFINITY};
+  const std::size_t end = std::min(sampled.positions.size(), 3 * sampled.num_vertices * std::min(frames, sampled.report.frames));
+  for (std::size_t i = 0; i < end; ++i)
+    low[i % 3] = std::min(low[i % 3], sampled.positions[i]), high[i % 3] = std::max(high[i % 3], sampled.positions[i]);
+  return std::hypot(high[0] - low[0], high[1] - low[1], high[2] - low[2]);
+}
+
+TEST_CASE("fbx_collada: every clip of the shared characters reads, welded to the counts SOURCE.md gives",
+          "[fbx][collada][data]") {
+  const std::map<std::string, std::size_t> vertices = {{"quat_man.fbx", 791},
+                                                       {"quat_woman.fbx", 954},
+                                                       {"astroboy_walk_max.dae", 2619},
+                                                       {"astroboy_walk_maya.dae", 2619},
+                                                       {"stormtrooper.dae", 3275}};
+  for (const auto& [name, count] : vertices) {
+    INFO(name);
+    const ds::io::Gltf_file file(character(name));
+    REQUIRE(!file.clip_names().empty());
+    // The repair then copies a vertex where the surface pinches (2 in the woman): not a weld.
+    for (const std::string& clip : file.clip_names()) {
+      ds::io::Gltf_read_report read;
+      const auto animation = file.read({.clip = clip, .fps = 30}, &read);
+      CHECK(animation.num_vertices() - read.repair.duplicated_vertices == count);
+    }
+  }
+}
+
+TEST_CASE("fbx_collada: the man and the woman share a rig: clips of one length, one frame count", "[fbx][data]") {
+  const ds::io::Gltf_contents man = ds::io::gltf_contents(character("quat_man.fbx"), 24);
+  const ds::io::Gltf_contents woman = ds::io::gltf_contents(character("quat_woman.fbx"), 24);
+  REQUIRE(man.skins.size() == 1);
+  REQUIRE(woman.skins.size() == 1);
+  CHECK(man.skins[0].joints == woman.skins[0].joints);
+  std::size_t pairs = 0;
+  for (const auto& a : man.clips)
+    for (const auto& b : woman.clips)
+      if (std::abs(a.duration - b.duration) < 1e-6) {
+        INFO(a.name << " and " << b.name);
+        CHECK(a.frames == b.frames);
+        ++pairs;
+      }
+  CHECK(pairs >= 3);  // Jump and Jump2, Jump and Punch, Punch and Punch (24 keys at 24 fps)
+  const auto punch = std::find_if(man.clips.begin(), man.clips.end(), [](const auto& c) { return c.name.ends_with("|Punch"); });
+  REQUIRE(punch != man.clips.end());
+  CHECK(punch->frames == 25);
+}
+
+TEST_CASE("fbx_collada: the astroBoy exports of 3ds Max and Maya give one walk", "[fbx][collada][data]") {
+  const ds::io::Gltf_file max(character("astroboy_walk_max.dae")), maya(character("astroboy_walk_maya.dae"));
+  const ds::io::Sampled_gltf a = max.sample({.fps = 30}), b = maya.sample({.fps = 30});
+  // Inches and Z up, centimetres and Y up: both read in metres, Y up, the same size at the start.
+  CHECK(diagonal(a, 1) == Approx(diagonal(b, 1)).epsilon(1e-4));
+  const auto max_walk = max.read({.fps = 30});
+  const auto maya_walk = maya.read({.fps = 30});
+  CHECK(max_walk.num_vertices() == maya_walk.num_vertices());
+  const double similarity = ds::similarity::motion_similarity(max_walk, maya_walk).value;
+  CHECK(similarity >= 0.9);
+}
+
+TEST_CASE("fbx_collada: the stormtrooper dances", "[fbx][collada][data]") {
+  const ds::io::Sampled_gltf dance = ds::io::Gltf_file(character("stormtrooper.dae")).sample({.fps = 30});
+  CHECK(dance.report.frames >= 100);
+  // Some vertex travels more than a fifth of the body's size from its first position.
+  const std::size_t block = 3 * dance.num_vertices;
+  double farthest = 0;
+  for (std::size_t t = 1; t < dance.report.frames; ++t)
+    for (std::size_t v = 0; v < dance.num_vertices; ++v) {
+      const double* p = dance.positions.data() + t * block + 3 * v;
+      const double* q = dance.positions.data() + 3 * v;
+      farthest = std::max(farthest, std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]));
+    }
+  CHECK(farthest > 0.2 * diagonal(dance));
+}
+
+TEST_CASE("fbx_collada: a clip the file lacks is refused, listing those it has", "[fbx][data]") {
+  CHECK_THROWS_WITH(ds::io::read_animation(character("quat_man.fbx").string() + "#Dance"),
+                    Contains("quat_man.fbx") && Contains("no clip 'Dance'") && Contains("'Human Armature|Walk'"));
+  CHECK_THROWS_WITH(ds::io::read_animation(character("quat_man.fbx").string()),
+                    Contains("holds 9 clips: name the one to read"));
+}
+
+// ---- The FBX SDK's reading, through FBX2glTF (test/fbx_sdk.cmake runs this) -----------------
+
+// The largest distance, over the frames, from a distinct position of one reading to the nearest
+// of the other's, both ways (a grid of cells of the tolerance would do; the characters are small).
+double largest_gap(const ds::io::Sampled_gltf& a, const ds::io::Sampled_gltf& b) {
+  double gap = 0;
+  for (std::size_t t = 0; t < a.report.frames; ++t) {
+    const auto pa = distinct_positions(a, t), pb = distinct_positions(b, t);
+    for (const auto* pair : {&pa, &pb}) {
+      const auto& from = *pair;
+      const auto& to = pair == &pa ? pb : pa;
+      for (const auto& p : from) {
+        double nearest = INFINITY;
+        for (const auto& q : to) nearest = std::min(nearest, std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]));
+        gap = std::max(gap, nearest);
+      }
+    }
+  }
+  return gap;
+}
+
+TEST_CASE("fbx_collada: every FBX clip against the FBX SDK's, through FBX2glTF", "[.fbx-sdk][data]") {
+  const fs::path references = ds::test::environment_path("DEFORMSEG_FBX_REFERENCES", "");
+  REQUIRE(!references.empty());
+  for (const std::string name : {"quat_man", "quat_woman"}) {
+    const ds::io::Gltf_file ours(character(name + ".fbx")), sdk(references / (name + ".glb"));
+    const std::vector<std::string> sdk_clips = sdk.clip_names();
+    std::size_t compared = 0;
+    for (const std::string& clip : ours.clip_names()) {
+      if (std::find(sdk_clips.begin(), sdk_clips.end(), clip) == sdk_clips.end()) continue;  // stubs it leaves out
+      INFO(name << " clip " << clip);
+      const ds::io::Sampled_gltf a = ours.sample({.clip = clip, .fps = 24}), b = sdk.sample({.clip = clip, .fps = 24});
+      REQUIRE(a.report.frames == b.report.frames);
+      CHECK(a.report.end == Approx(b.report.end).margin(1e-6));
+      const double gap = largest_gap(a, b) / diagonal(b);
+      std::printf("%s %s: largest gap %.3g of the diagonal\n", name.c_str(), clip.c_str(), gap);
+      // The goal is 1e-5; the inverse bind matrices the SDK gives these Blender files differ from
+      // their clusters' (chapter 16), by up to 4.1e-3 of the diagonal on the legs.
+      CHECK(gap <= 4.5e-3);
+      ++compared;
+    }
+    CHECK(compared >= 8);
+  }
+}
+
+}  // namespace fbx_collada_test
+
+#endif  // DEFORMSEG_HAS_ASSIMP
