@@ -31,32 +31,32 @@ using Catch::Matchers::Contains;
 
 // ---- A Collada file written here -------------------------------------------------------------
 
-// A strip of two quads along x, bones "root" (at the origin) and "tip" (at x = 1); the middle
-// vertices weigh 1 on each bone (weights that sum to 2, as files leave them). The clip "bend"
-// turns the tip by 90 degrees about z in 1 s, as matrices. `extra_controller` goes in the
-// controllers' library and `skin_source` is what the skin deforms.
+// A Collada geometry `id`: a strip of two quads along x at height `z`.
+std::string collada_strip(const std::string& id, int z) {
+  std::string positions;
+  for (const int y : {0, 1})
+    for (const int x : {0, 1, 2}) positions += std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + " ";
+  return R"(<geometry id=")" + id + R"(" name=")" + id + R"("><mesh>
+   <source id=")" + id + R"(-positions"><float_array id=")" + id + R"(-array" count="18">)" + positions + R"(</float_array>
+    <technique_common><accessor source="#)" + id + R"(-array" count="6" stride="3"><param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/></accessor></technique_common></source>
+   <vertices id=")" + id + R"(-vertices"><input semantic="POSITION" source="#)" + id + R"(-positions"/></vertices>
+   <triangles count="4"><input semantic="VERTEX" source="#)" + id + R"(-vertices" offset="0"/><p>0 1 4 0 4 3 1 2 5 1 5 4</p></triangles>
+  </mesh></geometry>
+)";
+}
+
+// The strip at height 0 (and at 1, "raised", unused unless a controller names it) on bones "root"
+// (at the origin) and "tip" (at x = 1); the middle vertices weigh 1 on each bone (weights that sum
+// to 2, as files leave them). The clip "bend" turns the tip by 90 degrees about z in 1 s, as
+// matrices, on `channel_target`. `extra_controller` goes in the controllers' library and
+// `skin_source` is what the skin deforms.
 std::string two_bone_collada(const std::string& skin_source = "#strip", const std::string& extra_controller = "",
                              const std::string& channel_target = "tip/transform") {
-  const std::string accessor_3 =
-      R"(<param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>)";
   return R"(<?xml version="1.0" encoding="utf-8"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
  <asset><unit name="meter" meter="1"/><up_axis>Y_UP</up_axis></asset>
  <library_geometries>
-  <geometry id="strip" name="strip"><mesh>
-   <source id="strip-positions"><float_array id="strip-positions-array" count="18">0 0 0 1 0 0 2 0 0 0 1 0 1 1 0 2 1 0</float_array>
-    <technique_common><accessor source="#strip-positions-array" count="6" stride="3">)" +
-         accessor_3 + R"(</accessor></technique_common></source>
-   <vertices id="strip-vertices"><input semantic="POSITION" source="#strip-positions"/></vertices>
-   <triangles count="4"><input semantic="VERTEX" source="#strip-vertices" offset="0"/><p>0 1 4 0 4 3 1 2 5 1 5 4</p></triangles>
-  </mesh></geometry>
-  <geometry id="raised" name="raised"><mesh>
-   <source id="raised-positions"><float_array id="raised-positions-array" count="18">0 0 1 1 0 1 2 0 1 0 1 1 1 1 1 2 1 1</float_array>
-    <technique_common><accessor source="#raised-positions-array" count="6" stride="3">)" +
-         accessor_3 + R"(</accessor></technique_common></source>
-   <vertices id="raised-vertices"><input semantic="POSITION" source="#raised-positions"/></vertices>
-   <triangles count="4"><input semantic="VERTEX" source="#raised-vertices" offset="0"/><p>0 1 4 0 4 3 1 2 5 1 5 4</p></triangles>
-  </mesh></geometry>
+  )" + collada_strip("strip", 0) + collada_strip("raised", 1) + R"(
  </library_geometries>
  <library_controllers>)" +
          extra_controller + R"(
@@ -176,6 +176,13 @@ TEST_CASE("fbx_collada: a Collada morph under a skin, which Assimp drops, is ref
   </morph></controller>)";
   const fs::path path = write_file("collada/morph_under_skin.dae", two_bone_collada("#morph", morph));
   CHECK_THROWS_WITH(ds::io::Gltf_file(path), Contains("morph_under_skin.dae") && Contains("morph"));
+}
+
+TEST_CASE("fbx_collada: a Collada channel on a node the file lacks, which Assimp drops, is refused", "[fbx][collada]") {
+  const fs::path path = write_file("collada/ghost.dae", two_bone_collada("#strip", "", "ghost/transform"));
+  CHECK_THROWS_WITH(ds::io::Gltf_file(path), Contains("ghost.dae") && Contains("targets 'ghost/transform'"));
+  CHECK(ds::io::internal::collada::attribute(R"(<channel source="#s" target='tip/transform'/>)", 0, "target") ==
+        "tip/transform");
 }
 
 TEST_CASE("fbx_collada: files Assimp cannot parse, or that are missing, are refused, named", "[fbx][collada]") {

@@ -2,8 +2,10 @@
 // scene into glTF's structures (io/internal/assimp_*.h), then the glTF reader's sampling and
 // welding of it. The input is decoded into an Assimp scene (a node tree, meshes with faces,
 // bones, weights and morph targets, clips with node and morph channels), with indices, names,
-// counts and values out of range on purpose. Assimp's parsing itself is not fuzzed here:
-// Debian's Assimp is not instrumented, so its faults would be neither seen nor ours to fix.
+// counts and values out of range on purpose; the same bytes, as the text of a Collada file, go
+// through the checks of what Assimp drops (io/internal/collada_checks.h). Assimp's parsing itself
+// is not fuzzed here: Debian's Assimp is not instrumented, so its faults would be neither seen nor
+// ours to fix.
 #include "fuzz_support.h"
 
 #include <deformseg/io/fbx_collada.h>
@@ -16,6 +18,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -163,6 +166,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   deformseg::fuzz::expect_valid_outcome(name, [&](const std::filesystem::path& path) {
     tinygltf::Model model;
     try {
+      deformseg::io::internal::collada::check_channel_targets(
+          std::string_view(reinterpret_cast<const char*>(data), size));  // the same bytes as Collada text
       model = deformseg::io::internal::assimp::model_of(*built, 1);
     } catch (const deformseg::invalid_input& e) {
       throw e.located({.file = path.string()});

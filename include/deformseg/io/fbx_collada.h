@@ -18,6 +18,7 @@
 #include <deformseg/io/internal/assimp_clips.h>
 #include <deformseg/io/internal/assimp_model_writer.h>
 #include <deformseg/io/internal/assimp_scene.h>
+#include <deformseg/io/internal/collada_checks.h>
 #include <deformseg/io/internal/file_io.h>
 
 #include <assimp/Importer.hpp>
@@ -31,7 +32,6 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 #include <vector>
 
@@ -51,9 +51,6 @@ inline double metres_per_unit(const aiScene& scene) {
     throw invalid_input("the scene's UnitScaleFactor is " + std::to_string(centimetres) + ", not a positive unit");
   return centimetres / 100;
 }
-
-/// A Collada morph controller: Assimp does not import one under a skin, and drops its targets.
-inline bool has_collada_morph(const std::string& text) { return text.find("<morph") != std::string::npos; }
 
 /// Writes an Assimp scene as a glTF model: a root node in metres (scaling by `metres`) above the
 /// scene's node tree, the meshes and skins, the clips. See `fbx_collada_model`.
@@ -100,7 +97,8 @@ inline tinygltf::Model model_from_bytes(const std::string& bytes, const std::str
     while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
     throw invalid_input("not a valid " + what + " file: " + (error.empty() ? "Assimp refused it" : error));
   }
-  if (format == "dae" && has_collada_morph(bytes)) {
+  if (format == "dae") collada::check_channel_targets(bytes);
+  if (format == "dae" && collada::has_morph(bytes)) {
     bool targets = false;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) targets = targets || scene->mMeshes[m]->mNumAnimMeshes > 0;
     if (!targets)
@@ -139,7 +137,7 @@ inline constexpr std::size_t max_fbx_collada_bytes = std::size_t(1) << 31;
 /// @throws invalid_input naming the file for: a file that does not exist, is larger than
 /// `max_fbx_collada_bytes`, or that Assimp cannot parse (its message); a clip channel aimed at a
 /// node the scene does not have (an FBX pivot helper, a missing target), naming the clip and the
-/// node; a bone that names no node; a Collada morph under a skin, which Assimp drops; a
+/// node; a Collada `<channel>` whose target no element of the file has (Assimp drops it); a bone that names no node; a Collada morph under a skin, which Assimp drops; a
 /// non-finite position, transform, weight or key.
 /// @par Complexity O(file size), plus Assimp's parsing.
 inline tinygltf::Model fbx_collada_model(const std::filesystem::path& path) {
@@ -149,11 +147,11 @@ inline tinygltf::Model fbx_collada_model(const std::filesystem::path& path) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error))
       throw invalid_input("cannot open the file: it does not exist or is not a file");
-    if (std::filesystem::file_size(path, error) > max_fbx_collada_bytes)
+    if (std::filesystem::file_size(path, error) > max_fbx_collada_bytes || error)
       throw invalid_input("the file is larger than " + std::to_string(max_fbx_collada_bytes) + " bytes");
+    std::string bytes(std::filesystem::file_size(path, error), '\0');
     std::ifstream in(path, std::ios::binary);
-    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (!in.good() && !in.eof()) throw invalid_input("cannot read the file");
+    if (error || !in.read(bytes.data(), std::streamsize(bytes.size()))) throw invalid_input("cannot read the file");
     return internal::assimp::model_from_bytes(bytes, internal::lower_extension(path).substr(1));
   } catch (const invalid_input& e) {
     throw e.located({.file = path.string()});

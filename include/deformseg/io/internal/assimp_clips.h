@@ -11,6 +11,8 @@
 #include <assimp/scene.h>
 #include <tiny_gltf.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <set>
@@ -59,27 +61,30 @@ inline void write_channel(const Keys& keys, int components, int type, int node, 
   animation.channels.push_back(channel);
 }
 
-/// The keys of one channel (`aiVectorKey` or `aiQuatKey`), as seconds and values.
+/// The keys of one channel (`aiVectorKey` or `aiQuatKey`), as seconds and the first `components`
+/// values `values` gives of each.
 /// @throws invalid_input naming `where` for a non-finite time or value.
 template <class Key, class Values>
-Keys keys_of(const Key* keys, unsigned count, double ticks_per_second, const std::string& where, Values values) {
+Keys keys_of(const Key* keys, unsigned count, double ticks_per_second, const std::string& where, std::size_t components,
+             Values values) {
   Keys result;
   double last = -INFINITY;
   for (unsigned k = 0; k < count; ++k) {
     const double time = keys[k].mTime / ticks_per_second;
-    const std::vector<float> value = values(keys[k].mValue);
-    if (!std::isfinite(time) || !std::all_of(value.begin(), value.end(), [](float x) { return std::isfinite(x); }))
+    const std::array<float, 4> value = values(keys[k].mValue);
+    const auto end = value.begin() + std::ptrdiff_t(components);
+    if (!std::isfinite(time) || !std::all_of(value.begin(), end, [](float x) { return std::isfinite(x); }))
       throw invalid_input(where + " key " + std::to_string(k) + " has a non-finite time or value");
     if (float(time) <= last) continue;
     last = float(time);
     result.times.push_back(float(time));
-    result.values.insert(result.values.end(), value.begin(), value.end());
+    result.values.insert(result.values.end(), value.begin(), end);
   }
   return result;
 }
 
-inline std::vector<float> vector_values(const aiVector3D& v) { return {v.x, v.y, v.z}; }
-inline std::vector<float> quaternion_values(const aiQuaternion& q) {  // glTF's order: x, y, z, w
+inline std::array<float, 4> vector_values(const aiVector3D& v) { return {v.x, v.y, v.z, 0}; }
+inline std::array<float, 4> quaternion_values(const aiQuaternion& q) {  // glTF's order: x, y, z, w
   const double norm = std::sqrt(double(q.x) * q.x + double(q.y) * q.y + double(q.z) * q.z + double(q.w) * q.w);
   return {float(q.x / norm), float(q.y / norm), float(q.z / norm), float(q.w / norm)};
 }
@@ -99,11 +104,11 @@ inline void write_node_channel(const aiScene& scene, std::size_t clip, const aiN
                              : "a channel whose target is missing") +
                         "), and leaving it out would change the motion");
   const int node = int(found->second);
-  write_channel(keys_of(channel.mPositionKeys, channel.mNumPositionKeys, tps, where + " position", vector_values), 3,
+  write_channel(keys_of(channel.mPositionKeys, channel.mNumPositionKeys, tps, where + " position", 3, vector_values), 3,
                 TINYGLTF_TYPE_VEC3, node, "translation", writer, animation);
-  write_channel(keys_of(channel.mRotationKeys, channel.mNumRotationKeys, tps, where + " rotation", quaternion_values),
+  write_channel(keys_of(channel.mRotationKeys, channel.mNumRotationKeys, tps, where + " rotation", 4, quaternion_values),
                 4, TINYGLTF_TYPE_VEC4, node, "rotation", writer, animation);
-  write_channel(keys_of(channel.mScalingKeys, channel.mNumScalingKeys, tps, where + " scaling", vector_values), 3,
+  write_channel(keys_of(channel.mScalingKeys, channel.mNumScalingKeys, tps, where + " scaling", 3, vector_values), 3,
                 TINYGLTF_TYPE_VEC3, node, "scale", writer, animation);
 }
 

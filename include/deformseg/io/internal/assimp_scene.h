@@ -175,14 +175,14 @@ inline std::vector<Influence_list> influences(const aiScene& scene, std::size_t 
   for (unsigned b = 0; b < m.mNumBones; ++b) {
     const aiBone& bone = *m.mBones[b];
     const std::uint16_t joint = joint_of.at(nodes.by_name.at(name_of(bone.mName)));
+    const auto where = [&] { return mesh_name(scene, mesh) + " bone '" + name_of(bone.mName) + "'"; };
     for (unsigned w = 0; w < bone.mNumWeights; ++w) {
       const aiVertexWeight& weight = bone.mWeights[w];
-      const std::string where = mesh_name(scene, mesh) + " bone '" + name_of(bone.mName) + "'";
       if (weight.mVertexId >= m.mNumVertices)
-        throw invalid_input(where + " weights vertex " + std::to_string(weight.mVertexId) + " of " +
+        throw invalid_input(where() + " weights vertex " + std::to_string(weight.mVertexId) + " of " +
                             std::to_string(m.mNumVertices));
       if (!std::isfinite(weight.mWeight) || weight.mWeight < 0)
-        throw invalid_input(where + " has a weight of " + std::to_string(weight.mWeight) + " (vertex " +
+        throw invalid_input(where() + " has a weight of " + std::to_string(weight.mWeight) + " (vertex " +
                             std::to_string(weight.mVertexId) + ")");
       if (weight.mWeight > 0) result[weight.mVertexId].emplace_back(joint, weight.mWeight);
     }
