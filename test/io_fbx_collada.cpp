@@ -476,8 +476,8 @@ TEST_CASE("fbx_collada: every FBX clip against the FBX SDK's, through FBX2glTF",
       const double gap = largest_gap(a, b) / diagonal(b);
       std::printf("%s %s: largest gap %.3g of the diagonal\n", name.c_str(), clip.c_str(), gap);
       // The goal is 1e-5; the inverse bind matrices the SDK gives these Blender files differ from
-      // their clusters' (chapter 16), by up to 4.1e-3 of the diagonal on the legs.
-      CHECK(gap <= 4.5e-3);
+      // their clusters' (chapter 2): gaps of up to 3.65e-3 of the diagonal, on the legs.
+      CHECK(gap <= 4e-3);
       ++compared;
     }
     CHECK(compared >= 8);

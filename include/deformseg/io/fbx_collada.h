@@ -29,6 +29,7 @@
 #include <tiny_gltf.h>
 
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -37,10 +38,10 @@
 
 namespace deformseg::io::internal::assimp {
 
-/// The metres per unit of an FBX scene (its "UnitScaleFactor" is centimetres per unit); 1 for
-/// Collada, whose unit Assimp already puts in the root node's transform.
+/// The metres per unit of an FBX scene: its "UnitScaleFactor" is centimetres per unit, FBX's
+/// default 1 when the file gives none. (Collada's unit Assimp puts in the root node's transform.)
 inline double metres_per_unit(const aiScene& scene) {
-  double centimetres = 100;
+  double centimetres = 1;
   if (scene.mMetaData) {
     float f = 0;
     double d = 0;
@@ -76,7 +77,7 @@ inline tinygltf::Model model_of(const aiScene& scene, double metres) {
 
 /// The settings of the import: Assimp's FBX reader keeps a pivot's pre-rotation both in the keys
 /// and in a helper node unless PRESERVE_PIVOTS is off, which applies it twice.
-inline const aiScene* import(Assimp::Importer& importer, const std::string& bytes, const std::string& extension) {
+inline const aiScene* read_scene(Assimp::Importer& importer, const std::string& bytes, const std::string& extension) {
   importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
   return importer.ReadFileFromMemory(bytes.data(), bytes.size(), aiProcess_Triangulate | aiProcess_ValidateDataStructure,
                                      extension.c_str());
@@ -87,7 +88,7 @@ inline tinygltf::Model model_from_bytes(const std::string& bytes, const std::str
   Assimp::Importer importer;
   const aiScene* scene = nullptr;
   try {
-    scene = import(importer, bytes, format);
+    scene = read_scene(importer, bytes, format);
   } catch (const std::exception& e) {
     throw invalid_input(std::string("Assimp could not parse the file: ") + e.what());
   }
@@ -137,8 +138,9 @@ inline constexpr std::size_t max_fbx_collada_bytes = std::size_t(1) << 31;
 /// @throws invalid_input naming the file for: a file that does not exist, is larger than
 /// `max_fbx_collada_bytes`, or that Assimp cannot parse (its message); a clip channel aimed at a
 /// node the scene does not have (an FBX pivot helper, a missing target), naming the clip and the
-/// node; a Collada `<channel>` whose target no element of the file has (Assimp drops it); a bone that names no node; a Collada morph under a skin, which Assimp drops; a
-/// non-finite position, transform, weight or key.
+/// node; a Collada `<channel>` whose target no element of the file has, or a Collada morph under
+/// a skin, both of which Assimp drops; a bone that names no node; a non-finite position,
+/// transform, weight or key.
 /// @par Complexity O(file size), plus Assimp's parsing.
 inline tinygltf::Model fbx_collada_model(const std::filesystem::path& path) {
   try {
@@ -147,11 +149,13 @@ inline tinygltf::Model fbx_collada_model(const std::filesystem::path& path) {
     std::error_code error;
     if (!std::filesystem::is_regular_file(path, error))
       throw invalid_input("cannot open the file: it does not exist or is not a file");
-    if (std::filesystem::file_size(path, error) > max_fbx_collada_bytes || error)
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (error) throw invalid_input("cannot read the file: " + error.message());
+    if (size > max_fbx_collada_bytes)
       throw invalid_input("the file is larger than " + std::to_string(max_fbx_collada_bytes) + " bytes");
-    std::string bytes(std::filesystem::file_size(path, error), '\0');
+    std::string bytes(size, '\0');
     std::ifstream in(path, std::ios::binary);
-    if (error || !in.read(bytes.data(), std::streamsize(bytes.size()))) throw invalid_input("cannot read the file");
+    if (!in.read(bytes.data(), std::streamsize(bytes.size()))) throw invalid_input("cannot read the file");
     return internal::assimp::model_from_bytes(bytes, internal::lower_extension(path).substr(1));
   } catch (const invalid_input& e) {
     throw e.located({.file = path.string()});
