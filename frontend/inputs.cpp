@@ -17,10 +17,10 @@ void check(const Input_options& options, Front front) {
 Input_name input_name(const std::string& input, const Input_options& options, Front front) {
   auto [file, clip] = io::split_clip_suffix(input);
   const auto refuse_for = [&](const std::string& message) { throw invalid_input(message, {.file = file}); };
-  const bool gltf = io::is_character_file(file);
-  if (!gltf && !options.clip.empty())
+  const bool character = io::is_character_file(file);
+  if (!character && !options.clip.empty())
     refuse_for(spelled("clip", front) + " applies to character files (glTF, FBX, Collada) only");
-  if (gltf && !options.topology.empty())
+  if (character && !options.topology.empty())
     refuse_for(spelled("topology", front) + " does not apply to a character file (glTF, FBX, Collada): it has its own");
   return {std::move(file), clip.value_or(options.clip)};
 }
@@ -107,7 +107,8 @@ nlohmann::json clips_record(const io::Gltf_contents& contents) {
 
 nlohmann::json clips_of(const std::string& path, double fps) {
   mesh::check_frames_per_second(fps, "fps", {.file = path});
-  if (!io::is_character_file(path)) throw invalid_input("clips are listed for character files (.glb, .gltf, .fbx, .dae) only", {.file = path});
+  if (!io::is_character_file(path))
+    throw invalid_input("clips are listed for character files (.glb, .gltf, .fbx, .dae) only", {.file = path});
   return clips_record(io::gltf_contents(path, fps));
 }
 

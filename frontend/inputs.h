@@ -21,7 +21,7 @@ namespace deformseg::frontend {
 
 /// How to read the inputs of a command or a function; one set for all its inputs.
 struct Input_options {
-  std::string clip{};         ///< character files: a clip's name or index; empty: the input's own ("FILE#CLIP"), or the only one
+  std::string clip{};         ///< glTF, FBX, Collada: a clip's name or index; empty: the input's own, or the only one
   double fps = 30;            ///< glTF's sampling rate; frame files' and point caches' playing rate
   std::string topology{};     ///< the connectivity of point caches; empty: none
   bool triangulate = false;   ///< fan-triangulate polygons instead of refusing them
@@ -34,12 +34,13 @@ struct Input_options {
 inline constexpr std::tuple input_parameters{
     Parameter<Input_options, std::string>{
         "clip", &Input_options::clip,
-        "glTF, FBX, Collada: the clip to read, by name or index, for every input that names none after '#' (FILE.glb#CLIP); "
-        "required for a file of several clips",
+        "glTF, FBX, Collada: the clip to read, by name or index, for every input that names none after '#' "
+        "(FILE.glb#CLIP); required for a file of several clips",
         Parameter_kind::clip},
     Parameter<Input_options, double>{
         "fps", &Input_options::fps,
-        "Frames per second: glTF, FBX and Collada clips are sampled at it; frame files and point caches play at it. Default: 30"},
+        "Frames per second: glTF, FBX and Collada clips are sampled at it; frame files and point caches play at it. "
+        "Default: 30"},
     Parameter<Input_options, std::string>{"topology", &Input_options::topology,
                                           "A mesh file giving the connectivity of point caches (required for them)",
                                           Parameter_kind::file},

@@ -197,7 +197,8 @@ def test_options_are_checked_as_the_tool_checks_them(grid, tmp_path):
         (lambda: deformseg.similarity_matrix([a, a], up="z"), r"up must be .*, got 'z'"),
         (lambda: deformseg.similarity(a, a, significance=1), "at least 2 shuffled copies"),
         (lambda: deformseg.find_motion(a, a, 0), "count must be at least 1"),
-        (lambda: deformseg.read_animation(tmp_path, clip="Walk"), r"clip applies to character files \(glTF, FBX, Collada\) only"),
+        (lambda: deformseg.read_animation(tmp_path, clip="Walk"),
+         r"clip applies to character files \(glTF, FBX, Collada\) only"),
         (lambda: deformseg.ged(deformseg.KeyFrame(0, 0), deformseg.KeyFrame(0, 0), method="fast"), "method must be"),
     ]
     for call, message in cases:

@@ -350,7 +350,8 @@ decltype(auto) with_frame_source(const std::string& input, const Animation_read_
     if (clip && !options.clip.empty())
       throw invalid_input("the clip is given twice: by the clip option and after '#'", {.file = input});
     if (options.topology)
-      throw invalid_input("a character file (glTF, FBX, Collada) has its own connectivity: no topology mesh applies", {.file = input});
+      throw invalid_input("a character file (glTF, FBX, Collada) has its own connectivity: no topology mesh applies",
+                          {.file = input});
 #if DEFORMSEG_HAS_GLTF
     const Gltf_file gltf(file);
     const std::string name = clip ? *clip : options.clip;

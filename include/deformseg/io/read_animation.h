@@ -89,7 +89,8 @@ mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input
                                                         const io::Animation_read_options& options,
                                                         io::Repair_report* report) {
   if (options.topology)
-    throw invalid_input("a character file (glTF, FBX, Collada) has its own connectivity: no topology mesh applies", {.file = input});
+    throw invalid_input("a character file (glTF, FBX, Collada) has its own connectivity: no topology mesh applies",
+                        {.file = input});
 #if DEFORMSEG_HAS_GLTF
   const io::Gltf_file file(input);
   io::require_clip_choice(file, options.clip);
@@ -127,8 +128,8 @@ namespace deformseg::io {
 ///
 /// @tparam Graph the connectivity type, a `FaceGraph` (default `Surface_mesh`).
 /// @tparam Coordinate the stored coordinate type (default `double`).
-/// @param input a glTF, FBX or Collada file (maybe followed by "#CLIP"), a folder or glob of frame files, or a
-/// `.pc2` or `.mdd` file.
+/// @param input a glTF, FBX or Collada file (maybe followed by "#CLIP"), a folder or glob of frame
+/// files, or a `.pc2` or `.mdd` file.
 /// @param options `topology` (default none), `triangulate` (default false), `threads` (default 0:
 /// all), `repair` (default: the format's; defects repaired, glTF welded), `clip` (default: the
 /// only one) for glTF, and `fps` (default 30): the rate a glTF clip is sampled at, the rate of

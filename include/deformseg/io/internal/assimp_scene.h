@@ -62,8 +62,9 @@ inline tinygltf::Node gltf_node(const aiNode& source, bool animated) {
   aiVector3D scaling, position;
   aiQuaternion rotation;
   source.mTransformation.Decompose(scaling, rotation, position);
-  if (!std::isfinite(rotation.w) || !std::isfinite(rotation.x) || !std::isfinite(rotation.y) || !std::isfinite(rotation.z))
-    rotation = aiQuaternion();  // a scale of 0 leaves the rotation free
+  const bool finite_rotation = std::isfinite(rotation.w) && std::isfinite(rotation.x) && std::isfinite(rotation.y) &&
+                               std::isfinite(rotation.z);
+  if (!finite_rotation) rotation = aiQuaternion();  // a scale of 0 leaves the rotation free
   node.translation = {position.x, position.y, position.z};
   node.rotation = {rotation.x, rotation.y, rotation.z, rotation.w};
   node.scale = {scaling.x, scaling.y, scaling.z};
@@ -89,8 +90,10 @@ inline Node_table write_nodes(const aiNode& root, const std::set<std::string>& a
     stack.pop_back();
     const aiNode& node = *visit.node;
     const std::string name = name_of(node.mName);
-    if (!seen.insert(&node).second) throw invalid_input("node '" + name + "' is reached twice: the nodes are not a tree");
-    if (visit.depth > max_depth) throw invalid_input("the node tree is deeper than " + std::to_string(max_depth) + " nodes");
+    if (!seen.insert(&node).second)
+      throw invalid_input("node '" + name + "' is reached twice: the nodes are not a tree");
+    if (visit.depth > max_depth)
+      throw invalid_input("the node tree is deeper than " + std::to_string(max_depth) + " nodes");
     if (!finite(node.mTransformation)) throw invalid_input("node '" + name + "' has a non-finite transform");
     const std::size_t at = model.nodes.size();
     table.source.push_back(&node);
@@ -154,7 +157,8 @@ inline std::vector<Mesh_group> group_meshes(const aiScene& scene, const aiNode& 
                           ", which does not exist");
     const std::vector<Joint> joints = mesh_joints(scene, mesh, nodes);
     const bool skinned = !joints.empty();
-    auto group = std::find_if(groups.begin(), groups.end(), [&](const Mesh_group& g) { return joins(g, joints, skinned); });
+    const auto joinable = [&](const Mesh_group& g) { return joins(g, joints, skinned); };
+    auto group = std::find_if(groups.begin(), groups.end(), joinable);
     if (group == groups.end()) group = groups.insert(groups.end(), Mesh_group{.skinned = skinned});
     group->meshes.push_back(mesh);
     for (const Joint& joint : joints) group->joints.emplace(joint.node, joint.offset);
@@ -198,8 +202,8 @@ inline std::vector<Influence_list> influences(const aiScene& scene, std::size_t 
 /// Faces that are not triangles (points and lines: Assimp triangulates polygons) are left out.
 /// @throws invalid_input for an index out of range, a non-finite position, or a morph target
 /// whose vertex count is not the mesh's.
-inline tinygltf::Primitive write_primitive(const aiScene& scene, std::size_t mesh, const std::vector<Influence_list>& influence,
-                                           Model_writer& writer) {
+inline tinygltf::Primitive write_primitive(const aiScene& scene, std::size_t mesh,
+                                           const std::vector<Influence_list>& influence, Model_writer& writer) {
   const aiMesh& m = *scene.mMeshes[mesh];
   const std::string name = mesh_name(scene, mesh);
   if (m.mNumVertices > 0 && !m.mVertices) throw invalid_input(name + " has no positions");
@@ -238,7 +242,8 @@ inline tinygltf::Primitive write_primitive(const aiScene& scene, std::size_t mes
         for (std::size_t k = 0; k < 4 && set * 4 + k < influence[v].size(); ++k)
           std::tie(joints[4 * v + k], weights[4 * v + k]) = influence[v][set * 4 + k];
       const std::string suffix = "_" + std::to_string(set);
-      primitive.attributes["JOINTS" + suffix] = writer.accessor(std::span<const std::uint16_t>(joints), TINYGLTF_TYPE_VEC4, 4);
+      primitive.attributes["JOINTS" + suffix] =
+          writer.accessor(std::span<const std::uint16_t>(joints), TINYGLTF_TYPE_VEC4, 4);
       primitive.attributes["WEIGHTS" + suffix] = writer.accessor(std::span<const float>(weights), TINYGLTF_TYPE_VEC4, 4);
     }
   }
