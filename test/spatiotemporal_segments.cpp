@@ -186,11 +186,11 @@ TEST_CASE("spatio-temporal segments: the horse gallop and the samba, determinist
     const auto b = spatiotemporal::spatiotemporal_segmentation(animation);
     INFO(name << ": " << a.num_segments() << " segments");
     CHECK(labels_of(a) == labels_of(b));
-    CHECK(a.num_segments() > 10);
+    CHECK(a.num_segments() >= 10);
     CHECK(a.num_segments() < 200);
     for (std::size_t k = 0; k < a.num_segments(); ++k) {
       CHECK(a.extent(k).largest_slice >= 10);
-      CHECK(a.extent(k).last_frame > a.extent(k).first_frame);
+      CHECK(a.extent(k).last_frame >= a.extent(k).first_frame + 5);  // 6 frames at least
     }
   }
 }

@@ -1,9 +1,12 @@
 /// @file spatiotemporal.h
 /// @brief Every public header of module `spatiotemporal`, spatio-temporal segmentation: per-frame segments of
-/// triangles, segment graphs and the evolving graph.
+/// triangles over a body's layout (shared edges and links between its parts), segment graphs and
+/// the evolving graph.
 #pragma once
 
+#include <deformseg/spatiotemporal/body_layout.h>
 #include <deformseg/spatiotemporal/compact_segment_graph.h>
 #include <deformseg/spatiotemporal/evolving_graph.h>
 #include <deformseg/spatiotemporal/frame_segments.h>
+#include <deformseg/spatiotemporal/part_links.h>
 #include <deformseg/spatiotemporal/spatiotemporal_segments.h>

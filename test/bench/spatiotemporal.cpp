@@ -8,12 +8,21 @@
 // two threads; `labels_and_segments` the labelling, union-find and clean-up from that field;
 // `evolving_graph` the frame graphs and key frames from the segments; `all` the three together,
 // as `evolving_graph(animation)` runs them.
+//
+// `part_links` finds the contacts of a cylinder cut into bands of 10 rings that share no vertex
+// (each band a part touching the next), in triangles per second, at three sizes, against
+// `face_adjacency`, the shared edges of the same mesh, measured in the same run.
+#include <deformseg/mesh/default_mesh.h>
 #include <deformseg/spatiotemporal/evolving_graph.h>
+#include <deformseg/spatiotemporal/part_links.h>
 #include <deformseg/mesh/synthetic.h>
 
 #include <benchmark/benchmark.h>
 
+#include <array>
+#include <cmath>
 #include <numbers>
+#include <vector>
 
 using namespace deformseg;
 
@@ -74,8 +83,51 @@ void all(benchmark::State& state) {
   report(state);
 }
 
+// A cylinder of `rings` x `sectors` quads, two triangles each, in bands of 10 rings with vertices
+// of their own, standing still for 2 frames.
+mesh::Surface_mesh_animation banded_cylinder(std::uint32_t rings, std::uint32_t sectors) {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  for (std::uint32_t band = 0; band * 10 < rings; ++band) {
+    const auto first = std::uint32_t(points.size());
+    const std::uint32_t band_rings = std::min<std::uint32_t>(10, rings - band * 10);
+    for (std::uint32_t r = 0; r <= band_rings; ++r)
+      for (std::uint32_t s = 0; s < sectors; ++s) {
+        const double angle = 2 * std::numbers::pi * double(s) / double(sectors);
+        points.push_back({std::cos(angle), std::sin(angle), 0.01 * double(band * 10 + r)});
+      }
+    for (std::uint32_t r = 0; r < band_rings; ++r)
+      for (std::uint32_t s = 0; s < sectors; ++s) {
+        const std::uint32_t a = first + r * sectors + s, b = first + r * sectors + (s + 1) % sectors;
+        triangles.push_back({a, b, b + sectors});
+        triangles.push_back({a, b + sectors, a + sectors});
+      }
+  }
+  std::vector<double> positions;
+  for (int frame = 0; frame < 2; ++frame)
+    for (const auto& p : points) positions.insert(positions.end(), p.begin(), p.end());
+  return {mesh::make_face_graph<mesh::Surface_mesh>(points, triangles), std::move(positions)};
+}
+
+void part_links(benchmark::State& state) {
+  const auto rings = std::uint32_t(state.range(0));
+  const mesh::Surface_mesh_animation cylinder = banded_cylinder(rings, 5 * rings);
+  for (auto _ : state) benchmark::DoNotOptimize(spatiotemporal::part_links(cylinder));
+  state.counters["links"] = double(spatiotemporal::part_links(cylinder).size());
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(cylinder.num_faces()));
+}
+
+void face_adjacency(benchmark::State& state) {
+  const auto rings = std::uint32_t(state.range(0));
+  const mesh::Surface_mesh_animation cylinder = banded_cylinder(rings, 5 * rings);
+  for (auto _ : state) benchmark::DoNotOptimize(spatiotemporal::Body_layout(cylinder.triangles()));
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(cylinder.num_faces()));
+}
+
 }  // namespace
 
+BENCHMARK(part_links)->Arg(40)->Arg(80)->Arg(160)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(face_adjacency)->Arg(40)->Arg(80)->Arg(160)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(strain)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(labels_and_segments)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(evolving_graph_of_segments)->Name("evolving_graph")->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -5,7 +5,7 @@
 
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/mesh/face_areas.h>
+#include <deformseg/spatiotemporal/body_layout.h>
 #include <deformseg/spatiotemporal/frame_segments.h>
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/spatiotemporal/spatiotemporal_segments.h>
@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace deformseg::spatiotemporal {
@@ -140,18 +141,19 @@ inline Evolving_graph evolving_graph(const Frame_segments& frames) {
 }
 
 /// @brief The evolving graph of an animation: its spatio-temporal segmentation
-/// (`spatiotemporal_segmentation` with `options`), then the overload for `Frame_segments`, with
-/// area shares from the triangles' areas in frame 0.
+/// (`spatiotemporal_segmentation` with `options`, the strain with `strain_options(options)`) over
+/// its `body_layout` (with `options.parts`, area shares from the triangles' areas in frame 0), then
+/// the overload for `Frame_segments`.
 /// @tparam Mesh a `DeformingMesh`.
-/// @throws invalid_input as `compute_strain` and `spatiotemporal_segmentation`, or for an
-/// animation whose frame 0 has no area.
-/// @par Complexity O(T F) besides the strain.
+/// @throws invalid_input as `compute_strain`, `body_layout` and `spatiotemporal_segmentation`.
+/// @par Complexity O(T F) besides the strain and `part_links`.
 template <mesh::DeformingMesh Mesh>
 Evolving_graph evolving_graph(const Mesh& animation, const Spatiotemporal_options& options = {}) {
   if constexpr (mesh::is_deforming_mesh_v<Mesh>) {
-    const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(animation, options);
-    const std::vector<double> areas = mesh::face_areas(animation, 0);
-    return evolving_graph(Frame_segments(segmentation, animation.triangles(), areas));
+    const auto field = strain::compute_strain(animation, strain_options(options));
+    Body_layout layout = body_layout(animation, options.parts);
+    const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(field, layout, options);
+    return evolving_graph(Frame_segments(segmentation, std::move(layout)));
   } else {
     return evolving_graph(mesh::make_deforming_mesh(animation), options);
   }

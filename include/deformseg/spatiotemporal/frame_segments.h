@@ -5,7 +5,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/spatiotemporal/internal/face_adjacency.h>
+#include <deformseg/spatiotemporal/body_layout.h>
 #include <deformseg/spatiotemporal/spatiotemporal_segments.h>
 
 #include <boost/graph/adjacency_list.hpp>
@@ -55,7 +55,7 @@ inline std::string node_label(const Segment_node& node) {
 }
 
 /// @brief The spatial segments of a frame: a node per segment (`Segment_node`), an edge between
-/// two segments whose triangles share a mesh edge. Vertices are numbered 0..n-1 (`vecS`) in the
+/// two segments whose triangles are neighbours (`Body_layout`). Vertices are numbered 0..n-1 (`vecS`) in the
 /// canonical order of `Frame_segments`.
 using Segment_graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, Segment_node>;
 
@@ -82,49 +82,60 @@ struct Frame_segments_access;
 ///
 /// The nodes of frame t are the slices of the deformed spatio-temporal segments alive in it
 /// (one node per segment, even if its slice is in several pieces: the pieces join in other
-/// frames) and the edge-connected regions of its rigid triangles; an edge joins two nodes whose
-/// triangles share a mesh edge. Rigid regions have no identity of their own across frames, so
-/// a rigid node is known by the deformed segments it touches: nodes come in a canonical order,
-/// deformed nodes first by segment id, then rigid nodes by the sorted ids of the segments they
-/// touch, ties by their smallest triangle index. Two frames with the same nodes (kinds and
-/// segment ids, rigid nodes by what they touch) and the same edges then have the same graph up to
-/// the attributes, node for node.
+/// frames) and the connected regions of its rigid triangles; an edge joins two nodes whose
+/// triangles are neighbours in the layout (share a mesh edge, or are linked between parts). Rigid
+/// regions have no identity of their own across frames, so a rigid node is known by the deformed
+/// segments it touches: nodes come in a canonical order, deformed nodes first by segment id, then
+/// rigid nodes by the sorted ids of the segments they touch, ties by their smallest triangle
+/// index. Two frames with the same nodes (kinds and segment ids, rigid nodes by what they touch)
+/// and the same edges then have the same graph up to the attributes, node for node.
 ///
-/// Keeps references to the segmentation and nothing per frame: each call computes its frame.
+/// Keeps a reference to the segmentation, its layout, and nothing per frame: each call computes
+/// its frame.
 class Frame_segments {
 public:
-  /// @brief Prepares the frames of a segmentation.
+  /// @brief Prepares the frames of a segmentation over the thesis' adjacency: as the other
+  /// constructor with `Body_layout(triangles, face_areas)`.
   /// @param segmentation the spatio-temporal segmentation.
   /// @param triangles the face-vertex index table of its triangles (for a `Deforming_mesh`, its
   /// `triangles()`), which gives their adjacency.
   /// @param face_areas the area of each triangle, for the nodes' area shares (typically in the
   /// rest frame; any scale); empty (default): every triangle weighs the same.
-  /// @pre `segmentation` outlives this object; `triangles.size() == segmentation.num_faces()`;
-  /// `face_areas` empty or of that size with finite entries >= 0 and a positive sum. Else throws
-  /// `invalid_input`.
+  /// @pre as the other constructor, and as `Body_layout`'s.
   /// @par Complexity O(F log F) for the triangles' adjacency.
- Frame_segments(const Spatiotemporal_segmentation& segmentation,
-                std::span<const std::array<std::uint32_t, 3>> triangles, std::span<const double> face_areas = {})
-     : segmentation_(&segmentation),
-       adjacency_(internal::face_adjacency(triangles)),
-       area_share_(area_shares(face_areas, triangles.size())) {
-   if (triangles.size() != segmentation.num_faces())
-     throw invalid_input("Frame_segments: " + std::to_string(triangles.size()) + " triangles for a segmentation of " +
-                         std::to_string(segmentation.num_faces()));
- }
+  Frame_segments(const Spatiotemporal_segmentation& segmentation,
+                 std::span<const std::array<std::uint32_t, 3>> triangles, std::span<const double> face_areas = {})
+      : Frame_segments(segmentation, Body_layout(triangles, face_areas)) {}
+
+  /// @brief Prepares the frames of a segmentation over `layout`: nodes are joined, and rigid
+  /// regions grown, across its neighbours (shared edges and links between parts), and weighed by
+  /// its area shares.
+  /// @pre `segmentation` outlives this object; `layout.num_faces() == segmentation.num_faces()`,
+  /// else throws `invalid_input`.
+  /// @par Complexity O(1) besides moving the layout.
+  Frame_segments(const Spatiotemporal_segmentation& segmentation, Body_layout layout)
+      : segmentation_(&segmentation), layout_(std::move(layout)) {
+    if (layout_.num_faces() != segmentation.num_faces())
+      throw invalid_input("Frame_segments: " + std::to_string(layout_.num_faces()) + " triangles for a segmentation of " +
+                          std::to_string(segmentation.num_faces()));
+  }
 
   /// @brief Deleted: the object would refer to a temporary segmentation.
   Frame_segments(Spatiotemporal_segmentation&&, std::span<const std::array<std::uint32_t, 3>>,
                  std::span<const double> = {}) = delete;
+  /// @brief Deleted: the object would refer to a temporary segmentation.
+  Frame_segments(Spatiotemporal_segmentation&&, Body_layout) = delete;
 
   /// @brief The number of frames.
   std::size_t num_frames() const noexcept { return segmentation_->num_frames(); }
   /// @brief The segmentation the frames come from.
   const Spatiotemporal_segmentation& segmentation() const noexcept { return *segmentation_; }
+  /// @brief The layout its nodes are found over.
+  const Body_layout& layout() const noexcept { return layout_; }
 
   /// @brief The segment graph of frame `t`, nodes in canonical order.
   /// @throws invalid_input when `t >= num_frames()`.
-  /// @par Complexity O(F + E) for F triangles and E shared edges, plus sorting the nodes.
+  /// @par Complexity O(F + E) for F triangles and E pairs of neighbours, plus sorting the nodes.
   Segment_graph graph(std::size_t t) const { return to_graph(frame_graph(t)); }
 
   /// @brief The node of each triangle in frame `t`'s graph (an index into `graph(t)`'s vertices),
@@ -185,23 +196,6 @@ private:
     std::vector<double> area;
   };
 
-  static std::vector<double> area_shares(std::span<const double> areas, std::size_t faces) {
-    if (areas.empty()) return std::vector<double>(faces, faces ? 1.0 / double(faces) : 0.0);
-    if (areas.size() != faces)
-      throw invalid_input("Frame_segments: " + std::to_string(areas.size()) + " face areas for " +
-                          std::to_string(faces) + " triangles");
-    double total = 0;
-    for (std::size_t f = 0; f < faces; ++f) {
-      if (!(areas[f] >= 0) || !std::isfinite(areas[f]))
-        throw invalid_input("Frame_segments: the area of triangle " + std::to_string(f) + " is not finite and >= 0");
-      total += areas[f];
-    }
-    if (!(total > 0)) throw invalid_input("Frame_segments: the face areas sum to 0");
-    std::vector<double> shares(areas.begin(), areas.end());
-    for (double& s : shares) s /= total;
-    return shares;
-  }
-
   // The node of each triangle (deformed: one per segment; rigid: a breadth-first search over
   // rigid neighbours), with each node's size and area.
   Raw_nodes raw_nodes(std::span<const std::int32_t> labels, std::vector<std::uint32_t>& node_of) const {
@@ -227,21 +221,21 @@ private:
       queue.assign(1, f);
       node_of[f] = n;
       for (std::size_t q = 0; q < queue.size(); ++q)
-        for (std::uint32_t g : adjacency_.of(queue[q]))
+        for (std::uint32_t g : layout_.neighbours(queue[q]))
           if (labels[g] == rigid && node_of[g] == unset) node_of[g] = n, queue.push_back(g);
     }
     for (std::size_t f = 0; f < labels.size(); ++f) {
       ++nodes.triangles[node_of[f]];
-      nodes.area[node_of[f]] += area_share_[f];
+      nodes.area[node_of[f]] += layout_.area_shares()[f];
     }
     return nodes;
   }
 
-  // The pairs of nodes whose triangles share a mesh edge, each once.
+  // The pairs of nodes whose triangles are neighbours, each once.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> raw_edges(const std::vector<std::uint32_t>& node_of) const {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
     for (std::uint32_t f = 0; f < node_of.size(); ++f)
-      for (std::uint32_t g : adjacency_.of(f))
+      for (std::uint32_t g : layout_.neighbours(f))
         if (g > f && node_of[f] != node_of[g])
           edges.emplace_back(std::min(node_of[f], node_of[g]), std::max(node_of[f], node_of[g]));
     std::sort(edges.begin(), edges.end());
@@ -271,8 +265,7 @@ private:
   }
 
   const Spatiotemporal_segmentation* segmentation_;
-  internal::Face_adjacency adjacency_;
-  std::vector<double> area_share_;
+  Body_layout layout_;
 };
 
 namespace internal {

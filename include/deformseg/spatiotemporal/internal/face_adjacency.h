@@ -1,5 +1,6 @@
-// The faces that share an edge with each face, from a face-vertex index table, in compressed
-// rows: face f's neighbours are neighbours[offsets[f], offsets[f + 1]), ascending.
+// The faces that share an edge with each face, from a face-vertex index table, and those linked
+// to it, in compressed rows: face f's neighbours are neighbours[offsets[f], offsets[f + 1]),
+// ascending.
 #pragma once
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <cstdint>
 #include <span>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace deformseg::spatiotemporal::internal {
@@ -22,8 +24,10 @@ struct Face_adjacency {
 };
 
 // Edges are found by sorting (smaller vertex, larger vertex, face) triples: O(F log F), no hash
-// table; faces around a non-manifold edge are all neighbours of each other.
-inline Face_adjacency face_adjacency(std::span<const std::array<std::uint32_t, 3>> triangles) {
+// table; faces around a non-manifold edge are all neighbours of each other. Each link (f, g)
+// makes f and g neighbours both ways.
+inline Face_adjacency face_adjacency(std::span<const std::array<std::uint32_t, 3>> triangles,
+                                     std::span<const std::pair<std::uint32_t, std::uint32_t>> links = {}) {
   using Edge = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
   std::vector<Edge> edges;
   edges.reserve(3 * triangles.size());
@@ -44,6 +48,8 @@ inline Face_adjacency face_adjacency(std::span<const std::array<std::uint32_t, 3
         if (a != b) pairs.emplace_back(std::get<2>(edges[a]), std::get<2>(edges[b]));
     i = j;
   }
+  for (const auto& [f, g] : links)
+    if (f != g) pairs.emplace_back(f, g), pairs.emplace_back(g, f);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   Face_adjacency adjacency{std::vector<std::uint32_t>(triangles.size() + 1, 0), {}};
