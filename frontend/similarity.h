@@ -31,7 +31,7 @@ inline constexpr std::array similarity_policies{
 };
 
 /// The alignments, in the order of `similarity::alignment_names`; none given: the policy's own
-/// (dtw for motion-signature, smith-waterman for the others).
+/// (dtw for motion-signature and graph, smith-waterman for the others).
 inline constexpr std::array alignments{
     Choice{"smith-waterman", "local: the best matching parts"},
     Choice{"dtw", "global: both whole"},
@@ -49,11 +49,12 @@ inline constexpr std::array up_directions{
 inline constexpr std::tuple policy_parameters{
     choice_parameter("policy", &similarity::Policy_choice::policy, "The similarity policy", similarity_policies),
     choice_parameter("alignment", &similarity::Policy_choice::alignment,
-                     "The alignment of the frames. Default: dtw for motion-signature, smith-waterman for the others",
+                     "The alignment of the frames. Default: dtw for motion-signature and graph, smith-waterman for the "
+                     "others",
                      alignments),
     Parameter<similarity::Policy_choice, std::optional<double>>{
         "threshold", &similarity::Policy_choice::threshold,
-        "graph: the deformed threshold of the segmentation, in [0, 1]. Default: 0.5"},
+        "graph: the deformed threshold of the segmentation, in [0, 1]. Default: 0.3"},
     choice_parameter("up", &similarity::Policy_choice::up,
                      "motion-signature: the animations' up axis, whose rises and falls the signatures tell apart. "
                      "Default: +y",

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <deformseg/alignment/alignment.h>
+#include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/clustering/clustering.h>
 #include <deformseg/clustering/k_medoids.h>
@@ -19,6 +20,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -27,7 +29,10 @@ namespace deformseg::similarity {
 /// @brief How `Evolving_graph_similarity` scores a pair of frames from their cluster labels.
 enum class Label_dissimilarity {
   mismatch,  ///< 0 for the same cluster, 1 for different ones (the method's match / mismatch)
-  medoids    ///< the edit distance between the two clusters' medoids over the largest such distance
+  medoids,   ///< the edit distance between the two clusters' medoids over the largest such distance
+  /// the edit distance between the two frames' own key-frame graphs over the largest between the
+  /// two animations: the clusters are left out
+  graphs
 };
 
 /// @brief Similarity policy (models `SimilarityPolicy`), the thesis' pipeline: each animation's
@@ -38,28 +43,33 @@ enum class Label_dissimilarity {
 /// aligned (`alignment`, the dissimilarity of two labels as `labels` says); `normalization` turns
 /// the score into the similarity.
 ///
-/// What to expect of it: the graphs describe where an animation deforms, not how much, so the
-/// comparison depends on how each mesh breaks into segments: a thick leg may close a deformed
-/// band into a ring where a thin one does not, and the threshold changes the graphs. The default
-/// cost model (`Segment_costs`) prices area shares besides kinds to soften this; the tests record
-/// where it ranks motions the wrong way.
+/// What to expect of it: the graphs describe where an animation deforms, not how it moves as a
+/// whole, so the comparison depends on how each mesh breaks into segments: a thick leg may close a
+/// deformed band into a ring where a thin one does not, and the threshold changes the graphs. The
+/// default cost model (`Segment_costs`) prices area shares besides kinds to soften this, and the
+/// default segmentation fixes the strain's scale so that an idle's small strains stay small; the
+/// tests record where it ranks motions the wrong way. The thesis' own pipeline is
+/// `Evolving_graph_similarity<ged::Bipartite_ged, Segment_costs, clustering::K_medoids,
+/// alignment::Smith_waterman>` with `segmentation = {.min_frames = 2, .parts = {0, 0}}`.
 /// @tparam Ged a `ged::GedPolicy` for `Segment_graph` (default `ged::Bipartite_ged`: the exact
 /// distance is exponential, and key-frame graphs of real data reach a dozen nodes).
 /// @tparam Costs a `ged::GedCostModel` for `Segment_node` (default `Segment_costs`).
 /// @tparam Clustering a `clustering::ClusteringPolicy` (default `clustering::K_medoids`, k by
 /// silhouette).
-/// @tparam Alignment an `alignment::AlignmentPolicy` (default `alignment::Smith_waterman`).
+/// @tparam Alignment an `alignment::AlignmentPolicy` (default `alignment::Dtw`, chosen over the
+/// thesis' Smith–Waterman leaving each body out: @ref chapter_07).
 /// @tparam Normalization as for `Strain_distribution_similarity`.
 /// @par Complexity `describe`: the evolving graph, O(T F), and the GEDs among its K key frames;
 /// `compare`: Ka Kb GEDs, the clustering of Ka + Kb graphs, and the alignment's O(Ta Tb).
 template <class Ged = ged::Bipartite_ged, class Costs = Segment_costs, class Clustering = clustering::K_medoids,
-          alignment::AlignmentPolicy Alignment = alignment::Smith_waterman,
+          alignment::AlignmentPolicy Alignment = alignment::Dtw,
           class Normalization = Best_score_normalization>
 requires ged::GedPolicy<Ged, spatiotemporal::Segment_graph, Costs> && clustering::ClusteringPolicy<Clustering>
 struct Evolving_graph_similarity {
-  /// @brief The spatio-temporal segmentation. Default: `Spatiotemporal_options` (previous pose,
-  /// threshold 0.5).
-  spatiotemporal::Spatiotemporal_options segmentation{};
+  /// @brief The spatio-temporal segmentation. Default: `Spatiotemporal_options` with a fixed
+  /// strain scale, sigma 0.02 (an animation's strains no longer scaled to its own), and threshold
+  /// 0.3, chosen leaving each body out (@ref chapter_07).
+  spatiotemporal::Spatiotemporal_options segmentation{.sigma = 0.02, .threshold = 0.3};
   /// @brief Whether each key-frame graph's detached rigid nodes (rigid pieces touching no other
   /// segment: a character's separate meshes) are merged into one before the edit distances
   /// (`compact_segment_graph`). Default true: real characters' graphs shrink from 40-140 nodes to
@@ -74,7 +84,7 @@ struct Evolving_graph_similarity {
   Clustering clustering{};
   /// @brief The dissimilarity of two frames' labels. Default: `Label_dissimilarity::mismatch`.
   Label_dissimilarity labels = Label_dissimilarity::mismatch;
-  /// @brief The alignment of the label sequences. Default: Smith–Waterman, +1 / -1 / -1.
+  /// @brief The alignment of the label sequences. Default: `alignment::Dtw`.
   Alignment alignment{};
   /// @brief How the score becomes the similarity. Default: `Best_score_normalization`.
   Normalization normalization{};
@@ -112,6 +122,8 @@ struct Evolving_graph_similarity {
     alignment::Alignment aligned;
     if (labels == Label_dissimilarity::mismatch) {
       aligned = alignment.align(n, m, alignment::label_mismatch(result.labels_a, result.labels_b));
+    } else if (labels == Label_dissimilarity::graphs) {
+      aligned = align_graphs(distances, a, b);
     } else {
       const Eigen::MatrixXd between = medoid_distances(distances, clusters);
       const auto& la = result.labels_a;
@@ -151,6 +163,27 @@ private:
     for (std::size_t k = 0; k < graph.size(); ++k)
       labels.insert(labels.end(), graph[k].num_frames(), clusters[offset + k]);
     return labels;
+  }
+
+  // The frames aligned by the edit distances of their key frames' graphs, over the largest of the
+  // A x B block.
+  alignment::Alignment align_graphs(const Eigen::MatrixXd& distances, const Description& a,
+                                    const Description& b) const {
+    const Eigen::Index na = Eigen::Index(a.graphs.size()), nb = Eigen::Index(b.graphs.size());
+    Eigen::MatrixXd between = distances.block(0, na, na, nb);
+    const double largest = between.maxCoeff();
+    if (largest > 0) between /= largest;
+    const std::vector<std::size_t> key_a = frame_labels(a.graph, iota(a.graphs.size()), 0);
+    const std::vector<std::size_t> key_b = frame_labels(b.graph, iota(b.graphs.size()), 0);
+    return alignment.align(key_a.size(), key_b.size(), [&](std::size_t i, std::size_t j) {
+      return between(Eigen::Index(key_a[i]), Eigen::Index(key_b[j]));
+    });
+  }
+
+  static std::vector<std::size_t> iota(std::size_t n) {
+    std::vector<std::size_t> v(n);
+    std::iota(v.begin(), v.end(), std::size_t(0));
+    return v;
   }
 
   // The distances between the clusters' medoids, over the largest (all 0 for a single cluster).

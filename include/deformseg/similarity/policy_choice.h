@@ -39,9 +39,9 @@ struct Policy_choice {
   /// @brief One of `policy_names`. Default "motion-signature", `Default_similarity`.
   std::string policy = "motion-signature";
   /// @brief One of `alignment_names`, or empty (the default) for the policy's own: DTW for the
-  /// motion signatures, Smith–Waterman for the others.
+  /// motion signatures and the graphs, Smith–Waterman for the others.
   std::string alignment{};
-  /// @brief The graph policy's deformed threshold, in [0, 1]; none (the default): its own, 0.5.
+  /// @brief The graph policy's deformed threshold, in [0, 1]; none (the default): its own, 0.3.
   std::optional<double> threshold{};
   /// @brief The motion signatures' up direction, one of `up_names`; empty (the default): +y.
   std::string up{};
@@ -51,7 +51,7 @@ struct Policy_choice {
 /// @par Complexity O(1).
 inline std::string alignment_name(const Policy_choice& choice) {
   if (!choice.alignment.empty()) return choice.alignment;
-  return choice.policy == "motion-signature" ? "dtw" : "smith-waterman";
+  return choice.policy == "motion-signature" || choice.policy == "graph" ? "dtw" : "smith-waterman";
 }
 
 /// @brief The up direction an `up_names` entry names (+y when empty), `std::nullopt` for "none".
