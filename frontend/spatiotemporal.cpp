@@ -1,15 +1,25 @@
 #include "spatiotemporal.h"
 
-#include <deformseg/mesh/face_areas.h>
+#include <deformseg/spatiotemporal/body_layout.h>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 #include <vector>
 
 namespace deformseg::frontend {
 
 void check(const Spatiotemporal_request& r, Front front) {
   if (!r.reference.empty()) check_choice("reference", r.reference, segmentation_references, front);
-  if (!(r.threshold >= 0 && r.threshold <= 1)) refuse(spelled("threshold", front) + " must be in [0, 1]");
+  const auto in_unit_interval = [&](const char* name, double value) {
+    if (!(value >= 0 && value <= 1)) refuse(spelled(name, front) + " must be in [0, 1]");
+  };
+  in_unit_interval("threshold", r.threshold);
+  in_unit_interval("min_area", r.min_area);
+  in_unit_interval("contact_distance", r.contact_distance);
+  in_unit_interval("rigid_tolerance", r.rigid_tolerance);
+  if (!(r.hysteresis >= 0 && r.hysteresis < 1)) refuse(spelled("hysteresis", front) + " must be in [0, 1)");
+  if (r.sigma && !(*r.sigma > 0 && std::isfinite(*r.sigma))) refuse(spelled("sigma", front) + " must be positive");
   if (!r.reference_mesh.empty() && r.reference == "previous")
     refuse(spelled("reference_mesh", front) + " is a rest pose: it excludes " +
            spelled("reference", "previous", front));
@@ -20,16 +30,21 @@ Spatiotemporal_result spatiotemporal_segments(const mesh::Surface_mesh_animation
   const std::string reference = r.reference.empty() ? (r.reference_mesh.empty() ? "previous" : "rest") : r.reference;
   const spatiotemporal::Spatiotemporal_options options{
       .reference = reference == "rest" ? strain::Strain_reference::rest_pose : strain::Strain_reference::previous_pose,
+      .sigma = r.sigma,
       .threshold = r.threshold,
       .min_triangles = r.min_triangles,
       .min_frames = r.min_frames,
-      .max_island = r.max_island};
-  const auto field = strain_against(animation, r.reference_mesh,
-                                    {.reference = options.reference, .threads = threads});
-  const std::vector<double> areas = mesh::face_areas(animation, 0);
+      .max_island = r.max_island,
+      .min_area = r.min_area,
+      .hysteresis = r.hysteresis,
+      .parts = {.contact_distance = r.contact_distance, .rigid_tolerance = r.rigid_tolerance}};
+  strain::Strain_options strain = spatiotemporal::strain_options(options);
+  strain.threads = threads;
+  const auto field = strain_against(animation, r.reference_mesh, strain);
+  spatiotemporal::Body_layout layout = spatiotemporal::body_layout(animation, options.parts);
   auto segmentation = std::make_unique<const spatiotemporal::Spatiotemporal_segmentation>(
-      spatiotemporal::spatiotemporal_segmentation(field, animation.triangles(), options));
-  spatiotemporal::Frame_segments frames(*segmentation, animation.triangles(), areas);
+      spatiotemporal::spatiotemporal_segmentation(field, layout, options));
+  spatiotemporal::Frame_segments frames(*segmentation, std::move(layout));
   spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(frames);
   return {std::move(segmentation), std::move(frames), std::move(graph)};
 }

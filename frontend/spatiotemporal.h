@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -29,9 +30,14 @@ struct Spatiotemporal_request {
   double threshold = spatiotemporal::Spatiotemporal_options{}.threshold;
   std::string reference{};  ///< empty: previous, or rest with a reference mesh
   std::string reference_mesh{};
+  std::optional<double> sigma{};
   std::size_t min_triangles = spatiotemporal::Spatiotemporal_options{}.min_triangles;
   std::size_t min_frames = spatiotemporal::Spatiotemporal_options{}.min_frames;
   std::size_t max_island = spatiotemporal::Spatiotemporal_options{}.max_island;
+  double min_area = spatiotemporal::Spatiotemporal_options{}.min_area;
+  double hysteresis = spatiotemporal::Spatiotemporal_options{}.hysteresis;
+  double contact_distance = spatiotemporal::Part_link_options{}.contact_distance;
+  double rigid_tolerance = spatiotemporal::Part_link_options{}.rigid_tolerance;
 };
 
 /// The spatio-temporal request's table.
@@ -42,14 +48,33 @@ inline constexpr std::tuple spatiotemporal_parameters{
     choice_parameter("reference", &Spatiotemporal_request::reference, "What the strain is measured against",
                      segmentation_references),
     reference_mesh_parameter<Spatiotemporal_request>(),
+    Parameter<Spatiotemporal_request, std::optional<double>>{
+        "sigma", &Spatiotemporal_request::sigma,
+        "The strain's Gaussian normalisation sigma, fixed for every animation. Default: each animation's 95th "
+        "percentile"},
     Parameter<Spatiotemporal_request, std::size_t>{
         "min_triangles", &Spatiotemporal_request::min_triangles,
         "Segments whose largest slice has fewer triangles become rigid. Default: 10"},
     Parameter<Spatiotemporal_request, std::size_t>{"min_frames", &Spatiotemporal_request::min_frames,
-                                                   "Segments lasting fewer frames become rigid. Default: 2"},
+                                                   "Segments lasting fewer frames become rigid. Default: 6"},
     Parameter<Spatiotemporal_request, std::size_t>{
         "max_island", &Spatiotemporal_request::max_island,
         "Rigid islands of at most this many triangles inside one segment join it (0: none). Default: 30"},
+    Parameter<Spatiotemporal_request, double>{
+        "min_area", &Spatiotemporal_request::min_area,
+        "Segments whose largest slice covers less than this share of the area become rigid, in [0, 1]. Default: 0"},
+    Parameter<Spatiotemporal_request, double>{
+        "hysteresis", &Spatiotemporal_request::hysteresis,
+        "Cells above threshold x (1 - this) joined to a cell above the threshold are deformed too, in [0, 1). "
+        "Default: 0"},
+    Parameter<Spatiotemporal_request, double>{
+        "contact_distance", &Spatiotemporal_request::contact_distance,
+        "Separate parts within this share of the rest pose's diagonal are neighbours (0: shared edges only, "
+        "the thesis). Default: 0.01"},
+    Parameter<Spatiotemporal_request, double>{
+        "rigid_tolerance", &Spatiotemporal_request::rigid_tolerance,
+        "Separate parts moving as one rigid body, within this share of the diagonal, make one rigid node (0: "
+        "never). Default: 0.002"},
 };
 
 /// Checks a request before any input is read.

@@ -299,4 +299,11 @@ TEST_CASE("evolving graph: a rigid node has no segment attribute in DOT, as it h
   CHECK(dot.find("1[label=\"D4\", kind=\"deformed\", segment=\"4\", triangles=\"10\", area=\"0.25\"") !=
         std::string::npos);
   CHECK(dot.find("segment=\"-1\"") == std::string::npos);
+  CHECK(dot.find("xlabel=\"75%\"") != std::string::npos);  // the area share beside each node
+  CHECK(dot.find("xlabel=\"25%\"") != std::string::npos);
+  CHECK(dot.find("graph [overlap=false") != std::string::npos);  // a layout that keeps nodes apart
+  std::istringstream in(dot);
+  const io::Labelled_graph read = io::read_labelled_graph(in, io::Graph_format::dot, "graph.dot");
+  CHECK(boost::num_vertices(read) == 2);
+  CHECK(read[1] == "D4");
 }

@@ -322,12 +322,14 @@ def evolving_graph_tube(ws: Workspace, out: Path):
     save(fig, out)
 
 
-def fox_walk(ws: Workspace) -> str:
-    """The Fox's Walk clip of the shared characters, as FILE.glb#CLIP."""
-    fox = ws.data / "characters" / "Fox.glb" if ws.data else None
-    if fox is None or not fox.is_file():
-        raise DataMissing("the shared characters/Fox.glb is not there")
-    return f"{fox}#Walk"
+def character_clip(file: str, clip: str) -> Callable[[Workspace], str]:
+    """A clip of the shared characters, as FILE.glb#CLIP."""
+    def make(ws: Workspace) -> str:
+        path = ws.data / "characters" / file if ws.data else None
+        if path is None or not path.is_file():
+            raise DataMissing(f"the shared characters/{file} is not there")
+        return f"{path}#{clip}"
+    return make
 
 
 def view_page(*inputs, frame: int, options=()):
@@ -366,7 +368,9 @@ FIGURES = [
     Figure("alignment_path", tool_png(lambda ws, png: ["similarity", ws.tube("bend_once"), ws.tube("bend_once_late"), "--alignment", "dtw", "--png", png])),
     Figure("similarity_matrix", tool_png(lambda ws, png: ["matrix", *map(ws.tube, TUBES), "--png", png])),
     Figure("view_tubes", view_page(lambda ws: ws.tube("bend_once"), lambda ws: ws.tube("bend_once_late"), frame=17)),
-    Figure("view_fox", view_page(fox_walk, frame=10, options=("--color", "previous-strain"))),
+    Figure("view_fox", view_page(character_clip("Fox.glb", "Walk"), frame=10, options=("--color", "previous-strain"))),
+    Figure("view_knight_segments", view_page(character_clip("Knight.glb", "Walking_A"), frame=12,
+                                             options=("--color", "segments"))),
 ]
 
 

@@ -186,9 +186,14 @@ def evolving_graph(
     threshold: float = 0.5,
     reference: Optional[Literal["previous", "rest"]] = None,
     reference_mesh: Optional[_Path] = None,
+    sigma: Optional[float] = None,
     min_triangles: int = 10,
-    min_frames: int = 2,
+    min_frames: int = 6,
     max_island: int = 30,
+    min_area: float = 0.0,
+    hysteresis: float = 0.0,
+    contact_distance: float = 0.01,
+    rigid_tolerance: float = 0.002,
 ) -> EvolvingGraph: ...
 
 class Similarity:

@@ -108,22 +108,31 @@ class EvolvingGraph:
 
 
 def evolving_graph(animation: _deformseg.Animation, *, threshold: float = 0.5, reference: Optional[str] = None,
-                   reference_mesh: Optional[Union[str, "os.PathLike[str]"]] = None, min_triangles: int = 10,
-                   min_frames: int = 2, max_island: int = 30) -> EvolvingGraph:
+                   reference_mesh: Optional[Union[str, "os.PathLike[str]"]] = None, sigma: Optional[float] = None,
+                   min_triangles: int = 10, min_frames: int = 6, max_island: int = 30, min_area: float = 0.0, hysteresis: float = 0.0,
+                   contact_distance: float = 0.01, rigid_tolerance: float = 0.002) -> EvolvingGraph:
     """The spatio-temporal segmentation of `animation` and the evolving graph of its key frames
     (deformseg::spatiotemporal::evolving_graph with Spatiotemporal_options; the tool's ``spatiotemporal``).
 
     threshold (default 0.5): a triangle-frame is deformed above this normalised strain, in [0, 1];
     reference: "previous" (the default; deformed while it moves) or "rest" (away from frame 0, or from
     `reference_mesh`, and the default with it); reference_mesh (default None): a mesh file with the
-    animation's connectivity in a rest pose kept apart from the frames;
-    min_triangles (default 10) and min_frames (default 2): smaller segments become rigid;
+    animation's connectivity in a rest pose kept apart from the frames; sigma (default None: each
+    animation's 95th percentile): the strain's Gaussian normalisation sigma, fixed for every animation;
+    min_triangles (default 10) and min_frames (default 6): smaller or shorter segments become rigid;
     max_island (default 30): rigid islands of at most this many triangles inside one segment join
-    it (0: none). Node areas are shares of the mesh's area in frame 0. Raises InvalidInput as the
-    library does. Complexity O(T F) besides the strain's O(T F). Releases the GIL.
+    it (0: none); min_area (default 0): segments whose largest slice covers less than this share of
+    the area become rigid; hysteresis (default 0, in [0, 1)): cells above threshold x (1 - hysteresis)
+    joined to a cell above the threshold are deformed too;
+    contact_distance (default 0.01) and rigid_tolerance (default 0.002), shares of the rest pose's
+    diagonal: separate parts that touch, or that move as one rigid body, are neighbours (0 and 0:
+    shared edges only, the thesis; deformseg::spatiotemporal::part_links).
+    Node areas are shares of the mesh's area in frame 0. Raises InvalidInput as the library does.
+    Complexity O(T F) besides the strain's O(T F) and part_links'. Releases the GIL.
     """
-    record = _deformseg._evolving_graph(animation, threshold, reference, reference_mesh, min_triangles, min_frames,
-                                        max_island)
+    record = _deformseg._evolving_graph(animation, threshold, reference, reference_mesh, sigma, min_triangles,
+                                        min_frames, max_island, min_area, hysteresis, contact_distance,
+                                        rigid_tolerance)
     return EvolvingGraph(record["frames"], record["segments"], [
         KeyFrame(k["first"], k["last"], [Node(n["kind"], n["segment"], n["triangles"], n["area"]) for n in k["nodes"]],
                  [tuple(edge) for edge in k["edges"]])

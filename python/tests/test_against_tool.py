@@ -98,6 +98,19 @@ def test_evolving_graph_as_tool(tool, tubes):
     graph = deformseg.evolving_graph(deformseg.read_animation(folder), threshold=0.1, min_triangles=4, min_frames=1,
                                      max_island=0)
     check_evolving_graph(graph, document)
+    lasting = ["--min-area", "0.02", "--hysteresis", "0.4", "--contact-distance", "0", "--rigid-tolerance", "0"]
+    document = tool("spatiotemporal", folder, "--json", "-", "--threshold", "0.1", *lasting)
+    graph = deformseg.evolving_graph(deformseg.read_animation(folder), threshold=0.1, min_area=0.02, hysteresis=0.4,
+                                     contact_distance=0, rigid_tolerance=0)
+    check_evolving_graph(graph, document)
+
+
+def test_evolving_graph_of_a_character_as_tool(tool, characters):
+    knight = f"{characters / 'Knight.glb'}#Walking_A"
+    document = tool("spatiotemporal", knight, "--json", "-", "--min-frames", "4")
+    graph = deformseg.evolving_graph(deformseg.read_animation(knight), min_frames=4)
+    check_evolving_graph(graph, document)
+    assert max(len(k.nodes) for k in graph) <= 10  # its parts touch: not the 46 nodes of shared edges alone
 
 
 # ---- similarity --------------------------------------------------------------------------------

@@ -39,9 +39,21 @@ assert.strictEqual(core.firstFrameAlignedWith(pairs, 9), 4);
 assert.strictEqual(core.nodeLabel({kind: 'rigid', segment: null, area: 0.754}), 'R 75%');
 assert.strictEqual(core.nodeLabel({kind: 'deformed', segment: 3, area: 0.25}), 'D3 25%');
 assert.strictEqual(core.cssColor([255, 8, 160]), '#ff08a0');
-const layout = core.circleLayout(4);
-assert.deepStrictEqual(layout[0].map((v) => +v.toFixed(6)), [0.5, 0.15]);
-for (const [x, y] of layout) assert.ok(Math.abs(Math.hypot(x - 0.5, y - 0.5) - 0.35) < 1e-9);
+// The arc diagram: nodes a spacing apart whatever their count, every arc within its width bound
+// and reaching further the more rows it spans, the drawing as tall as its last node and half a row.
+for (const count of [1, 2, 5, 15, 64, 200]) {
+  const edges = [];
+  for (let u = 0; u + 1 < count; ++u) edges.push([u, u + 1], [0, count - 1 - u]);
+  const at = core.columnLayout(count, edges, 24, 20, 100);
+  assert.strictEqual(at.heights.length, count);
+  at.heights.forEach((y, k) => assert.strictEqual(y, 20 + 12 + 24 * k));
+  assert.strictEqual(at.height, at.heights[count - 1] + 24);
+  edges.forEach((e, i) => {
+    assert.ok(at.widths[i] > 0 && at.widths[i] <= 100, 'edge ' + e);
+    const longer = edges.findIndex((f) => Math.abs(f[1] - f[0]) > Math.abs(e[1] - e[0]));
+    if (longer >= 0) assert.ok(at.widths[longer] >= at.widths[i]);
+  });
+}
 assert.deepStrictEqual(core.requestedFrame('?frame=7', 10), {frame: 7, given: true});
 assert.deepStrictEqual(core.requestedFrame('?frame=70', 10), {frame: 9, given: true});
 assert.deepStrictEqual(core.requestedFrame('', 10), {frame: 0, given: false});

@@ -18,6 +18,7 @@
 #include <boost/property_map/property_map.hpp>
 #include <cctype>
 #include <cstddef>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -213,10 +214,10 @@ inline Labelled_graph read_labelled_graph(const std::filesystem::path& path) {
 
 namespace deformseg::io::internal {
 
-// A node's DOT attributes: its label (R, or D and the segment id), what it is, and its colour. A
-// rigid node has no segment attribute, as it has `null` in the tool's JSON. Every value is
-// quoted: the shortest text of an area may have an exponent (5.79e-05), which DOT's numerals do
-// not allow.
+// A node's DOT attributes: its label (R, or D and the segment id), what it is, its area share in
+// percent beside it (xlabel), and its colour. A rigid node has no segment attribute, as it has
+// `null` in the tool's JSON. Every value is quoted: the shortest text of an area may have an
+// exponent (5.79e-05), which DOT's numerals do not allow.
 inline std::string dot_node_attributes(const spatiotemporal::Segment_node& n) {
   const bool rigid = n.kind == spatiotemporal::Segment_kind::rigid;
   const color::Rgb c = color::segment_color(n.segment);
@@ -225,7 +226,8 @@ inline std::string dot_node_attributes(const spatiotemporal::Segment_node& n) {
   const std::string segment = rigid ? "" : "segment=\"" + std::to_string(n.segment) + "\", ";
   return "[label=\"" + spatiotemporal::node_label(n) + "\", kind=\"" + (rigid ? "rigid" : "deformed") + "\", " +
          segment + "triangles=\"" + std::to_string(n.triangles) + "\", area=\"" + shortest_text(n.area) +
-         "\", style=filled, fillcolor=\"" + color + "\"]";
+         "\", xlabel=\"" + std::to_string(std::lround(100 * n.area)) + "%\", style=filled, fillcolor=\"" + color +
+         "\"]";
 }
 
 }  // namespace deformseg::io::internal
@@ -236,14 +238,20 @@ namespace deformseg::io {
 /// graph's order, each with `label` ("R", or "D" and the segment id, the node kind as the
 /// `deformseg ged` command reads it), `kind` ("rigid" or "deformed"), `segment` (the
 /// spatio-temporal segment's id; none on a rigid node), `triangles`, `area` (the node's share of
-/// the surface area), and a fill colour (`segment_color`).
+/// the surface area), `xlabel` (that share in percent, drawn beside the node), and a fill colour
+/// (`segment_color`, as the meshes of `color::segment_face_colors` have it). The graph asks its
+/// layout not to overlap the nodes (`overlap=false`), which `neato` and `fdp` honour, and draws
+/// nodes as circles in a legible font.
 /// @param out the stream.
 /// @param graph the graph.
 /// @par Complexity O(n + e).
 inline void write_segment_graph_dot(std::ostream& out, const spatiotemporal::Segment_graph& graph) {
-  boost::write_graphviz(out, graph, [&graph](std::ostream& o, std::size_t v) {
-    o << internal::dot_node_attributes(graph[v]);
-  });
+  boost::write_graphviz(
+      out, graph, [&graph](std::ostream& o, std::size_t v) { o << internal::dot_node_attributes(graph[v]); },
+      boost::default_writer(), [](std::ostream& o) {
+        o << "graph [overlap=false, splines=true, forcelabels=true];\n"
+             "node [shape=circle, fontname=\"Helvetica\", fontsize=14];\n";
+      });
 }
 
 /// @brief Writes each key frame's graph as a DOT file (`write_segment_graph_dot`) into `folder`,

@@ -4,7 +4,7 @@
 
 #include <deformseg/spatiotemporal/evolving_graph.h>
 #include <deformseg/exceptions.h>
-#include <deformseg/mesh/face_areas.h>
+#include <deformseg/spatiotemporal/body_layout.h>
 #include <deformseg/color/segment_colors.h>
 #include <deformseg/strain/strain.h>
 #include <deformseg/color/strain_colors.h>
@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
 
 namespace deformseg::tool {
 
@@ -180,11 +181,12 @@ nlohmann::json view_json(const mesh::Surface_mesh_animation& animation, const st
   const strain::Strain_field<float> previous =
       strain::compute_strain(animation, {.reference = strain::Strain_reference::previous_pose, .threads = threads});
   const temporal::Temporal_segmentation segments = temporal::temporal_segmentation(rest);
+  // The segments and graph of `deformseg spatiotemporal` with its defaults: its parts linked.
+  spatiotemporal::Body_layout layout = spatiotemporal::body_layout(animation);
   const spatiotemporal::Spatiotemporal_segmentation segmentation =
-      spatiotemporal::spatiotemporal_segmentation(previous, animation.triangles());
-  const std::vector<double> areas = mesh::face_areas(animation, 0);
+      spatiotemporal::spatiotemporal_segmentation(previous, layout);
   const spatiotemporal::Evolving_graph graph =
-      spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segmentation, animation.triangles(), areas));
+      spatiotemporal::evolving_graph(spatiotemporal::Frame_segments(segmentation, std::move(layout)));
   Face_colors colors;
   switch (coloring) {
     case View_coloring::strain: colors = strain_colors_of(rest, strain::Strain_reference::rest_pose); break;

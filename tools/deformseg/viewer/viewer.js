@@ -41,7 +41,7 @@
     this.canvas.height = 360;
     row.appendChild(this.canvas);
     this.graph = document.createElement('canvas');
-    this.graph.width = 200;
+    this.graph.width = 240;
     this.graph.height = 220;
     row.appendChild(this.graph);
     panel.appendChild(row);
@@ -131,33 +131,36 @@
     g.fillRect(x(this.current), 0, Math.max(2, w / frames), 36);
   };
 
-  // The current key frame's graph: nodes on a circle, coloured as on the mesh, with their labels.
+  // The current key frame's graph as an arc diagram (core.columnLayout): nodes in a column,
+  // coloured as on the mesh, labelled on their right, edges as arcs on their left. The canvas
+  // grows with the nodes.
   Animation.prototype.drawGraph = function () {
-    var g = this.graph.getContext('2d'), w = this.graph.width, h = this.graph.height;
-    g.clearRect(0, 0, w, h);
     var k = core.intervalAt(this.spec.key_frames, this.current);
+    var key = k < 0 ? {nodes: [], edges: []} : this.spec.key_frames[k];
+    var x = 130, radius = 8;
+    var at = core.columnLayout(key.nodes.length, key.edges, 24, 24, x - radius - 6);
+    if (this.graph.height !== Math.max(220, at.height)) this.graph.height = Math.max(220, at.height);
+    var g = this.graph.getContext('2d');
+    g.clearRect(0, 0, this.graph.width, this.graph.height);
     if (k < 0) return;
-    var key = this.spec.key_frames[k], at = core.circleLayout(key.nodes.length);
     g.fillStyle = '#222';
-    g.font = '12px sans-serif';
-    g.fillText('key frame ' + k + ': frames ' + key.first + '-' + key.last, 4, 14);
+    g.font = '13px sans-serif';
+    g.fillText('key frame ' + k + ': frames ' + key.first + '-' + key.last, 4, 15);
     g.strokeStyle = '#555';
-    key.edges.forEach(function (e) {
+    key.edges.forEach(function (e, i) {
+      var top = Math.min(at.heights[e[0]], at.heights[e[1]]), bottom = Math.max(at.heights[e[0]], at.heights[e[1]]);
       g.beginPath();
-      g.moveTo(at[e[0]][0] * w, 20 + at[e[0]][1] * (h - 20));
-      g.lineTo(at[e[1]][0] * w, 20 + at[e[1]][1] * (h - 20));
+      g.ellipse(x, (top + bottom) / 2, at.widths[i], (bottom - top) / 2, 0, Math.PI / 2, 3 * Math.PI / 2);
       g.stroke();
     });
     key.nodes.forEach(function (node, n) {
-      var px = at[n][0] * w, py = 20 + at[n][1] * (h - 20);
       g.fillStyle = core.cssColor(node.color);
       g.beginPath();
-      g.arc(px, py, 10, 0, 2 * Math.PI);
+      g.arc(x, at.heights[n], radius, 0, 2 * Math.PI);
       g.fill();
       g.stroke();
       g.fillStyle = '#222';
-      var text = core.nodeLabel(node);  // on the side away from the edge of the canvas
-      g.fillText(text, px < w / 2 ? px + 12 : px - 12 - g.measureText(text).width, py + 4);
+      g.fillText(core.nodeLabel(node), x + radius + 6, at.heights[n] + 4);
     });
   };
 

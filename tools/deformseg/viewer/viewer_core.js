@@ -74,15 +74,18 @@ var DeformsegCore = (function () {
     return pairs.length ? pairs[pairs.length - 1][0] : 0;
   }
 
-  // Nodes on a circle of radius 0.35 around (0.5, 0.5), node 0 at the top, clockwise.
-  function circleLayout(count) {
-    var points = [];
-    for (var k = 0; k < count; ++k) {
-      if (count === 1) { points.push([0.5, 0.5]); continue; }
-      var angle = -Math.PI / 2 + (2 * Math.PI * k) / count;
-      points.push([0.5 + 0.35 * Math.cos(angle), 0.5 + 0.35 * Math.sin(angle)]);
-    }
-    return points;
+  // The layout of a key frame's graph as an arc diagram, so that no two nodes nor labels overlap
+  // however many there are: node k at height top + (k + 1/2) spacing in one column, its label to
+  // the right; the edge u-v a half ellipse on the left of the column, as wide as a quarter of the
+  // rows it spans (at most maxWidth). Gives the nodes' heights, each edge's width and the height
+  // the drawing needs.
+  function columnLayout(count, edges, spacing, top, maxWidth) {
+    var heights = [];
+    for (var k = 0; k < count; ++k) heights.push(top + (k + 0.5) * spacing);
+    var widths = edges.map(function (e) {
+      return Math.min(maxWidth, spacing / 2 + Math.abs(e[1] - e[0]) * spacing / 4);
+    });
+    return {heights: heights, widths: widths, height: top + count * spacing + spacing / 2};
   }
 
   // A node's label: R for a rigid node, D and its segment for a deformed one, with its share of
@@ -109,7 +112,7 @@ var DeformsegCore = (function () {
 
   return {
     decodeBase64: decodeBase64, uint16s: uint16s, uint32s: uint32s, dequantize: dequantize,
-    intervalAt: intervalAt, alignedFrame: alignedFrame, firstFrameAlignedWith: firstFrameAlignedWith, circleLayout: circleLayout, nodeLabel: nodeLabel,
+    intervalAt: intervalAt, alignedFrame: alignedFrame, firstFrameAlignedWith: firstFrameAlignedWith, columnLayout: columnLayout, nodeLabel: nodeLabel,
     cssColor: cssColor, requestedFrame: requestedFrame
   };
 })();
