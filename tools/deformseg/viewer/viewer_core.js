@@ -89,10 +89,10 @@ var DeformsegCore = (function () {
   }
 
   // A node's label: R for a rigid node, D and its segment for a deformed one, with its share of
-  // the surface in percent.
+  // the surface in percent (with a decimal under 1 %, where a character's segments often are).
   function nodeLabel(node) {
-    var name = node.kind === 'rigid' ? 'R' : 'D' + node.segment;
-    return name + ' ' + Math.round(100 * node.area) + '%';
+    var name = node.kind === 'rigid' ? 'R' : 'D' + node.segment, percent = 100 * node.area;
+    return name + ' ' + (percent < 1 ? percent.toFixed(1) : Math.round(percent)) + '%';
   }
 
   // "#rrggbb" of [r, g, b] in 0..255.
