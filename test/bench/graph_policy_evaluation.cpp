@@ -1,22 +1,22 @@
-// Retrieval figures of the thesis' pipeline (Evolving_graph_similarity) on the shared characters
-// over a grid of its parameters, each setting chosen leaving each body out. Not a Google
+// Retrieval figures of the graph policy (Evolving_graph_similarity) on the shared characters over
+// a grid of its parameters, each setting also chosen leaving each body out. Not a Google
 // Benchmark:
 //
-//   build/test/bench/graph_policy_evaluation [--classes walk,run,idle,jump,death]
+//   build-bench/test/bench/graph_policy_evaluation [--classes walk,run,idle,jump,death]
 //       [--threshold 0.3,0.5] [--min-area 0,0.01] [--min-frames 2,4] [--hysteresis 0,0.5]
 //       [--contact 0.01] [--rigid 0.002] [--sigma 0,0.05] [--area-weight 1,4]
 //       [--labels mismatch,medoids,graphs] [--alignment dtw,smith-waterman] [--describe-only 1]
 //       [--area-series 1]
 //
-// Every list is an axis of the grid (default: the policy's defaults; sigma 0: each clip's own). Each clip of motions.csv with
-// one of the classes (default: every labelled clip) is read once at 30 fps, welded as the tool
-// reads it. For each setting the figures of evaluate_retrieval over all queries; then, for each
-// body in turn, the setting with the best ROC-AUC (ties: mAP) on the other bodies alone, and the
-// figures of the left-out bodies' queries under the setting their fold chose. --describe-only
-// times the descriptions of every setting (2 threads), and compares nothing. --area-series compares
-// each clip by what its binary labels alone hold, its deformed share of the area frame by frame
-// (the segmentation of each setting), by DTW on the absolute differences: what any graph of those
-// labels could tell at most of how much a body deforms.
+// Every list is an axis of the grid (default: the policy's defaults; sigma 0: each clip's own).
+// Each clip of motions.csv with one of the classes (default: every labelled clip) is read once at
+// 30 fps, welded as the tool reads it. For each setting, the figures of evaluate_retrieval over
+// all queries; then, for each body in turn, the setting with the best ROC-AUC (ties: mAP) on the
+// other bodies alone, and the figures of the left-out bodies' queries under the setting their
+// fold chose. --describe-only times the descriptions of every setting (2 threads) and compares
+// nothing. --area-series compares each clip by what its binary labels alone hold, its deformed
+// share of the area frame by frame (the segmentation of each setting), by DTW on the absolute
+// differences: what any graph of those labels could tell at most of how much a body deforms.
 #include <deformseg/evaluation/retrieval_evaluation.h>
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/gltf.h>
