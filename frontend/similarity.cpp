@@ -13,8 +13,8 @@ void check(const similarity::Policy_choice& choice, Front front) {
   if (!choice.alignment.empty()) check_choice("alignment", choice.alignment, alignments, front);
   if (!choice.up.empty()) check_choice("up", choice.up, up_directions, front);
   const auto name = [&](const char* parameter) { return spelled(parameter, front); };
-  if (choice.threshold && choice.policy != "graph")
-    refuse(name("threshold") + " applies to the graph policy only, not to the " + choice.policy + " policy");
+  if (choice.threshold && !similarity::is_graph_policy(choice.policy))
+    refuse(name("threshold") + " applies to the graph policies only, not to the " + choice.policy + " policy");
   if (choice.threshold && !(*choice.threshold >= 0 && *choice.threshold <= 1))
     refuse(name("threshold") + " must be in [0, 1], not " + std::to_string(*choice.threshold));
   if (!choice.up.empty() && choice.policy != "motion-signature")
@@ -24,14 +24,14 @@ void check(const similarity::Policy_choice& choice, Front front) {
 void check(const Significance_request& r, const similarity::Policy_choice& choice, Front front) {
   const std::string name = spelled("significance", front);
   if (r.significance == 1) refuse(name + " needs 0 (none) or at least 2 shuffled copies");
-  if (r.significance.value_or(0) >= 2 && choice.policy == "graph")
-    refuse(name + " does not apply to the graph policy, whose frames are key-frame labels");
+  if (r.significance.value_or(0) >= 2 && similarity::is_graph_policy(choice.policy))
+    refuse(name + " does not apply to the graph policies, whose frames are key-frame labels");
 }
 
 namespace {
 
 std::size_t shuffled_copies(const similarity::Policy_choice& choice, const Significance_request& significance) {
-  return significance.significance.value_or(choice.policy == "graph" ? 0 : 20);
+  return significance.significance.value_or(similarity::is_graph_policy(choice.policy) ? 0 : 20);
 }
 
 template <class Policy, class Description>

@@ -26,12 +26,15 @@ inline constexpr std::array similarity_policies{
     Choice{"histogram", "per-frame histograms of the strain, no correspondence needed; its values crowd near 1 "
                         "(the Knight's Walking_A against a frozen copy of itself 0.997, against its Death_A 0.996): "
                         "read the z-score or a rank, not the value"},
-    Choice{"graph", "the thesis' evolving graphs, graph edit distances, clustering and label alignment"},
+    Choice{"graph", "the thesis' method: evolving graphs, graph edit distances, clustering and label alignment "
+                    "(Smith-Waterman); for bodies that deform alike, as the thesis' animals"},
     Choice{"self-similarity", "each animation's own frame x frame distances after rigid alignment"},
+    Choice{"graph-characters", "the evolving graphs with settings tuned on game characters (a fixed strain scale, "
+                               "threshold 0.3, parts linked, segments of 6 frames, DTW); not the thesis' method"},
 };
 
 /// The alignments, in the order of `similarity::alignment_names`; none given: the policy's own
-/// (dtw for motion-signature and graph, smith-waterman for the others).
+/// (dtw for motion-signature and graph-characters, smith-waterman for the others).
 inline constexpr std::array alignments{
     Choice{"smith-waterman", "local: the best matching parts"},
     Choice{"dtw", "global: both whole"},
@@ -49,12 +52,13 @@ inline constexpr std::array up_directions{
 inline constexpr std::tuple policy_parameters{
     choice_parameter("policy", &similarity::Policy_choice::policy, "The similarity policy", similarity_policies),
     choice_parameter("alignment", &similarity::Policy_choice::alignment,
-                     "The alignment of the frames. Default: dtw for motion-signature and graph, smith-waterman for the "
-                     "others",
+                     "The alignment of the frames. Default: dtw for motion-signature and graph-characters, "
+                     "smith-waterman for the others",
                      alignments),
     Parameter<similarity::Policy_choice, std::optional<double>>{
         "threshold", &similarity::Policy_choice::threshold,
-        "graph: the deformed threshold of the segmentation, in [0, 1]. Default: 0.3"},
+        "graph, graph-characters: the deformed threshold of the segmentation, in [0, 1]. Default: 0.5 for graph, 0.3 "
+        "for graph-characters"},
     choice_parameter("up", &similarity::Policy_choice::up,
                      "motion-signature: the animations' up axis, whose rises and falls the signatures tell apart. "
                      "Default: +y",
@@ -63,7 +67,7 @@ inline constexpr std::tuple policy_parameters{
 
 /// The significance of a similarity: its z-score against frame-shuffled copies of the second.
 struct Significance_request {
-  std::optional<std::size_t> significance{};  ///< copies; none: 20, or 0 for the graph policy
+  std::optional<std::size_t> significance{};  ///< copies; none: 20, or 0 for the graph policies
   unsigned seed = 1;
 };
 
@@ -72,7 +76,7 @@ inline constexpr std::tuple significance_parameters{
     Parameter<Significance_request, std::optional<std::size_t>>{
         "significance", &Significance_request::significance,
         "The z-score of the value against this many copies of the second animation with frames shuffled (0: "
-        "none). Default: 20, none for the graph policy"},
+        "none). Default: 20, none for the graph policies"},
     Parameter<Significance_request, unsigned>{"seed", &Significance_request::seed,
                                               "The seed of the shuffles. Default: 1"},
 };

@@ -125,7 +125,7 @@ void bind_similarity(py::module_& m) {
       .def_property_readonly("alignment", [](const frontend::Compared& s) { return s.similarity.alignment; },
                              "The aligned frames: a list of (frame of a, frame of b), increasing in both.")
       .def_property_readonly("labels_a", [](const frontend::Compared& s) { return s.similarity.labels_a; },
-                             "Per frame of a, the label aligned (graph policy: its key frame's cluster); else [].")
+                             "Per frame of a, the label aligned (graph policies: its key frame's cluster); else [].")
       .def_property_readonly("labels_b", [](const frontend::Compared& s) { return s.similarity.labels_b; },
                              "Per frame of b, as labels_a.")
       .def_property_readonly("compared", [](const frontend::Compared& s) { return s.similarity.compared; },

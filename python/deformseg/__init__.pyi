@@ -218,7 +218,7 @@ def similarity(
     a: Animation,
     b: Animation,
     *,
-    policy: Literal["motion-signature", "histogram", "graph", "self-similarity"] = "motion-signature",
+    policy: Literal["motion-signature", "histogram", "graph", "self-similarity", "graph-characters"] = "motion-signature",
     alignment: Optional[Literal["smith-waterman", "dtw", "subsequence-dtw"]] = None,
     threshold: Optional[float] = None,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
@@ -229,7 +229,7 @@ def similarity_matrix(
     animations: Union[Sequence[Animation], MotionStore],  # a store: its clips as described, no database
     database: Optional[Sequence[Animation]] = None,
     *,
-    policy: Literal["motion-signature", "histogram", "graph", "self-similarity"] = "motion-signature",
+    policy: Literal["motion-signature", "histogram", "graph", "self-similarity", "graph-characters"] = "motion-signature",
     alignment: Optional[Literal["smith-waterman", "dtw", "subsequence-dtw"]] = None,
     threshold: Optional[float] = None,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,

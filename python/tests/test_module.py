@@ -192,7 +192,7 @@ def test_options_are_checked_as_the_tool_checks_them(grid, tmp_path):
         (lambda: deformseg.temporal_segmentation(a, method="greedy", segments=2), "segments asks for method='optimal'"),
         (lambda: deformseg.similarity(a, a, policy="signatures"), r"policy must be .*, got 'signatures'"),
         (lambda: deformseg.similarity(a, a, alignment="lcss"), r"alignment must be .*, got 'lcss'"),
-        (lambda: deformseg.similarity(a, a, threshold=0.3), "threshold applies to the graph policy only"),
+        (lambda: deformseg.similarity(a, a, threshold=0.3), "threshold applies to the graph policies only"),
         (lambda: deformseg.similarity(a, a, policy="histogram", up="+z"), "up applies to the motion-signature"),
         (lambda: deformseg.similarity_matrix([a, a], up="z"), r"up must be .*, got 'z'"),
         (lambda: deformseg.similarity(a, a, significance=1), "at least 2 shuffled copies"),

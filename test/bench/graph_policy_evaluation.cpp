@@ -1,5 +1,5 @@
-// Retrieval figures of the graph policy (Evolving_graph_similarity) on the shared characters over
-// a grid of its parameters, each setting also chosen leaving each body out. Not a Google
+// Retrieval figures of the graph policies (Evolving_graph_similarity) on the shared characters over
+// a grid of their parameters, each setting also chosen leaving each body out. Not a Google
 // Benchmark:
 //
 //   build-bench/test/bench/graph_policy_evaluation [--classes walk,run,idle,jump,death]
@@ -8,7 +8,8 @@
 //       [--labels mismatch,medoids,graphs] [--alignment dtw,smith-waterman] [--describe-only 1]
 //       [--area-series 1]
 //
-// Every list is an axis of the grid (default: the policy's defaults; sigma 0: each clip's own).
+// Every list is an axis of the grid (default: the settings of character_graph_similarity, tuned
+// on these characters with this program; sigma 0: each clip's own).
 // Each clip of motions.csv with one of the classes (default: every labelled clip) is read once at
 // 30 fps, welded as the tool reads it. For each setting, the figures of evaluate_retrieval over
 // all queries; then, for each body in turn, the setting with the best ROC-AUC (ties: mAP) on the
@@ -42,9 +43,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Policy = similarity::Evolving_graph_similarity<>;  // DTW
-using Thesis_policy = similarity::Evolving_graph_similarity<ged::Bipartite_ged, similarity::Segment_costs,
-                                                            clustering::K_medoids, alignment::Smith_waterman>;
+using Policy = decltype(similarity::character_graph_similarity());  // DTW
+using Thesis_policy = similarity::Evolving_graph_similarity<>;         // Smith–Waterman
 using Animation = mesh::Surface_mesh_animation;
 
 constexpr const char* label_names[] = {"mismatch", "medoids", "graphs"};
@@ -187,7 +187,7 @@ evaluation::Retrieval_scores without(const Eigen::MatrixXd& value, const std::ve
 int main(int argc, char** argv) {
   std::map<std::string, std::string> args;
   for (int i = 1; i + 1 < argc; i += 2) args[argv[i]] = argv[i + 1];
-  const Policy defaults;
+  const Policy defaults = similarity::character_graph_similarity();
   std::vector<Setting> grid{Setting{defaults.segmentation, defaults.costs.area_weight, defaults.labels}};
   // Each axis multiplies the grid by its values.
   const auto axis = [&](const std::string& key, double fallback, auto set) {

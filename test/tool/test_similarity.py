@@ -8,7 +8,7 @@ import pytest
 
 from conftest import fails, reads_nothing, succeeds, synth
 
-POLICIES = ["motion-signature", "histogram", "self-similarity", "graph"]
+POLICIES = ["motion-signature", "histogram", "self-similarity", "graph", "graph-characters"]
 
 
 @pytest.mark.parametrize("policy", POLICIES)
@@ -34,9 +34,19 @@ def test_similarity_z_score(tool, synth_obj, bend_once):
     assert re.search(r"z-score +-?[0-9.]+ \(against 5 frame-shuffled copies of B\)", out), out
 
 
-def test_similarity_graph_no_z_score(tool, synth_obj, bend_once):
-    result = tool("similarity", synth_obj[0], bend_once[0], "--policy", "graph", "--json", "-").json()
+@pytest.mark.parametrize("policy", ["graph", "graph-characters"])
+def test_similarity_graph_no_z_score(tool, synth_obj, bend_once, policy):
+    result = tool("similarity", synth_obj[0], bend_once[0], "--policy", policy, "--json", "-").json()
     assert result["z_score"] is None and result["shuffled_copies"] == 0
+
+
+# The graph policy is the thesis' (Smith-Waterman); the variant tuned on characters aligns by DTW
+# and segments otherwise, so the two differ on a bend against another.
+def test_similarity_graph_policies(tool, synth_obj, bend_once):
+    thesis = tool("similarity", synth_obj[0], bend_once[0], "--policy", "graph", "--json", "-").json()
+    tuned = tool("similarity", synth_obj[0], bend_once[0], "--policy", "graph-characters", "--json", "-").json()
+    assert thesis["alignment_policy"] == "smith-waterman" and tuned["alignment_policy"] == "dtw"
+    assert thesis["similarity"] != tuned["similarity"]
 
 
 def test_similarity_one_copy(tool, scratch):
@@ -59,7 +69,7 @@ def test_similarity_unknown_policy(tool):
 
 def test_similarity_threshold_not_graph(tool, scratch):
     reads_nothing(fails(tool("similarity", scratch / "no-such-a", scratch / "no-such-b", "--threshold", "0.1"),
-                        "threshold applies to the graph policy only, not to the motion-signature policy"))
+                        "threshold applies to the graph policies only, not to the motion-signature policy"))
 
 
 @pytest.mark.parametrize("up", ["none", "+z"])

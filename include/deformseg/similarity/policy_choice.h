@@ -24,9 +24,10 @@
 namespace deformseg::similarity {
 
 /// @brief The names of the similarity policies: `Motion_signature_similarity` (the default),
-/// `Strain_distribution_similarity`, `Evolving_graph_similarity` and `Self_similarity_matching`.
-inline constexpr std::array<std::string_view, 4> policy_names{"motion-signature", "histogram", "graph",
-                                                              "self-similarity"};
+/// `Strain_distribution_similarity`, `Evolving_graph_similarity` (the thesis'),
+/// `Self_similarity_matching` and `character_graph_similarity` (the graphs tuned on game characters).
+inline constexpr std::array<std::string_view, 5> policy_names{"motion-signature", "histogram", "graph",
+                                                              "self-similarity", "graph-characters"};
 /// @brief The names of the alignments: `alignment::Smith_waterman`, `alignment::Dtw`,
 /// `alignment::Subsequence_dtw`.
 inline constexpr std::array<std::string_view, 3> alignment_names{"smith-waterman", "dtw", "subsequence-dtw"};
@@ -39,9 +40,10 @@ struct Policy_choice {
   /// @brief One of `policy_names`. Default "motion-signature", `Default_similarity`.
   std::string policy = "motion-signature";
   /// @brief One of `alignment_names`, or empty (the default) for the policy's own: DTW for the
-  /// motion signatures and the graphs, Smith–Waterman for the others.
+  /// motion signatures and the character graphs, Smith–Waterman for the others.
   std::string alignment{};
-  /// @brief The graph policy's deformed threshold, in [0, 1]; none (the default): its own, 0.3.
+  /// @brief A graph policy's deformed threshold, in [0, 1]; none (the default): its own, 0.5 for
+  /// "graph" and 0.3 for "graph-characters".
   std::optional<double> threshold{};
   /// @brief The motion signatures' up direction, one of `up_names`; empty (the default): +y.
   std::string up{};
@@ -51,8 +53,13 @@ struct Policy_choice {
 /// @par Complexity O(1).
 inline std::string alignment_name(const Policy_choice& choice) {
   if (!choice.alignment.empty()) return choice.alignment;
-  return choice.policy == "motion-signature" || choice.policy == "graph" ? "dtw" : "smith-waterman";
+  return choice.policy == "motion-signature" || choice.policy == "graph-characters" ? "dtw" : "smith-waterman";
 }
+
+/// @brief Whether `policy` names one of the evolving-graph policies ("graph", "graph-characters"),
+/// whose frames are key-frame labels.
+/// @par Complexity O(1).
+inline bool is_graph_policy(std::string_view policy) { return policy == "graph" || policy == "graph-characters"; }
 
 /// @brief The up direction an `up_names` entry names (+y when empty), `std::nullopt` for "none".
 /// @throws invalid_input for a name not in `up_names`.
@@ -69,7 +76,7 @@ inline std::optional<Eigen::Vector3d> up_direction(const std::string& up) {
 
 /// @brief Checks a choice before any input is read.
 /// @throws invalid_input naming the option: an unknown policy, alignment or up direction, a
-/// threshold with another policy than the graph one or outside [0, 1], an up direction with
+/// threshold with another policy than a graph one or outside [0, 1], an up direction with
 /// another policy than the motion signatures.
 /// @par Complexity O(1).
 /// @par Example
@@ -85,8 +92,8 @@ inline void check_policy_choice(const Policy_choice& choice) {
   const std::string alignment = alignment_name(choice);
   if (std::ranges::find(alignment_names, alignment) == alignment_names.end())
     throw invalid_input("unknown alignment '" + alignment + "': expected " + listed(alignment_names));
-  if (choice.threshold && choice.policy != "graph")
-    throw invalid_input("threshold applies to the graph policy only, not to the " + choice.policy + " policy");
+  if (choice.threshold && !is_graph_policy(choice.policy))
+    throw invalid_input("threshold applies to the graph policies only, not to the " + choice.policy + " policy");
   if (choice.threshold && !(*choice.threshold >= 0 && *choice.threshold <= 1))
     throw invalid_input("threshold must be in [0, 1], not " + std::to_string(*choice.threshold));
   if (!choice.up.empty() && choice.policy != "motion-signature")
@@ -108,8 +115,9 @@ auto with_policy_choice(const Policy_choice& choice, const Run& run) {
   check_policy_choice(choice);
   const auto with_alignment = [&](auto aligner) {
     using Aligner = decltype(aligner);
-    if (choice.policy == "graph") {
-      Evolving_graph_similarity<ged::Bipartite_ged, Segment_costs, clustering::K_medoids, Aligner> policy;
+    if (is_graph_policy(choice.policy)) {
+      auto policy = character_graph_similarity<Aligner>();
+      if (choice.policy == "graph") policy.segmentation = thesis_segmentation();
       policy.segmentation.threshold = choice.threshold.value_or(policy.segmentation.threshold);
       return run(policy);
     }
