@@ -22,9 +22,10 @@ mesh::Surface_mesh_animation tube(const std::vector<mesh::Tube_phase>& schedule,
 }
 
 void print(const char* name, const spatiotemporal::Spatiotemporal_options& o) {
-  std::printf("%s: sigma %s, threshold %.2f, segments of %zu frames and more, part links %s\n", name,
-              o.sigma ? std::to_string(*o.sigma).c_str() : "each animation's own", o.threshold, o.min_frames,
-              o.parts.contact_distance > 0 || o.parts.rigid_tolerance > 0 ? "on" : "off");
+  char sigma[32] = "each animation's own";
+  if (o.sigma) std::snprintf(sigma, sizeof sigma, "%g", *o.sigma);
+  std::printf("%s: sigma %s, threshold %g, segments of %zu frames and more, part links %s\n", name, sigma,
+              o.threshold, o.min_frames, o.parts.contact_distance > 0 || o.parts.rigid_tolerance > 0 ? "on" : "off");
 }
 
 template <class Policy>
