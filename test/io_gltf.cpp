@@ -467,6 +467,8 @@ TEST_CASE("gltf: refusals name the file and what is wrong", "[gltf]") {
     CHECK_THROWS_WITH(sample_gltf(path, {.clip = "dance"}),
                       Contains(path.string()) && Contains("no clip 'dance'") && Contains("'linear', 'step', 'cubic'"));
     CHECK_THROWS_AS(sample_gltf(path, {.clip = "3"}), invalid_input);
+    CHECK_THROWS_WITH(sample_gltf(path, {.clip = "Linear"}),
+                      Contains("no clip 'Linear' (clip names are case-sensitive: did you mean 'linear'?)"));
   }
   SECTION("Draco compression, an unknown required extension") {
     Gltf_writer w = sampler_scene();

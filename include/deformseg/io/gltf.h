@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <concepts>
 #include <cstddef>
@@ -217,10 +218,19 @@ inline std::optional<std::size_t> select_clip(const tinygltf::Model& model, cons
   const bool digits = std::all_of(wanted.begin(), wanted.end(), [](char c) { return c >= '0' && c <= '9'; });
   if (digits && wanted.size() < 10 && std::stoul(wanted) < count) return std::stoul(wanted);
   if (count == 0) throw invalid_input("no clip '" + wanted + "': the file has no animation");
-  std::string list;
-  for (std::size_t i = 0; i < count; ++i)
-    list.append(i == 0 ? "" : ", ").append("'" + model.animations[i].name + "'");
-  throw invalid_input("no clip '" + wanted + "'; the file's clips are " + list + " (or an index 0 to " +
+  const auto lower = [](std::string text) {
+    std::ranges::transform(text, text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return text;
+  };
+  std::string list, same_letters;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string& name = model.animations[i].name;
+    list.append(i == 0 ? "" : ", ").append("'" + name + "'");
+    if (same_letters.empty() && lower(name) == lower(wanted)) same_letters = name;
+  }
+  const std::string hint = same_letters.empty() ? "" : " (clip names are case-sensitive: did you mean '" +
+                                                           same_letters + "'?)";
+  throw invalid_input("no clip '" + wanted + "'" + hint + "; the file's clips are " + list + " (or an index 0 to " +
                       std::to_string(count - 1) + ")");
 }
 
