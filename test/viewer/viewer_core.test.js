@@ -39,6 +39,8 @@ assert.strictEqual(core.firstFrameAlignedWith(pairs, 9), 4);
 assert.strictEqual(core.nodeLabel({kind: 'rigid', segment: null, area: 0.754}), 'R 75%');
 assert.strictEqual(core.nodeLabel({kind: 'deformed', segment: 3, area: 0.25}), 'D3 25%');
 assert.strictEqual(core.nodeLabel({kind: 'deformed', segment: 0, area: 0.0034}), 'D0 0.3%');
+assert.strictEqual(core.nodeLabel({kind: 'deformed', segment: 7, area: 0.0004}), 'D7 <0.1%');
+assert.strictEqual(core.nodeLabel({kind: 'rigid', segment: null, area: 0.0005}), 'R 0.1%');
 assert.strictEqual(core.cssColor([255, 8, 160]), '#ff08a0');
 // The arc diagram: nodes a spacing apart whatever their count, every arc within its width bound
 // and reaching further the more rows it spans, the drawing as tall as its last node and half a row.

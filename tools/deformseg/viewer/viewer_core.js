@@ -89,9 +89,11 @@ var DeformsegCore = (function () {
   }
 
   // A node's label: R for a rigid node, D and its segment for a deformed one, with its share of
-  // the surface in percent (with a decimal under 1 %, where a character's segments often are).
+  // the surface in percent (with a decimal under 1 %, where a character's segments often are;
+  // "<0.1%" for a share that would round to 0.0 %, since every node covers some of it).
   function nodeLabel(node) {
     var name = node.kind === 'rigid' ? 'R' : 'D' + node.segment, percent = 100 * node.area;
+    if (percent < 0.05) return name + ' <0.1%';
     return name + ' ' + (percent < 1 ? percent.toFixed(1) : Math.round(percent)) + '%';
   }
 
