@@ -48,7 +48,19 @@ def _reduce_builtin(function):
     return function.__reduce__()
 
 
+def _reduce_method(method):
+    """Pickles a method as its class holds it (`type(store).search`, which `pool.map` takes) as
+    that class's attribute: pybind11 wraps the methods of the compiled classes in `instancemethod`
+    objects, which pickle cannot save. A bound method (`store.search`) pickles as Python's do."""
+    name = method.__func__.__name__
+    for owner in (Animation, GedResult, MotionMatch, MotionStore, RetrievalScores, Similarity):
+        if owner.__dict__.get(name) is method:
+            return getattr, (owner, name)
+    raise TypeError(f"cannot pickle the method {name!r}: it is no compiled class's of deformseg")
+
+
 _copyreg.pickle(type(strain), _reduce_builtin)
+_copyreg.pickle(type(MotionStore.__dict__["search"]), _reduce_method)
 
 __all__ = [
     "Animation",

@@ -170,6 +170,25 @@ def test_functions_pickle_by_name_and_go_to_a_spawned_pool(grid):
     assert all(s.tobytes() == deformseg.strain(a).tobytes() for s, a in zip(strains, animations))
 
 
+# The methods of the compiled classes pickle too, as their class's attribute: a process pool takes
+# `type(store).search` (pybind11's `instancemethod`, which pickle could not save).
+def test_methods_pickle_and_go_to_a_spawned_pool(tmp_path):
+    methods = [(owner, name, method) for owner in (deformseg.Animation, deformseg.MotionStore, deformseg.Similarity)
+               for name, method in vars(owner).items() if type(method).__name__ == "instancemethod"]
+    assert len(methods) >= 10
+    for owner, name, method in methods:
+        assert pickle.loads(pickle.dumps(method)) is getattr(owner, name)
+    folders = [write_obj_frames(tmp_path / f"frames{k}", frames=4 + k) for k in range(3)]
+    deformseg.describe_to_store([str(f) for f in folders], str(tmp_path / "clips.store"))
+    store = deformseg.open_store(tmp_path / "clips.store")
+    query = deformseg.read_animation(folders[1])
+    with ProcessPoolExecutor(2, mp_context=multiprocessing.get_context("spawn")) as pool:
+        found = list(pool.map(type(store).search, [store, store], [query, query], [2, 3]))
+        bound = pool.submit(store.knn_graph, 1).result()
+    assert found == [store.search(query, 2), store.search(query, 3)]
+    assert bound == store.knn_graph(1)
+
+
 def new_of(type_):
     return type_.__new__(type_)
 
