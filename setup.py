@@ -70,6 +70,24 @@ def pybind11_arguments():
     return [f"-Dpybind11_DIR={pybind11.get_cmake_dir()}"]
 
 
+def require_wheel_support():
+    """Refuses, saying what to install, to build a wheel in a Python that cannot: setuptools before
+    70.1 builds wheels through the `wheel` package, which `pip install --no-build-isolation` does
+    not bring (a pyenv or python.org Python then fails with "invalid command 'bdist_wheel'")."""
+    if "bdist_wheel" not in sys.argv:
+        return
+    try:
+        import setuptools.command.bdist_wheel  # noqa: F401 (setuptools 70.1 and later)
+    except ImportError:
+        try:
+            import wheel  # noqa: F401
+        except ImportError:
+            sys.exit(f"deformseg: {sys.executable} has no 'wheel' package, which building the package without "
+                     f"build isolation needs: run '{sys.executable} -m pip install wheel' first (on Debian's "
+                     "/usr/bin/python3: apt-get install python3-wheel), or drop --no-build-isolation")
+
+
+require_wheel_support()
 (ROOT / BUILD_BASE).mkdir(exist_ok=True)  # egg_info writes its folder there, not in the tree
 setup(
     version=project_version(),
