@@ -37,10 +37,10 @@ inline constexpr std::tuple input_parameters{
         "glTF, FBX, Collada: the clip to read, by name or index, for every input that names none after '#' "
         "(FILE.glb#CLIP); required for a file of several clips",
         Parameter_kind::clip},
-    Parameter<Input_options, double>{
-        "fps", &Input_options::fps,
-        "Frames per second: glTF, FBX and Collada clips are sampled at it; frame files and point caches play at it. "
-        "Default: 30"},
+    numeric_parameter("fps", &Input_options::fps,
+                      "Frames per second: glTF, FBX and Collada clips are sampled at it; frame files and point "
+                      "caches play at it. Default: 30",
+                      Range{.min = 0, .max = 1000, .min_open = true}),
     Parameter<Input_options, std::string>{"topology", &Input_options::topology,
                                           "A mesh file giving the connectivity of point caches (required for them)",
                                           Parameter_kind::file},
@@ -52,8 +52,8 @@ inline constexpr std::tuple input_parameters{
         "one mesh), frame sequences and point caches not"},
     Parameter<Input_options, bool>{"refuse_defects", &Input_options::refuse_defects,
                                    "Fail on degenerate, duplicate or non-manifold triangles instead of repairing them"},
-    Parameter<Input_options, int>{"threads", &Input_options::threads, "Threads to use (0: all); results do not "
-                                                                      "depend on it"},
+    numeric_parameter("threads", &Input_options::threads, "Threads to use (0: all); results do not depend on it",
+                      thread_counts),
 };
 
 /// Checks the options before any input is read (fps, threads).

@@ -1,6 +1,8 @@
 #include "parameters.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 namespace deformseg::frontend {
 
@@ -29,6 +31,35 @@ std::string listed(std::span<const Choice> choices) {
 void check_choice(std::string_view name, std::string_view value, std::span<const Choice> choices, Front front) {
   if (std::ranges::any_of(choices, [&](const Choice& c) { return c.name == value; })) return;
   refuse(spelled(name, front).append(" must be ").append(listed(choices)).append(", got '").append(value).append("'"));
+}
+
+namespace {
+
+// A bound as a reader writes it: whole numbers in full, others in the shortest form.
+std::string bound_text(double bound) {
+  if (std::isinf(bound)) return bound < 0 ? "-inf" : "inf";
+  char text[32];
+  std::snprintf(text, sizeof text, std::abs(bound) < 1e15 && bound == std::floor(bound) ? "%.0f" : "%g", bound);
+  return text;
+}
+
+}  // namespace
+
+std::string range_text(const Range& range) {
+  const bool min_open = range.min_open || std::isinf(range.min), max_open = range.max_open || std::isinf(range.max);
+  return (min_open ? "(" : "[") + bound_text(range.min) + ", " + bound_text(range.max) + (max_open ? ")" : "]");
+}
+
+std::string range_message(double value, const Range& range, bool whole) {
+  if (range.contains(value) && (!whole || value == std::floor(value))) return {};
+  char got[32];
+  std::snprintf(got, sizeof got, "%.15g", value);
+  return std::string("must be ") + (whole ? "a whole number in " : "in ") + range_text(range) + ", got " + got;
+}
+
+void check_range(std::string_view name, double value, const Range& range, bool whole, Front front) {
+  const std::string message = range_message(value, range, whole);
+  if (!message.empty()) refuse(spelled(name, front) + " " + message);
 }
 
 void refuse(const std::string& message) { throw invalid_input(message); }

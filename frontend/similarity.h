@@ -55,10 +55,10 @@ inline constexpr std::tuple policy_parameters{
                      "The alignment of the frames. Default: dtw for motion-signature and graph-characters, "
                      "smith-waterman for the others",
                      alignments),
-    Parameter<similarity::Policy_choice, std::optional<double>>{
-        "threshold", &similarity::Policy_choice::threshold,
-        "graph, graph-characters: the deformed threshold of the segmentation, in [0, 1]. Default: 0.5 for graph, 0.3 "
-        "for graph-characters"},
+    numeric_parameter("threshold", &similarity::Policy_choice::threshold,
+                      "graph, graph-characters: the deformed threshold of the segmentation. Default: 0.5 for graph, "
+                      "0.3 for graph-characters",
+                      shares),
     choice_parameter("up", &similarity::Policy_choice::up,
                      "motion-signature: the animations' up axis, whose rises and falls the signatures tell apart. "
                      "Default: +y",
@@ -73,12 +73,12 @@ struct Significance_request {
 
 /// The significance request's table.
 inline constexpr std::tuple significance_parameters{
-    Parameter<Significance_request, std::optional<std::size_t>>{
-        "significance", &Significance_request::significance,
-        "The z-score of the value against this many copies of the second animation with frames shuffled (0: "
-        "none). Default: 20, none for the graph policies"},
-    Parameter<Significance_request, unsigned>{"seed", &Significance_request::seed,
-                                              "The seed of the shuffles. Default: 1"},
+    numeric_parameter("significance", &Significance_request::significance,
+                      "The z-score of the value against this many copies of the second animation with frames "
+                      "shuffled (0: none, 1 refused). Default: 20, none for the graph policies",
+                      counts(10000)),
+    numeric_parameter("seed", &Significance_request::seed, "The seed of the shuffles. Default: 1",
+                      counts(4294967295.0)),
 };
 
 /// Checks a policy choice before any input is read.

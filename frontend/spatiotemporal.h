@@ -42,39 +42,38 @@ struct Spatiotemporal_request {
 
 /// The spatio-temporal request's table.
 inline constexpr std::tuple spatiotemporal_parameters{
-    Parameter<Spatiotemporal_request, double>{
-        "threshold", &Spatiotemporal_request::threshold,
-        "A cell is deformed above this normalised strain, in [0, 1]. Default: 0.5"},
+    numeric_parameter("threshold", &Spatiotemporal_request::threshold,
+                      "A cell is deformed above this normalised strain. Default: 0.5", shares),
     choice_parameter("reference", &Spatiotemporal_request::reference, "What the strain is measured against",
                      segmentation_references),
     reference_mesh_parameter<Spatiotemporal_request>(),
-    Parameter<Spatiotemporal_request, std::optional<double>>{
-        "sigma", &Spatiotemporal_request::sigma,
-        "The strain's Gaussian normalisation sigma, fixed for every animation. Default: each animation's 95th "
-        "percentile"},
-    Parameter<Spatiotemporal_request, std::size_t>{
-        "min_triangles", &Spatiotemporal_request::min_triangles,
-        "Segments whose largest slice has fewer triangles become rigid. Default: 10"},
-    Parameter<Spatiotemporal_request, std::size_t>{"min_frames", &Spatiotemporal_request::min_frames,
-                                                   "Segments lasting fewer frames become rigid. Default: 6"},
-    Parameter<Spatiotemporal_request, std::size_t>{
-        "max_island", &Spatiotemporal_request::max_island,
-        "Rigid islands of at most this many triangles inside one segment join it (0: none). Default: 30"},
-    Parameter<Spatiotemporal_request, double>{
-        "min_area", &Spatiotemporal_request::min_area,
-        "Segments whose largest slice covers less than this share of the area become rigid, in [0, 1]. Default: 0"},
-    Parameter<Spatiotemporal_request, double>{
-        "hysteresis", &Spatiotemporal_request::hysteresis,
-        "Cells above threshold x (1 - this) joined to a cell above the threshold are deformed too, in [0, 1). "
-        "Default: 0"},
-    Parameter<Spatiotemporal_request, double>{
-        "contact_distance", &Spatiotemporal_request::contact_distance,
-        "Separate parts within this share of the rest pose's diagonal are neighbours (0: shared edges only, "
-        "the thesis). Default: 0.01"},
-    Parameter<Spatiotemporal_request, double>{
-        "rigid_tolerance", &Spatiotemporal_request::rigid_tolerance,
-        "Separate parts moving as one rigid body, within this share of the diagonal, make one rigid node (0: "
-        "never). Default: 0.002"},
+    numeric_parameter("sigma", &Spatiotemporal_request::sigma,
+                      "The strain's Gaussian normalisation sigma, fixed for every animation. Default: each "
+                      "animation's 95th percentile",
+                      positive),
+    numeric_parameter("min_triangles", &Spatiotemporal_request::min_triangles,
+                      "Segments whose largest slice has fewer triangles become rigid. Default: 10", counts()),
+    numeric_parameter("min_frames", &Spatiotemporal_request::min_frames,
+                      "Segments lasting fewer frames become rigid. Default: 6", counts()),
+    numeric_parameter("max_island", &Spatiotemporal_request::max_island,
+                      "Rigid islands of at most this many triangles inside one segment join it (0: none). "
+                      "Default: 30",
+                      counts()),
+    numeric_parameter("min_area", &Spatiotemporal_request::min_area,
+                      "Segments whose largest slice covers less than this share of the area become rigid. Default: 0",
+                      shares),
+    numeric_parameter("hysteresis", &Spatiotemporal_request::hysteresis,
+                      "Cells above threshold x (1 - this) joined to a cell above the threshold are deformed too. "
+                      "Default: 0",
+                      Range{.min = 0, .max = 1, .max_open = true}),
+    numeric_parameter("contact_distance", &Spatiotemporal_request::contact_distance,
+                      "Separate parts within this share of the rest pose's diagonal are neighbours (0: shared edges "
+                      "only, the thesis). Default: 0.01",
+                      shares),
+    numeric_parameter("rigid_tolerance", &Spatiotemporal_request::rigid_tolerance,
+                      "Separate parts moving as one rigid body, within this share of the diagonal, make one rigid "
+                      "node (0: never). Default: 0.002",
+                      shares),
 };
 
 /// Checks a request before any input is read.

@@ -60,15 +60,15 @@ constexpr Parameter<Request, std::string> reference_mesh_parameter() {
 inline constexpr std::tuple strain_parameters{
     choice_parameter("reference", &Strain_request::reference, "What the strain is measured against",
                      strain_references),
-    Parameter<Strain_request, std::size_t>{"rest_frame", &Strain_request::rest_frame,
-                                           "The rest frame, with reference rest. Default: 0"},
+    numeric_parameter("rest_frame", &Strain_request::rest_frame, "The rest frame, with reference rest. Default: 0",
+                      counts()),
     reference_mesh_parameter<Strain_request>(),
     choice_parameter("measure", &Strain_request::measure, "The strain measure", strain_measures),
     choice_parameter("normalize", &Strain_request::normalize, "The normalisation", strain_normalizations),
-    Parameter<Strain_request, std::optional<double>>{
-        "sigma", &Strain_request::sigma, "The Gaussian normalisation's sigma. Default: the 95th percentile"},
-    Parameter<Strain_request, double>{"degenerate_tolerance", &Strain_request::degenerate_tolerance,
-                                      "Reference triangles thinner than this have strain 0. Default: 1e-12"},
+    numeric_parameter("sigma", &Strain_request::sigma,
+                      "The Gaussian normalisation's sigma. Default: the 95th percentile", positive),
+    numeric_parameter("degenerate_tolerance", &Strain_request::degenerate_tolerance,
+                      "Reference triangles thinner than this have strain 0. Default: 1e-12", non_negative),
 };
 
 /// Checks a request before any input is read.

@@ -62,7 +62,7 @@ constexpr std::tuple<Parameter<Request, std::string>, Parameter<Request, std::si
                      Parameter<Request, std::string>>
 frame_distance_parameters() {
   return {choice_parameter("metric", &Request::metric, "The distance between the frames' strains", frame_metrics),
-          {"rest_frame", &Request::rest_frame, "The rest pose of the strain. Default: 0"},
+          numeric_parameter("rest_frame", &Request::rest_frame, "The rest pose of the strain. Default: 0", counts()),
           reference_mesh_parameter<Request>()};
 }
 
@@ -73,17 +73,18 @@ inline constexpr auto frame_distance_table = frame_distance_parameters<Frame_dis
 inline constexpr auto temporal_parameters = std::tuple_cat(
     std::tuple{
         choice_parameter("method", &Temporal_request::method, "The segmentation method", temporal_methods),
-        Parameter<Temporal_request, std::optional<double>>{
+        numeric_parameter(
             "threshold", &Temporal_request::threshold,
             "binary-split and greedy: the largest within-segment dissimilarity (default 0.5 and 0.2); optimal: the "
             "penalty per segment (default 0.03); relative to the mean frame distance (optimal: to the one-segment "
-            "cost) unless absolute"},
+            "cost) unless absolute",
+            non_negative),
         Parameter<Temporal_request, bool>{"absolute", &Temporal_request::absolute,
                                           "The threshold is absolute, in frame distance units"},
-        Parameter<Temporal_request, std::optional<std::size_t>>{"segments", &Temporal_request::segments,
-                                                                "Exactly this many segments (method optimal)"},
-        Parameter<Temporal_request, std::size_t>{"min_length", &Temporal_request::min_length,
-                                                 "Fewest frames of a segment (optimal, binary-split). Default: 1"}},
+        numeric_parameter("segments", &Temporal_request::segments, "Exactly this many segments (method optimal)",
+                          positive_counts()),
+        numeric_parameter("min_length", &Temporal_request::min_length,
+                          "Fewest frames of a segment (optimal, binary-split). Default: 1", positive_counts())},
     frame_distance_parameters<Temporal_request>());
 
 /// Checks a request before any input is read.

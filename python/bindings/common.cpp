@@ -6,6 +6,16 @@ namespace py = pybind11;
 
 namespace deformseg::python {
 
+std::size_t whole_argument(const char* name, long long value, const frontend::Range& range) {
+  frontend::check_range(name, double(value), range, true, frontend::Front::python);
+  return std::size_t(value);
+}
+
+double number_argument(const char* name, double value, const frontend::Range& range) {
+  frontend::check_range(name, value, range, false, frontend::Front::python);
+  return value;
+}
+
 bool no_signal_raised() {
   py::gil_scoped_acquire acquire;
   if (PyErr_CheckSignals() != 0) throw py::error_already_set();

@@ -34,6 +34,13 @@ Progress progress_of(const std::optional<pybind11::function>& progress);
 // Throws invalid_input (InvalidInput in Python) with `message`: the front end's.
 using frontend::refuse;
 
+// An integer argument `name` as Python gives it, refused outside `range` (and as a whole number)
+// as the tool refuses it: "k must be a whole number in [1, 1000000], got -3".
+std::size_t whole_argument(const char* name, long long value, const frontend::Range& range);
+
+// A floating-point argument `name`, refused outside `range` as the tool refuses it.
+double number_argument(const char* name, double value, const frontend::Range& range);
+
 // A JSON value (the front end's reports) as the Python value of the same shape: dict, list, str,
 // int, float, bool or None.
 pybind11::object python_of(const nlohmann::json& value);

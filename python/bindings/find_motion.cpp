@@ -16,12 +16,13 @@ namespace py = pybind11;
 namespace deformseg::python {
 namespace {
 
-std::vector<similarity::Motion_match> find(const Animation& query, const Animation& long_animation, std::size_t count,
-                               double shortest) {
-  if (count == 0) refuse("count must be at least 1");
-  if (!(shortest > 0 && shortest <= 1)) refuse("shortest must be in (0, 1]");
+std::vector<similarity::Motion_match> find(const Animation& query, const Animation& long_animation, long long count,
+                                           double shortest) {
+  const similarity::Find_motion_options options{.count = whole_argument("count", count, frontend::result_counts),
+                                                .shortest = number_argument("shortest", shortest,
+                                                                            frontend::window_shares)};
   Interruptible_call call;
-  return similarity::find_motion(query.mesh, long_animation.mesh, {.count = count, .shortest = shortest});
+  return similarity::find_motion(query.mesh, long_animation.mesh, options);
 }
 
 // MotionMatch: (1, first, last, value, alignment).
@@ -57,9 +58,9 @@ void bind_find_motion(py::module_& m) {
                " value=" + std::to_string(x.value) + ">";
       });
 
-  m.def("find_motion", &find, "query"_a, "long_animation"_a, "count"_a = 1, py::kw_only(), "shortest"_a = 0.5,
-        R"doc(Where a short motion occurs in a long animation: at most `count` (default 1, as
-Find_motion_options; the tool's `find` asks for 3) non-overlapping windows of `long_animation`,
+  m.def("find_motion", &find, "query"_a, "long_animation"_a, "count"_a = similarity::Find_motion_options{}.count, py::kw_only(), "shortest"_a = 0.5,
+        R"doc(Where a short motion occurs in a long animation: at most `count` (default 3, as
+Find_motion_options and the tool's `find`) non-overlapping windows of `long_animation`,
 best first, each a MotionMatch (first, last, value, alignment), by motion signatures: windows
 proposed by a slope-bounded subsequence DTW, each re-described alone and scored against the query
 (value 1 for an exact, moved or scaled copy, found at its frames). shortest (default 0.5): a

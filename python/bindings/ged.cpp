@@ -40,15 +40,16 @@ ged::Ged_result graph_edit_distance(const std::vector<std::string>& labels_a,
                                     const std::vector<std::pair<std::size_t, std::size_t>>& edges_a,
                                     const std::vector<std::string>& labels_b,
                                     const std::vector<std::pair<std::size_t, std::size_t>>& edges_b,
-                                    const std::string& method, std::size_t max_expanded, double max_seconds) {
+                                    const std::string& method, long long max_expanded, double max_seconds) {
   if (method != "exact" && method != "bipartite" && method != "lower")
     refuse("method must be 'exact', 'bipartite' or 'lower', got '" + method + "'");
-  if (!(max_seconds >= 0)) refuse("max_seconds must be non-negative");
+  const std::size_t expansions = whole_argument("max_expanded", max_expanded, frontend::expansion_counts);
+  number_argument("max_seconds", max_seconds, frontend::non_negative);
   const io::Labelled_graph a = labelled_graph(labels_a, edges_a, "g1"), b = labelled_graph(labels_b, edges_b, "g2");
   Interruptible_call call;
   if (method == "bipartite") return ged::Bipartite_ged{}(a, b, ged::Unit_costs{});
   if (method == "lower") return ged::Assignment_lower_bound{}(a, b, ged::Unit_costs{});
-  return ged::Exact_ged{.max_expanded = max_expanded, .max_seconds = max_seconds}(a, b, ged::Unit_costs{});
+  return ged::Exact_ged{.max_expanded = expansions, .max_seconds = max_seconds}(a, b, ged::Unit_costs{});
 }
 
 std::optional<double> bound_or_none(double x) { return std::isinf(x) ? std::nullopt : std::optional(x); }

@@ -49,9 +49,21 @@ constexpr bool none_by_default() {
     return false;
 }
 
+// A numeric value as Python gives it: an integral one as a signed integer (so that -1 reaches the
+// range check instead of pybind11's refusal of the type), an optional one as an optional.
+template <class Value>
+struct Python_number {
+  using type = std::conditional_t<std::is_integral_v<Value>, long long, Value>;
+};
+template <class Value>
+struct Python_number<std::optional<Value>> {
+  using type = std::optional<typename Python_number<Value>::type>;
+};
+
 // The parameter `I` of `table` as a Python argument: its C++ type as Python takes it (a path or
-// None for a file, a name or an index or None for a clip, None for an empty text), its default,
-// and how its value goes into the request.
+// None for a file, a name or an index or None for a clip, None for an empty text, a signed integer
+// for a count or an index), its default, and how its value goes into the request, a number checked
+// against the parameter's range first.
 template <const auto& table, std::size_t I>
 struct Argument {
   static constexpr const auto& parameter = std::get<I>(table);
@@ -62,17 +74,28 @@ struct Argument {
   static constexpr bool is_text = std::is_same_v<Value, std::string>;
   static constexpr bool is_file = is_text && parameter.kind == frontend::Parameter_kind::file;
   static constexpr bool is_clip = is_text && parameter.kind == frontend::Parameter_kind::clip;
+  static constexpr bool is_number = frontend::is_numeric_v<Value>;
 
   using type = std::conditional_t<
       is_file, std::optional<std::filesystem::path>,
-      std::conditional_t<is_clip, std::optional<Clip>,
-                         std::conditional_t<none_by_default<table, I>(), std::optional<std::string>, Value>>>;
+      std::conditional_t<
+          is_clip, std::optional<Clip>,
+          std::conditional_t<none_by_default<table, I>(), std::optional<std::string>,
+                             std::conditional_t<is_number, typename Python_number<Value>::type, Value>>>>;
 
   static pybind11::arg_v annotation() {
-    if constexpr (std::is_same_v<type, Value>)
+    if constexpr (std::is_same_v<type, Value> || is_number)
       return pybind11::arg_v(parameter.name, Request{}.*parameter.member);
     else
       return pybind11::arg_v(parameter.name, pybind11::none());
+  }
+
+  // A number in the parameter's range, as the request's type.
+  template <class Number>
+  static auto checked(Number value) {
+    frontend::check_range(parameter.name, double(value), parameter.range, frontend::is_whole_v<Value>,
+                          frontend::Front::python);
+    return value;
   }
 
   template <class Requests>
@@ -82,6 +105,10 @@ struct Argument {
       target = value ? value->string() : std::string();
     else if constexpr (is_clip)
       target = value ? clip_text(*value) : std::string();
+    else if constexpr (is_number && frontend::is_optional_v<Value>)
+      target = value ? std::optional(static_cast<typename Value::value_type>(checked(*value))) : std::nullopt;
+    else if constexpr (is_number)
+      target = static_cast<Value>(checked(value));
     else if constexpr (std::is_same_v<type, Value>)
       target = std::move(value);
     else
@@ -89,12 +116,19 @@ struct Argument {
   }
 };
 
-// The lines of the docstring that the table gives: a line per parameter, and one per choice.
+// The lines of the docstring that the table gives: a line per parameter (with its range, for a
+// number), and one per choice.
 template <class Table>
 std::string parameter_help(const Table& table) {
   std::string out;
   frontend::for_each_parameter(table, [&](const auto& parameter) {
-    out.append(parameter.name).append(": ").append(parameter.help).append("\n");
+    out.append(parameter.name).append(": ").append(parameter.help);
+    using Value = typename std::remove_cvref_t<decltype(parameter)>::value_type;
+    if constexpr (frontend::is_numeric_v<Value>)
+      out.append(frontend::is_whole_v<Value> ? " (a whole number in " : " (in ")
+          .append(frontend::range_text(parameter.range))
+          .append(")");
+    out.append("\n");
     for (const frontend::Choice& choice : parameter.choices)
       out.append("    '").append(choice.name).append("': ").append(choice.help).append("\n");
   });

@@ -151,9 +151,10 @@ std::size_t clip_index(const Opened_store& s, long long i) {
   return std::size_t(i);
 }
 
-void check_search(std::size_t k, int threads) {
-  if (k == 0) refuse("k must be at least 1");
-  thread_count(threads, "threads");
+// A search's k and threads as Python gives them, checked as the tool checks them.
+std::size_t checked_k(long long k, int threads) {
+  whole_argument("threads", threads, frontend::thread_counts);
+  return whole_argument("k", k, frontend::result_counts);
 }
 
 // A block of the store's clips given as a Python range of step 1 (None: all); the store checks
@@ -201,10 +202,9 @@ py::dict nearest_dict(const Opened_store& s, const similarity::Nearest_motions& 
 // dimension-major (Fortran order; another layout is copied into it).
 using Described_query = py::array_t<float, py::array::f_style | py::array::forcecast>;
 
-py::dict search(const Opened_store& s, const py::object& query, std::size_t k, const py::object& candidates,
+py::dict search(const Opened_store& s, const py::object& query, long long k, const py::object& candidates,
                 int threads) {
-  check_search(k, threads);
-  const similarity::Nearest_motions_options options{.k = k, .threads = threads,
+  const similarity::Nearest_motions_options options{.k = checked_k(k, threads), .threads = threads,
                                                     .candidates = clip_range(candidates, "candidates")};
   similarity::Nearest_motions found;
   if (py::isinstance<Animation>(query)) {
@@ -240,12 +240,11 @@ py::array describe_query(const Opened_store& s, const Animation& query) {
                 {rows, py::ssize_t(d.signatures.cols())}, {item, rows * item});
 }
 
-py::dict nearest_to_clip(const Opened_store& s, long long i, std::size_t k, const py::object& candidates,
+py::dict nearest_to_clip(const Opened_store& s, long long i, long long k, const py::object& candidates,
                          int threads) {
-  check_search(k, threads);
-  const std::size_t clip = clip_index(s, i);
-  const similarity::Nearest_motions_options options{.k = k, .threads = threads,
+  const similarity::Nearest_motions_options options{.k = checked_k(k, threads), .threads = threads,
                                                     .candidates = clip_range(candidates, "candidates")};
+  const std::size_t clip = clip_index(s, i);
   similarity::Nearest_motions found;
   {
     Interruptible_call call;
@@ -256,16 +255,17 @@ py::dict nearest_to_clip(const Opened_store& s, long long i, std::size_t k, cons
 
 // The best windows over the store's clips (the tool's `find --store`), each a dict of the clip and
 // the MotionMatch's fields.
-py::list find_in_store(const Opened_store& s, const Animation& query, std::size_t count, double shortest,
+py::list find_in_store(const Opened_store& s, const Animation& query, long long count, double shortest,
                        int threads) {
-  if (count == 0) refuse("count must be at least 1");
-  if (!(shortest > 0 && shortest <= 1)) refuse("shortest must be in (0, 1]");
-  thread_count(threads, "threads");
+  const similarity::Find_in_collection_options options{
+      .count = whole_argument("count", count, frontend::result_counts),
+      .shortest = number_argument("shortest", shortest, frontend::window_shares),
+      .threads = int(whole_argument("threads", threads, frontend::thread_counts))};
   require_motion(query.mesh, "query");
   std::vector<similarity::Clip_match> matches;
   {
     Interruptible_call call;
-    matches = s.search.find(query.mesh, {.count = count, .shortest = shortest, .threads = threads});
+    matches = s.search.find(query.mesh, options);
   }
   py::list out;
   for (const similarity::Clip_match& c : matches) {
@@ -279,7 +279,8 @@ py::list find_in_store(const Opened_store& s, const Animation& query, std::size_
 
 // One query's search results (dicts as search gives) among disjoint blocks of candidates, merged by
 // similarity::merge_nearest: each neighbour's dict kept, its rank renumbered.
-py::dict merge_nearest(const py::sequence& parts, std::size_t k) {
+py::dict merge_nearest(const py::sequence& parts, long long k) {
+  const std::size_t kept = whole_argument("k", k, frontend::result_counts);
   std::vector<similarity::Nearest_motions> found(parts.size());
   std::map<std::size_t, py::dict> dict_of;
   for (std::size_t p = 0; p < parts.size(); ++p) {
@@ -304,7 +305,7 @@ py::dict merge_nearest(const py::sequence& parts, std::size_t k) {
                                {"rows_abandoned", &r.rows_abandoned}})
       *field = counts[name].cast<std::size_t>();
   }
-  const similarity::Nearest_motions merged = similarity::merge_nearest(found, k);
+  const similarity::Nearest_motions merged = similarity::merge_nearest(found, kept);
   py::list neighbours;
   for (std::size_t r = 0; r < merged.neighbours.size(); ++r) {
     py::dict neighbour(dict_of.at(merged.neighbours[r].index));  // a copy, its rank renumbered
@@ -314,10 +315,9 @@ py::dict merge_nearest(const py::sequence& parts, std::size_t k) {
   return py::dict("neighbours"_a = neighbours, "pruning"_a = pruning_dict(merged.pruning));
 }
 
-py::list knn_graph(const Opened_store& s, std::size_t k, const py::object& rows, const py::object& candidates,
+py::list knn_graph(const Opened_store& s, long long k, const py::object& rows, const py::object& candidates,
                    int threads) {
-  check_search(k, threads);
-  const similarity::Nearest_motions_options options{.k = k, .threads = threads,
+  const similarity::Nearest_motions_options options{.k = checked_k(k, threads), .threads = threads,
                                                     .candidates = clip_range(candidates, "candidates")};
   const std::optional<similarity::Clip_range> block = clip_range(rows, "rows");
   std::vector<similarity::Nearest_motions> graph;

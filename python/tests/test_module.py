@@ -127,6 +127,11 @@ def test_find_motion_finds_a_copy_at_its_frames_with_value_1(grid):
     match = deformseg.find_motion(deformseg.Animation(faces, frames), long_animation)[0]
     assert (match.first, match.last, match.value) == (12, 23, 1.0)
     assert match.alignment[0] == (0, 12) and match.alignment[-1] == (11, 23)
+    # Three windows by default, as the tool's `find` and MotionStore.find (it was one).
+    matches = deformseg.find_motion(deformseg.Animation(faces, frames), long_animation)
+    assert len(matches) == 3 and (matches[0].first, matches[0].last) == (12, 23)
+    assert [(m.first, m.last) for m in matches] == [
+        (m.first, m.last) for m in deformseg.find_motion(deformseg.Animation(faces, frames), long_animation, 3)]
 
 
 # ---- errors ------------------------------------------------------------------------------------
@@ -196,7 +201,23 @@ def test_options_are_checked_as_the_tool_checks_them(grid, tmp_path):
         (lambda: deformseg.similarity(a, a, policy="histogram", up="+z"), "up applies to the motion-signature"),
         (lambda: deformseg.similarity_matrix([a, a], up="z"), r"up must be .*, got 'z'"),
         (lambda: deformseg.similarity(a, a, significance=1), "at least 2 shuffled copies"),
-        (lambda: deformseg.find_motion(a, a, 0), "count must be at least 1"),
+        (lambda: deformseg.find_motion(a, a, 0), r"count must be a whole number in \[1, 1000000\], got 0"),
+        (lambda: deformseg.find_motion(a, a, -1), r"count must be a whole number in \[1, 1000000\], got -1"),
+        (lambda: deformseg.find_motion(a, a, shortest=0), r"shortest must be in \(0, 1\], got 0"),
+        (lambda: deformseg.similarity(a, a, significance=-1), r"significance must be a whole number in \[0, 10000\]"),
+        (lambda: deformseg.similarity(a, a, significance=10**12), r"got 1000000000000$"),
+        (lambda: deformseg.similarity(a, a, seed=-1), r"seed must be a whole number in \[0, 4294967295\]"),
+        (lambda: deformseg.similarity(a, a, policy="graph", threshold=2), r"threshold must be in \[0, 1\], got 2"),
+        (lambda: deformseg.strain(a, rest_frame=-1), r"rest_frame must be a whole number in \[0, 1000000000\]"),
+        (lambda: deformseg.strain(a, sigma=0), r"sigma must be in \(0, inf\), got 0"),
+        (lambda: deformseg.temporal_segmentation(a, segments=-1), r"segments must be a whole number in \[1, "),
+        (lambda: deformseg.temporal_segmentation(a, min_length=0), r"min_length must be a whole number in \[1, "),
+        (lambda: deformseg.evolving_graph(a, min_frames=-1), r"min_frames must be a whole number in \[0, "),
+        (lambda: deformseg.evolving_graph(a, hysteresis=1), r"hysteresis must be in \[0, 1\), got 1"),
+        (lambda: deformseg.read_animation(tmp_path, threads=-1), r"threads must be a whole number in \[0, 1024\]"),
+        (lambda: deformseg.read_animation(tmp_path, fps=0), r"^fps must be in \(0, 1000\], got 0$"),
+        (lambda: deformseg.ged(deformseg.KeyFrame(0, 0), deformseg.KeyFrame(0, 0), max_expanded=-1),
+         r"max_expanded must be a whole number in \[0, "),
         (lambda: deformseg.read_animation(tmp_path, clip="Walk"),
          r"clip applies to character files \(glTF, FBX, Collada\) only"),
         (lambda: deformseg.ged(deformseg.KeyFrame(0, 0), deformseg.KeyFrame(0, 0), method="fast"), "method must be"),

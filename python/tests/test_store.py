@@ -245,11 +245,14 @@ def test_blocks_of_clips_are_ranges_of_the_store(described):
 def test_the_search_refuses_bad_arguments(described, grid):
     store = deformseg.open_store(described[1])
     faces, frames = grid(3, 3, 4)
-    cases = [(lambda: store.search(described[3][0], k=0), "k must be at least 1"),
+    cases = [(lambda: store.search(described[3][0], k=0), r"k must be a whole number in \[1, 1000000\], got 0"),
+             (lambda: store.search(described[3][0], k=-3), r"k must be a whole number in \[1, 1000000\], got -3"),
              (lambda: store.search(deformseg.Animation(faces, frames[:1])), "query: an animation of 1 frame"),
-             (lambda: store.search(described[3][0], threads=-1), "threads must be 0"),
+             (lambda: store.search(described[3][0], threads=-1), r"threads must be a whole number in \[0, 1024\]"),
              (lambda: store.nearest_to_clip(-1), "no clip -1: the store holds"),
-             (lambda: store.knn_graph(k=0), "k must be at least 1"),
+             (lambda: store.knn_graph(k=0), "k must be a whole number in"),
+             (lambda: store.nearest_to_clip(0, k=-1), "k must be a whole number in"),
+             (lambda: deformseg.merge_nearest([], k=-1), "k must be a whole number in"),
              (lambda: deformseg.similarity_matrix(store, described[3]), "database: a MotionStore's matrix"),
              (lambda: deformseg.similarity_matrix(store, policy="histogram"), "motion signatures aligned by dtw")]
     for call, message in cases:
@@ -373,7 +376,7 @@ def test_find_equals_the_tools_and_finds_a_clip_in_itself(tool, described, fox):
     own = store.index_of(os.path.realpath(fox), "Walk")
     assert found[0]["index"] == own and found[0]["value"] == 1.0 and found[0]["name"] == store.names[own]
     assert store.find(walk, 4, threads=2) == found
-    with pytest.raises(deformseg.InvalidInput, match="count must be at least 1"):
+    with pytest.raises(deformseg.InvalidInput, match=r"count must be a whole number in \[1, 1000000\], got 0"):
         store.find(walk, 0)
     with pytest.raises(deformseg.InvalidInput, match=r"shortest must be in \(0, 1\]"):
         store.find(walk, shortest=0)

@@ -51,4 +51,4 @@ def test_find_json(tool, query, long_tube):
 
 def test_find_bad_count(tool, scratch):
     reads_nothing(fails(tool("find", scratch / "no-such-query", scratch / "no-such-long", "--count", "0"),
-                        "--count must be at least 1"))
+                        "--count: must be a whole number in [1, 1000000], got 0"))

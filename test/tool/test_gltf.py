@@ -138,7 +138,7 @@ def test_spatiotemporal_clip_suffix(tool, fox_walk):
 
 
 def test_similarity_clip_suffix(tool, fox_walk):
-    matches_all(succeeds(tool("similarity", fox_walk, fox_walk)).output, r"similarity +1\n", r"aligned +23 frame pairs")
+    matches_all(succeeds(tool("similarity", fox_walk, fox_walk)).output, r"similarity +1\.000\n", r"aligned +23 frame pairs")
 
 
 def test_matrix_clip_suffix(tool, fox, fox_walk):

@@ -3,6 +3,7 @@ store's values are those matrix and evaluate give from the files, bit for bit; u
 skipped, changed ones described again at their index; a damaged store is named; a describe killed
 half way leaves the store as it was."""
 
+import csv as csv_module
 import os
 import shutil
 import signal
@@ -73,7 +74,7 @@ def test_search_clip_index_leaves_itself_out(tool, store):
 
 def test_search_text(tool, store, clips):
     out = succeeds(tool("search", clips[0], "--store", store, "-k", "2")).out
-    assert out.startswith(f"query {clips[0]}") and f"  1  1.0  {clips[0].resolve()}" in out, out
+    assert out.startswith(f"query {clips[0]}") and f"  1  1.000  {clips[0].resolve()}" in out, out
 
 
 def test_search_needs_a_query(tool, store):
@@ -103,8 +104,11 @@ def test_knn_graph_equals_brute_force(tool, scratch, store):
     csv = scratch / "edges.csv"
     succeeds(tool("knn-graph", "--store", store, "-k", "2", "--csv", csv))
     lines = csv.read_text().splitlines()
-    assert lines[0] == "source,target,rank,value" and len(lines) == 9
-    assert [tuple(map(float, line.split(","))) for line in lines[1:]] == [tuple(map(float, e)) for e in edges]
+    assert lines[0] == "source,target,rank,value,source_name,target_name" and len(lines) == 9
+    rows = list(csv_module.reader(lines[1:]))
+    assert [tuple(map(float, row[:4])) for row in rows] == [tuple(map(float, e)) for e in edges]
+    names = [c["name"] for c in graph["clips"]]
+    assert [(row[4], row[5]) for row in rows] == [(names[e[0]], names[e[1]]) for e in edges]
 
 
 def test_describe_again_skips_everything(tool, store, clips):

@@ -65,7 +65,7 @@ def test_search_clip_index_finds_its_copy_first(tool, store):
     (query,) = tool("search", "--store", store, "--clip-index", "3", "-k", "1", "--json", "-").json()["queries"]
     assert [(m["index"], m["value"]) for m in query["neighbours"]] == [(0, 1.0)]
     out = succeeds(tool("search", "--store", store, "--clip-index", "3", "-k", "1")).out
-    assert out.startswith("query ") and "(4 candidates," in out and "  1  1.0  " in out, out
+    assert out.startswith("query ") and "(4 candidates," in out and "  1  1.000  " in out, out
 
 
 # ---- find QUERY --store S ------------------------------------------------------------------------
@@ -103,4 +103,4 @@ def test_find_in_store_text(tool, store, clips):
 def test_find_in_store_takes_one_query(tool, store, clips):
     fails(tool("find", clips[0], clips[1], "--store", store), "find --store takes one input, the query, not 2")
     fails(tool("find", clips[0]), "find takes the query and the long animation, or the query and --store S")
-    fails(tool("find", clips[0], "--store", store, "--count", "0"), "--count must be at least 1")
+    fails(tool("find", clips[0], "--store", store, "--count", "0"), "--count: must be a whole")

@@ -26,6 +26,10 @@ def test_strain_outputs(scratch, strain_outputs):
     out = succeeds(strain_outputs).out
     assert re.search(r"sigma +null", out) and re.search(r"frame +min +max +mean", out), out
     assert (scratch / "strain-field.bin").stat().st_size > 0
+    # Every strain with six decimals: frame 0 of the previous-pose strain is 0, not 4e-41.
+    rows = re.findall(r"^\d+  (\S+)  (\S+)  (\S+)$", out, re.M)
+    assert len(rows) == 41 and rows[0] == ("0.000000",) * 3, out
+    assert all(re.fullmatch(r"\d+\.\d{6}", value) for row in rows for value in row), out
 
 
 def test_strain_meshes_read_back(tool, scratch, strain_outputs):

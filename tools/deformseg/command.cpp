@@ -130,6 +130,12 @@ CLI::Validator output_folder() {
 
 void progress(const std::string& line) { std::cerr << "deformseg: " << line << '\n'; }
 
+std::string value_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", value);
+  return text;
+}
+
 bool Matrix_progress::operator()(std::size_t done, std::size_t total) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   char elapsed[32];

@@ -76,6 +76,10 @@ std::vector<std::size_t> evenly_spaced_frames(std::size_t frames, std::size_t co
 /// A line on standard error, for progress.
 void progress(const std::string& line);
 
+/// A similarity as every summary prints it: three decimals ("0.807"); `--json` and CSV files keep
+/// every digit.
+std::string value_text(double value);
+
 /// A similarity matrix's progress (a `Progress`) on standard error: a line when its
 /// `descriptions` are all made, with their time, and one about every 5 % of the steps.
 struct Matrix_progress {

@@ -1,5 +1,5 @@
 // deformseg: the command-line tool. Each sub-command is a thin layer over the library; errors
-// end the run with one line on standard error and a non-zero exit status.
+// end the run with one line on standard error and the exit status 1.
 #include "command.h"
 
 #include <deformseg/exceptions.h>
@@ -31,11 +31,16 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int status = app.exit(e);
+    // A likely typo is named alone, before CLI11's generic words ("A subcommand is required").
     const std::string hint = deformseg::tool::typo_hint(app, arguments);
-    if (!hint.empty())
+    if (!hint.empty()) {
       std::cerr << "deformseg: " << hint << '\n';
-    else if (dynamic_cast<const CLI::ExtrasError*>(&e))  // often a glob the shell expanded, a file an argument
+      return 1;
+    }
+    // Help and version exit with 0; every refusal with 1, as every other error (CLI11's own
+    // codes, 105 for a failed check, say nothing more than its message).
+    const int status = app.exit(e) == 0 ? 0 : 1;
+    if (dynamic_cast<const CLI::ExtrasError*>(&e))  // often a glob the shell expanded, a file an argument
       std::cerr << "deformseg: a glob must be quoted to name one animation, e.g. 'frames/*.obj'\n";
     return status;
   } catch (const std::exception& e) {

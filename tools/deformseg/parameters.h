@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -16,9 +17,25 @@
 
 namespace deformseg::tool {
 
-/// The check of every `--threads`: 0 (all) to max_threads, refused when the command line is read,
-/// before any work.
-inline const CLI::Range thread_counts(0, max_threads);
+/// The check of a numeric option, named "range": refuses, as the command line is read, a value
+/// outside `range` (or, with `whole`, not a whole number), each value of a list in turn, with
+/// CLI11's "--count: must be a whole number in [1, 1000000], got -1". Its description ("in [1,
+/// 1000000]") follows the option's type in the help.
+inline CLI::Validator in_range(const frontend::Range& range, bool whole) {
+  return CLI::Validator(
+      [range, whole](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0') return "must be a number, got '" + text + "'";
+        return frontend::range_message(value, range, whole);
+      },
+      "in " + frontend::range_text(range), "range");
+}
+
+/// `in_range` for a whole-number option.
+inline CLI::Validator whole_numbers(const frontend::Range& range) { return in_range(range, true); }
+/// `in_range` for a floating-point option.
+inline CLI::Validator numbers(const frontend::Range& range) { return in_range(range, false); }
 
 /// The help of a parameter: its own, then, for a name among choices, each choice and its help.
 template <class Parameter>
@@ -42,9 +59,7 @@ void add_parameter(CLI::App& command, const frontend::Parameter<Request, Value>&
         ->excludes(on);
   } else {
     CLI::Option* option = command.add_option(name, value, help_of(p));
-    // The front end checks these too, for Python; CLI11 refuses them as the command line is read.
-    if (name == "--threads") option->check(thread_counts);
-    if (name == "--fps") option->check(CLI::PositiveNumber);
+    if constexpr (frontend::is_numeric_v<Value>) option->check(in_range(p.range, frontend::is_whole_v<Value>));
     if (p.kind == frontend::Parameter_kind::choice) {
       std::vector<std::string> names;
       for (const frontend::Choice& choice : p.choices) names.emplace_back(choice.name);

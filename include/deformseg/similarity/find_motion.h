@@ -46,8 +46,8 @@ concept FrameDissimilarityPolicy = requires(const P& p, const typename P::Descri
 
 /// @brief The options of `find_motion`, an aggregate for designated initializers.
 struct Find_motion_options {
-  /// @brief How many windows at most. Default 1.
-  std::size_t count = 1;
+  /// @brief How many windows at most. Default 3 (as `Find_in_collection_options`).
+  std::size_t count = 3;
   /// @brief The shortest window as a fraction of the query's duration, whose inverse bounds the
   /// longest: with 0.5 (the default) a window lasts from half to twice the query's duration (a
   /// motion played up to twice as fast or as slow); with 1, exactly as long. In (0, 1].

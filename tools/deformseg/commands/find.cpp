@@ -9,7 +9,6 @@
 #include <deformseg/similarity/find_motion.h>
 #include <deformseg/similarity/find_motion_in_collection.h>
 
-#include <iomanip>
 #include <iostream>
 #include <memory>
 
@@ -20,7 +19,7 @@ struct Find_command_options {
   std::vector<std::string> inputs;  // the query, then the long animation (none with --store)
   Input_options read;
   std::string store;
-  std::size_t count = 3;
+  std::size_t count = similarity::Find_motion_options{}.count;
   double shortest = similarity::Find_motion_options{}.shortest;
   std::string json;
 };
@@ -57,13 +56,11 @@ void run_find_in_store(const Find_command_options& o) {
   write_outputs(document, o.json, [&] {
     for (const similarity::Clip_match& c : matches)
       std::cout << "clip " << c.clip << "  frames " << c.match.first << " to " << c.match.last << "  similarity "
-                << std::fixed << std::setprecision(3) << c.match.value << "  " << library.name(c.clip) << '\n';
+                << value_text(c.match.value) << "  " << library.name(c.clip) << '\n';
   });
 }
 
 void run_find(const Find_command_options& o) {
-  if (o.count == 0) throw invalid_input("--count must be at least 1");
-  if (!(o.shortest > 0 && o.shortest <= 1)) throw invalid_input("--shortest must be in (0, 1]");
   if (!o.store.empty()) return run_find_in_store(o);
   if (o.inputs.size() != 2)
     throw invalid_input("find takes the query and the long animation, or the query and --store S");
@@ -80,8 +77,7 @@ void run_find(const Find_command_options& o) {
       {"policy", "motion-signature"}, {"matches", found}};
   write_outputs(document, o.json, [&] {
     for (const similarity::Motion_match& m : matches)
-      std::cout << "frames " << m.first << " to " << m.last << "  similarity " << std::fixed << std::setprecision(3)
-                << m.value << '\n';
+      std::cout << "frames " << m.first << " to " << m.last << "  similarity " << value_text(m.value) << '\n';
   });
 }
 
@@ -97,10 +93,13 @@ void add_find_command(CLI::App& app) {
              "The short motion (the query), then the long animation (none with --store)");
   command->add_option("--store", o->store,
                       "Look in every clip of this motion store (deformseg describe) instead of a long animation");
-  command->add_option("--count", o->count, "How many windows at most")->capture_default_str();
+  command->add_option("--count", o->count, "How many windows at most")
+      ->check(whole_numbers(frontend::result_counts))
+      ->capture_default_str();
   command->add_option("--shortest", o->shortest,
-                      "A window lasts from this fraction of the query's duration to its inverse, in (0, 1] "
-                      "(0.5: from half to twice, a motion up to twice as fast or as slow)")
+                      "A window lasts from this fraction of the query's duration to its inverse (0.5: from half to "
+                      "twice, a motion up to twice as fast or as slow)")
+      ->check(numbers(frontend::window_shares))
       ->capture_default_str();
   add_json_option(*command, o->json, "the windows, their values and warping paths");
   command->callback([o] { run_find(*o); });

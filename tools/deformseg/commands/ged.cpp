@@ -44,9 +44,10 @@ void add_method_options(CLI::App& command, Ged_method_options& o) {
       ->check(CLI::IsMember({"exact", "bipartite", "lower"}));
   command.add_option("--max-expanded", o.max_expanded,
                      "exact: the most partial mappings expanded before reporting bounds. Default: " +
-                         std::to_string(o.max_expanded));
+                         std::to_string(o.max_expanded))
+      ->check(whole_numbers(frontend::expansion_counts));
   command.add_option("--max-seconds", o.max_seconds, "exact: a time limit per pair in seconds (0: none, the default)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(numbers(frontend::non_negative));
 }
 
 // Runs the policy the options name on a pair.
@@ -147,7 +148,8 @@ void add_ged_matrix_command(CLI::App& app) {
                     "symmetric matrix, pair i < j computed as i -> j");
   command->add_option("files", options->files, "The graphs (.dot, .gv, .graphml)")->required();
   add_method_options(*command, options->method);
-  command->add_option("--threads", options->threads, "Threads to use (0: all)")->check(thread_counts);
+  command->add_option("--threads", options->threads, "Threads to use (0: all)")
+      ->check(whole_numbers(frontend::thread_counts));
   command->add_option("--csv", options->csv, "Write the distance matrix as CSV to FILE ('-': standard output)")
       ->check(output_file());
   add_json_option(*command, options->json, "distances and bounds");

@@ -43,11 +43,9 @@ void write_alignment_figure(const similarity::Similarity& s, const Similarity_co
   for (Axis* axis : {&rows, &columns})
     for (std::size_t k = 1; k < axis->labels.size(); ++k)
       axis->separators.push_back(std::size_t(axis->labels[k].first));
-  char value[32];
-  std::snprintf(value, sizeof value, "%.3f", s.value);
   Matrix_figure figure(
       frames_a, frames_b, cell,
-      "similarity " + std::string(value) + " (" + o.policy.policy + ", " + similarity::alignment_name(o.policy) + ")",
+      "similarity " + value_text(s.value) + " (" + o.policy.policy + ", " + similarity::alignment_name(o.policy) + ")",
       rows, columns, std::nullopt);
   for (std::size_t i = 0; i < frames_a; ++i)
     for (std::size_t j = 0; j < frames_b; ++j) figure.fill_cell(i, j, {245, 245, 245});
@@ -65,7 +63,7 @@ void report_similarity(const Similarity_command_options& o, const frontend::Comp
   nlohmann::json document = {{"a", o.inputs[0]}, {"b", o.inputs[1]}, {"sources", sources}};
   document.update(frontend::similarity_record(compared, o.policy));
   write_outputs(document, o.json, [&] {
-    std::cout << "similarity  " << s.value << "\nscore       " << s.score << "\naligned     " << s.alignment.size()
+    std::cout << "similarity  " << value_text(s.value) << "\nscore       " << s.score << "\naligned     " << s.alignment.size()
               << " frame pairs\ncompared    " << s.compared << '\n';
     if (compared.z_score)
       std::cout << "z-score     " << *compared.z_score << " (against " << compared.shuffled_copies

@@ -101,7 +101,6 @@ nlohmann::json neighbours_json(const std::vector<similarity::Neighbour>& neighbo
 void run_search(const Search_options& o) {
   if (o.queries.empty() && o.clip_indices.empty())
     throw invalid_input("search needs a query: an animation, or --clip-index I for a clip of the store");
-  if (o.k == 0) throw invalid_input("-k must be at least 1");
   frontend::check(o.read, frontend::Front::command_line);
   set_default_threads(o.read.threads);
   const frontend::Store_search library(o.store);
@@ -134,7 +133,7 @@ void run_search(const Search_options& o) {
                 << p["aligned"] << " aligned whole)\n";
       for (const auto& n : q["neighbours"]) {
         const std::string clip = n["clip"].get<std::string>();
-        std::cout << "  " << n["rank"] << "  " << exact(n["value"].get<double>()) << "  "
+        std::cout << "  " << n["rank"] << "  " << value_text(n["value"].get<double>()) << "  "
                   << n["path"].get<std::string>() << (clip.empty() ? "" : "#" + clip) << '\n';
       }
     }
@@ -151,7 +150,19 @@ struct Knn_options {
   std::string json;
 };
 
-void write_edges_csv(const std::vector<similarity::Nearest_motions>& graph, const std::string& path) {
+// `text` as a CSV field: in double quotes, its quotes doubled, when it holds a comma, a quote or a
+// line break.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + '"';
+}
+
+// The edges, a line each: the store's indices, the rank, the value (every digit), then the two
+// clips' names.
+void write_edges_csv(const std::vector<similarity::Nearest_motions>& graph, const frontend::Store_search& library,
+                     const std::string& path) {
   std::ofstream file;
   if (path != "-") {
     progress("writing the edges to " + path);
@@ -159,16 +170,17 @@ void write_edges_csv(const std::vector<similarity::Nearest_motions>& graph, cons
     if (!file) throw invalid_input("cannot write the file", {.file = path});
   }
   std::ostream& out = path == "-" ? std::cout : file;
-  out << "source,target,rank,value\n";
+  out << "source,target,rank,value,source_name,target_name\n";
   for (std::size_t i = 0; i < graph.size(); ++i)
-    for (std::size_t r = 0; r < graph[i].neighbours.size(); ++r)
-      out << i << ',' << graph[i].neighbours[r].index << ',' << r + 1 << ',' << exact(graph[i].neighbours[r].value)
-          << '\n';
+    for (std::size_t r = 0; r < graph[i].neighbours.size(); ++r) {
+      const similarity::Neighbour& n = graph[i].neighbours[r];
+      out << i << ',' << n.index << ',' << r + 1 << ',' << exact(n.value) << ',' << csv_field(library.name(i)) << ','
+          << csv_field(library.name(n.index)) << '\n';
+    }
   if (!out) throw invalid_input("cannot write the file", {.file = path});
 }
 
 void run_knn_graph(const Knn_options& o) {
-  if (o.k == 0) throw invalid_input("-k must be at least 1");
   set_default_threads(o.threads);
   const frontend::Store_search library(o.store);
   const io::Motion_store& store = library.store();
@@ -179,13 +191,13 @@ void run_knn_graph(const Knn_options& o) {
   const double seconds = seconds_since(start);
   similarity::Pruning_report total;
   for (const auto& node : graph) total += node.pruning;
-  if (!o.csv.empty()) write_edges_csv(graph, o.csv);
+  if (!o.csv.empty()) write_edges_csv(graph, library, o.csv);
   nlohmann::json document;
   if (!o.json.empty()) {
     nlohmann::json edges = nlohmann::json::array(), clips = nlohmann::json::array();
     for (std::size_t i = 0; i < store.size(); ++i) {
       const io::Store_record record = store.record(i);
-      clips.push_back({{"index", i}, {"path", record.path}, {"clip", record.clip}});
+      clips.push_back({{"index", i}, {"name", library.name(i)}, {"path", record.path}, {"clip", record.clip}});
       for (std::size_t r = 0; r < graph[i].neighbours.size(); ++r) {
         const similarity::Neighbour& n = graph[i].neighbours[r];
         const io::Store_record target = store.record(n.index);
@@ -276,8 +288,11 @@ void add_search_command(CLI::App& app) {
   add_parameters(*command, frontend::input_parameters, o->read);
   add_store_option(*command, o->store, "The store (deformseg describe)");
   command->add_option("--clip-index", o->clip_indices,
-                      "Also search with clip I of the store as a query, itself left out (repeatable)");
-  command->add_option("-k", o->k, "How many clips to find per query")->capture_default_str();
+                      "Also search with clip I of the store as a query, itself left out (repeatable)")
+      ->check(whole_numbers(frontend::counts()));
+  command->add_option("-k", o->k, "How many clips to find per query (more than the store holds: all)")
+      ->check(whole_numbers(frontend::result_counts))
+      ->capture_default_str();
   add_json_option(*command, o->json, "the neighbours of each query and how many candidates each bound pruned");
   command->callback([o] { run_search(*o); });
 }
@@ -286,9 +301,11 @@ void add_knn_graph_command(CLI::App& app) {
   auto o = std::make_shared<Knn_options>();
   CLI::App* command = app.add_subcommand("knn-graph", "Every clip's k nearest other clips of a motion store");
   add_store_option(*command, o->store, "The store (deformseg describe)");
-  command->add_option("-k", o->k, "How many clips to find per clip")->capture_default_str();
+  command->add_option("-k", o->k, "How many clips to find per clip (more than the store holds: all)")
+      ->check(whole_numbers(frontend::result_counts))
+      ->capture_default_str();
   command->add_option("--threads", o->threads, "Threads to use (0: all); results do not depend on it")
-      ->check(thread_counts);
+      ->check(whole_numbers(frontend::thread_counts));
   command->add_option("--csv", o->csv, "Write the edges source,target,rank,value to FILE ('-': standard output)")
       ->check(output_file());
   add_json_option(*command, o->json, "the clips, the edges and the pruning counts");

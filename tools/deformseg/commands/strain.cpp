@@ -126,10 +126,12 @@ nlohmann::json summary(const Strain_command_options& o, const frontend::Read_inp
   return document;
 }
 
+// The summary: the strains with six decimals, so that a strain of 4e-41 (a float's rounding
+// noise on a still triangle) reads 0.000000, as meant; the JSON keeps every digit.
 void print(const nlohmann::json& s) {
-  std::cout << std::setprecision(6) << "frames      " << s["frames"] << "\ntriangles   " << s["triangles"]
-            << "\nsigma       " << s["sigma"].dump() << "\ndegenerate  " << s["degenerate_count"]
-            << "\nframe  min  max  mean\n";
+  std::cout << "frames      " << s["frames"] << "\ntriangles   " << s["triangles"] << "\nsigma       "
+            << s["sigma"].dump() << "\ndegenerate  " << s["degenerate_count"] << "\nframe  min  max  mean\n"
+            << std::fixed << std::setprecision(6);
   for (const auto& f : s["per_frame"])
     std::cout << f["frame"] << "  " << f["min"].get<double>() << "  " << f["max"].get<double>() << "  "
               << f["mean"].get<double>() << '\n';
@@ -173,6 +175,7 @@ void add_strain_command(CLI::App& app) {
                       "which the motion is thinnest, into FILE.png")
       ->check(output_file());
   command->add_option("--png-frames", options->png_frames, "The frames --png draws. Default: 6, evenly spaced")
+      ->check(whole_numbers(frontend::counts()))
       ->delimiter(',');
   add_json_option(*command, options->json, "the summary");
   command->callback([options] { run(*options); });

@@ -117,11 +117,15 @@ void add_synth_command(CLI::App& app) {
                                              "cache with tube.obj as its topology")
       ->check(CLI::IsMember({"obj", "ply", "pc2", "mdd"}))->capture_default_str();
   command->add_option("--joints", o->joints, "Joint heights as fractions of the length, bottom up")
-      ->delimiter(',')->capture_default_str();
+      ->delimiter(',')
+      ->check(numbers(frontend::shares))
+      ->capture_default_str();
   command->add_option("--directions", o->directions,
                       "Side each joint bends towards, degrees around the axis (default 0: +x)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(numbers(frontend::Range{}));
   command->add_option("--blend-width", o->blend_width, "Blend zone of a joint, as a fraction of the length")
+      ->check(numbers(frontend::Range{.min = 0, .max = 1, .min_open = true}))
       ->capture_default_str();
   command->add_option("--schedule", o->schedule,
                       "Phases FRAMES:ANGLE[,ANGLE...] in degrees, one angle per joint; FRAMES: holds")
@@ -130,15 +134,26 @@ void add_synth_command(CLI::App& app) {
                       "How the angles move in each phase: smooth (soft start and stop) or linear (constant speed)")
       ->check(CLI::IsMember({"smooth", "linear"}))
       ->capture_default_str();
-  command->add_option("--radius", o->shape.radius, "Tube radius")->capture_default_str();
-  command->add_option("--length", o->shape.length, "Tube length")->capture_default_str();
-  command->add_option("--sectors", o->shape.sectors, "Vertices around the axis")->capture_default_str();
-  command->add_option("--rings", o->shape.rings, "Segments along the axis")->capture_default_str();
-  command->add_option("--scale", o->scale, "Uniform scale of every frame")->capture_default_str();
+  command->add_option("--radius", o->shape.radius, "Tube radius")->check(numbers(frontend::positive))
+      ->capture_default_str();
+  command->add_option("--length", o->shape.length, "Tube length")->check(numbers(frontend::positive))
+      ->capture_default_str();
+  command->add_option("--sectors", o->shape.sectors, "Vertices around the axis")
+      ->check(whole_numbers({.min = 3, .max = 10000}))
+      ->capture_default_str();
+  command->add_option("--rings", o->shape.rings, "Segments along the axis")
+      ->check(whole_numbers({.min = 1, .max = 100000}))
+      ->capture_default_str();
+  command->add_option("--scale", o->scale, "Uniform scale of every frame")->check(numbers(frontend::positive))
+      ->capture_default_str();
   command->add_option("--rotate", o->rotate, "Rotation of every frame: AXIS_X,AXIS_Y,AXIS_Z,DEGREES")
-      ->delimiter(',')->expected(4);
+      ->delimiter(',')
+      ->expected(4)
+      ->check(numbers(frontend::Range{}));
   command->add_option("--translate", o->translate, "Translation of every frame: X,Y,Z")
-      ->delimiter(',')->expected(3);
+      ->delimiter(',')
+      ->expected(3)
+      ->check(numbers(frontend::Range{}));
   add_json_option(*command, o->json, "the ground truth");
   command->callback([o] {
     const auto tube = mesh::make_bending_tube(specification(*o));

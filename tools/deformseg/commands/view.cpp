@@ -94,7 +94,8 @@ void add_view_command(CLI::App& app) {
                       "temporal segment; segments: by spatio-temporal segment, as the graph's nodes; none")
       ->check(CLI::IsMember({"strain", "previous-strain", "temporal", "segments", "none"}));
   command->add_option("--max-frames", o->max_frames,
-                      "At most this many frames, evenly spaced, are shown. Default: 1000");
+                      "At most this many frames, evenly spaced, are shown. Default: 1000")
+      ->check(whole_numbers(frontend::positive_counts(1e6)));
   command->callback([o] { run(*o); });
 }
 
