@@ -306,7 +306,9 @@ void add_knn_graph_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--threads", o->threads, "Threads to use (0: all); results do not depend on it")
       ->check(whole_numbers(frontend::thread_counts));
-  command->add_option("--csv", o->csv, "Write the edges source,target,rank,value to FILE ('-': standard output)")
+  command->add_option("--csv", o->csv,
+                      "Write the edges as CSV to FILE ('-': standard output): source,target,rank,value,"
+                      "source_name,target_name")
       ->check(output_file());
   add_json_option(*command, o->json, "the clips, the edges and the pruning counts");
   command->callback([o] { run_knn_graph(*o); });
