@@ -15,8 +15,6 @@ void check(const similarity::Policy_choice& choice, Front front) {
   const auto name = [&](const char* parameter) { return spelled(parameter, front); };
   if (choice.threshold && !similarity::is_graph_policy(choice.policy))
     refuse(name("threshold") + " applies to the graph policies only, not to the " + choice.policy + " policy");
-  if (choice.threshold && !(*choice.threshold >= 0 && *choice.threshold <= 1))
-    refuse(name("threshold") + " must be in [0, 1], not " + std::to_string(*choice.threshold));
   if (!choice.up.empty() && choice.policy != "motion-signature")
     refuse(name("up") + " applies to the motion-signature policy only, not to the " + choice.policy + " policy");
 }

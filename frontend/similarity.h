@@ -81,7 +81,8 @@ inline constexpr std::tuple significance_parameters{
                       counts(4294967295.0)),
 };
 
-/// Checks a policy choice before any input is read.
+/// Checks a policy choice's names and combinations before any input is read; the threshold's range
+/// is the table's, refused where the value comes in.
 /// @throws invalid_input naming the parameter as `front` spells it.
 void check(const similarity::Policy_choice& choice, Front front);
 

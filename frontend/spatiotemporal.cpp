@@ -3,7 +3,6 @@
 #include <deformseg/spatiotemporal/body_layout.h>
 
 #include <algorithm>
-#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -11,15 +10,6 @@ namespace deformseg::frontend {
 
 void check(const Spatiotemporal_request& r, Front front) {
   if (!r.reference.empty()) check_choice("reference", r.reference, segmentation_references, front);
-  const auto in_unit_interval = [&](const char* name, double value) {
-    if (!(value >= 0 && value <= 1)) refuse(spelled(name, front) + " must be in [0, 1]");
-  };
-  in_unit_interval("threshold", r.threshold);
-  in_unit_interval("min_area", r.min_area);
-  in_unit_interval("contact_distance", r.contact_distance);
-  in_unit_interval("rigid_tolerance", r.rigid_tolerance);
-  if (!(r.hysteresis >= 0 && r.hysteresis < 1)) refuse(spelled("hysteresis", front) + " must be in [0, 1)");
-  if (r.sigma && !(*r.sigma > 0 && std::isfinite(*r.sigma))) refuse(spelled("sigma", front) + " must be positive");
   if (!r.reference_mesh.empty() && r.reference == "previous")
     refuse(spelled("reference_mesh", front) + " is a rest pose: it excludes " +
            spelled("reference", "previous", front));

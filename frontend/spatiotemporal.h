@@ -76,7 +76,8 @@ inline constexpr std::tuple spatiotemporal_parameters{
                       shares),
 };
 
-/// Checks a request before any input is read.
+/// Checks a request's choices and combinations before any input is read; its numbers' ranges are
+/// the table's, refused where the values come in (the tool's options, Python's keywords).
 /// @throws invalid_input naming the parameter as `front` spells it.
 void check(const Spatiotemporal_request& request, Front front);
 

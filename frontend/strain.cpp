@@ -2,7 +2,6 @@
 
 #include "inputs.h"
 
-#include <cmath>
 
 namespace deformseg::frontend {
 
@@ -13,8 +12,6 @@ void check(const Strain_request& r, Front front) {
   const auto name = [&](const char* parameter) { return spelled(parameter, front); };
   if (r.sigma && r.normalize != "gaussian")
     refuse(name("sigma") + " asks for " + spelled("normalize", "gaussian", front));
-  if (r.sigma && !(*r.sigma > 0 && std::isfinite(*r.sigma))) refuse(name("sigma") + " must be positive");
-  if (!(r.degenerate_tolerance >= 0)) refuse(name("degenerate_tolerance") + " must be non-negative");
   if (r.reference == "previous" && r.rest_frame != 0)
     refuse(name("rest_frame") + " asks for " + spelled("reference", "rest", front));
   if (!r.reference_mesh.empty() && (r.reference == "previous" || r.rest_frame != 0))

@@ -71,7 +71,8 @@ inline constexpr std::tuple strain_parameters{
                       "Reference triangles thinner than this have strain 0. Default: 1e-12", non_negative),
 };
 
-/// Checks a request before any input is read.
+/// Checks a request's choices and combinations before any input is read; its numbers' ranges are
+/// the table's, refused where the values come in (the tool's options, Python's keywords).
 /// @throws invalid_input naming the parameter as `front` spells it.
 void check(const Strain_request& request, Front front);
 

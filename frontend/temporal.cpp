@@ -14,9 +14,6 @@ void check(const Temporal_request& r, Front front) {
   check(distance_request(r), front);
   const auto name = [&](const char* parameter) { return spelled(parameter, front); };
   if (r.segments && r.method != "optimal") refuse(name("segments") + " asks for " + spelled("method", "optimal", front));
-  if (r.segments && *r.segments == 0) refuse(name("segments") + " must be at least 1");
-  if (r.min_length == 0) refuse(name("min_length") + " must be at least 1");
-  if (r.threshold && !(*r.threshold >= 0)) refuse(name("threshold") + " must be non-negative");
 }
 
 Frame_distance_request distance_request(const Temporal_request& r) {

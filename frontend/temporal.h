@@ -87,7 +87,8 @@ inline constexpr auto temporal_parameters = std::tuple_cat(
                           "Fewest frames of a segment (optimal, binary-split). Default: 1", positive_counts())},
     frame_distance_parameters<Temporal_request>());
 
-/// Checks a request before any input is read.
+/// Checks a request's choices and combinations before any input is read; its numbers' ranges are
+/// the table's, refused where the values come in (the tool's options, Python's keywords).
 /// @throws invalid_input naming the parameter as `front` spells it.
 void check(const Frame_distance_request& request, Front front);
 void check(const Temporal_request& request, Front front);
