@@ -84,6 +84,43 @@ TEST_CASE("weighted_quantiles: the smallest value whose cumulative weight reache
   }
 }
 
+TEST_CASE("weighted_quantiles: rates of many magnitudes and signs, as a sort and a walk give them", "[motion_signature]") {
+  // Speeds spread over orders of magnitude (log-normal), signed rates, exact zeros of both signs
+  // and repeated values, in sets large enough for several rounds of the radix selection.
+  std::mt19937 random(5);
+  std::lognormal_distribution<double> magnitude(-3, 4);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::size_t n = 33 + std::size_t(trial) * 523, k = 1 + std::size_t(trial % 12);
+    std::vector<std::pair<double, double>> items(n);
+    double total = 0;
+    for (auto& [value, weight] : items) {
+      const double u = uniform(random);
+      value = u < 0.1 ? 0.0 : u < 0.15 ? -0.0 : u < 0.3 ? 1.5 : magnitude(random) * (trial % 2 && u < 0.6 ? -1 : 1);
+      total += (weight = trial % 3 ? uniform(random) : 1.0);
+    }
+    for (auto& item : items) item.second /= total;
+    auto sorted = items;
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<double> out(k);
+    weighted_quantiles(items, k, out.data());
+    // The walk up the sorted rates to a level: the first rate whose cumulative weight reaches it.
+    const auto reaching = [&](double level) {
+      double below = 0;
+      for (const auto& [value, weight] : sorted)
+        if ((below += weight) >= level) return value;
+      return sorted.back().first;
+    };
+    for (std::size_t q = 0; q < k; ++q) {
+      // Up to the rounding of sums in another order: equal weights put some levels exactly on a
+      // cumulative weight (1/20 of 4,740 rates), where either neighbour is right.
+      const double level = (double(q) + 0.5) / double(k);
+      CHECK(out[q] >= reaching(level - 1e-12));
+      CHECK(out[q] <= reaching(level + 1e-12));
+    }
+  }
+}
+
 TEST_CASE("motion_signatures: a uniform translation has the exact rate everywhere", "[motion_signature]") {
   // Four points at unit distance from their centroid (RMS radius 1), moving 0.02 per frame at 30
   // fps, 0.6 per second: inside the animation every vertex's rate at lags 1, 4 and 16 thirtieths of
@@ -321,6 +358,19 @@ TEST_CASE("find_motion: a motion embedded twice in a longer one is found at its 
   CHECK(firsts[1] + 4 >= 80);
   CHECK(firsts[1] <= 80 + 4);
   CHECK(found[0].value >= found[1].value);
+  // The windows of a step are described on the threads: the same result on 1 and on 3.
+  for (const int threads : {1, 3}) {
+    set_default_threads(threads);
+    const auto again = similarity::find_motion(motion, longer, {.count = 3});
+    set_default_threads(0);
+    REQUIRE(again.size() == found.size());
+    for (std::size_t i = 0; i < found.size(); ++i) {
+      CHECK(again[i].first == found[i].first);
+      CHECK(again[i].last == found[i].last);
+      CHECK(again[i].value == found[i].value);
+      CHECK(again[i].alignment == found[i].alignment);
+    }
+  }
   CHECK(found[1].value > 0.9);
   for (const auto& m : found) {
     CHECK(m.alignment.front().first == 0);

@@ -234,12 +234,12 @@ Eigen::MatrixXd motion_signatures_streamed(Source& source, const Motion_signatur
       throw std::logic_error("motion_signatures_streamed: row " + std::to_string(next_row) + " reads frames " +
                              std::to_string(spans[next_row].first) + " to " + std::to_string(spans[next_row].second) +
                              ", more than the ring's " + std::to_string(capacity));
-    deformseg::internal::parallel_for(end - next_row, 0, [&](std::size_t k) {
-      std::vector<std::pair<double, double>> speeds(vertices), rises(rows.up ? vertices : 0);
-      const std::size_t r = next_row + k;
-      internal::signature_row(rows, frame_of, weights, instants[r],
-                              out.data() + r * rows.columns, speeds, rises);
-    });
+    deformseg::internal::parallel_for_with_locals(
+        end - next_row, 0, 1, [&] { return internal::Row_scratch(vertices); },
+        [&](internal::Row_scratch& scratch, std::size_t k) {
+          const std::size_t r = next_row + k;
+          internal::signature_row(rows, frame_of, weights, instants[r], out.data() + r * rows.columns, scratch);
+        });
     next_row = end;
   }
   return out;

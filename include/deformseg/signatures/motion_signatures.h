@@ -20,7 +20,10 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -73,42 +76,160 @@ struct Motion_signature_options {
 
 namespace internal {
 
-/// The quantiles `first` to `last` (exclusive) of `k`, all of which lie in `rates[begin, end)`
-/// after the weight `before` of the rates below it: a quickselect that splits the levels at each
-/// median, so that only the parts holding a level are ordered further.
-inline void select_weighted_quantiles(std::span<std::pair<double, double>> rates, std::size_t begin,
-                                      std::size_t end, double before, std::size_t first, std::size_t last,
-                                      std::size_t k, double* out) {
-  const auto level = [k](std::size_t q) { return (double(q) + 0.5) / double(k); };
+/// A rate as the selection of quantiles orders it: its value's `order_key`, and its weight.
+struct Keyed_rate {
+  std::uint64_t key;
+  double weight;
+};
+
+/// An unsigned key that orders as `value` does (-0 just below +0): the bits of a positive double
+/// with the sign bit set, those of a negative one flipped.
+inline std::uint64_t order_key(double value) {
+  const auto bits = std::bit_cast<std::uint64_t>(value);
+  return bits >> 63 ? ~bits : bits | (std::uint64_t(1) << 63);
+}
+
+/// The value whose `order_key` is `key`.
+inline double key_value(std::uint64_t key) {
+  return std::bit_cast<double>(key >> 63 ? key & ~(std::uint64_t(1) << 63) : ~key);
+}
+
+/// The level of quantile q of k: (q + 1/2) / k of the total weight.
+inline double quantile_level(std::size_t q, std::size_t k) { return (double(q) + 0.5) / double(k); }
+
+/// The buckets of a round of the selection of quantiles: rates whose keys lie in [low, high] spread
+/// over equal spans of their values' logarithms, so that a bucket holds a share of a few rates
+/// whatever the magnitudes. Magnitudes below 2^-40 of the largest are lumped with zero (rates of
+/// exactly 0, a vertex that stands still, are common), and the sign kept: a key maps to
+/// `middle + c` or `middle - c`, c the magnitude's bits above those of 2^-40 of the largest.
+class Key_buckets {
+public:
+  /// At most 2^bits buckets. @pre low < high.
+  Key_buckets(std::uint64_t low, std::uint64_t high, int bits) {
+    const std::uint64_t largest = std::max(magnitude(low), magnitude(high));
+    constexpr std::uint64_t octaves = std::uint64_t(40) << 52;  // the exponent's bits start at bit 52
+    tiny_ = largest > octaves ? largest - octaves : 0;
+    middle_ = largest - tiny_;
+    lowest_ = spread(low);
+    const std::uint64_t span = spread(high) - lowest_;
+    shift_ = std::max(int(std::bit_width(span)) - bits, 0);
+    count_ = std::size_t(span >> shift_) + 1;
+  }
+  /// The number of buckets (1 when every rate is 0).
+  std::size_t count() const { return count_; }
+  /// The bucket of `key`, in [0, count()): not decreasing with the key.
+  std::size_t operator()(std::uint64_t key) const { return std::size_t((spread(key) - lowest_) >> shift_); }
+
+private:
+  // The bits of |value|, which order as the magnitudes do.
+  static std::uint64_t magnitude(std::uint64_t key) { return (key >> 63 ? key : ~key) & ~(std::uint64_t(1) << 63); }
+  std::uint64_t spread(std::uint64_t key) const {
+    const std::uint64_t m = magnitude(key), c = m > tiny_ ? m - tiny_ : 0;
+    return key >> 63 ? middle_ + c : middle_ - c;
+  }
+
+  std::uint64_t tiny_ = 0, middle_ = 0, lowest_ = 0;
+  int shift_ = 0;
+  std::size_t count_ = 1;
+};
+
+/// The quantiles `first` to `last` (exclusive) of `k`, all of which lie in `rates` (whose keys are
+/// in [low, high]) after the weight `before` of the rates below it, into `out`: a radix selection.
+/// The rates are counted into `Key_buckets` (at most 1024, about 4 rates a bucket), the buckets'
+/// weights summed up to each level, and only the rates of
+/// the buckets that hold a level gathered into `spare` (as long as `rates`) and selected from
+/// further; parts of at most 32 rates are sorted and walked.
+inline void select_weighted_quantiles(std::span<Keyed_rate> rates, std::span<Keyed_rate> spare, double before,
+                                      std::size_t first, std::size_t last, std::size_t k, std::uint64_t low,
+                                      std::uint64_t high, double* out) {
   if (first == last) return;
-  if (end - begin <= 32) {  // few enough to sort, then walk up to each level
-    std::sort(rates.begin() + std::ptrdiff_t(begin), rates.begin() + std::ptrdiff_t(end));
-    std::size_t at = begin;
-    double cumulative = before + rates[at].second;
+  if (low == high) {
+    for (std::size_t q = first; q < last; ++q) out[q] = key_value(low);
+    return;
+  }
+  if (rates.size() <= 32) {  // few enough to sort, then walk up to each level
+    std::sort(rates.begin(), rates.end(), [](const Keyed_rate& a, const Keyed_rate& b) { return a.key < b.key; });
+    std::size_t at = 0;
+    double cumulative = before + rates[0].weight;
     for (std::size_t q = first; q < last; ++q) {
-      while (cumulative < level(q) && at + 1 < end) cumulative += rates[++at].second;
-      out[q] = rates[at].first;
+      while (cumulative < quantile_level(q, k) && at + 1 < rates.size()) cumulative += rates[++at].weight;
+      out[q] = key_value(rates[at].key);
     }
     return;
   }
-  const std::size_t middle = begin + (end - begin) / 2;
-  std::nth_element(rates.begin() + std::ptrdiff_t(begin), rates.begin() + std::ptrdiff_t(middle),
-                   rates.begin() + std::ptrdiff_t(end));
-  double through_middle = before;
-  for (std::size_t i = begin; i <= middle; ++i) through_middle += rates[i].second;
-  std::size_t split = first;
-  while (split < last && level(split) <= through_middle) ++split;
-  select_weighted_quantiles(rates, begin, middle + 1, before, first, split, k, out);
-  select_weighted_quantiles(rates, middle + 1, end, through_middle, split, last, k, out);
+  constexpr int max_bits = 10;
+  const int bits = std::clamp(int(std::bit_width(rates.size())) - 2, 4, max_bits);
+  const Key_buckets bucket(low, high, bits);
+  const std::size_t buckets = bucket.count();
+  if (buckets == 1) {  // zeros of both signs, equal values
+    for (std::size_t q = first; q < last; ++q) out[q] = key_value(low);
+    return;
+  }
+  std::array<double, std::size_t(1) << max_bits> weight;
+  std::array<std::uint32_t, std::size_t(1) << max_bits> count;
+  std::fill_n(weight.begin(), buckets, 0.0);
+  std::fill_n(count.begin(), buckets, 0);
+  for (const Keyed_rate& r : rates) {
+    const std::size_t b = bucket(r.key);
+    weight[b] += r.weight, ++count[b];
+  }
+  // The buckets that hold levels: each with the weight below it, its quantiles and its place in `spare`.
+  struct Part {
+    std::size_t bucket, first, last, begin, size;
+    double before;
+    std::uint64_t low, high;
+  };
+  std::array<Part, 64> parts;  // at most one per quantile, in rounds of 64
+  std::array<std::uint8_t, std::size_t(1) << max_bits> part_of;
+  std::fill_n(part_of.begin(), buckets, std::uint8_t(255));
+  std::size_t q = first, b = 0, used = 0, filled = 0;
+  double cumulative = before;
+  const std::size_t last_bucket = buckets - 1;
+  while (q < last) {
+    used = 0, filled = 0;
+    for (; b <= last_bucket && q < last && used < parts.size(); ++b) {
+      if (count[b] == 0) continue;
+      const double through = cumulative + weight[b];
+      std::size_t end = q;
+      while (end < last && (b == last_bucket || quantile_level(end, k) <= through)) ++end;
+      if (end > q) {
+        parts[used] = {b, q, end, filled, 0, cumulative, ~std::uint64_t(0), 0};
+        part_of[b] = std::uint8_t(used++), filled += count[b];
+      }
+      q = end, cumulative = through;
+    }
+    for (const Keyed_rate& r : rates)
+      if (const std::uint8_t p = part_of[bucket(r.key)]; p != 255) {
+        Part& part = parts[p];
+        spare[part.begin + part.size++] = r;
+        part.low = std::min(part.low, r.key), part.high = std::max(part.high, r.key);
+      }
+    for (std::size_t i = 0; i < used; ++i) {
+      const Part& part = parts[i];
+      part_of[part.bucket] = 255;
+      select_weighted_quantiles(spare.subspan(part.begin, part.size), rates.subspan(part.begin, part.size),
+                                part.before, part.first, part.last, k, part.low, part.high, out);
+    }
+  }
 }
 
-/// The `k` area-weighted quantiles of `rates` (value, weight pairs, weights summing to 1), which it
-/// reorders: quantile q is the smallest rate whose cumulative weight reaches (q + 1/2) / k (the
-/// largest rate if rounding leaves the total short of it). O(n log k) expected, not a sort's
-/// O(n log n).
-inline void weighted_quantiles(std::vector<std::pair<double, double>>& rates, std::size_t k, double* out) {
+/// The `k` area-weighted quantiles of `rates` (keyed values and their weights, weights summing to
+/// 1), which it reorders, using `spare` (as long) as scratch: quantile q is the smallest rate whose
+/// cumulative weight reaches (q + 1/2) / k (the largest rate if rounding leaves the total short of
+/// it). O(n) expected for rates spread over many magnitudes, O(n log n) at worst.
+inline void weighted_quantiles(std::span<Keyed_rate> rates, std::span<Keyed_rate> spare, std::size_t k,
+                               double* out) {
   if (rates.empty()) return;
-  select_weighted_quantiles(rates, 0, rates.size(), 0.0, 0, k, k, out);
+  std::uint64_t low = rates[0].key, high = low;
+  for (const Keyed_rate& r : rates) low = std::min(low, r.key), high = std::max(high, r.key);
+  select_weighted_quantiles(rates, spare, 0.0, 0, k, k, low, high, out);
+}
+
+/// `weighted_quantiles` of (value, weight) pairs.
+inline void weighted_quantiles(const std::vector<std::pair<double, double>>& rates, std::size_t k, double* out) {
+  std::vector<Keyed_rate> keyed(rates.size()), spare(rates.size());
+  for (std::size_t i = 0; i < rates.size(); ++i) keyed[i] = {order_key(rates[i].first), rates[i].second};
+  weighted_quantiles(keyed, spare, k, out);
 }
 
 /// Where the instant `time` (seconds from the first frame) falls among frames sampled at `fps`:
@@ -243,13 +364,18 @@ inline std::pair<std::size_t, std::size_t> frames_of_row(const Signature_rows& r
   return {first, last};
 }
 
+/// The scratch of `signature_row`: V rates each for the speeds, the vertical rates and the selection.
+struct Row_scratch {
+  explicit Row_scratch(std::size_t vertices) : speeds(vertices), rises(vertices), spare(vertices) {}
+  std::vector<Keyed_rate> speeds, rises, spare;
+};
+
 /// The signature at `instant` into `row` (`rows.columns` values), the frames read through
-/// `frame_of(t)` (frame t's `3V` coordinates); `speeds` and `rises` are scratch of V pairs (rises
-/// empty without an up direction).
+/// `frame_of(t)` (frame t's `3V` coordinates).
 template <class FrameOf>
 void signature_row(const Signature_rows& rows, const FrameOf& frame_of, std::span<const double> weights,
-                   double instant, double* row, std::vector<std::pair<double, double>>& speeds,
-                   std::vector<std::pair<double, double>>& rises) {
+                   double instant, double* row, Row_scratch& scratch) {
+  std::vector<Keyed_rate>&speeds = scratch.speeds, &rises = scratch.rises;
   const Motion_signature_options& options = rows.options;
   const std::size_t vertices = weights.size(), k = options.quantiles, lags = options.lags.size();
   const double vertical_factor = std::sqrt(options.vertical_weight);
@@ -260,15 +386,15 @@ void signature_row(const Signature_rows& rows, const FrameOf& frame_of, std::spa
     const double unit = 1.0 / (2.0 * lag * rows.radius);
     for (std::size_t v = 0; v < vertices; ++v) {
       const Eigen::Vector3d d = point_at(after, v) - point_at(before, v);
-      speeds[v] = {d.norm() * unit, weights[v]};
-      if (rows.up) rises[v] = {d.dot(*rows.up) * unit, weights[v]};
+      speeds[v] = {order_key(d.norm() * unit), weights[v]};
+      if (rows.up) rises[v] = {order_key(d.dot(*rows.up) * unit), weights[v]};
     }
     double* speed_quantiles = row + l * k;
-    weighted_quantiles(speeds, k, speed_quantiles);
+    weighted_quantiles(speeds, scratch.spare, k, speed_quantiles);
     for (std::size_t q = 0; q < k; ++q) speed_quantiles[q] = std::log(std::max(speed_quantiles[q], options.floor));
     if (!rows.up) continue;
     double* vertical = speed_quantiles + lags * k;
-    weighted_quantiles(rises, k, vertical);
+    weighted_quantiles(rises, scratch.spare, k, vertical);
     for (std::size_t q = 0; q < k; ++q) vertical[q] = vertical_factor * std::asinh(vertical[q] / options.vertical_unit);
   }
 }
@@ -302,10 +428,11 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
   using Row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   Row_major out = Row_major(static_cast<Eigen::Index>(instants.size()), static_cast<Eigen::Index>(rows.columns));
   const auto frame_of = [&](std::size_t t) { return positions.data() + 3 * vertices * t; };
-  deformseg::internal::parallel_for(instants.size(), 0, [&](std::size_t r) {
-    std::vector<std::pair<double, double>> speeds(vertices), rises(rows.up ? vertices : 0);
-    internal::signature_row(rows, frame_of, weights, instants[r], out.data() + r * rows.columns, speeds, rises);
-  });
+  deformseg::internal::parallel_for_with_locals(
+      instants.size(), 0, 1, [&] { return internal::Row_scratch(vertices); },
+      [&](internal::Row_scratch& scratch, std::size_t r) {
+        internal::signature_row(rows, frame_of, weights, instants[r], out.data() + r * rows.columns, scratch);
+      });
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/similarity/motion_similarity.h>
 
 #include <Eigen/Core>
@@ -16,6 +17,7 @@
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -295,26 +297,40 @@ std::vector<Motion_match> find_cut_windows(const Policy& policy, const typename 
   const auto [shortest_rows, longest_rows] = window_lengths(in_rows, options);
   const std::size_t steepest = steepest_slope(n, shortest_rows, longest_rows);
 
-  std::map<std::pair<std::size_t, std::size_t>, Similarity> scored;
-  const auto value_of = [&](std::pair<std::size_t, std::size_t> w) {
-    auto it = scored.find(w);
-    if (it == scored.end())
-      it = scored.emplace(w, policy.compare(query, policy.describe(long_animation.frames(w.first, w.second)))).first;
-    return it->second.value;
+  using Window = std::pair<std::size_t, std::size_t>;
+  std::map<Window, Similarity> scored;
+  // Scores the windows not scored yet, several at once (each then described on one thread: a loop
+  // inside a loop runs on one), so that the threads share the windows rather than one window's rows.
+  const auto score = [&](const std::vector<Window>& windows) {
+    std::vector<Window> missing;
+    for (const Window& w : windows)
+      if (!scored.count(w) && std::find(missing.begin(), missing.end(), w) == missing.end()) missing.push_back(w);
+    std::vector<std::optional<Similarity>> values(missing.size());
+    deformseg::internal::parallel_for(missing.size(), 0, [&](std::size_t i) {
+      values[i] = policy.compare(query, policy.describe(long_animation.frames(missing[i].first, missing[i].second)));
+    });
+    for (std::size_t i = 0; i < missing.size(); ++i) scored.emplace(missing[i], std::move(*values[i]));
+  };
+  const auto value_of = [&](Window w) {
+    score({w});
+    return scored.at(w).value;
   };
   // From a window, the neighbour (an end or both moved by one frame, inside [lowest, highest] and
   // the lengths) of highest value, while one is higher.
   const auto refined = [&](std::pair<std::size_t, std::size_t> w, std::size_t lowest, std::size_t highest) {
     for (std::size_t moves = 0; moves < 2 * query_frames; ++moves) {
-      std::pair<std::size_t, std::size_t> best = w;
+      std::vector<Window> neighbours{w};
       for (const auto& [df, dl] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {1, 1}}) {
         const std::ptrdiff_t f = std::ptrdiff_t(w.first) + df, l = std::ptrdiff_t(w.second) + dl;
         if (f < std::ptrdiff_t(lowest) || l > std::ptrdiff_t(highest) || f > l) continue;
-        const std::pair<std::size_t, std::size_t> next{std::size_t(f), std::size_t(l)};
+        const Window next{std::size_t(f), std::size_t(l)};
         const std::size_t length = next.second - next.first + 1;
-        if (length < shortest || length > longest) continue;
-        if (value_of(next) > value_of(best)) best = next;
+        if (length >= shortest && length <= longest) neighbours.push_back(next);
       }
+      score(neighbours);
+      Window best = w;
+      for (const Window& next : neighbours)
+        if (value_of(next) > value_of(best)) best = next;
       if (best == w) break;
       w = best;
     }
@@ -341,6 +357,9 @@ std::vector<Motion_match> find_cut_windows(const Policy& policy, const typename 
       }
     }
     if (candidates.empty()) break;
+    std::vector<Window> windows;
+    for (const auto& candidate : candidates) windows.push_back(candidate.first);
+    score(windows);
     const auto better = [&](const auto& x, const auto& y) {
       return value_of(x) != value_of(y) ? value_of(x) > value_of(y) : x.first < y.first;
     };
@@ -389,7 +408,9 @@ std::vector<Motion_match> find_cut_windows(const Policy& policy, const typename 
 /// two of highest value, and windows of the query's duration that start or end where they do, are
 /// moved an end or both by one frame at a time while their value rises; the best window is kept,
 /// and the search goes on in the stretches left on either side of the windows found. The
-/// re-descriptions are kept, so that a later window reuses them. A search, not an exhaustive scan:
+/// re-descriptions are kept, so that a later window reuses them; the windows of a step (the
+/// candidates, a window's neighbours) are described at once, one per thread (the default threads,
+/// `set_default_threads`); the result does not depend on their number. A search, not an exhaustive scan:
 /// where every window is alike (a steady wave), the window found may be another than the copy,
 /// with a value as high within a few thousandths.
 /// @tparam Mesh a `DeformingMesh` (both animations of one type; they need not share a mesh).

@@ -64,6 +64,8 @@ void run_find(const Find_command_options& o) {
   if (!o.store.empty()) return run_find_in_store(o);
   if (o.inputs.size() != 2)
     throw invalid_input("find takes the query and the long animation, or the query and --store S");
+  frontend::check(o.read, frontend::Front::command_line);
+  set_default_threads(o.read.threads);
   const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
   const mesh::Surface_mesh_animation &query = inputs[0].animation, &long_animation = inputs[1].animation;
   progress("looking for " + std::to_string(query.num_frames()) + " frames in " +
