@@ -7,8 +7,8 @@ if(DEFINED ENV{DEFORMSEG_FBX2GLTF})
   set(FBX2GLTF "$ENV{DEFORMSEG_FBX2GLTF}")
 endif()
 if(NOT EXISTS "${FBX2GLTF}")
-  message("SKIPPED: FBX2glTF not found at ${FBX2GLTF} (scripts/fetch-fbx2gltf BUILD/fbx2gltf fetches it from "
-          "the npm registry; DEFORMSEG_FBX2GLTF names another)")
+  message("SKIPPED: FBX2glTF not found at ${FBX2GLTF} (scripts/fetch-fbx2gltf BUILD/fbx2gltf fetches it with "
+          "the npm client; DEFORMSEG_FBX2GLTF names another)")
   return()
 endif()
 if(NOT EXISTS "${DATA}/fbx-collada")

@@ -57,3 +57,18 @@ def test_every_line_of_the_tool_block_runs(tool, scratch, characters):
         done = subprocess.run(["bash", "-c", line], cwd=folder, env=environment, capture_output=True, text=True,
                               timeout=600)
         assert done.returncode == 0, f"{line}\nexit status {done.returncode}\n{done.stdout[-2000:]}{done.stderr[-2000:]}"
+
+
+def test_no_registry_address_in_the_repository():
+    # Test-time npm packages come through the npm client and its configuration (scripts/
+    # fetch-fbx2gltf runs `npm pack`), so that a machine's registry or mirror serves them.
+    root = README.parent
+    hosts = ["registry." + "npmjs.org", "registry." + "yarnpkg.com"]  # spelled apart: not found here
+    listed = subprocess.run(["git", "ls-files"], cwd=root, capture_output=True, text=True)
+    if listed.returncode != 0:
+        return  # not a clone: nothing to look through
+    for name in listed.stdout.splitlines():
+        path = root / name
+        if path.is_file() and path.stat().st_size < 1 << 20:
+            text = path.read_bytes().decode("utf-8", "replace")
+            assert not any(host in text for host in hosts), name
