@@ -51,6 +51,14 @@ Read_input read_gltf(Input_name name, const Input_options& options, bool first_c
   return {std::move(animation), std::move(name), std::move(repair), std::move(report)};
 }
 
+Read_input read_animation_file(Input_name name, const Input_options& options, bool first_clip_by_default) {
+  if (io::is_character_file(name.file)) return read_gltf(std::move(name), options, first_clip_by_default);
+  io::Repair_report repair;
+  mesh::Surface_mesh_animation animation =
+      io::read_animation(name.file, animation_read_options(name.file, options), &repair);
+  return {std::move(animation), std::move(name), repair, std::nullopt};
+}
+
 }  // namespace
 
 io::Animation_read_options animation_read_options(const std::string& file, const Input_options& options) {
@@ -70,12 +78,33 @@ bool reads_frame_by_frame(const std::string& file, const Input_options& options)
 Read_input read_input(const std::string& input, const Input_options& options, Front front,
                       bool first_clip_by_default) {
   check(options, front);
-  Input_name name = input_name(input, options, front);
-  if (io::is_character_file(name.file)) return read_gltf(std::move(name), options, first_clip_by_default);
-  io::Repair_report repair;
-  mesh::Surface_mesh_animation animation =
-      io::read_animation(name.file, animation_read_options(name.file, options), &repair);
-  return {std::move(animation), std::move(name), repair, std::nullopt};
+  Read_input read = read_animation_file(input_name(input, options, front), options, first_clip_by_default);
+  check_outliers(read, options.refuse_defects, front);
+  return read;
+}
+
+void Outliers::note(const io::Outlying_vertex& outlier, const std::string& file, bool refuse_defects, Front front) {
+  if (refuse_defects)
+    throw invalid_input(outlier.text() + ": corrupt coordinates? (read with a warning without " +
+                            spelled("refuse_defects", front) + ")",
+                        {.file = file});
+  if (!first) first = outlier;
+  ++frames;
+}
+
+std::string Outliers::warning(Front front) const {
+  if (!first) return "";
+  return first->text() + " (in " + std::to_string(frames) + " frame(s)): corrupt coordinates? They are read as they are; " +
+         spelled("refuse_defects", front) + " refuses them";
+}
+
+void check_outliers(Read_input& read, bool refuse_defects, Front front) {
+  const mesh::Surface_mesh_animation& animation = read.animation;
+  if (animation.num_frames() == 0) return;
+  const io::Outlier_check check(animation.frame_positions(0));
+  for (std::size_t t = 0; t < animation.num_frames(); ++t)
+    if (const std::optional<io::Outlying_vertex> outlier = check(animation.frame_positions(t), t))
+      read.outliers.note(*outlier, read.name.file, refuse_defects, front);
 }
 
 void require_motion(const mesh::Surface_mesh_animation& animation, const std::string& input) {
@@ -133,6 +162,8 @@ std::string describe(const io::Repair_report& r) {
   add(r.duplicated_vertices, "vertices duplicated to make them manifold");
   add(r.reoriented_triangles, "triangles reoriented");
   add(r.unrepairable_triangles, "unrepairable triangles dropped");
+  add(r.dropped_influences, "skin influences dropped (bad weight or joint)");
+  add(r.unweighted_vertices, "skinned vertices without weight bound to their mesh's node");
   return words.empty() ? "nothing" : words;
 }
 

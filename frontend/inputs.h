@@ -6,6 +6,7 @@
 
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/mesh_repair.h>
+#include <deformseg/io/outlying_vertices.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/mesh/default_mesh.h>
 
@@ -13,6 +14,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -89,13 +91,74 @@ io::Animation_read_options animation_read_options(const std::string& file, const
 /// it, in its words).
 bool reads_frame_by_frame(const std::string& file, const Input_options& options);
 
+/// Vertices absurdly far for their mesh's own scale (`io::Outlier_check`) in an animation: corrupt
+/// coordinates, read as they are unless refused.
+struct Outliers {
+  std::optional<io::Outlying_vertex> first{};  ///< the farthest of the first frame that has one
+  std::size_t frames = 0;                      ///< the frames that have one
+
+  /// Notes `outlier` of the file `file`, or refuses it with `refuse_defects` (named as `front`
+  /// spells it).
+  /// @throws invalid_input naming the file, the frame and the vertex, with `refuse_defects`.
+  void note(const io::Outlying_vertex& outlier, const std::string& file, bool refuse_defects, Front front);
+  /// A warning's words ("frame 12 vertex 40 lies ... (in 3 frame(s)): corrupt coordinates? ...
+  /// --refuse-defects refuses them", the option as `front` spells it); empty when there are none.
+  std::string warning(Front front) const;
+};
+
+/// A frame source (`signatures::FrameSource`) whose frames are checked for outlying vertices as
+/// `check_outliers` checks a whole animation's, noted in `outliers` (those of the first pass: a
+/// source may be rewound and read again) or refused with `refuse_defects`.
+template <class Source>
+class Outlier_checked_source {
+public:
+  using Coordinate = typename Source::Coordinate;
+
+  /// @param file names the source in a refusal. `source`, `file` and `outliers` must outlive this.
+  Outlier_checked_source(Source& source, const std::string& file, bool refuse_defects, Front front,
+                         Outliers& outliers)
+      : source_(source), file_(file), refuse_defects_(refuse_defects), front_(front), outliers_(outliers) {}
+  std::size_t num_vertices() const { return source_.num_vertices(); }
+  std::size_t num_frames() const { return source_.num_frames(); }
+  double frames_per_second() const { return source_.frames_per_second(); }
+  auto triangles() const { return source_.triangles(); }
+  void read_frame(std::span<Coordinate> out) {
+    source_.read_frame(out);
+    const std::size_t t = next_++;
+    if (t == 0 && !check_) check_.emplace(std::span<const Coordinate>(out));
+    if (t < checked_) return;  // a frame of the first pass, read again
+    checked_ = t + 1;
+    if (const std::optional<io::Outlying_vertex> outlier = (*check_)(std::span<const Coordinate>(out), t))
+      outliers_.note(*outlier, file_, refuse_defects_, front_);
+  }
+  void rewind() {
+    source_.rewind();
+    next_ = 0;
+  }
+
+private:
+  Source& source_;
+  const std::string& file_;
+  bool refuse_defects_;
+  Front front_;
+  Outliers& outliers_;
+  std::optional<io::Outlier_check> check_;
+  std::size_t next_ = 0, checked_ = 0;
+};
+
 /// An animation read, with what reading it found.
 struct Read_input {
   mesh::Surface_mesh_animation animation;
   Input_name name;
   io::Repair_report repair{};
   std::optional<io::Gltf_read_report> gltf{};  ///< for a glTF input
+  Outliers outliers{};
 };
+
+/// Looks for vertices absurdly far for the mesh's own scale (`io::Outlier_check`) in every frame
+/// of `read`'s animation, noting them in `read.outliers` (`Outliers::note`).
+/// @throws invalid_input naming the file, frame and vertex, with `refuse_defects`.
+void check_outliers(Read_input& read, bool refuse_defects, Front front);
 
 /// Reads `input` as `options` say (the one input of a command or a function: see
 /// `check_clip_applies`); a glTF file of several clips needs one named, unless

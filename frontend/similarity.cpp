@@ -59,7 +59,7 @@ Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh
 std::optional<Compared> compare_streamed(const std::array<std::string, 2>& inputs, const Input_options& options,
                                          const similarity::Policy_choice& choice,
                                          const Significance_request& significance, Front front,
-                                         std::array<std::size_t, 2>& frames) {
+                                         std::array<Streamed_input, 2>& streamed) {
   if (choice.policy != "motion-signature") return std::nullopt;
   const std::array<Input_name, 2> names{input_name(inputs[0], options, front), input_name(inputs[1], options, front)};
   for (const Input_name& name : names)
@@ -73,9 +73,10 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
       for (std::size_t k = 0; k < 2; ++k) {
         const io::Animation_read_options read = animation_read_options(names[k].file, options);
         described[k] = io::with_frame_source(names[k].file, read, [&](auto& source) -> std::optional<Description> {
-          frames[k] = source.num_frames();
-          if (frames[k] < 2) return std::nullopt;  // refused by the reader of whole animations, in its words
-          return policy.describe_stream(source);
+          streamed[k].frames = source.num_frames();
+          if (streamed[k].frames < 2) return std::nullopt;  // refused by the reader of whole animations, in its words
+          Outlier_checked_source checked(source, names[k].file, options.refuse_defects, front, streamed[k].outliers);
+          return policy.describe_stream(checked);
         });
         if (!described[k]) return std::nullopt;
       }

@@ -102,18 +102,24 @@ struct Compared {
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
                  const similarity::Policy_choice& choice, const Significance_request& significance);
 
+/// What reading an input frame by frame found.
+struct Streamed_input {
+  std::size_t frames = 0;  ///< its frames
+  Outliers outliers{};     ///< its outlying vertices (`check_outliers`)
+};
+
 /// `compare` of the animations that `inputs` name, each read frame by frame: the motion-signature
 /// policy describes a stream holding the frames its longest lag spans, not the whole animation
 /// (a point cache with its topology, a frame sequence; neither welded, since welding compares every
-/// frame), with the same result as `compare` of the animations read whole. `frames` gets their
-/// frame counts.
+/// frame), with the same result as `compare` of the animations read whole. `streamed` gets their
+/// frame counts and outlying vertices (refused with `options.refuse_defects`).
 /// @return nullopt, having described nothing, when an input must be read whole: another policy, a
 /// glTF file, a welded input, a point cache without topology, an animation of fewer than 2 frames.
 /// @throws invalid_input naming the file or the frame that cannot be read.
 std::optional<Compared> compare_streamed(const std::array<std::string, 2>& inputs, const Input_options& options,
                                          const similarity::Policy_choice& choice,
                                          const Significance_request& significance, Front front,
-                                         std::array<std::size_t, 2>& frames);
+                                         std::array<Streamed_input, 2>& streamed);
 
 /// A similarity as a report: {"policy", "alignment_policy", "similarity", "score", "labels_a",
 /// "labels_b", "alignment": [[i, j], ...], "compared", "z_score" (or null), "shuffled_copies"}.

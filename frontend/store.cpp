@@ -13,7 +13,10 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <map>
@@ -61,9 +64,19 @@ void add_gltf_clips(const std::string& file, const std::string& clip, double fps
   }
 }
 
+// The name of the only clip of a character file ("0" for an unnamed one, "" for none).
+// @throws invalid_input naming the file when it cannot be parsed or has several clips.
+std::string only_clip(const fs::path& file) {
+  const io::Gltf_file gltf(file);
+  io::require_clip_choice(gltf, "");
+  const std::vector<std::string> names = gltf.clip_names();
+  return names.empty() ? "" : names.front().empty() ? "0" : names.front();
+}
+
 }  // namespace
 
-std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_options& options) {
+std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_options& options,
+                                        std::vector<std::string>* unreadable) {
   std::vector<Clip_source> out;
   std::map<fs::path, std::size_t> rows_of_file;
   const std::vector<io::Labelled_clip> rows = io::read_motion_labels(labels);
@@ -79,12 +92,13 @@ std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_o
       continue;
     }
     std::string clip = row.item.clip.empty() ? options.clip : row.item.clip;
-    if (clip.empty()) {  // the file's only clip, as evaluate reads it
-      const io::Gltf_file gltf(row.file);
-      io::require_clip_choice(gltf, clip);
-      const std::vector<std::string> names = gltf.clip_names();
-      clip = names.empty() ? "" : names.front().empty() ? "0" : names.front();
-    }
+    if (clip.empty()) try {  // the file's only clip, as evaluate reads it
+        clip = only_clip(row.file);
+      } catch (const invalid_input& e) {
+        if (!unreadable) throw;
+        unreadable->push_back(file + ": " + e.what());
+        continue;
+      }
     out.push_back({canonical_path(file), clip});
   }
   return out;
@@ -139,17 +153,25 @@ nlohmann::json up_json(const std::optional<Eigen::Vector3d>& up) {
 }  // namespace
 
 std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, const Input_options& options,
-                                      std::vector<std::string>& poses) {
+                                      std::vector<std::string>& poses, std::vector<std::string>* unreadable) {
   check_clip_applies(inputs, options, Front::command_line);
   std::vector<Clip_source> all;
   for (const std::string& input : inputs) {
     if (is_labels_file(input)) {
-      for (Clip_source& clip : labelled_clips(input, options)) all.push_back(std::move(clip));
+      for (Clip_source& clip : labelled_clips(input, options, unreadable)) all.push_back(std::move(clip));
       continue;
     }
     const Input_name name = input_name(input, options, Front::command_line);
-    if (io::is_character_file(name.file)) add_gltf_clips(name.file, name.clip, options.fps, all, poses);
-    else all.push_back({canonical_path(name.file), ""});
+    if (!io::is_character_file(name.file)) {
+      all.push_back({canonical_path(name.file), ""});
+      continue;
+    }
+    try {
+      add_gltf_clips(name.file, name.clip, options.fps, all, poses);
+    } catch (const invalid_input& e) {
+      if (!unreadable) throw;
+      unreadable->push_back(input + ": " + e.what());
+    }
   }
   std::vector<Clip_source> once;  // a clip named twice is described once
   std::set<std::pair<std::string, std::string>> seen;
@@ -275,18 +297,22 @@ struct Described_clip {
   double fps = 0;
   similarity::Motion_signature_description description;
   similarity::Motion_summary summary;
+  std::string warning;  ///< of outlying vertices (`Outliers::warning`), said when it is appended
 };
 
-// The whole animation of `clip` as read_input reads it; a glTF clip from `gltf`, its file parsed once.
-mesh::Surface_mesh_animation read_whole(const Clip_source& clip, const io::Gltf_file* gltf,
-                                        const Input_options& options) {
+// The whole animation of `clip` as read_input reads it, its outliers checked; a glTF clip from
+// `gltf`, its file parsed once.
+Read_input read_whole(const Clip_source& clip, const io::Gltf_file* gltf, const Input_options& options, Front front) {
   if (!gltf) {
     Input_options frames = options;
     frames.clip.clear();
-    return read_input(clip.file, frames, Front::command_line).animation;
+    return read_input(clip.file, frames, front);
   }
-  return gltf->read({.clip = clip.clip, .fps = options.fps, .repair = repair_options(clip.file, options),
-                     .threads = options.threads});
+  Read_input read{gltf->read({.clip = clip.clip, .fps = options.fps, .repair = repair_options(clip.file, options),
+                              .threads = options.threads}),
+                  {clip.file, clip.clip}};
+  check_outliers(read, options.refuse_defects, front);
+  return read;
 }
 
 // A description's error, named by its clip (a reader's names its file and frame already).
@@ -296,15 +322,19 @@ invalid_input of_clip(const Clip_source& clip, const invalid_input& error) {
 
 Described_clip summarized(std::size_t frames, double fps, similarity::Motion_signature_description description) {
   similarity::Motion_summary summary = similarity::summarize(similarity::view(description), store_summary_chunks);
-  return {std::uint32_t(frames), fps, std::move(description), std::move(summary)};
+  return {std::uint32_t(frames), fps, std::move(description), std::move(summary), {}};
 }
 
 Described_clip describe_whole(const Clip_source& clip, const io::Gltf_file* gltf, const Input_options& options,
-                              const similarity::Default_similarity& policy) {
-  const mesh::Surface_mesh_animation animation = read_whole(clip, gltf, options);
+                              const similarity::Default_similarity& policy, Front front) {
+  const Read_input read = read_whole(clip, gltf, options, front);
+  const mesh::Surface_mesh_animation& animation = read.animation;
   require_motion(animation, clip.name());
   try {
-    return summarized(animation.num_frames(), mesh::frames_per_second(animation), policy.describe(animation));
+    Described_clip described =
+        summarized(animation.num_frames(), mesh::frames_per_second(animation), policy.describe(animation));
+    described.warning = read.outliers.warning(front);
+    return described;
   } catch (const invalid_input& e) {
     throw of_clip(clip, e);
   }
@@ -349,9 +379,12 @@ private:
 // holding the frames the longest lag needs, not the clip's.
 template <signatures::FrameSource Source>
 Described_clip describe_streamed(Source& source, const Clip_source& clip, const io::Gltf_file* gltf,
-                                 const Input_options& options, const similarity::Default_similarity& policy) {
-  if (source.num_frames() < 2) return describe_whole(clip, gltf, options, policy);  // refused as before
-  Noting_source<Source> noting(source);
+                                 const Input_options& options, const similarity::Default_similarity& policy,
+                                 Front front) {
+  if (source.num_frames() < 2) return describe_whole(clip, gltf, options, policy, front);  // refused as before
+  Outliers outliers;
+  Outlier_checked_source<Source> checked(source, clip.file, options.refuse_defects, front, outliers);
+  Noting_source noting(checked);
   similarity::Motion_signature_description description;
   try {
     description = policy.describe_stream(noting);
@@ -359,7 +392,9 @@ Described_clip describe_streamed(Source& source, const Clip_source& clip, const 
     if (noting.failed()) throw;
     throw of_clip(clip, e);
   }
-  return summarized(source.num_frames(), source.frames_per_second(), std::move(description));
+  Described_clip described = summarized(source.num_frames(), source.frames_per_second(), std::move(description));
+  described.warning = outliers.warning(front);
+  return described;
 }
 
 // Describes `clip` as `read_input` reads it, frame by frame: a glTF clip from `gltf` (welded, when
@@ -367,15 +402,15 @@ Described_clip describe_streamed(Source& source, const Clip_source& clip, const 
 // sequence through `io::with_frame_source` with the same topology, triangulation, repair and fps,
 // when it `reads_frame_by_frame`.
 Described_clip describe_clip(const Clip_source& clip, const io::Gltf_file* gltf, const Input_options& options,
-                             const similarity::Default_similarity& policy) {
+                             const similarity::Default_similarity& policy, Front front) {
   if (gltf) {
     io::Gltf_frame_source source(*gltf,
                                  {.clip = clip.clip, .fps = options.fps, .repair = repair_options(clip.file, options)});
-    return describe_streamed(source, clip, gltf, options, policy);
+    return describe_streamed(source, clip, gltf, options, policy, front);
   }
-  if (!reads_frame_by_frame(clip.file, options)) return describe_whole(clip, nullptr, options, policy);
+  if (!reads_frame_by_frame(clip.file, options)) return describe_whole(clip, nullptr, options, policy, front);
   return io::with_frame_source(clip.file, animation_read_options(clip.file, options),
-                               [&](auto& source) { return describe_streamed(source, clip, nullptr, options, policy); });
+                               [&](auto& source) { return describe_streamed(source, clip, nullptr, options, policy, front); });
 }
 
 // Each glTF file parsed once for its clips, by the first of them to be described, and freed after
@@ -419,6 +454,22 @@ private:
   std::map<std::string, File> files_;  // made whole by the constructor: found concurrently, never added to
 };
 
+// Releases a clip's parse (`Gltf_parses::release`) when it is described or has failed; nothing for
+// a clip of another format (an empty file name).
+class Release_parse {
+public:
+  Release_parse(Gltf_parses& parses, std::string file) : parses_(parses), file_(std::move(file)) {}
+  Release_parse(const Release_parse&) = delete;
+  Release_parse& operator=(const Release_parse&) = delete;
+  ~Release_parse() {
+    if (!file_.empty()) parses_.release(file_);
+  }
+
+private:
+  Gltf_parses& parses_;
+  std::string file_;
+};
+
 // The clips described at once, then appended in order: at least 32, so that few threads wait for
 // the batch's last clip; 4 per thread on more than 8. At most `threads` clips are read at once.
 std::size_t describe_batch(int threads) { return std::max<std::size_t>(32, 4 * std::size_t(threads)); }
@@ -441,12 +492,18 @@ void append_clip(io::Store_append& append, const Clip_source& clip, const io::St
 // changed, a file's together in the order of the files' first clips (the order they are appended
 // in); the others are reported skipped.
 std::vector<std::size_t> clips_to_describe(const std::vector<Clip_source>& clips, const Input_options& options,
-                                           bool hash, const io::Motion_store& store,
+                                           bool hash, bool skip_unreadable, const io::Motion_store& store,
                                            std::vector<io::Store_record>& records, Describe_report& report) {
   std::map<std::string, std::vector<std::size_t>> of_file;
   std::vector<std::string> files;
   for (std::size_t i = 0; i < clips.size(); ++i) {
-    records[i] = source_record(clips[i], options, hash);
+    try {
+      records[i] = source_record(clips[i], options, hash);
+    } catch (const invalid_input& e) {
+      if (!skip_unreadable) throw;
+      report.unreadable.push_back(clips[i].name() + ": " + e.what());
+      continue;
+    }
     const std::optional<std::size_t> at = store.find(clips[i].file, clips[i].clip);
     if (at && unchanged(store.record(*at), records[i], hash)) {
       report.skipped.push_back(clips[i].name());
@@ -459,6 +516,39 @@ std::vector<std::size_t> clips_to_describe(const std::vector<Clip_source>& clips
   for (const std::string& file : files) order.insert(order.end(), of_file[file].begin(), of_file[file].end());
   return order;
 }
+
+// "45 s", "3 min 20 s", "2 h 5 min": a duration as a progress line gives it.
+std::string duration_text(double seconds) {
+  const auto whole = std::uint64_t(std::max(0.0, std::round(seconds)));
+  if (whole < 60) return std::to_string(whole) + " s";
+  if (whole < 3600) return std::to_string(whole / 60) + " min " + std::to_string(whole % 60) + " s";
+  return std::to_string(whole / 3600) + " h " + std::to_string(whole / 60 % 60) + " min";
+}
+
+// A line per clip described, with the rates so far and the time left at that rate: said under a
+// lock by the thread that described the clip, so that a long batch still shows its progress.
+class Clip_progress {
+public:
+  Clip_progress(std::size_t total, const std::function<void(const std::string&)>& say) : total_(total), say_(say) {}
+
+  void described(const Clip_source& clip, std::size_t frames) {
+    const std::lock_guard lock(mutex_);
+    ++done_, frames_ += frames;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    char rates[64];
+    std::snprintf(rates, sizeof rates, "%.1f clips/s, %.0f frames/s", double(done_) / seconds,
+                  double(frames_) / seconds);
+    say_("described " + std::to_string(done_) + " of " + std::to_string(total_) + ": " + clip.name() + " (" +
+         std::to_string(frames) + " frames); " + rates + ", about " +
+         duration_text(seconds / double(done_) * double(total_ - done_)) + " left");
+  }
+
+private:
+  std::mutex mutex_;
+  std::size_t total_, done_ = 0, frames_ = 0;
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  const std::function<void(const std::string&)>& say_;
+};
 
 // Says "describing N clip(s) of FILE" for each file whose first clip is among order[first, end).
 void announce_files(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& order, std::size_t first,
@@ -476,38 +566,77 @@ void announce_files(const std::vector<Clip_source>& clips, const std::vector<std
 
 Describe_report describe_into_store(const std::string& folder, const std::vector<Clip_source>& clips,
                                     const Input_options& options, const similarity::Default_similarity& policy,
-                                    bool hash, const std::function<void(const std::string&)>& say) {
-  io::Store_append append(folder, store_description(policy),
-                          similarity::summary_width(signature_width(policy), store_summary_chunks),
-                          io::motion_summary_layout(store_summary_chunks));
+                                    const Describe_run& run, const std::function<void(const std::string&)>& say) {
+  const auto start_append = [&] {
+    return std::make_unique<io::Store_append>(folder, store_description(policy),
+                                              similarity::summary_width(signature_width(policy), store_summary_chunks),
+                                              io::motion_summary_layout(store_summary_chunks));
+  };
+  std::unique_ptr<io::Store_append> append = start_append();
   Describe_report report;
   std::vector<io::Store_record> records(clips.size());
-  const std::vector<std::size_t> order = clips_to_describe(clips, options, hash, append.store(), records, report);
+  const std::vector<std::size_t> order =
+      clips_to_describe(clips, options, run.hash, run.skip_unreadable, append->store(), records, report);
   Gltf_parses parses(clips, order);
+  Clip_progress progress(order.size(), say);
   const std::size_t batch = describe_batch(thread_count(options.threads));
   std::vector<Described_clip> described;
+  std::vector<std::optional<invalid_input>> errors;
+  // The clips appended since the last commit; every `store_commit_clips` of `order` are committed.
+  std::size_t appended = 0;
+  const auto commit = [&] {
+    report.clips = append->size();
+    append->commit();
+    append.reset();
+    appended = 0;
+  };
   for (std::size_t first = 0; first < order.size(); first += batch) {
     const std::size_t count = std::min(batch, order.size() - first);
     announce_files(clips, order, first, first + count, say);
     described.assign(count, {});
+    errors.assign(count, std::nullopt);
     // A clip per thread, by the library's one parallel loop (a detail: threads.h has no public
-    // loop) for its rules: a batch of one clip leaves the threads to its rows (loops nested in a
-    // loop of several threads run on one), and a failure gives the lowest clip's error.
+    // loop): a batch of one clip leaves the threads to its rows (loops nested in a loop of several
+    // threads run on one). A clip that cannot be read or described is noted, not thrown, so that
+    // the clips before it are stored whatever the threads did.
     deformseg::internal::parallel_for(count, options.threads, [&](std::size_t k) {
       const Clip_source& clip = clips[order[first + k]];
-      const std::shared_ptr<const io::Gltf_file> gltf = io::is_character_file(clip.file) ? parses.acquire(clip.file) : nullptr;
-      described[k] = describe_clip(clip, gltf.get(), options, policy);
-      if (gltf) parses.release(clip.file);
+      try {
+        const std::shared_ptr<const io::Gltf_file> gltf =
+            io::is_character_file(clip.file) ? parses.acquire(clip.file) : nullptr;
+        const Release_parse release(parses, gltf ? clip.file : std::string());
+        described[k] = describe_clip(clip, gltf.get(), options, policy, run.front);
+        progress.described(clip, described[k].frame_count);
+      } catch (const invalid_input& e) {
+        errors[k] = e;
+      }
     });
     for (std::size_t k = 0; k < count; ++k) {
-      io::Store_record& record = records[order[first + k]];
-      record.frame_count = described[k].frame_count;
-      record.fps = described[k].fps;
-      append_clip(append, clips[order[first + k]], record, described[k], report);
+      const Clip_source& clip = clips[order[first + k]];
+      if (errors[k]) {
+        if (!run.skip_unreadable) {
+          if (append && appended > 0) commit();
+          throw invalid_input(errors[k]->message() + " (" + spelled("skip_unreadable", run.front) +
+                                  " leaves it out; the " +
+                                  std::to_string(report.described.size() + report.redescribed.size()) +
+                                  " clip(s) described before it are in the store)",
+                              errors[k]->where());
+        }
+        say("left out " + clip.name() + ": " + errors[k]->what());
+        report.unreadable.push_back(clip.name() + ": " + errors[k]->what());
+      } else {
+        if (!described[k].warning.empty()) say("warning: " + clip.name() + ": " + described[k].warning);
+        if (!append) append = start_append();
+        io::Store_record& record = records[order[first + k]];
+        record.frame_count = described[k].frame_count;
+        record.fps = described[k].fps;
+        append_clip(*append, clip, record, described[k], report);
+        ++appended;
+      }
+      if ((first + k + 1) % store_commit_clips == 0 && append && appended > 0) commit();
     }
   }
-  append.commit();
-  report.clips = append.size();
+  if (append) commit();
   return report;
 }
 
@@ -523,7 +652,7 @@ Description_plan plan_description(const std::string& folder, const std::vector<C
                         {.file = folder});
   Description_plan plan;
   std::vector<io::Store_record> records(clips.size());
-  plan.order = clips_to_describe(clips, options, hash, store, records, plan.report);
+  plan.order = clips_to_describe(clips, options, hash, false, store, records, plan.report);
   plan.report.clips = store.size();
   return plan;
 }

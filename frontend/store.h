@@ -37,15 +37,19 @@ struct Clip_source {
 /// `options.fps` (the others, poses with no motion, named in `poses`); a labels CSV (`.csv`, the
 /// header of `evaluate`'s) the clip of each row (a glTF row without a clip takes `options.clip`,
 /// or the file's only clip).
+/// With `unreadable`, a character file that cannot be parsed is left out, noted there ("INPUT:
+/// the error"), instead of thrown.
 /// @throws invalid_input naming the input that does not exist, a glTF file that cannot be parsed,
 /// a clip it does not have, a labels row naming several clips of a file that is not glTF.
 std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, const Input_options& options,
-                                      std::vector<std::string>& poses);
+                                      std::vector<std::string>& poses, std::vector<std::string>* unreadable = nullptr);
 
 /// The clip of each row of the labels CSV `labels` (`evaluate`'s), in the rows' order: a glTF row
-/// without a clip takes `options.clip`, or the file's only clip.
+/// without a clip takes `options.clip`, or the file's only clip. With `unreadable`, a row whose
+/// file cannot be parsed for its only clip is left out, noted there, instead of thrown.
 /// @throws invalid_input naming the labels file or the glTF file, as `clip_sources`.
-std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_options& options);
+std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_options& options,
+                                        std::vector<std::string>* unreadable = nullptr);
 
 /// The default policy with the signatures' up direction of `choice` (its policy must be
 /// motion-signature and its alignment dtw: what a store holds).
@@ -93,24 +97,47 @@ struct Describe_report {
   std::vector<std::string> described;    ///< new clips, added
   std::vector<std::string> redescribed;  ///< changed clips, replaced at their index
   std::vector<std::string> skipped;      ///< unchanged clips
+  /// Clips left out because they could not be read or described (with `skip_unreadable`), each
+  /// "NAME: the error".
+  std::vector<std::string> unreadable;
   std::size_t clips = 0;                 ///< the store's clips after the run
+};
+
+/// How many clips of a run `describe_into_store` commits at a time: at most that many are lost
+/// when the run is killed.
+inline constexpr std::size_t store_commit_clips = 64;
+
+/// How `describe_into_store` runs.
+struct Describe_run {
+  bool hash = false;             ///< tell a changed source by its bytes' hash, not its time
+  bool skip_unreadable = false;  ///< leave out the clips that cannot be read or described
+  Front front = Front::command_line;  ///< how an error names the options
 };
 
 /// Describes `clips` read with `options` by `policy` into the store in `folder` (made when
 /// missing), with their summaries: new clips added, changed ones replaced in place, unchanged ones
-/// skipped (see `unchanged`); one commit at the end. Each clip is read frame by frame (`policy`'s
-/// `describe_stream`, the same values as `describe` of the clip read whole), in memory that grows
-/// with the signatures' longest lag, not with the clip: all but point caches and frame sequences
-/// welded (`options.weld`), which are read whole. Clips are described on `options.threads` threads
-/// (a glTF file parsed once for its clips), a batch of at least 32 at a time, each batch appended in
-/// the clips' order: the store is the same, byte for byte, whatever the number of threads, and at
-/// most that many clips are read at once. `say` gets a line of progress per file, on the calling
-/// thread, in the clips' order.
+/// skipped (see `unchanged`, with `run.hash`). Each clip is read frame by frame (`policy`'s `describe_stream`, the
+/// same values as `describe` of the clip read whole), in memory that grows with the signatures'
+/// longest lag, not with the clip: all but point caches and frame sequences welded
+/// (`options.weld`), which are read whole. Clips are described on `options.threads` threads (a
+/// glTF file parsed once for its clips), a batch of at least 32 at a time, each batch appended in
+/// the clips' order, and committed every `store_commit_clips` clips of the run and at its end: the
+/// store is the same, byte for byte, whatever the number of threads; at most that many clips are
+/// read at once; a run that is killed keeps every clip committed, and a second run describes the
+/// rest (the others are unchanged).
+///
+/// A clip that cannot be read or described stops the run, the clips before it committed; with
+/// `run.skip_unreadable` it is left out (`Describe_report::unreadable`) and the run goes on.
+///
+/// `say` gets a line per file ("describing 12 clip(s) of FILE") and one per clip described, with
+/// the rates so far and the time left, from the thread that described it (under a lock), and one
+/// per clip left out.
 /// @throws invalid_input naming the file and clip that cannot be read or described, or the store
-/// when it cannot be written or was made with other options; the store is then as it was.
+/// when it cannot be written or was made with other options; the store then holds what was
+/// committed before.
 Describe_report describe_into_store(const std::string& folder, const std::vector<Clip_source>& clips,
                                     const Input_options& options, const similarity::Default_similarity& policy,
-                                    bool hash, const std::function<void(const std::string&)>& say);
+                                    const Describe_run& run, const std::function<void(const std::string&)>& say);
 
 /// What describing `clips` into a store would do, before any is described.
 struct Description_plan {

@@ -4,6 +4,7 @@
 
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/gltf.h>
+#include <deformseg/io/outlying_vertices.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/strain/strain.h>
@@ -14,6 +15,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -248,7 +250,8 @@ TEST_CASE("gltf: 8 influences with normalised byte weights / no weight at all st
   check_point(s, 0, 2, 8, 1, 0);
 }
 
-TEST_CASE("gltf: a weighted joint that is negative, fractional or past the skin is refused, named", "[gltf]") {
+TEST_CASE("gltf: a weighted joint that is negative, fractional or past the skin is dropped, or refused, named",
+          "[gltf]") {
   // glTF's JOINTS are unsigned bytes or shorts; a file may still store them signed or as floats.
   const auto skinned = [](int joints_type, const std::vector<float>& joints) {
     Gltf_writer w;
@@ -270,16 +273,70 @@ TEST_CASE("gltf: a weighted joint that is negative, fractional or past the skin 
   // Joints past the first two of vertex 0 weigh nothing: whatever they hold is not read.
   const std::vector<float> fine{0, 0, -7, 1e30f, 0, 5, 0, 0, 0, 0, 0, 0};
   CHECK(sample_gltf(write(skinned(Gltf_writer::float_type, fine), "fine.gltf")).num_vertices == 3);
-  const auto refused = [&](int type, const std::vector<float>& joints, const std::string& message) {
+  // Repaired by default, as engines load them (the influence dropped; a vertex left without
+  // weight follows its mesh's node), counted; refused with Defect_policy::refuse.
+  const auto refused = [&](int type, const std::vector<float>& joints, std::size_t unweighted,
+                           const std::string& message) {
     const fs::path path = write(skinned(type, joints), "bad-joint.gltf");
-    CHECK_THROWS_WITH(sample_gltf(path), Contains(path.string()) && Contains(message));
+    const deformseg::io::Gltf_file file(path);
+    deformseg::io::Gltf_read_report report;
+    CHECK(file.read({.repair = {.weld = false}}, &report).num_vertices() == 3);
+    CHECK(report.repair.dropped_influences == 1);
+    CHECK(report.repair.unweighted_vertices == unweighted);
+    CHECK_THROWS_WITH(file.read({.repair = {.weld = false, .defects = deformseg::io::Defect_policy::refuse}}),
+                      Contains(path.string()) && Contains(message));
   };
-  refused(Gltf_writer::byte_type, {0, -128, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
+  refused(Gltf_writer::byte_type, {0, -128, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, 0,
           "mesh 'arm' primitive 0 vertex 0 refers to joint -128 of a skin with 1 joints");
-  refused(Gltf_writer::float_type, {0, 0, 0, 0, 0.5f, 0, 0, 0, 0, 0, 0, 0}, "vertex 1 refers to joint 0.5");
-  refused(Gltf_writer::float_type, {0, 0, 0, 0, 0, 0, 0, 0, 1e30f, 0, 0, 0},
+  refused(Gltf_writer::float_type, {0, 0, 0, 0, 0.5f, 0, 0, 0, 0, 0, 0, 0}, 1, "vertex 1 refers to joint 0.5");
+  refused(Gltf_writer::float_type, {0, 0, 0, 0, 0, 0, 0, 0, 1e30f, 0, 0, 0}, 1,
           "vertex 2 refers to joint 1.0000000150474662e+30");  // the float 1e30 exactly, as read
-  refused(Gltf_writer::byte_type, {0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, "vertex 0 refers to joint 1 of a skin with 1");
+  refused(Gltf_writer::byte_type, {0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, 0,
+          "vertex 0 refers to joint 1 of a skin with 1");
+}
+
+TEST_CASE("gltf: NaN, infinite and negative weights are dropped, the rest renormalised, or refused", "[gltf]") {
+  // The Wasp of the shared library has weights of NaN; three.js and Blender load it.
+  Gltf_writer w;
+  const int position = w.floats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  const int joints = w.values(std::vector<std::uint8_t>{0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0}, Gltf_writer::ubyte_type,
+                              "VEC4");
+  // Vertex 0: NaN on joint 0, 1 on joint 1; vertex 1: -1 and infinity; vertex 2: a half each.
+  const float nan = std::numeric_limits<float>::quiet_NaN(), infinity = std::numeric_limits<float>::infinity();
+  const int weights = w.floats({nan, 1, 0, 0, -1, infinity, 0, 0, 0.5f, 0.5f, 0, 0}, "VEC4");
+  w.push("meshes", {{"primitives", json::array({{{"attributes", {{"POSITION", position}, {"JOINTS_0", joints},
+                                                                 {"WEIGHTS_0", weights}}}}})}});
+  w.push("nodes", {{"name", "a"}});
+  w.push("nodes", {{"name", "b"}, {"translation", {10, 0, 0}}});
+  w.push("nodes", {{"mesh", 0}, {"skin", 0}, {"translation", {0, 0, 7}}});
+  w.push("skins", {{"joints", {0, 1}}});
+  const fs::path path = write(w, "bad-weights.gltf");
+  const Sampled_gltf s = sample_gltf(path);
+  check_point(s, 0, 0, 10, 0, 0);  // on joint 1 alone
+  check_point(s, 0, 1, 1, 0, 7);   // no weight left: rigid to the mesh node
+  check_point(s, 0, 2, 5, 1, 0);
+  const deformseg::io::Gltf_file file(path);
+  deformseg::io::Gltf_read_report report;
+  file.read({.repair = {.weld = false}}, &report);
+  CHECK(report.repair.dropped_influences == 3);
+  CHECK(report.repair.unweighted_vertices == 1);
+  CHECK(report.repair.changed());
+  CHECK_THROWS_WITH(file.read({.repair = {.defects = deformseg::io::Defect_policy::refuse}}),
+                    Contains(path.string()) && Contains("vertex 0 has weight nan; glTF needs finite weights >= 0"));
+}
+
+TEST_CASE("gltf: the shared library's bodies with NaN weights read, repaired, every clip", "[gltf][data]") {
+  for (const char* name : {"easy_enemies_pack/Wasp.glb", "platformer_game_pack/Bee.glb", "platformer_game_pack/Crab.glb"}) {
+    INFO(name);
+    const deformseg::io::Gltf_file file(deformseg::test::data_dir() / "library" / name);
+    for (const std::string& clip : file.clip_names()) {
+      deformseg::io::Gltf_read_report report;
+      const auto animation = file.read({.clip = clip}, &report);
+      CHECK(report.repair.dropped_influences > 0);
+      CHECK(animation.num_vertices() > 0);
+    }
+    CHECK_THROWS_WITH(file.read({.repair = {.defects = deformseg::io::Defect_policy::refuse}}), Contains("has weight"));
+  }
 }
 
 TEST_CASE("gltf: animated morph target weights, node and mesh weights at rest", "[gltf]") {
@@ -787,6 +844,9 @@ TEST_CASE("gltf: every clip of a shared character has the file's one mesh, seams
       const auto animation = file.read({.clip = clip});
       CHECK(animation.num_vertices() == mesh.source_vertex.size());
       CHECK(std::ranges::equal(animation.triangles(), mesh.triangles));
+      // Real characters, root motion and all, have no vertex beyond their own scale.
+      const deformseg::io::Outlier_check outliers(animation.frame_positions(0));
+      for (std::size_t t = 0; t < animation.num_frames(); ++t) CHECK(!outliers(animation.frame_positions(t), t));
     }
   }
   CHECK(files == expected.size());

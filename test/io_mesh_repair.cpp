@@ -7,6 +7,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/mesh_repair.h>
+#include <deformseg/io/outlying_vertices.h>
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/strain/strain.h>
@@ -152,7 +153,7 @@ TEST_CASE("repair_triangles: a repeated vertex, a non-manifold edge and vertex, 
   const auto counts = r.counts();
   CHECK(counts[3] == std::pair<std::string_view, std::size_t>("degenerate_triangles", 1));
   CHECK(counts[7] == std::pair<std::string_view, std::size_t>("duplicated_vertices", 5));
-  CHECK(counts[11] == std::pair<std::string_view, std::size_t>("triangles", 13));
+  CHECK(counts[13] == std::pair<std::string_view, std::size_t>("triangles", 13));
   CHECK(result.source_triangle == std::vector<std::uint32_t>{0, 1, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13});
   // Without welding, the vertices keep their indices and the copies follow.
   for (std::uint32_t i = 0; i < 18; ++i) CHECK(result.source_vertex[i] == i);
@@ -600,4 +601,50 @@ TEST_CASE("read_frame_sequence and read_animation repair, weld on request, and r
         read_animation(cache.string(), {.topology = first, .repair = Repair_options{.defects = Defect_policy::refuse}}),
         invalid_input, Message(first.string() + ": triangle 12 repeats vertex 4"));
   }
+}
+
+TEST_CASE("Outlier_check: a corrupt coordinate is found, root motion and large parts are not", "[io][repair]") {
+  // A 10 x 10 grid of unit squares: its median radius is about 3.7 (the median distance of its
+  // 121 vertices from its middle, (5, 5, 0)).
+  std::vector<double> grid_frame;
+  for (int i = 0; i <= 10; ++i)
+    for (int j = 0; j <= 10; ++j) grid_frame.insert(grid_frame.end(), {double(i), double(j), 0.0});
+  const deformseg::io::Outlier_check check{std::span<const double>(grid_frame)};
+  CHECK(check.scale() > 3);
+  CHECK(check.scale() < 4.5);
+  const auto moved = [&](double dx, std::size_t vertex, double x) {
+    std::vector<double> frame = grid_frame;
+    for (std::size_t v = 0; v < frame.size() / 3; ++v) frame[3 * v] += dx;
+    frame[3 * vertex] = x + dx;
+    return frame;
+  };
+  // Root motion a million times the mesh's size, and a vertex 10^4 radii away (a long prop, a ground).
+  CHECK(!check(std::span<const double>(moved(1e7, 0, 0)), 1));
+  CHECK(!check(std::span<const double>(moved(0, 60, 3.7e4)), 2));
+  // A vertex at 1e20, and one 10^6 radii away, whatever the frame's place.
+  for (const double dx : {0.0, -1e7}) {
+    const auto outlier = check(std::span<const double>(moved(dx, 60, 1e20)), 3);
+    REQUIRE(outlier);
+    CHECK(outlier->frame == 3);
+    CHECK(outlier->vertex == 60);
+    CHECK(outlier->distance > 0.99e20);
+    CHECK_THAT(outlier->text(), Catch::Matchers::StartsWith("frame 3 vertex 60 lies 1e+20 from the frame's middle"));
+    const auto far = check(std::span<const double>(moved(dx, 7, 5e6)), 4);
+    REQUIRE(far);
+    CHECK(far->vertex == 7);
+  }
+  // The farthest of several; a first frame with an outlier of its own still has the grid's scale.
+  std::vector<double> two = moved(0, 3, 1e9);
+  two[3 * 90] = -1e12;
+  CHECK(check(std::span<const double>(two), 5)->vertex == 90);
+  const deformseg::io::Outlier_check corrupt_first{std::span<const double>(two)};
+  CHECK(corrupt_first.scale() < 4.5);
+  CHECK(corrupt_first(std::span<const double>(two), 0)->vertex == 90);
+  // Single-precision coordinates, as the readers of caches keep them.
+  std::vector<float> single(grid_frame.begin(), grid_frame.end());
+  single[3 * 5 + 2] = 1e30f;
+  CHECK(deformseg::io::Outlier_check(std::span<const float>(single))(std::span<const float>(single), 0)->vertex == 5);
+  // A mesh with no spread (all its vertices at one point) has no scale to judge by.
+  const std::vector<double> point(30, 1.0);
+  CHECK(!deformseg::io::Outlier_check(std::span<const double>(point))(std::span<const double>(moved(0, 2, 1e20)), 0));
 }

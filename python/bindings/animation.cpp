@@ -33,6 +33,7 @@ constexpr std::array repair_members{
     &io::Repair_report::duplicate_triangles,   &io::Repair_report::non_manifold_edges,
     &io::Repair_report::non_manifold_vertices, &io::Repair_report::duplicated_vertices,
     &io::Repair_report::reoriented_triangles,  &io::Repair_report::unrepairable_triangles,
+    &io::Repair_report::dropped_influences,    &io::Repair_report::unweighted_vertices,
     &io::Repair_report::vertices,              &io::Repair_report::triangles};
 static_assert(repair_members.size() == std::tuple_size_v<decltype(io::Repair_report{}.counts())>);
 
@@ -140,15 +141,23 @@ it; `clips` lists them), a folder of frame files (.obj, .off, .ply, in natural o
 pattern, or a point cache (.pc2, .mdd) with `topology` (a mesh file). `fps` is the frame rate of
 every format (`Animation.fps`). A character's vertices are welded by what the file fixes (the same rest
 position, skin weights and morph deltas), so that every clip of a file has one mesh.
-`Animation.repair` says what the repair changed. Raises InvalidInput naming the file, line and
+`Animation.repair` says what the repair changed. A vertex absurdly far for the mesh's own scale
+(10^5 times its median radius: corrupt data) gives a UserWarning naming its frame, or is refused
+with refuse_defects. Raises InvalidInput naming the file, line and
 frame of the first problem, or for an option that does not apply (clip for frames, topology for
 a character file), as the tool does: the rules are the front end's (frontend/inputs.h) that the tool follows.
 Complexity linear in the input's size. Releases the GIL.)doc",
       [](const std::filesystem::path& path, const frontend::Input_options& options) {
         frontend::check_clip_applies({path.string()}, options, frontend::Front::python);
-        Interruptible_call call;
-        frontend::Read_input read = frontend::read_input(path.string(), options, frontend::Front::python);
-        return Animation{std::move(read.animation), read.repair};
+        std::optional<frontend::Read_input> read;
+        {
+          Interruptible_call call;
+          read = frontend::read_input(path.string(), options, frontend::Front::python);
+        }
+        if (const std::string warning = read->outliers.warning(frontend::Front::python); !warning.empty())
+          if (PyErr_WarnEx(PyExc_UserWarning, (path.string() + ": " + warning).c_str(), 1) < 0)
+            throw py::error_already_set();
+        return Animation{std::move(read->animation), read->repair};
       },
       std::tuple{py::arg("path")});
 

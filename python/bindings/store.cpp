@@ -87,21 +87,27 @@ struct Default_threads_scope {
 };
 
 py::dict describe_to_store(const py::object& inputs, const std::filesystem::path& store,
-                           const frontend::Input_options& options, const similarity::Policy_choice& choice, bool hash) {
+                           const frontend::Input_options& options, const similarity::Policy_choice& choice, bool hash,
+                           bool skip_unreadable) {
   const std::vector<std::string> paths = input_paths(inputs);
   const similarity::Default_similarity policy = frontend::store_policy(choice, frontend::Front::python);
   frontend::check(options, frontend::Front::python);
   frontend::check_clip_applies(paths, options, frontend::Front::python);
-  std::vector<std::string> poses;
+  std::vector<std::string> poses, unlisted;
   frontend::Describe_report report;
   {
     Interruptible_call call;
     const Default_threads_scope threads(options.threads);
-    const std::vector<frontend::Clip_source> clips = frontend::clip_sources(paths, options, poses);
-    report = frontend::describe_into_store(store.string(), clips, options, policy, hash, [](const std::string&) {});
+    const std::vector<frontend::Clip_source> clips =
+        frontend::clip_sources(paths, options, poses, skip_unreadable ? &unlisted : nullptr);
+    report = frontend::describe_into_store(
+        store.string(), clips, options, policy,
+        {.hash = hash, .skip_unreadable = skip_unreadable, .front = frontend::Front::python}, [](const std::string&) {});
   }
+  report.unreadable.insert(report.unreadable.begin(), unlisted.begin(), unlisted.end());
   return py::dict("store"_a = store.string(), "clips"_a = report.clips, "described"_a = report.described,
-                  "redescribed"_a = report.redescribed, "skipped"_a = report.skipped, "poses_left_out"_a = poses);
+                  "redescribed"_a = report.redescribed, "skipped"_a = report.skipped,
+                  "unreadable"_a = report.unreadable, "poses_left_out"_a = poses);
 }
 
 // What `describe` of deformseg.distributed hands out: the clips describe_to_store would describe, in
@@ -552,7 +558,7 @@ tool's `store verify`). Raises InvalidInput naming the file (and the clip) when 
 a store, is of a newer version, is truncated or corrupted, or was described with options this
 deformseg does not write. Complexity O(clips), or O(bytes) with 'checksums'. Releases the GIL.)doc");
 
-  define_function<describe_table, Types<const py::object&, const std::filesystem::path&>, Types<bool>,
+  define_function<describe_table, Types<const py::object&, const std::filesystem::path&>, Types<bool, bool>,
                   frontend::Input_options, similarity::Policy_choice>(
       m, "describe_to_store",
       R"doc(Describes clips once into the motion store in the folder `store` (made when missing), as the
@@ -562,16 +568,19 @@ animation as read_animation reads it (frame files, a folder, a glob, a point cac
 of one frame are left out and listed), or a labels CSV (evaluate's: the clip of each row). New
 clips are added, changed ones described again in place, unchanged ones skipped: a clip is
 unchanged when its path, clip, input options, size and modification time (with hash=True, the
-hash of its bytes instead of the time) are those recorded. One commit at the end: on any error
-the store is as it was. Returns a dict: store, clips (the store's count after the run),
-described, redescribed and skipped (the clips' names, 'FILE' or 'FILE#CLIP'), poses_left_out.
-up (default None: the policy's default, none): the signatures' up direction, recorded in the
-store; a store takes clips of one description only. hash (default False). Raises InvalidInput
+hash of its bytes instead of the time) are those recorded. Clips are committed 64 at a time and
+at the end: an interrupted or failed run keeps what it committed, and a second run describes the
+rest. Returns a dict: store, clips (the store's count after the run), described, redescribed and
+skipped (the clips' names, 'FILE' or 'FILE#CLIP'), unreadable ('NAME: the error' for each input
+or clip left out by skip_unreadable), poses_left_out. up (default None: the policy's default,
+none): the signatures' up direction, recorded in the store; a store takes clips of one
+description only. hash (default False). skip_unreadable (default False): leave out the inputs
+and clips that cannot be read or described instead of raising at the first. Raises InvalidInput
 naming the file and clip that cannot be read or described, or the store when it cannot be
 written or was made with other options. Complexity linear in the inputs' size for the clips
 described, O(clips) for those skipped (plus reading every byte with hash=True). Releases the GIL.)doc",
       &describe_to_store, std::tuple{py::arg("inputs"), py::arg("store"), py::kw_only()},
-      std::tuple{py::arg_v("hash", false)});
+      std::tuple{py::arg_v("hash", false), py::arg_v("skip_unreadable", false)});
 }
 
 }  // namespace deformseg::python

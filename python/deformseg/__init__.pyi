@@ -148,6 +148,7 @@ def describe_to_store(
     threads: int = 0,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
     hash: bool = False,
+    skip_unreadable: bool = False,
 ) -> dict[str, Any]: ...
 
 class Node:

@@ -161,3 +161,22 @@ def test_reference_mesh_errors_name_the_file_and_the_parameters(tubes, tmp_path)
         deformseg.temporal_segmentation(a, reference_mesh=rest, rest_frame=3)
     with pytest.raises(deformseg.InvalidInput, match="excludes reference='previous'"):
         deformseg.evolving_graph(a, reference_mesh=rest, reference="previous")
+
+
+def test_absurd_coordinates_warn_or_are_refused(tmp_path):
+    # A 4 x 4 grid waving over 3 OBJ frames, frame 1's vertex 5 at 1e20: read with a UserWarning
+    # naming the frame and the vertex, or refused with refuse_defects.
+    points = [(i, j, 0.0) for i in range(4) for j in range(4)]
+    faces = [(4 * i + j + 1, 4 * i + j + 2, 4 * i + j + 5) for i in range(3) for j in range(3)]
+    faces += [(4 * i + j + 2, 4 * i + j + 6, 4 * i + j + 5) for i in range(3) for j in range(3)]
+    for t in range(3):
+        moved = [(x, y, 0.1 * t * x) for x, y, _ in points]
+        if t == 1:
+            moved[5] = (1e20, 0.0, 0.0)
+        lines = [f"v {x!r} {y!r} {z!r}" for x, y, z in moved] + [f"f {a} {b} {c}" for a, b, c in faces]
+        (tmp_path / f"frame_{t}.obj").write_text("\n".join(lines) + "\n")
+    with pytest.warns(UserWarning, match="frame 1 vertex 5 lies 1e\\+20 from the frame's middle"):
+        animation = deformseg.read_animation(tmp_path)
+    assert animation.num_frames == 3
+    with pytest.raises(deformseg.InvalidInput, match="frame 1 vertex 5 lies 1e\\+20"):
+        deformseg.read_animation(tmp_path, refuse_defects=True)

@@ -48,12 +48,30 @@ def described(characters, tmp_path_factory):
 
 # ---- describing ---------------------------------------------------------------------------------
 
+def test_describe_skips_unreadable_inputs_and_keeps_what_it_described(characters, tmp_path):
+    # Files that are not glTF among good ones: a clip of one fails when it is described (after the
+    # fox's clips, which come first as their file does), the other when its clips are listed.
+    # Without skip_unreadable the call raises naming the file, the fox's clips stored; with it, the
+    # rest go in and both are listed.
+    labels = write_labels(characters, tmp_path / "labels.csv")
+    bad, unlisted = tmp_path / "bad.glb", tmp_path / "unlisted.glb"
+    bad.write_bytes(b"not a glTF file")
+    unlisted.write_bytes(b"not a glTF file either")
+    inputs = [str(characters / "Fox.glb") + "#Walk", str(bad) + "#Walk", str(labels)]
+    with pytest.raises(deformseg.InvalidInput, match="bad.glb"):
+        deformseg.describe_to_store(inputs, tmp_path / "S")
+    assert len(deformseg.open_store(tmp_path / "S")) == 3
+    report = deformseg.describe_to_store(inputs + [unlisted], tmp_path / "S", skip_unreadable=True)
+    assert [line.split(": ")[0] for line in report["unreadable"]] == [str(unlisted), str(bad.resolve()) + "#Walk"]
+    assert len(report["skipped"]) == 3 and report["clips"] == len(ROWS)
+
+
 def test_describe_reports_the_clips_and_skips_them_the_second_time(described):
     labels, folder, report, animations = described
     rows = deformseg.read_motion_labels(labels)
     names = [f"{os.path.realpath(r['file'])}#{r['clip']}" for r in rows]
     assert report == {"store": str(folder), "clips": len(rows), "described": names, "redescribed": [],
-                      "skipped": [], "poses_left_out": []}
+                      "skipped": [], "unreadable": [], "poses_left_out": []}
     again = deformseg.describe_to_store([str(labels)], folder)
     assert again["skipped"] == names and again["described"] == again["redescribed"] == []
     assert again["clips"] == len(rows)

@@ -4,6 +4,7 @@ command's JSON records of its inputs, and `--csv -` printing as `--json -` does.
 
 import csv
 import io
+import shutil
 
 import pytest
 
@@ -86,3 +87,27 @@ def test_matrix_csv_to_a_file_is_whole(tool, synth_obj, bend_once, scratch):
 def test_weld_default_may_be_said(tool, synth_obj):
     plain = tool("info", synth_obj[0], "--json", "-").json()
     assert tool("info", synth_obj[0], "--no-weld", "--json", "-").json()["vertices"] == plain["vertices"]
+
+
+def test_absurd_coordinates_are_warned_of_or_refused(tool, scratch, synth_obj):
+    # Frame 4 of a copy of the tube has a vertex at 1e20: every path that reads it, whole (info),
+    # frame by frame (similarity of frame folders) or into a store (describe), says where it is,
+    # and --refuse-defects refuses it; the tube itself gets no warning.
+    folder = scratch / "absurd"
+    shutil.copytree(synth_obj[0], folder)
+    frame = sorted(folder.glob("*.obj"))[4]
+    lines = frame.read_text().splitlines()
+    first_vertex = next(i for i, line in enumerate(lines) if line.startswith("v "))
+    lines[first_vertex] = "v 1e20 0 0"
+    frame.write_text("\n".join(lines) + "\n")
+    where = "frame 4 vertex 0 lies 1e+20 from the frame's middle"
+    assert "warning" not in succeeds(tool("info", synth_obj[0])).err
+    run = succeeds(tool("info", folder))
+    assert f"warning: {folder}: {where}" in run.err and "(in 1 frame(s)): corrupt coordinates?" in run.err
+    fails(tool("info", folder, "--refuse-defects"), where, "corrupt coordinates")
+    run = succeeds(tool("similarity", synth_obj[0], folder, "--significance", "0"))
+    assert "each described frame by frame" in run.err and where in run.err
+    fails(tool("similarity", synth_obj[0], folder, "--refuse-defects"), where)
+    run = succeeds(tool("describe", folder, "--store", scratch / "store-absurd"))
+    assert f"warning: {folder.resolve()}: {where}" in run.err
+    fails(tool("describe", folder, "--store", scratch / "store-absurd-refused", "--refuse-defects"), where)

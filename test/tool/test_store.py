@@ -12,7 +12,7 @@ import time
 
 import pytest
 
-from conftest import fails, succeeds, synth
+from conftest import fails, matches_all, succeeds, synth
 
 # Four small tubes moving differently, as frame folders (OBJ).
 SCHEDULES = {
@@ -144,13 +144,82 @@ def test_changed_clip_described_again_at_its_index(tool, scratch, clips):
     assert result["described"] == [str(clips[3].resolve())] and result["clips"] == 4
 
 
+def broken_copy(scratch, clip, name="broken"):
+    """A copy of the frame folder `clip` whose fourth frame cannot be read."""
+    broken = scratch / name
+    shutil.copytree(clip, broken)
+    sorted(broken.iterdir())[3].write_text("v 1 2\n")
+    return broken
+
+
 def test_unreadable_clip_leaves_the_store(tool, scratch, store, clips):
     manifest = (store / "store.json").read_bytes()
-    broken = scratch / "broken"
-    shutil.copytree(clips[0], broken)
-    sorted(broken.iterdir())[3].write_text("v 1 2\n")
-    fails(tool("describe", *clips, broken, "--store", store), "broken")
+    broken = broken_copy(scratch, clips[0])
+    fails(tool("describe", *clips, broken, "--store", store), "broken", "--skip-unreadable")
     assert (store / "store.json").read_bytes() == manifest
+
+
+def copies_of(scratch, clips, name, count):
+    """`count` copies of the four tubes' folders, in turn: as many clips to describe."""
+    folders = []
+    for k in range(count):
+        folders.append(scratch / f"{name}-{k}")
+        if not folders[-1].exists():
+            shutil.copytree(clips[k % 4], folders[-1])
+    return folders
+
+
+def stored_names(tool, folder):
+    return [clip["path"] for clip in store_info(tool, folder)["clips"]]
+
+
+def test_bad_input_in_the_middle_keeps_every_other_clip(tool, scratch, clips):
+    # 100 clips with an unreadable one after the 70th: the run stops there with the 70 before it
+    # committed (64 at the first commit, 6 when it stops); --skip-unreadable then adds the 30 after
+    # it, each once.
+    inputs = copies_of(scratch, clips, "middle", 100)
+    inputs.insert(70, broken_copy(scratch, clips[1], "middle-broken"))
+    folder = scratch / "store-middle"
+    fails(tool("describe", *inputs, "--store", folder, "--threads", "2"), "middle-broken",
+          "the 70 clip(s) described before it are in the store")
+    expected = [str(f.resolve()) for f in inputs]
+    assert stored_names(tool, folder) == expected[:70]
+    result = tool("describe", *inputs, "--store", folder, "--skip-unreadable", "--json", "-")
+    assert "left out " + str(inputs[70].resolve()) in result.err
+    report = result.json()
+    assert len(report["skipped"]) == 70 and len(report["described"]) == 30 and report["clips"] == 100
+    assert [line.split(": ")[0] for line in report["unreadable"]] == [expected[70]]
+    assert stored_names(tool, folder) == expected[:70] + expected[71:]
+    succeeds(tool("store", "verify", folder))
+
+
+def test_describe_reports_each_clip(tool, scratch, clips):
+    run = succeeds(tool("describe", *clips, "--store", scratch / "store-progress"))
+    for done in range(1, 5):
+        matches_all(run.err, rf"described {done} of 4: .*tube-\w+ \(\d+ frames\); [\d.]+ clips/s, \d+ frames/s, "
+                             r"about \d+ (s|min \d+ s) left")
+
+
+def test_killed_describe_keeps_what_it_committed(tool, scratch, clips):
+    # Killed after its first commit (64 clips): those stay, and a second run describes the rest.
+    folder = scratch / "store-killed-later"
+    inputs = copies_of(scratch, clips, "later", 400)
+    process = subprocess.Popen([os.environ["DEFORMSEG_TOOL"], "describe", *map(str, inputs), "--store", str(folder),
+                                "--threads", "1"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        while process.poll() is None and not (folder / "store.json").exists():
+            time.sleep(0.002)  # polling, not an assertion
+        assert process.poll() is None, "the describe ended before its first commit"
+        process.send_signal(signal.SIGKILL)
+    finally:
+        process.wait()
+    kept = stored_names(tool, folder)
+    assert len(kept) % 64 == 0 and 64 <= len(kept) < 400
+    assert kept == [str(f.resolve()) for f in inputs[: len(kept)]]
+    result = describe(tool, folder, *inputs)
+    assert len(result["skipped"]) == len(kept) and len(result["described"]) == 400 - len(kept)
+    assert stored_names(tool, folder) == [str(f.resolve()) for f in inputs]
+    succeeds(tool("store", "verify", folder))
 
 
 def store_files(folder):

@@ -38,6 +38,8 @@ frontend::Read_input read_one(const std::string& input, const Input_options& opt
     progress("clip \"" + read.gltf->clip + "\", " + std::to_string(read.gltf->frames) + " frames at " +
              nlohmann::json(options.fps).dump() + " fps");
   if (read.repair.changed()) progress("repaired: " + frontend::describe(read.repair));
+  if (const std::string warning = read.outliers.warning(frontend::Front::command_line); !warning.empty())
+    progress("warning: " + input + ": " + warning);
   return read;
 }
 

@@ -315,15 +315,22 @@ inline std::pair<std::optional<Clip>, std::size_t> clip_and_frames(const Loaded_
 }
 
 /// The connectivity every clip of the file shares: the scene's vertices welded by what the file
-/// fixes (see `gltf_welding.h`) when `options.weld`, then the triangles repaired once.
+/// fixes (see `gltf_welding.h`) when `options.weld`, then the triangles repaired once; the skin
+/// weights' repairs counted (or the first refused).
 inline io::Repaired_triangles repair_scene(const Rig& rig, const io::Repair_options& options) {
+  const Weight_defects& weights = rig.geometry.weights;
+  if (options.defects == io::Defect_policy::refuse && !weights.first.empty()) throw invalid_input(weights.first);
   const std::span<const std::array<std::uint32_t, 3>> triangles(rig.geometry.triangles);
   check_repair_input(std::span<const double>(), rig.geometry.vertices, triangles, options);
   std::size_t skin_joints = 0;
   for (const auto& joints : rig.skins.joints) skin_joints += joints.size();
   std::vector<std::uint32_t> welded;
   if (options.weld) welded = weld_scene_vertices(rig.geometry, skin_joints, options.weld_tolerance);
-  return repair_welded(triangles, welding_of(std::move(welded), rig.geometry.vertices), options.defects);
+  io::Repaired_triangles repaired =
+      repair_welded(triangles, welding_of(std::move(welded), rig.geometry.vertices), options.defects);
+  repaired.report.dropped_influences = weights.dropped_influences;
+  repaired.report.unweighted_vertices = weights.unweighted_vertices;
+  return repaired;
 }
 
 inline io::Gltf_mesh_info mesh_info(const tinygltf::Model& model, std::size_t mesh) {

@@ -68,13 +68,19 @@ struct Repair_report {
   /// after CGAL's repair. A guard: no input tried so far (random soups, Moebius strips, the
   /// projective plane) needs it, since CGAL cuts such parts along a seam of copied vertices.
   std::size_t unrepairable_triangles = 0;
+  /// @brief glTF skin influences dropped: a weight NaN, infinite or negative, or a weighted joint
+  /// outside its skin (the vertex keeps its other influences, renormalised).
+  std::size_t dropped_influences = 0;
+  /// @brief glTF skinned vertices without weight (all zero, or all dropped), bound to their
+  /// mesh's node as engines bind them.
+  std::size_t unweighted_vertices = 0;
   std::size_t vertices = 0;               ///< vertices after the repair
   std::size_t triangles = 0;              ///< triangles after the repair
 
   /// @brief Every count by its member's name, in the order above: one list for the writers of a
   /// report (the tool's JSON, the Python module's dict).
   /// @par Complexity O(1).
-  std::array<std::pair<std::string_view, std::size_t>, 12> counts() const noexcept {
+  std::array<std::pair<std::string_view, std::size_t>, 14> counts() const noexcept {
     return {{{"input_vertices", input_vertices},
              {"input_triangles", input_triangles},
              {"welded_vertices", welded_vertices},
@@ -85,6 +91,8 @@ struct Repair_report {
              {"duplicated_vertices", duplicated_vertices},
              {"reoriented_triangles", reoriented_triangles},
              {"unrepairable_triangles", unrepairable_triangles},
+             {"dropped_influences", dropped_influences},
+             {"unweighted_vertices", unweighted_vertices},
              {"vertices", vertices},
              {"triangles", triangles}}};
   }
@@ -92,7 +100,7 @@ struct Repair_report {
   /// @brief Whether the repair changed anything.
   bool changed() const noexcept {
     return welded_vertices + degenerate_triangles + duplicate_triangles + duplicated_vertices +
-               reoriented_triangles + unrepairable_triangles != 0;
+               reoriented_triangles + unrepairable_triangles + dropped_influences + unweighted_vertices != 0;
   }
 };
 

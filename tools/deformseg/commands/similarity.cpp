@@ -78,16 +78,19 @@ void run_similarity(const Similarity_command_options& o) {
   frontend::check(o.significance, o.policy, frontend::Front::command_line);
   frontend::check(o.read, frontend::Front::command_line);
   frontend::check_clip_applies(o.inputs, o.read, frontend::Front::command_line);
-  std::array<std::size_t, 2> frames{};
+  std::array<frontend::Streamed_input, 2> streamed{};
   if (const auto compared = frontend::compare_streamed({o.inputs[0], o.inputs[1]}, o.read, o.policy, o.significance,
-                                                        frontend::Front::command_line, frames)) {
-    progress("compared " + std::to_string(frames[0]) + " and " + std::to_string(frames[1]) +
+                                                        frontend::Front::command_line, streamed)) {
+    for (std::size_t k = 0; k < 2; ++k)
+      if (const std::string warning = streamed[k].outliers.warning(frontend::Front::command_line); !warning.empty())
+        progress("warning: " + o.inputs[k] + ": " + warning);
+    progress("compared " + std::to_string(streamed[0].frames) + " and " + std::to_string(streamed[1].frames) +
              " frames, each described frame by frame");
     nlohmann::json records = nlohmann::json::array();
     for (const std::string& input : o.inputs)
       records.push_back(
           frontend::input_record(frontend::input_name(input, o.read, frontend::Front::command_line).file, o.read.fps));
-    return report_similarity(o, *compared, records, frames[0], frames[1]);
+    return report_similarity(o, *compared, records, streamed[0].frames, streamed[1].frames);
   }
   const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
   const mesh::Surface_mesh_animation &a = inputs[0].animation, &b = inputs[1].animation;

@@ -41,6 +41,7 @@ struct Describe_options {
   Policy_options policy;
   std::string store;
   bool hash = false;
+  bool skip_unreadable = false;
   std::string json;
 };
 
@@ -49,24 +50,30 @@ void run_describe(const Describe_options& o) {
   frontend::check(o.read, frontend::Front::command_line);
   set_default_threads(o.read.threads);
   const auto start = std::chrono::steady_clock::now();
-  std::vector<std::string> poses;
-  const std::vector<frontend::Clip_source> clips = frontend::clip_sources(o.inputs, o.read, poses);
+  std::vector<std::string> poses, unlisted;
+  const std::vector<frontend::Clip_source> clips =
+      frontend::clip_sources(o.inputs, o.read, poses, o.skip_unreadable ? &unlisted : nullptr);
   progress(std::to_string(clips.size()) + " clip(s) named by the inputs");
   for (const std::string& pose : poses) progress("left out " + pose + ": a pose of 1 frame, no motion");
-  const frontend::Describe_report report =
-      frontend::describe_into_store(o.store, clips, o.read, policy, o.hash, progress);
+  for (const std::string& input : unlisted) progress("left out " + input);
+  frontend::Describe_report report =
+      frontend::describe_into_store(o.store, clips, o.read, policy, {.hash = o.hash, .skip_unreadable = o.skip_unreadable},
+                                    progress);
+  report.unreadable.insert(report.unreadable.begin(), unlisted.begin(), unlisted.end());
   const double seconds = seconds_since(start);
   const nlohmann::json document = {{"store", o.store},         {"clips", report.clips},
                                    {"described", report.described}, {"redescribed", report.redescribed},
-                                   {"skipped", report.skipped},  {"poses_left_out", poses},
-                                   {"seconds", seconds}};
+                                   {"skipped", report.skipped},  {"unreadable", report.unreadable},
+                                   {"poses_left_out", poses},    {"seconds", seconds}};
   write_outputs(document, o.json, [&] {
     std::cout << "described    " << report.described.size() << "\nre-described " << report.redescribed.size()
-              << "\nskipped      " << report.skipped.size() << " (unchanged)\nleft out     " << poses.size()
+              << "\nskipped      " << report.skipped.size() << " (unchanged)\nunreadable   "
+              << report.unreadable.size() << " (left out by --skip-unreadable)\nleft out     " << poses.size()
               << " (poses of 1 frame in character files read whole)\nstore        " << o.store << ", "
               << report.clips << " clips\n";
     for (const auto& name : report.described) std::cout << "  described    " << name << '\n';
     for (const auto& name : report.redescribed) std::cout << "  re-described " << name << '\n';
+    for (const auto& line : report.unreadable) std::cout << "  unreadable   " << line << '\n';
   });
 }
 
@@ -276,7 +283,11 @@ void add_describe_command(CLI::App& app) {
   add_store_option(*command, o->store, "The store's folder (made when missing)");
   command->add_flag("--hash", o->hash,
                     "Tell a changed source by its bytes' hash rather than its modification time (reads every file)");
-  add_json_option(*command, o->json, "what was described, described again and skipped");
+  command->add_flag("--skip-unreadable", o->skip_unreadable,
+                    "Leave out, with a line on standard error, the inputs and clips that cannot be read or described "
+                    "(a pose of one frame), instead of stopping at the first; the clips described before a stop stay "
+                    "in the store either way, and a second run describes the rest");
+  add_json_option(*command, o->json, "what was described, described again, skipped and left out unreadable");
   command->callback([o] { run_describe(*o); });
 }
 

@@ -36,6 +36,20 @@ struct Mesh_part {
   std::vector<double> weights{};        // vertex x influences, summing to 1 per vertex
 };
 
+/// What a scene's skin weights needed, as engines load them: influences dropped (a weight NaN,
+/// infinite or negative, or a weighted joint outside its skin) and vertices left without weight,
+/// which follow their mesh's node. The first defect in words, for `Defect_policy::refuse`.
+struct Weight_defects {
+  std::size_t dropped_influences = 0;
+  std::size_t unweighted_vertices = 0;
+  std::string first{};
+
+  void note(std::size_t& count, std::string what) {
+    if (first.empty()) first = std::move(what);
+    ++count;
+  }
+};
+
 inline const char* mode_name(int mode) {
   switch (mode) {
     case TINYGLTF_MODE_POINTS: return "POINTS";
@@ -103,11 +117,13 @@ inline std::vector<double> read_target_deltas(const tinygltf::Model& model, cons
 }
 
 /// Reads JOINTS_n / WEIGHTS_n (n = 0, and 1 when present) into the part: joints become indices
-/// into the frame's joint table (skin's joints from `joint_base`); a vertex whose weights are all
-/// zero follows `rigid_entry`, the table's entry for the mesh node itself.
+/// into the frame's joint table (skin's joints from `joint_base`); an influence whose weight is
+/// not finite and at least 0, or whose joint is outside the skin, is dropped, and a vertex whose
+/// weights are all zero follows `rigid_entry`, the table's entry for the mesh node itself (both
+/// noted in `defects`, as three.js and Blender load such files).
 inline void read_influences(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
                             std::size_t joint_count, std::uint32_t joint_base, std::uint32_t rigid_entry,
-                            const std::string& name, Mesh_part& part) {
+                            const std::string& name, Mesh_part& part, Weight_defects& defects) {
   const std::size_t n = part.vertex_count;
   const bool second_set = attribute(primitive, "JOINTS_1") >= 0 && attribute(primitive, "WEIGHTS_1") >= 0;
   part.influences = second_set ? 8 : 4;
@@ -120,15 +136,20 @@ inline void read_influences(const tinygltf::Model& model, const tinygltf::Primit
     for (std::size_t v = 0; v < n; ++v)
       for (std::size_t k = 0; k < 4; ++k) {
         const double joint = joints.element(v)[k], weight = weights.element(v)[k];
-        if (!(weight >= 0) || !std::isfinite(weight))
-          throw invalid_input(name + " vertex " + std::to_string(v) + " has weight " + std::to_string(weight) +
-                              "; glTF needs weights >= 0");
+        if (!(weight >= 0) || !std::isfinite(weight)) {
+          defects.note(defects.dropped_influences, name + " vertex " + std::to_string(v) + " has weight " +
+                                                       shortest_text(weight) + "; glTF needs finite weights >= 0");
+          continue;
+        }
         if (weight == 0) continue;
         // Checked before any conversion: a joint read from a signed or float accessor may be
         // negative, fractional or huge, and converting such a value to an integer is undefined.
-        if (!(joint >= 0 && joint < double(joint_count)) || joint != std::floor(joint))
-          throw invalid_input(name + " vertex " + std::to_string(v) + " refers to joint " + shortest_text(joint) +
-                              " of a skin with " + std::to_string(joint_count) + " joints");
+        if (!(joint >= 0 && joint < double(joint_count)) || joint != std::floor(joint)) {
+          defects.note(defects.dropped_influences, name + " vertex " + std::to_string(v) + " refers to joint " +
+                                                       shortest_text(joint) + " of a skin with " +
+                                                       std::to_string(joint_count) + " joints");
+          continue;
+        }
         part.joints[v * part.influences + set * 4 + k] = joint_base + std::uint32_t(joint);
         part.weights[v * part.influences + set * 4 + k] = weight;
       }
@@ -137,8 +158,10 @@ inline void read_influences(const tinygltf::Model& model, const tinygltf::Primit
     double* w = part.weights.data() + v * part.influences;
     double sum = 0;
     for (std::size_t k = 0; k < part.influences; ++k) sum += w[k];
-    if (sum == 0) {
-      w[0] = 1;  // no influence: the vertex stays rigid to the mesh node (joints are rigid_entry)
+    if (sum == 0) {  // no influence: the vertex stays rigid to the mesh node (joints are rigid_entry)
+      defects.note(defects.unweighted_vertices,
+                   name + " vertex " + std::to_string(v) + " has no weight; glTF needs weights summing to 1");
+      w[0] = 1;
       continue;
     }
     for (std::size_t k = 0; k < part.influences; ++k) w[k] /= sum;
@@ -184,6 +207,7 @@ struct Scene_geometry {
   std::vector<std::array<std::uint32_t, 3>> triangles{};
   std::vector<std::string> skipped{};
   std::size_t vertices = 0;
+  Weight_defects weights{};
 };
 
 /// Where each skin's joints start in the frame's joint table; after them come one entry per
@@ -263,7 +287,7 @@ inline Scene_geometry read_scene_geometry(const tinygltf::Model& model, const No
       if (instance.skin >= 0 && attribute(primitive, "JOINTS_0") >= 0 && attribute(primitive, "WEIGHTS_0") >= 0) {
         part.skin = instance.skin;
         read_influences(model, primitive, model.skins[std::size_t(instance.skin)].joints.size(),
-                        bases[std::size_t(instance.skin)], next_rigid_entry++, name, part);
+                        bases[std::size_t(instance.skin)], next_rigid_entry++, name, part, geometry.weights);
       }
       append_triangles(model, primitive, part, name, geometry.triangles);
       geometry.vertices += part.vertex_count;
