@@ -1,5 +1,6 @@
 // Reads a glTF 2.0 character: what the file holds (gltf_contents), one clip as an animation
-// (read_gltf), and every clip of it parsed once (Gltf_file).
+// (read_gltf), every clip of it parsed once (Gltf_file), and the clips of an animation-only file
+// (no mesh, as a motion library exports them) played on its body.
 //
 // With no argument it first writes a small skinned character itself, bend.gltf: a strip of
 // 2 x 4 squares on a two-bone skeleton whose second bone bends by 90 degrees in one second
@@ -9,12 +10,14 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <exception>
 #include <iomanip>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -130,6 +133,19 @@ void write_bending_strip(const std::string& path) {
     throw std::runtime_error("cannot write " + path);
 }
 
+// The clips of `path` alone, as an animation library exports them: its nodes and animations, no
+// mesh, no skin.
+void write_animation_only(const std::string& path, const std::string& out) {
+  tinygltf::TinyGLTF gltf;
+  tinygltf::Model model;
+  std::string error, warning;
+  if (!gltf.LoadASCIIFromFile(&model, &error, &warning, path)) throw std::runtime_error(error);
+  for (tinygltf::Node& node : model.nodes) node.mesh = node.skin = -1;
+  model.meshes.clear();
+  model.skins.clear();
+  if (!gltf.WriteGltfSceneToFile(&model, out, false, true, true, false)) throw std::runtime_error("cannot write " + out);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -171,6 +187,21 @@ int main(int argc, char** argv) {
       std::cout << "sampled clip '" << clip << "': " << sampled.report.frames << " frames of "
                 << sampled.num_vertices << " vertices, in the file's order\n";
     }
+
+    // [bind]
+    // The clips of an animation-only file played on the body: matched by the nodes' names.
+    write_animation_only(path, "moves.gltf");
+    const deformseg::io::Gltf_file bound(path, "moves.gltf");
+    for (const std::string& clip : bound.clip_names()) {
+      deformseg::io::Gltf_read_report moved;
+      const auto played = bound.read({.clip = clip}, &moved);
+      const bool same = std::ranges::equal(played.all_positions(), file.read({.clip = clip}).all_positions());
+      std::cout << "clip '" << clip << "' of moves.gltf on the body: " << played.num_frames() << " frames, "
+                << moved.animated_joints << " of " << moved.joints << " joints moved, "
+                << (same ? "the body's own frames" : "other frames") << "\n";
+      if (!same) return 1;
+    }
+    // [bind]
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "read_gltf: " << e.what() << "\n";

@@ -11,6 +11,7 @@
 
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -859,6 +860,26 @@ bool keep_no_image(tinygltf::Image*, const int, std::string*, std::string*, int,
   return true;
 }
 
+// A copy of the shared character `from` without its meshes, skins and textures: its nodes and
+// clips alone, as an animation library exports them.
+fs::path animation_only_copy(const fs::path& from, const std::string& name) {
+  tinygltf::TinyGLTF gltf;
+  gltf.SetImageLoader(&keep_no_image, nullptr);
+  tinygltf::Model model;
+  std::string err, warn;
+  REQUIRE(gltf.LoadBinaryFromFile(&model, &err, &warn, from.string()));
+  for (auto& node : model.nodes) node.mesh = node.skin = -1;
+  model.meshes.clear();
+  model.skins.clear();
+  model.images.clear();
+  model.textures.clear();
+  model.materials.clear();
+  const fs::path to = deformseg::test::scratch_dir() / "gltf" / name;
+  fs::create_directories(to.parent_path());
+  REQUIRE(gltf.WriteGltfSceneToFile(&model, to.string(), false, true, false, true));
+  return to;
+}
+
 // A copy of `from` whose scene roots hang below a new node that rotates, moves and scales them.
 fs::path moved_copy(const fs::path& from, const std::string& name) {
   tinygltf::TinyGLTF gltf;
@@ -969,4 +990,48 @@ TEST_CASE("gltf: read_animation reads a clip, welded by default, and refuses a t
   CHECK(run.num_frames() == 19);  // 1.158 s at 15 fps: 0 to 17 / 15 s, then the end
   CHECK(deformseg::io::animation_format(fox) == "glb");
   CHECK_THROWS_WITH(deformseg::io::read_animation(fox, {.topology = fox}), Contains("no topology mesh applies"));
+}
+
+TEST_CASE("gltf: a character's clips, stripped of its meshes, played on its body give its frames", "[gltf][data]") {
+  // Exactly: the stripped copy keeps the clips' bytes, and each channel finds its node by name.
+  for (const char* name : {"Fox.glb", "Knight.glb"}) {
+    INFO(name);
+    const fs::path body = characters() / name;
+    const fs::path clips = animation_only_copy(body, std::string("moves-") + name);
+    const deformseg::io::Gltf_file own(body), bound(body, clips);
+    REQUIRE(bound.clip_names() == own.clip_names());
+    for (const std::string& clip : own.clip_names()) {
+      INFO(clip);
+      deformseg::io::Gltf_read_report report;
+      const auto played = bound.read({.clip = clip}, &report);
+      CHECK(std::ranges::equal(played.all_positions(), own.read({.clip = clip}).all_positions()));
+      CHECK(report.joints > 0);
+      CHECK(report.animated_joints > 0);
+      CHECK(report.animated_joints <= report.joints);
+    }
+  }
+}
+
+TEST_CASE("gltf: the Knight's clips on the Barbarian's body are the Barbarian's own", "[gltf][data]") {
+  // The KayKit characters share one rig and byte-identical clips.
+  const fs::path barbarian = characters() / "Barbarian.glb", knight = characters() / "Knight.glb";
+  const deformseg::io::Gltf_file own(barbarian), bound(barbarian, knight);
+  const std::vector<std::string> names = own.clip_names();
+  std::size_t shared = 0;
+  for (const std::string& clip : bound.clip_names()) {
+    if (std::find(names.begin(), names.end(), clip) == names.end()) continue;
+    INFO(clip);
+    ++shared;
+    CHECK(std::ranges::equal(bound.read({.clip = clip}).all_positions(), own.read({.clip = clip}).all_positions()));
+  }
+  CHECK(shared == 76);
+}
+
+TEST_CASE("gltf: clips that move no node of the body are refused, naming both files", "[gltf][data]") {
+  const fs::path knight = characters() / "Knight.glb", fox = characters() / "Fox.glb";
+  const deformseg::io::Gltf_file bound(knight, fox);
+  CHECK(bound.clip_names() == deformseg::io::Gltf_file(fox).clip_names());
+  CHECK_THROWS_WITH(bound.read({.clip = "Walk"}), Contains(knight.string()) && Contains(fox.string()) &&
+                                                       Contains("animates no node of the body"));
+  CHECK_THROWS_WITH(deformseg::io::Gltf_file(knight, characters() / "missing.glb"), Contains("missing.glb"));
 }

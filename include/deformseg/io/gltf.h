@@ -19,6 +19,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/io/character_files.h>
 #include <deformseg/io/internal/gltf_animation.h>
+#include <deformseg/io/internal/gltf_binding.h>
 #include <deformseg/io/internal/gltf_mesh.h>
 #include <deformseg/io/internal/gltf_welding.h>
 #include <deformseg/internal/parallel_for.h>
@@ -45,9 +46,11 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -82,6 +85,8 @@ struct Gltf_read_report {
   /// @brief The primitives left out, one line each, e.g. "mesh 'X' primitive 1: mode LINES, skipped".
   std::vector<std::string> skipped{};
   Repair_report repair{};             ///< what the repair changed (`read_gltf` only)
+  std::size_t joints = 0;             ///< the joints of the body's skins
+  std::size_t animated_joints = 0;    ///< of them, those the clip moves (all of a file's own, usually)
 };
 
 /// @brief A clip sampled, before any repair: the vertices of every TRIANGLES primitive of every
@@ -262,11 +267,33 @@ inline void sample_frames(const Rig& rig, const Clip* clip, double fps, std::siz
   deformseg::internal::parallel_for_with_locals(frames, threads, 1, [] { return Pose_scratch{}; }, sample);
 }
 
-/// A parsed file and the scene's geometry, read once for any number of clips.
+/// A parsed file and the scene's geometry, read once for any number of clips; the clips of
+/// another file when it is bound to one (`Gltf_file`'s constructor of a body and its clips).
 struct Loaded_file {
   tinygltf::Model model{};
   Rig rig{};
+  std::optional<Bound_clips> clips{};
 };
+
+/// The model whose animations are the file's clips.
+inline const tinygltf::Model& clip_model(const Loaded_file& file) {
+  return file.clips ? *file.clips->model : file.model;
+}
+
+/// The clip `wanted` names among the file's clips (none for a file without animation), moving
+/// the file's nodes, with its index; errors in another file's clips name that file.
+inline std::optional<std::pair<std::size_t, Clip>> clip_of(const Loaded_file& file, const std::string& wanted) {
+  try {
+    const std::optional<std::size_t> index = select_clip(clip_model(file), wanted);
+    if (!index) return std::nullopt;
+    Clip clip = read_clip(clip_model(file), *index);
+    if (file.clips) clip = bound_clip(std::move(clip), file.model, *file.clips);
+    return std::pair{*index, std::move(clip)};
+  } catch (const invalid_input& e) {
+    if (!file.clips) throw;
+    throw e.located({.file = file.clips->file});
+  }
+}
 
 inline Loaded_file load_file(tinygltf::Model model) {
   Loaded_file file{.model = std::move(model)};
@@ -281,16 +308,16 @@ inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_opti
   check_options(options);
   const Rig& rig = file.rig;
   io::Sampled_gltf sampled;
-  const std::optional<std::size_t> clip_index = select_clip(file.model, options.clip);
-  std::optional<Clip> clip;
-  if (clip_index) clip = read_clip(file.model, *clip_index);
+  std::optional<std::pair<std::size_t, Clip>> chosen = clip_of(file, options.clip);
+  const Clip* clip = chosen ? &chosen->second : nullptr;
   auto& report = sampled.report;
   report.frames = clip ? frame_count(clip->start, clip->end, options.fps) : 1;
   if (clip) {
     report.clip = clip->name;
-    report.clip_index = *clip_index;
+    report.clip_index = chosen->first;
     report.start = clip->start;
     report.end = clip->end;
+    std::tie(report.animated_joints, report.joints) = animated_joints(file.model, *clip);
   }
   report.skipped = rig.geometry.skipped;
   if (report.frames > max_coordinates / (3 * rig.geometry.vertices))
@@ -298,7 +325,7 @@ inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_opti
                         " vertices exceed the " + std::to_string(max_coordinates) + " coordinates deformseg samples");
   sampled.num_vertices = rig.geometry.vertices;
   sampled.positions.resize(report.frames * 3 * rig.geometry.vertices);
-  sample_frames(rig, clip ? &*clip : nullptr, options.fps, report.frames, options.threads, sampled.positions);
+  sample_frames(rig, clip, options.fps, report.frames, options.threads, sampled.positions);
   sampled.triangles = rig.geometry.triangles;
   return sampled;
 }
@@ -307,11 +334,10 @@ inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_opti
 inline std::pair<std::optional<Clip>, std::size_t> clip_and_frames(const Loaded_file& file,
                                                                    const io::Gltf_read_options& options) {
   check_options(options);
-  const std::optional<std::size_t> index = select_clip(file.model, options.clip);
-  if (!index) return {std::nullopt, 1};
-  Clip clip = read_clip(file.model, *index);
-  const std::size_t frames = frame_count(clip.start, clip.end, options.fps);
-  return {std::move(clip), frames};
+  std::optional<std::pair<std::size_t, Clip>> chosen = clip_of(file, options.clip);
+  if (!chosen) return {std::nullopt, 1};
+  const std::size_t frames = frame_count(chosen->second.start, chosen->second.end, options.fps);
+  return {std::move(chosen->second), frames};
 }
 
 /// The connectivity every clip of the file shares: the scene's vertices welded by what the file
@@ -471,12 +497,37 @@ public:
     }
   }
 
+  /// @brief The clips of the file `clips` played on the body of the file `body`, as engines bind
+  /// an animation to a model: each channel of a clip moves the body's node of the same name as
+  /// the node it moves in `clips` (joints, and any node), channels of nodes the body has not are
+  /// left out. `clips` may hold no mesh (an animation-only export) or a body of its own (the same
+  /// rig's clips on another character); both files glTF, FBX or Collada. The geometry, skins and
+  /// rest pose are the body's; `clip_names` and the clips read are `clips`'s, and
+  /// `Gltf_read_report::animated_joints` says how many of the body's joints a clip moves. The
+  /// clips' translations are taken in the body's units: both files must share them.
+  /// @throws invalid_input naming the file, as the constructor from a path for `body`, as
+  /// tinygltf for `clips`; and, when a clip is read, naming `clips` (and mentioning `body`) for a
+  /// clip that does not exist, is malformed or moves no node of the body.
+  /// @par Complexity O(size of both files).
+  /// @par Example
+  /// @snippet read_gltf.cpp bind
+  Gltf_file(const std::filesystem::path& body, const std::filesystem::path& clips) : Gltf_file(body) {
+    try {
+      auto model = std::make_shared<const tinygltf::Model>(internal::gltf::load_model(clips));
+      internal::gltf::check_extensions(*model);
+      file_.clips = internal::gltf::Bound_clips{.model = model, .file = clips.string(), .body_file = body.string(),
+                                                .body_node = internal::gltf::body_nodes_by_name(file_.model, *model)};
+    } catch (const invalid_input& e) {
+      throw e.located({.file = clips.string()});
+    }
+  }
+
   /// @brief The file's path as given.
   const std::filesystem::path& path() const noexcept { return path_; }
   /// @brief The names of the file's clips (glTF animations), in the file's order (maybe empty).
   std::vector<std::string> clip_names() const {
     std::vector<std::string> names;
-    for (const auto& animation : file_.model.animations) names.push_back(animation.name);
+    for (const auto& animation : internal::gltf::clip_model(file_).animations) names.push_back(animation.name);
     return names;
   }
   /// @brief The number of vertices V a sampled clip has, before any repair.
