@@ -219,7 +219,7 @@ def test_an_animation_keeps_its_frame_rate(grid):
 def test_every_repair_count_comes_back_under_its_name(grid, tmp_path):
     faces, frames = deformseg.Animation(*grid(2, 2, 3)).__getstate__()[1:3]
     names = list(deformseg.read_animation(write_obj_frames(tmp_path / "frames")).repair)
-    assert len(names) == 12
+    assert len(names) == 14
     counts = {name: k + 1 for k, name in enumerate(names)}  # every count another value
     restored = new_of(deformseg.Animation)
     restored.__setstate__((1, faces, frames, 30.0, counts))

@@ -212,3 +212,21 @@ def test_find_clip_by_index(tool, fox):
 def test_strain_records_the_clip_and_fps(tool, fox):
     summary = tool("strain", f"{fox}#Run", "--fps", "12", "--json", "-").json()
     assert summary["sources"] == [{"file": str(fox), "clip": "Run", "fps": 12}]
+
+
+def test_clips_played_on_another_body(tool, scratch, characters):
+    # The Knight's clips on the Barbarian's body (one rig, byte-identical clips) are the Barbarian's
+    # own, to the byte of a point cache; info says how many joints the clip moves.
+    knight, barbarian = characters / "Knight.glb", characters / "Barbarian.glb"
+    for name, inputs in [("own", [f"{barbarian}#Idle"]), ("bound", [f"{knight}#Idle", "--body", barbarian])]:
+        succeeds(tool("convert", *inputs, scratch / f"body-{name}", "--format", "pc2"))
+    own, bound = scratch / "body-own", scratch / "body-bound"
+    assert (bound / "Knight.pc2").read_bytes() == (own / "Barbarian.pc2").read_bytes()
+    info = succeeds(tool("info", knight, "--clip", "Idle", "--body", barbarian, "--json", "-")).json()
+    assert info["gltf"]["body"] == str(barbarian)
+    assert 0 < info["gltf"]["animated_joints"] <= info["gltf"]["joints"]
+    # Clips that move nothing of the body, and a body for frames, are refused, named.
+    fails(tool("info", f"{characters / 'Fox.glb'}#Walk", "--body", knight), "animates no node of the body",
+          str(knight), "Fox.glb")
+    succeeds(tool("synth", scratch / "body-frames"))
+    fails(tool("info", scratch / "body-frames", "--body", knight), "--body applies to character files")
