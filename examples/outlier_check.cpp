@@ -4,12 +4,15 @@
 #include <deformseg/mesh/synthetic.h>
 
 #include <cstdio>
+#include <numbers>
 #include <span>
 #include <vector>
 
 int main() {
   using namespace deformseg;
-  const auto tube = mesh::make_bending_tube(mesh::Bending_tube{}).animation;
+  mesh::Bending_tube spec;
+  spec.schedule = {{10, {0.0}}, {10, {std::numbers::pi / 2}}, {10, {}}, {10, {0.0}}};  // 41 frames
+  const auto tube = mesh::make_bending_tube(spec).animation;
   const io::Outlier_check check(tube.frame_positions(0));
   std::printf("median radius %.3f\n", check.scale());
   std::size_t found = 0;
