@@ -20,6 +20,8 @@ Input_name input_name(const std::string& input, const Input_options& options, Fr
   const bool character = io::is_character_file(file);
   if (!character && !options.clip.empty())
     refuse_for(spelled("clip", front) + " applies to character files (glTF, FBX, Collada) only");
+  if (!character && !options.body.empty())
+    refuse_for(spelled("body", front) + " applies to character files (glTF, FBX, Collada) only");
   if (character && !options.topology.empty())
     refuse_for(spelled("topology", front) + " does not apply to a character file (glTF, FBX, Collada): it has its own");
   return {std::move(file), clip.value_or(options.clip)};
@@ -33,6 +35,10 @@ void check_clip_applies(const std::vector<std::string>& inputs, const Input_opti
                       {.file = io::split_clip_suffix(inputs.front()).first});
 }
 
+io::Gltf_file character_file(const std::string& file, const Input_options& options) {
+  return options.body.empty() ? io::Gltf_file(file) : io::Gltf_file(options.body, file);
+}
+
 io::Repair_options repair_options(const std::string& file, const Input_options& options) {
   return {.weld = options.weld.value_or(io::is_character_file(file)),
           .defects = options.refuse_defects ? io::Defect_policy::refuse : io::Defect_policy::repair};
@@ -41,7 +47,7 @@ io::Repair_options repair_options(const std::string& file, const Input_options& 
 namespace {
 
 Read_input read_gltf(Input_name name, const Input_options& options, bool first_clip_by_default) {
-  const io::Gltf_file file(name.file);
+  const io::Gltf_file file = character_file(name.file, options);
   if (!first_clip_by_default) io::require_clip_choice(file, name.clip);
   io::Gltf_read_report report;
   mesh::Surface_mesh_animation animation = file.read(

@@ -30,6 +30,7 @@ struct Input_options {
   std::optional<bool> weld{};  ///< none: the format's rule (character files welded, others not)
   bool refuse_defects = false;  ///< fail on degenerate or non-manifold triangles instead of repairing them
   int threads = 0;              ///< 0: all
+  std::string body{};           ///< character files: the body their clips play on (`io::Gltf_file`); empty: their own
 };
 
 /// The input options' table.
@@ -56,6 +57,12 @@ inline constexpr std::tuple input_parameters{
                                    "Fail on degenerate, duplicate or non-manifold triangles instead of repairing them"},
     numeric_parameter("threads", &Input_options::threads, "Threads to use (0: all); results do not depend on it",
                       thread_counts),
+    Parameter<Input_options, std::string>{
+        "body", &Input_options::body,
+        "glTF, FBX, Collada: a character file whose body the inputs' clips play on, each channel moving the "
+        "body's node of the same name (the inputs then give clips: animation-only exports, or another body of "
+        "the same rig)",
+        Parameter_kind::file},
 };
 
 /// Checks the options before any input is read (fps, threads).
@@ -69,13 +76,18 @@ struct Input_name {
 };
 
 /// `input` split into its file and its clip (after '#', else `options.clip`), refusing what does
-/// not apply to its format: a clip for a file that is not a character file, a topology for one.
+/// not apply to its format: a clip or a body for a file that is not a character file, a topology
+/// for one.
 /// @throws invalid_input naming the input.
 Input_name input_name(const std::string& input, const Input_options& options, Front front);
 
 /// Refuses a clip option that applies to none of `inputs`: each names its own after '#'.
 /// @throws invalid_input "the clip is given twice", naming the first input.
 void check_clip_applies(const std::vector<std::string>& inputs, const Input_options& options, Front front);
+
+/// The character file `file` parsed once for its clips, played on `options.body` when it names one.
+/// @throws invalid_input naming the file, as `io::Gltf_file`'s constructors.
+io::Gltf_file character_file(const std::string& file, const Input_options& options);
 
 /// The repair `options` ask of the input file `file`: welded by the format's rule unless `weld`
 /// says, defects repaired unless `refuse_defects`.

@@ -64,10 +64,11 @@ void add_gltf_clips(const std::string& file, const std::string& clip, double fps
   }
 }
 
-// The name of the only clip of a character file ("0" for an unnamed one, "" for none).
+// The name of the only clip of a character file ("0" for an unnamed one, "" for none), played on
+// `options.body` when it names one.
 // @throws invalid_input naming the file when it cannot be parsed or has several clips.
-std::string only_clip(const fs::path& file) {
-  const io::Gltf_file gltf(file);
+std::string only_clip(const fs::path& file, const Input_options& options) {
+  const io::Gltf_file gltf = character_file(file.string(), options);
   io::require_clip_choice(gltf, "");
   const std::vector<std::string> names = gltf.clip_names();
   return names.empty() ? "" : names.front().empty() ? "0" : names.front();
@@ -93,7 +94,7 @@ std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_o
     }
     std::string clip = row.item.clip.empty() ? options.clip : row.item.clip;
     if (clip.empty()) try {  // the file's only clip, as evaluate reads it
-        clip = only_clip(row.file);
+        clip = only_clip(row.file, options);
       } catch (const invalid_input& e) {
         if (!unreadable) throw;
         unreadable->push_back(file + ": " + e.what());
@@ -229,11 +230,12 @@ similarity::Policy_choice stored_policy_choice(const io::Motion_store& store) {
 }
 
 std::string input_options_text(const std::string& file, const Input_options& options) {
-  const nlohmann::json text = {{"fps", options.fps},
-                               {"topology", options.topology.empty() ? "" : canonical_path(options.topology)},
-                               {"triangulate", options.triangulate},
-                               {"weld", repair_options(file, options).weld},
-                               {"refuse_defects", options.refuse_defects}};
+  nlohmann::json text = {{"fps", options.fps},
+                         {"topology", options.topology.empty() ? "" : canonical_path(options.topology)},
+                         {"triangulate", options.triangulate},
+                         {"weld", repair_options(file, options).weld},
+                         {"refuse_defects", options.refuse_defects}};
+  if (!options.body.empty()) text["body"] = canonical_path(options.body);  // absent: the records before bodies
   return text.dump();
 }
 
@@ -246,6 +248,7 @@ Input_options recorded_input_options(const io::Store_record& record) {
     options.triangulate = o.at("triangulate").get<bool>();
     options.weld = o.at("weld").get<bool>();
     options.refuse_defects = o.at("refuse_defects").get<bool>();
+    options.body = o.value("body", std::string());
   } catch (const nlohmann::json::exception&) {
     return {};
   }
@@ -262,8 +265,10 @@ io::Store_record source_record(const Clip_source& clip, const Input_options& opt
   record.source_size = source.size;
   record.source_mtime_ns = source.mtime_ns;
   if (hash) record.source_hash = hash_files(files);
-  if (!options.topology.empty()) {
-    record.topology_path = canonical_path(options.topology);
+  // The file the input is read with, recorded as the topology: a point cache's topology, or a
+  // character's body (one or the other applies).
+  if (const std::string& companion = options.topology.empty() ? options.body : options.topology; !companion.empty()) {
+    record.topology_path = canonical_path(companion);
     const File_stamp topology = stamp(fs::path(record.topology_path));
     record.topology_size = topology.size;
     record.topology_mtime_ns = topology.mtime_ns;
@@ -417,8 +422,10 @@ Described_clip describe_clip(const Clip_source& clip, const io::Gltf_file* gltf,
 // the last (clips of other files may be described meanwhile, on other threads).
 class Gltf_parses {
 public:
-  // For the clips `order` names.
-  Gltf_parses(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& order) {
+  // For the clips `order` names, read with `options` (their body).
+  Gltf_parses(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& order,
+              const Input_options& options)
+      : options_(options) {
     for (const std::size_t i : order)
       if (io::is_character_file(clips[i].file)) ++files_[clips[i].file].clips_left;
   }
@@ -429,7 +436,7 @@ public:
     const std::lock_guard lock(entry.mutex);
     if (entry.error) std::rethrow_exception(entry.error);
     if (!entry.parsed) try {
-        entry.parsed = std::make_shared<const io::Gltf_file>(file);
+        entry.parsed = std::make_shared<const io::Gltf_file>(character_file(file, options_));
       } catch (...) {
         entry.error = std::current_exception();
         throw;
@@ -452,6 +459,7 @@ private:
     std::size_t clips_left = 0;
   };
   std::map<std::string, File> files_;  // made whole by the constructor: found concurrently, never added to
+  const Input_options& options_;
 };
 
 // Releases a clip's parse (`Gltf_parses::release`) when it is described or has failed; nothing for
@@ -577,7 +585,7 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
   std::vector<io::Store_record> records(clips.size());
   const std::vector<std::size_t> order =
       clips_to_describe(clips, options, run.hash, run.skip_unreadable, append->store(), records, report);
-  Gltf_parses parses(clips, order);
+  Gltf_parses parses(clips, order, options);
   Clip_progress progress(order.size(), say);
   const std::size_t batch = describe_batch(thread_count(options.threads));
   std::vector<Described_clip> described;

@@ -45,7 +45,7 @@ namespace {
 // describe_to_store's keywords: the input options, then the signatures' up direction.
 constexpr auto describe_table =
     std::tuple_cat(frontend::input_parameters, std::tuple{std::get<3>(frontend::policy_parameters)});
-static_assert(std::string_view(std::get<7>(describe_table).name) == "up");
+static_assert(std::string_view(std::get<8>(describe_table).name) == "up");
 
 io::Verify verify_of(const std::string& name) {
   frontend::check_choice("verify", name, store_verifications, frontend::Front::python);

@@ -48,6 +48,7 @@ def read_animation(
     weld: Optional[bool] = None,
     refuse_defects: bool = False,
     threads: int = 0,
+    body: Optional[_Path] = None,
 ) -> Animation: ...
 # A glTF file's clips: dicts of name, index, start, end, duration, frames and channels.
 def clips(path: _Path, fps: float = 30.0) -> List[dict[str, Any]]: ...
@@ -146,6 +147,7 @@ def describe_to_store(
     weld: Optional[bool] = None,
     refuse_defects: bool = False,
     threads: int = 0,
+    body: Optional[_Path] = None,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
     hash: bool = False,
     skip_unreadable: bool = False,

@@ -180,3 +180,14 @@ def test_absurd_coordinates_warn_or_are_refused(tmp_path):
     assert animation.num_frames == 3
     with pytest.raises(deformseg.InvalidInput, match="frame 1 vertex 5 lies 1e\\+20"):
         deformseg.read_animation(tmp_path, refuse_defects=True)
+
+
+def test_clips_played_on_another_body(characters):
+    # body=: the Knight's clips on the Barbarian's body (one rig, byte-identical clips) are the
+    # Barbarian's own; a body for frames is refused, by its keyword.
+    knight, barbarian = characters / "Knight.glb", characters / "Barbarian.glb"
+    bound = deformseg.read_animation(knight, clip="Idle", body=barbarian)
+    own = deformseg.read_animation(barbarian, clip="Idle")
+    assert np.array_equal(np.asarray(bound.frames), np.asarray(own.frames))
+    with pytest.raises(deformseg.InvalidInput, match="animates no node of the body"):
+        deformseg.read_animation(characters / "Fox.glb", clip="Walk", body=knight)

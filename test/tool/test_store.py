@@ -414,3 +414,20 @@ def test_evaluate_store_changed_clip(tool, scratch, clips):
     fails(tool("evaluate", labels, "--store", folder), "1 changed since described", str(copies[2].resolve()))
     assert describe(tool, folder, labels)["redescribed"] == [str(copies[2].resolve())]
     succeeds(tool("evaluate", labels, "--store", folder))
+
+
+def test_describe_with_a_body(tool, scratch, characters):
+    # The Knight's Idle on the Barbarian's body is the Barbarian's Idle: found at 1; the store
+    # records the body, and a body changed since describes the clip again.
+    body = scratch / "body-Barbarian.glb"
+    shutil.copyfile(characters / "Barbarian.glb", body)
+    folder = scratch / "store-body"
+    clip = f"{characters / 'Knight.glb'}#Idle"
+    assert len(describe(tool, folder, clip, extra=["--body", body])["described"]) == 1
+    (record,) = store_info(tool, folder)["clips"]
+    assert record["input_options"]["body"] == str(body.resolve())
+    found = tool("search", f"{characters / 'Barbarian.glb'}#Idle", "--store", folder, "-k", "1", "--json", "-")
+    assert found.json()["queries"][0]["neighbours"][0]["value"] == 1.0
+    assert describe(tool, folder, clip, extra=["--body", body])["skipped"] == [record["path"] + "#Idle"]
+    os.utime(body, ns=(time.time_ns(), time.time_ns() + 10**9))
+    assert describe(tool, folder, clip, extra=["--body", body])["redescribed"] == [record["path"] + "#Idle"]

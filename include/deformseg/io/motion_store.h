@@ -70,7 +70,8 @@ struct Store_record {
   std::int64_t source_mtime_ns = 0;
   /// @brief A hash of the source file's bytes (`hash_file`), or 0 for none.
   std::uint64_t source_hash = 0;
-  /// @brief The path of the topology (mesh) file the clip was read with; "" for none.
+  /// @brief The path of the file the clip was read with besides its source, "" for none: the
+  /// topology (mesh) of a point cache, or the body a character file's clip played on.
   std::string topology_path;
   /// @brief The topology file's size in bytes (0 without one).
   std::uint64_t topology_size = 0;

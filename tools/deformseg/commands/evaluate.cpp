@@ -76,7 +76,7 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
   }
   std::optional<io::Gltf_file> gltf;
   try {
-    gltf.emplace(file);
+    gltf.emplace(frontend::character_file(file.string(), o.read));
   } catch (const invalid_input& e) {
     return skip_or_throw(of_file, e);
   }

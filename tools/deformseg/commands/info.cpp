@@ -33,11 +33,12 @@ nlohmann::json bounding_box(const mesh::Surface_mesh_animation& animation) {
   return {{"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}};
 }
 
-// The clips, skins and meshes of a character file (an FBX or Collada file's as glTF holds them),
-// and the clip read.
-nlohmann::json gltf_json(const std::string& file, double fps, const io::Gltf_read_report& read) {
-  const io::Gltf_contents contents = io::gltf_contents(file, fps);
-  const nlohmann::json clips = frontend::clips_record(contents);
+// The clips of a character file (an FBX or Collada file's as glTF holds them), the skins and
+// meshes of its body (its own, or `body`'s), and the clip read.
+nlohmann::json gltf_json(const std::string& file, const std::string& body, double fps,
+                         const io::Gltf_read_report& read) {
+  const nlohmann::json clips = frontend::clips_record(io::gltf_contents(file, fps));
+  const io::Gltf_contents contents = io::gltf_contents(body.empty() ? file : body, fps);
   nlohmann::json skins = nlohmann::json::array();
   for (const auto& skin : contents.skins) skins.push_back({{"name", skin.name}, {"joints", skin.joints}});
   nlohmann::json meshes = nlohmann::json::array();
@@ -50,7 +51,13 @@ nlohmann::json gltf_json(const std::string& file, double fps, const io::Gltf_rea
                       {"primitives", primitives}});
   }
   return {{"clip", {{"name", read.clip}, {"start", read.start}, {"end", read.end}, {"fps", fps}}},
-          {"clips", clips}, {"skins", skins}, {"meshes", meshes}, {"skipped", read.skipped}};
+          {"clips", clips},
+          {"body", body.empty() ? nlohmann::json() : nlohmann::json(body)},
+          {"joints", read.joints},
+          {"animated_joints", read.animated_joints},
+          {"skins", skins},
+          {"meshes", meshes},
+          {"skipped", read.skipped}};
 }
 
 nlohmann::json describe(const Info_options& options, const frontend::Read_input& read) {
@@ -64,7 +71,7 @@ nlohmann::json describe(const Info_options& options, const frontend::Read_input&
                          {"bounding_box", bounding_box(animation)},
                          {"memory_bytes", animation.memory_bytes()},
                          {"repair", frontend::repair_record(read.repair)}};
-  if (read.gltf) info["gltf"] = gltf_json(read.name.file, options.read.fps, *read.gltf);
+  if (read.gltf) info["gltf"] = gltf_json(read.name.file, options.read.body, options.read.fps, *read.gltf);
   if (options.files) {
     nlohmann::json files = nlohmann::json::array();
     for (const auto& file : io::list_frame_files(read.name.file)) files.push_back(file.string());
@@ -83,6 +90,9 @@ void print_gltf(const nlohmann::json& gltf) {
     std::cout << "  " << std::left << std::setw(34) << c["name"].get<std::string>() << std::right << std::setw(8)
               << c["duration"].get<double>() << " s " << std::setw(5)
               << c["frames"] << " frames\n";
+  if (!gltf["body"].is_null())
+    std::cout << "body          " << gltf["body"].get<std::string>() << ", " << gltf["animated_joints"] << " of "
+              << gltf["joints"] << " joints moved\n";
   std::cout << "skins         " << gltf["skins"].size();
   for (const auto& s : gltf["skins"]) std::cout << " (" << s["joints"] << " joints)";
   std::cout << "\nmeshes        " << gltf["meshes"].size() << '\n';
