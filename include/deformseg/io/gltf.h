@@ -161,6 +161,49 @@ inline bool starts_with_glb_magic(const std::filesystem::path& path) {
   return in.gcount() == 4 && std::string(magic, 4) == "glTF";
 }
 
+/// Throws for a required extension deformseg cannot read: compressed geometry, or one it does not know.
+inline void refuse_unread_extension(const std::string& name) {
+  if (name == "KHR_draco_mesh_compression")
+    throw invalid_input("the file requires KHR_draco_mesh_compression (Draco-compressed geometry), which deformseg "
+                        "does not decode");
+  if (name == "EXT_meshopt_compression" || name == "KHR_meshopt_compression")
+    throw invalid_input("the file requires " + name + " (meshopt-compressed buffers), which deformseg does not decode");
+  // Extensions that change only the look of a file, or that deformseg reads.
+  const bool known = name == "KHR_mesh_quantization" || name == "KHR_texture_transform" ||
+                     name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name == "KHR_lights_punctual" ||
+                     name == "KHR_materials_variants" || name.starts_with("KHR_materials_");
+  if (!known) throw invalid_input("the file requires the glTF extension " + name + ", which deformseg does not know");
+}
+
+/// Refuses compressed geometry and any required extension deformseg does not know.
+inline void check_extensions(const tinygltf::Model& model) {
+  for (const std::string& name : model.extensionsRequired) refuse_unread_extension(name);
+}
+
+/// The names a glTF file lists as "extensionsRequired" (a GLB's in its JSON chunk, which comes
+/// first), found by scanning the text rather than parsing it: for a refusal that names them when
+/// tinygltf cannot read the file (a Draco-compressed file's accessors have no buffer view, which
+/// tinygltf refuses before any extension is looked at).
+inline std::vector<std::string> listed_required_extensions(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text(std::size_t(1) << 20, '\0');
+  in.read(text.data(), std::streamsize(text.size()));
+  text.resize(std::size_t(std::max<std::streamsize>(in.gcount(), 0)));
+  std::vector<std::string> names;
+  const std::size_t key = text.find("\"extensionsRequired\"");
+  if (key == std::string::npos) return names;
+  std::size_t at = text.find('[', key);
+  const std::size_t end = text.find(']', key);
+  if (at == std::string::npos || end == std::string::npos || end < at) return names;
+  while ((at = text.find('"', at)) < end) {
+    const std::size_t close = text.find('"', at + 1);
+    if (close > end) break;
+    names.push_back(text.substr(at + 1, close - at - 1));
+    at = close + 1;
+  }
+  return names;
+}
+
 /// Parses a .gltf or .glb file (told apart by the GLB magic, not the extension), or an FBX or
 /// Collada file (told by its extension) into the same structures.
 inline tinygltf::Model load_model(const std::filesystem::path& path) {
@@ -187,27 +230,11 @@ inline tinygltf::Model load_model(const std::filesystem::path& path) {
     err = e.what();
   }
   if (!loaded) {
+    for (const std::string& name : listed_required_extensions(path)) refuse_unread_extension(name);
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
     throw invalid_input("not a valid glTF file: " + (err.empty() ? std::string("tinygltf refused it") : err));
   }
   return model;
-}
-
-/// Refuses compressed geometry and any required extension deformseg does not know.
-inline void check_extensions(const tinygltf::Model& model) {
-  for (const std::string& name : model.extensionsRequired) {
-    if (name == "KHR_draco_mesh_compression")
-      throw invalid_input("the file requires KHR_draco_mesh_compression (Draco-compressed geometry), which deformseg "
-                          "does not decode");
-    if (name == "EXT_meshopt_compression" || name == "KHR_meshopt_compression")
-      throw invalid_input("the file requires " + name +
-                          " (meshopt-compressed buffers), which deformseg does not decode");
-    // Extensions that change only the look of a file, or that deformseg reads.
-    const bool known = name == "KHR_mesh_quantization" || name == "KHR_texture_transform" ||
-                       name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name == "KHR_lights_punctual" ||
-                       name == "KHR_materials_variants" || name.starts_with("KHR_materials_");
-    if (!known) throw invalid_input("the file requires the glTF extension " + name + ", which deformseg does not know");
-  }
 }
 
 /// The index of the clip `wanted` names (see `Gltf_read_options::clip`), or none when the file

@@ -175,41 +175,43 @@ inline void select_weighted_quantiles(std::span<Keyed_rate> rates, std::span<Key
   }
   // The buckets that hold levels: each with the weight below it, its quantiles and its place in `spare`.
   struct Part {
-    std::size_t bucket, first, last, begin, size;
+    std::size_t first, last, begin, size;
     double before;
     std::uint64_t low, high;
   };
-  std::array<Part, 64> parts;  // at most one per quantile, in rounds of 64
-  std::array<std::uint8_t, std::size_t(1) << max_bits> part_of;
-  std::fill_n(part_of.begin(), buckets, std::uint8_t(255));
-  std::size_t q = first, b = 0, used = 0, filled = 0;
+  // At most one per quantile: 64 in place, more (k > 64) on the heap.
+  std::array<Part, 64> near;
+  std::vector<Part> far;
+  const auto part = [&](std::size_t p) -> Part& { return p < near.size() ? near[p] : far[p - near.size()]; };
+  constexpr std::uint16_t none = 0xffff;
+  std::array<std::uint16_t, std::size_t(1) << max_bits> part_of;
+  std::fill_n(part_of.begin(), buckets, none);
+  std::size_t q = first, parts = 0, filled = 0;
   double cumulative = before;
-  const std::size_t last_bucket = buckets - 1;
-  while (q < last) {
-    used = 0, filled = 0;
-    for (; b <= last_bucket && q < last && used < parts.size(); ++b) {
-      if (count[b] == 0) continue;
-      const double through = cumulative + weight[b];
-      std::size_t end = q;
-      while (end < last && (b == last_bucket || quantile_level(end, k) <= through)) ++end;
-      if (end > q) {
-        parts[used] = {b, q, end, filled, 0, cumulative, ~std::uint64_t(0), 0};
-        part_of[b] = std::uint8_t(used++), filled += count[b];
-      }
-      q = end, cumulative = through;
+  for (std::size_t b = 0; b < buckets && q < last; ++b) {
+    if (count[b] == 0) continue;
+    const double through = cumulative + weight[b];
+    std::size_t end = q;
+    while (end < last && (b + 1 == buckets || quantile_level(end, k) <= through)) ++end;
+    if (end > q) {
+      const Part made{q, end, filled, 0, cumulative, ~std::uint64_t(0), 0};
+      if (parts < near.size()) near[parts] = made;
+      else far.push_back(made);
+      part_of[b] = std::uint16_t(parts++), filled += count[b];
     }
-    for (const Keyed_rate& r : rates)
-      if (const std::uint8_t p = part_of[bucket(r.key)]; p != 255) {
-        Part& part = parts[p];
-        spare[part.begin + part.size++] = r;
-        part.low = std::min(part.low, r.key), part.high = std::max(part.high, r.key);
-      }
-    for (std::size_t i = 0; i < used; ++i) {
-      const Part& part = parts[i];
-      part_of[part.bucket] = 255;
-      select_weighted_quantiles(spare.subspan(part.begin, part.size), rates.subspan(part.begin, part.size),
-                                part.before, part.first, part.last, k, part.low, part.high, out);
+    q = end, cumulative = through;
+  }
+  for (const Keyed_rate& r : rates)
+    if (const std::uint16_t p = part_of[bucket(r.key)]; p != none) {
+      Part& into = part(p);
+      spare[into.begin + into.size++] = r;
+      into.low = std::min(into.low, r.key), into.high = std::max(into.high, r.key);
     }
+  // Each part's rates are in `spare` now; `rates` serves as their scratch.
+  for (std::size_t p = 0; p < parts; ++p) {
+    const Part& into = part(p);
+    select_weighted_quantiles(spare.subspan(into.begin, into.size), rates.subspan(into.begin, into.size),
+                              into.before, into.first, into.last, k, into.low, into.high, out);
   }
 }
 
