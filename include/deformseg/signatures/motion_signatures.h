@@ -136,9 +136,9 @@ private:
 /// The quantiles `first` to `last` (exclusive) of `k`, all of which lie in `rates` (whose keys are
 /// in [low, high]) after the weight `before` of the rates below it, into `out`: a radix selection.
 /// The rates are counted into `Key_buckets` (at most 1024, about 4 rates a bucket), the buckets'
-/// weights summed up to each level, and only the rates of
-/// the buckets that hold a level gathered into `spare` (as long as `rates`) and selected from
-/// further; parts of at most 32 rates are sorted and walked.
+/// weights summed up to each level, and only the rates of the buckets that hold a level gathered
+/// into `spare` (as long as `rates`) and selected from further; parts of at most 32 rates are
+/// sorted and walked.
 inline void select_weighted_quantiles(std::span<Keyed_rate> rates, std::span<Keyed_rate> spare, double before,
                                       std::size_t first, std::size_t last, std::size_t k, std::uint64_t low,
                                       std::uint64_t high, double* out) {
@@ -377,7 +377,8 @@ struct Row_scratch {
 template <class FrameOf>
 void signature_row(const Signature_rows& rows, const FrameOf& frame_of, std::span<const double> weights,
                    double instant, double* row, Row_scratch& scratch) {
-  std::vector<Keyed_rate>&speeds = scratch.speeds, &rises = scratch.rises;
+  std::vector<Keyed_rate>& speeds = scratch.speeds;
+  std::vector<Keyed_rate>& rises = scratch.rises;
   const Motion_signature_options& options = rows.options;
   const std::size_t vertices = weights.size(), k = options.quantiles, lags = options.lags.size();
   const double vertical_factor = std::sqrt(options.vertical_weight);
