@@ -149,7 +149,7 @@ def _describe_batch(names, root, options, on_error):
         if on_error == "raise":
             shutil.rmtree(part, ignore_errors=True)
             raise
-    shutil.rmtree(part, ignore_errors=True)  # one commit per batch: nothing of it was written
+    shutil.rmtree(part, ignore_errors=True)  # what it committed before the bad clip: made again below
     failed = []
     for name in names:
         try:
