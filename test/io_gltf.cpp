@@ -873,51 +873,50 @@ bool keep_no_image(tinygltf::Image*, const int, std::string*, std::string*, int,
   return true;
 }
 
-// A copy of the shared character `from` without its meshes, skins and textures: its nodes and
-// clips alone, as an animation library exports them.
-fs::path animation_only_copy(const fs::path& from, const std::string& name) {
+// A copy of the shared character `from`, its geometry only (no texture to write back), changed by
+// `edit(model)`, written as scratch/gltf/name.
+template <class Edit>
+fs::path edited_copy(const fs::path& from, const std::string& name, const Edit& edit) {
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(&keep_no_image, nullptr);
   tinygltf::Model model;
   std::string err, warn;
   REQUIRE(gltf.LoadBinaryFromFile(&model, &err, &warn, from.string()));
-  for (auto& node : model.nodes) node.mesh = node.skin = -1;
-  model.meshes.clear();
-  model.skins.clear();
   model.images.clear();
   model.textures.clear();
   model.materials.clear();
+  for (auto& mesh : model.meshes)
+    for (auto& primitive : mesh.primitives) primitive.material = -1;
+  edit(model);
   const fs::path to = deformseg::test::scratch_dir() / "gltf" / name;
   fs::create_directories(to.parent_path());
   REQUIRE(gltf.WriteGltfSceneToFile(&model, to.string(), false, true, false, true));
   return to;
 }
 
+// A copy of `from` without its meshes and skins: its nodes and clips alone, as an animation
+// library exports them.
+fs::path animation_only_copy(const fs::path& from, const std::string& name) {
+  return edited_copy(from, name, [](tinygltf::Model& model) {
+    for (auto& node : model.nodes) node.mesh = node.skin = -1;
+    model.meshes.clear();
+    model.skins.clear();
+  });
+}
+
 // A copy of `from` whose scene roots hang below a new node that rotates, moves and scales them.
 fs::path moved_copy(const fs::path& from, const std::string& name) {
-  tinygltf::TinyGLTF gltf;
-  gltf.SetImageLoader(&keep_no_image, nullptr);
-  tinygltf::Model model;
-  std::string err, warn;
-  REQUIRE(gltf.LoadBinaryFromFile(&model, &err, &warn, from.string()));
-  model.images.clear();  // geometry only: no texture to write back
-  model.textures.clear();
-  model.materials.clear();
-  for (auto& mesh : model.meshes)
-    for (auto& primitive : mesh.primitives) primitive.material = -1;
-  tinygltf::Node parent;
-  parent.name = "moved";
-  parent.translation = {3, -2, 5};
-  parent.rotation = {0.2, -0.4, 0.1, std::sqrt(1 - 0.04 - 0.16 - 0.01)};
-  parent.scale = {2.5, 2.5, 2.5};
-  auto& scene = model.scenes.at(std::size_t(std::max(model.defaultScene, 0)));
-  parent.children = scene.nodes;
-  model.nodes.push_back(parent);
-  scene.nodes = {int(model.nodes.size()) - 1};
-  const fs::path to = deformseg::test::scratch_dir() / "gltf" / name;
-  fs::create_directories(to.parent_path());
-  REQUIRE(gltf.WriteGltfSceneToFile(&model, to.string(), false, true, false, true));
-  return to;
+  return edited_copy(from, name, [](tinygltf::Model& model) {
+    tinygltf::Node parent;
+    parent.name = "moved";
+    parent.translation = {3, -2, 5};
+    parent.rotation = {0.2, -0.4, 0.1, std::sqrt(1 - 0.04 - 0.16 - 0.01)};
+    parent.scale = {2.5, 2.5, 2.5};
+    auto& scene = model.scenes.at(std::size_t(std::max(model.defaultScene, 0)));
+    parent.children = scene.nodes;
+    model.nodes.push_back(parent);
+    scene.nodes = {int(model.nodes.size()) - 1};
+  });
 }
 
 }  // namespace
