@@ -305,15 +305,18 @@ std::vector<Motion_match> find_cut_windows(const Policy& policy, const typename 
     std::vector<Window> missing;
     for (const Window& w : windows)
       if (!scored.count(w) && std::find(missing.begin(), missing.end(), w) == missing.end()) missing.push_back(w);
+    if (missing.empty()) return;
     std::vector<std::optional<Similarity>> values(missing.size());
     deformseg::internal::parallel_for(missing.size(), 0, [&](std::size_t i) {
       values[i] = policy.compare(query, policy.describe(long_animation.frames(missing[i].first, missing[i].second)));
     });
     for (std::size_t i = 0; i < missing.size(); ++i) scored.emplace(missing[i], std::move(*values[i]));
   };
+  // Looked up in the sorts and climbs below: scored first when it is not yet.
   const auto value_of = [&](Window w) {
-    score({w});
-    return scored.at(w).value;
+    auto found = scored.find(w);
+    if (found == scored.end()) score({w}), found = scored.find(w);
+    return found->second.value;
   };
   // From a window, the neighbour (an end or both moved by one frame, inside [lowest, highest] and
   // the lengths) of highest value, while one is higher.
