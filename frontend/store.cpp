@@ -648,6 +648,20 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
   return report;
 }
 
+Describe_report describe_inputs(const std::string& folder, const std::vector<std::string>& inputs,
+                                const Input_options& options, const similarity::Default_similarity& policy,
+                                const Describe_run& run, const std::function<void(const std::string&)>& say) {
+  std::vector<std::string> poses, unlisted;
+  const std::vector<Clip_source> clips = clip_sources(inputs, options, poses, run.skip_unreadable ? &unlisted : nullptr);
+  say(std::to_string(clips.size()) + " clip(s) named by the inputs");
+  for (const std::string& pose : poses) say("left out " + pose + ": a pose of 1 frame, no motion");
+  for (const std::string& input : unlisted) say("left out " + input);
+  Describe_report report = describe_into_store(folder, clips, options, policy, run, say);
+  report.unreadable.insert(report.unreadable.begin(), unlisted.begin(), unlisted.end());
+  report.poses = std::move(poses);
+  return report;
+}
+
 Description_plan plan_description(const std::string& folder, const std::vector<Clip_source>& clips,
                                   const Input_options& options, const similarity::Default_similarity& policy,
                                   bool hash) {

@@ -100,6 +100,7 @@ struct Describe_report {
   /// Clips left out because they could not be read or described (with `skip_unreadable`), each
   /// "NAME: the error".
   std::vector<std::string> unreadable;
+  std::vector<std::string> poses;        ///< clips of 1 frame left out (`describe_inputs`), no motion
   std::size_t clips = 0;                 ///< the store's clips after the run
 };
 
@@ -138,6 +139,15 @@ struct Describe_run {
 Describe_report describe_into_store(const std::string& folder, const std::vector<Clip_source>& clips,
                                     const Input_options& options, const similarity::Default_similarity& policy,
                                     const Describe_run& run, const std::function<void(const std::string&)>& say);
+
+/// `describe_into_store` of the clips that `inputs` name (`clip_sources`): `say` gets their count
+/// and a line per pose left out (`Describe_report::poses`); with `run.skip_unreadable`, an input
+/// whose clips cannot even be listed (a character file that does not parse) is left out too, named
+/// first in `Describe_report::unreadable`.
+/// @throws invalid_input as `clip_sources` and `describe_into_store`.
+Describe_report describe_inputs(const std::string& folder, const std::vector<std::string>& inputs,
+                                const Input_options& options, const similarity::Default_similarity& policy,
+                                const Describe_run& run, const std::function<void(const std::string&)>& say);
 
 /// What describing `clips` into a store would do, before any is described.
 struct Description_plan {

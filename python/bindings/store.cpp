@@ -93,21 +93,17 @@ py::dict describe_to_store(const py::object& inputs, const std::filesystem::path
   const similarity::Default_similarity policy = frontend::store_policy(choice, frontend::Front::python);
   frontend::check(options, frontend::Front::python);
   frontend::check_clip_applies(paths, options, frontend::Front::python);
-  std::vector<std::string> poses, unlisted;
   frontend::Describe_report report;
   {
     Interruptible_call call;
     const Default_threads_scope threads(options.threads);
-    const std::vector<frontend::Clip_source> clips =
-        frontend::clip_sources(paths, options, poses, skip_unreadable ? &unlisted : nullptr);
-    report = frontend::describe_into_store(
-        store.string(), clips, options, policy,
+    report = frontend::describe_inputs(
+        store.string(), paths, options, policy,
         {.hash = hash, .skip_unreadable = skip_unreadable, .front = frontend::Front::python}, [](const std::string&) {});
   }
-  report.unreadable.insert(report.unreadable.begin(), unlisted.begin(), unlisted.end());
   return py::dict("store"_a = store.string(), "clips"_a = report.clips, "described"_a = report.described,
                   "redescribed"_a = report.redescribed, "skipped"_a = report.skipped,
-                  "unreadable"_a = report.unreadable, "poses_left_out"_a = poses);
+                  "unreadable"_a = report.unreadable, "poses_left_out"_a = report.poses);
 }
 
 // What `describe` of deformseg.distributed hands out: the clips describe_to_store would describe, in

@@ -50,25 +50,17 @@ void run_describe(const Describe_options& o) {
   frontend::check(o.read, frontend::Front::command_line);
   set_default_threads(o.read.threads);
   const auto start = std::chrono::steady_clock::now();
-  std::vector<std::string> poses, unlisted;
-  const std::vector<frontend::Clip_source> clips =
-      frontend::clip_sources(o.inputs, o.read, poses, o.skip_unreadable ? &unlisted : nullptr);
-  progress(std::to_string(clips.size()) + " clip(s) named by the inputs");
-  for (const std::string& pose : poses) progress("left out " + pose + ": a pose of 1 frame, no motion");
-  for (const std::string& input : unlisted) progress("left out " + input);
-  frontend::Describe_report report =
-      frontend::describe_into_store(o.store, clips, o.read, policy, {.hash = o.hash, .skip_unreadable = o.skip_unreadable},
-                                    progress);
-  report.unreadable.insert(report.unreadable.begin(), unlisted.begin(), unlisted.end());
+  const frontend::Describe_report report = frontend::describe_inputs(
+      o.store, o.inputs, o.read, policy, {.hash = o.hash, .skip_unreadable = o.skip_unreadable}, progress);
   const double seconds = seconds_since(start);
   const nlohmann::json document = {{"store", o.store},         {"clips", report.clips},
                                    {"described", report.described}, {"redescribed", report.redescribed},
                                    {"skipped", report.skipped},  {"unreadable", report.unreadable},
-                                   {"poses_left_out", poses},    {"seconds", seconds}};
+                                   {"poses_left_out", report.poses}, {"seconds", seconds}};
   write_outputs(document, o.json, [&] {
     std::cout << "described    " << report.described.size() << "\nre-described " << report.redescribed.size()
               << "\nskipped      " << report.skipped.size() << " (unchanged)\nunreadable   "
-              << report.unreadable.size() << " (left out by --skip-unreadable)\nleft out     " << poses.size()
+              << report.unreadable.size() << " (left out by --skip-unreadable)\nleft out     " << report.poses.size()
               << " (poses of 1 frame in character files read whole)\nstore        " << o.store << ", "
               << report.clips << " clips\n";
     for (const auto& name : report.described) std::cout << "  described    " << name << '\n';
