@@ -54,8 +54,9 @@ inline double metres_per_unit(const aiScene& scene) {
 }
 
 /// Writes an Assimp scene as a glTF model: a root node in metres (scaling by `metres`) above the
-/// scene's node tree, the meshes and skins, the clips. See `fbx_collada_model`.
-inline tinygltf::Model model_of(const aiScene& scene, double metres) {
+/// scene's node tree, the meshes and skins (bone offsets taken by `rule`), the clips. See
+/// `fbx_collada_model`.
+inline tinygltf::Model model_of(const aiScene& scene, double metres, Bind_rule rule = Bind_rule::as_stored) {
   if (!scene.mRootNode) throw invalid_input("the scene has no root node");
   tinygltf::Model model;
   model.asset.version = "2.0";
@@ -67,7 +68,7 @@ inline tinygltf::Model model_of(const aiScene& scene, double metres) {
   model.nodes.push_back(units);
   const Node_table nodes = write_nodes(*scene.mRootNode, animated_nodes(scene), model);
   model.nodes.front().children = {int(nodes.base)};
-  const std::vector<int> node_of_mesh = write_meshes(scene, nodes, writer, model);
+  const std::vector<int> node_of_mesh = write_meshes(scene, nodes, rule, writer, model);
   write_clips(scene, nodes, node_of_mesh, writer, model);
   model.scenes.push_back({});
   model.scenes.front().nodes = {0};
@@ -106,7 +107,8 @@ inline tinygltf::Model model_from_bytes(const std::string& bytes, const std::str
       throw invalid_input("the file has a Collada morph controller (<morph>) that Assimp does not import (a morph "
                           "under a skin): its targets would be lost");
   }
-  return model_of(*scene, format == "fbx" ? metres_per_unit(*scene) : 1.0);
+  if (format == "fbx") return model_of(*scene, metres_per_unit(*scene), Bind_rule::fbx_sdk);
+  return model_of(*scene, 1.0);
 }
 
 }  // namespace deformseg::io::internal::assimp
@@ -127,9 +129,9 @@ inline constexpr std::size_t max_fbx_collada_bytes = std::size_t(1) << 31;
 /// - every node becomes a glTF node (a node some clip moves as translation, rotation and scale,
 ///   else as its matrix);
 /// - a node's meshes (Assimp splits a mesh per material) become one glTF mesh of one primitive
-///   each, with one skin of their bones (bone offsets are inverse bind matrices), the 8 largest
-///   weights of each vertex kept (glTF's reader then divides them by their sum), morph targets
-///   as deltas;
+///   each, with one skin of their bones (bone offsets are inverse bind matrices; an FBX bone's
+///   as Autodesk's FBX SDK gives it, its bind matrix without shear), the 8 largest weights of
+///   each vertex kept (glTF's reader then divides them by their sum), morph targets as deltas;
 /// - every clip becomes a glTF animation of its name, key times in seconds (ticks per second, 25
 ///   when the file gives none), interpolated linearly.
 ///

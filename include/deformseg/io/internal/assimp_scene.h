@@ -1,6 +1,7 @@
 // An Assimp scene's node tree, meshes, skins and morph targets written as glTF nodes, meshes and
-// skins (io/fbx_collada.h): Assimp's bone offset is glTF's inverse bind matrix, its bones name
-// the joint nodes, its morph targets are absolute positions (glTF's are deltas).
+// skins (io/fbx_collada.h): Assimp's bone offset is glTF's inverse bind matrix (an FBX bone's as
+// the FBX SDK holds it), its bones name the joint nodes, its morph targets are absolute positions
+// (glTF's are deltas).
 #pragma once
 
 #include <deformseg/exceptions.h>
@@ -11,10 +12,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
@@ -106,15 +109,75 @@ inline Node_table write_nodes(const aiNode& root, const std::set<std::string>& a
   return table;
 }
 
+/// Where a bone's offset (glTF's inverse bind matrix) comes from.
+enum class Bind_rule {
+  as_stored,  ///< Assimp's offset, as the file stores it (Collada, scenes built in memory)
+  fbx_sdk,    ///< as Autodesk's FBX SDK reads an FBX file's (`fbx_sdk_offset`)
+};
+
+using Matrix = aiMatrix4x4t<double>;
+
+/// `m` as a translation, XYZ Euler angles and a scale, as the FBX SDK holds an affine matrix
+/// (FbxAMatrix): the scale is the columns' lengths, the angles are read from entries of the
+/// columns made unit, and any shear is lost. A matrix with a zero column is kept.
+inline Matrix without_shear(const Matrix& m) {
+  const double sx = std::hypot(m.a1, m.b1, m.c1), sy = std::hypot(m.a2, m.b2, m.c2), sz = std::hypot(m.a3, m.b3, m.c3);
+  if (!(sx > 0 && sy > 0 && sz > 0)) return m;
+  const double cos_y = std::hypot(m.a1 / sx, m.b1 / sx);
+  double x = 0, z = 0;
+  const double y = std::atan2(-m.c1 / sx, cos_y);
+  if (cos_y > 16 * FLT_EPSILON) {
+    x = std::atan2(m.c2 / sy, m.c3 / sz);
+    z = std::atan2(m.b1 / sx, m.a1 / sx);
+  } else {
+    x = std::atan2(-m.b3 / sz, m.b2 / sy);  // gimbal lock: x and z turn about one axis, z is 0
+  }
+  Matrix rx, ry, rz, scale;
+  Matrix result = Matrix::RotationZ(z, rz) * Matrix::RotationY(y, ry) * Matrix::RotationX(x, rx) *
+                  Matrix::Scaling({sx, sy, sz}, scale);
+  result.a4 = m.a4;
+  result.b4 = m.b4;
+  result.c4 = m.c4;
+  return result;
+}
+
+/// The offset the FBX SDK gives a bone whose offset Assimp reads as `offset`, on a mesh of
+/// global transform `mesh`. An FBX cluster stores the bone's global transform at bind time
+/// (TransformLink, here mesh x offset^-1); the SDK holds it as an FbxAMatrix (`without_shear`),
+/// and its inverse bind matrix is that matrix's inverse x TransformLink x offset. The two differ
+/// on a bone below a non-uniformly scaled one (Blender writes scales within 1e-4 of 1 on legs):
+/// its bind matrix has a shear of about 1e-4, which the angles turn into rotations of up to 0.015
+/// rad near gimbal lock. Returns `offset` when a matrix is singular.
+inline aiMatrix4x4 fbx_sdk_offset(const aiMatrix4x4& offset, const Matrix& mesh) {
+  const Matrix stored = Matrix(offset);
+  Matrix link = stored;
+  if (link.Determinant() == 0) return offset;
+  link = mesh * link.Inverse();
+  Matrix held = without_shear(link);
+  if (held.Determinant() == 0) return offset;
+  const aiMatrix4x4 result = aiMatrix4x4(held.Inverse() * link * stored);
+  return finite(result) ? result : offset;
+}
+
+/// The global transform of `node` in its scene.
+inline Matrix global_transform(const aiNode& node) {
+  Matrix global = Matrix(node.mTransformation);
+  for (const aiNode* parent = node.mParent; parent; parent = parent->mParent)
+    global = Matrix(parent->mTransformation) * global;
+  return global;
+}
+
 /// A bone of a mesh: its joint node and its offset (glTF's inverse bind matrix).
 struct Joint {
   std::size_t node = 0;
   aiMatrix4x4 offset{};
 };
 
-/// The joints of a mesh, from its bones, each bone's name naming a node.
+/// The joints of a mesh, from its bones, each bone's name naming a node; their offsets as
+/// `fbx_sdk_offset` takes them when `mesh_global` (the mesh's node's global transform) is given.
 /// @throws invalid_input for a bone that names no node, or a non-finite offset.
-inline std::vector<Joint> mesh_joints(const aiScene& scene, std::size_t mesh, const Node_table& nodes) {
+inline std::vector<Joint> mesh_joints(const aiScene& scene, std::size_t mesh, const Node_table& nodes,
+                                      const std::optional<Matrix>& mesh_global = std::nullopt) {
   const aiMesh& m = *scene.mMeshes[mesh];
   std::vector<Joint> joints;
   for (unsigned b = 0; b < m.mNumBones; ++b) {
@@ -125,7 +188,8 @@ inline std::vector<Joint> mesh_joints(const aiScene& scene, std::size_t mesh, co
                           "' names no node of the scene: its vertices cannot follow it");
     if (!finite(bone.mOffsetMatrix))
       throw invalid_input(mesh_name(scene, mesh) + " bone '" + name_of(bone.mName) + "' has a non-finite offset");
-    joints.push_back({found->second, bone.mOffsetMatrix});
+    const aiMatrix4x4& stored = bone.mOffsetMatrix;
+    joints.push_back({found->second, mesh_global ? fbx_sdk_offset(stored, *mesh_global) : stored});
   }
   return joints;
 }
@@ -148,14 +212,17 @@ inline bool joins(const Mesh_group& group, const std::vector<Joint>& joints, boo
 /// The node's meshes grouped so that each group is one glTF mesh with at most one skin: Assimp
 /// splits a mesh per material, and its parts share their bones, so a node has one group but for
 /// unusual files (a part unskinned, or the same bone bound at two poses).
-inline std::vector<Mesh_group> group_meshes(const aiScene& scene, const aiNode& node, const Node_table& nodes) {
+inline std::vector<Mesh_group> group_meshes(const aiScene& scene, const aiNode& node, const Node_table& nodes,
+                                            Bind_rule rule) {
   std::vector<Mesh_group> groups;
+  const std::optional<Matrix> mesh_global =
+      rule == Bind_rule::fbx_sdk && node.mNumMeshes > 0 ? std::optional(global_transform(node)) : std::nullopt;
   for (unsigned k = 0; k < node.mNumMeshes; ++k) {
     const std::size_t mesh = node.mMeshes[k];
     if (mesh >= scene.mNumMeshes)
       throw invalid_input("node '" + name_of(node.mName) + "' refers to mesh " + std::to_string(mesh) +
                           ", which does not exist");
-    const std::vector<Joint> joints = mesh_joints(scene, mesh, nodes);
+    const std::vector<Joint> joints = mesh_joints(scene, mesh, nodes, mesh_global);
     const bool skinned = !joints.empty();
     const auto joinable = [&](const Mesh_group& g) { return joins(g, joints, skinned); };
     auto group = std::find_if(groups.begin(), groups.end(), joinable);
@@ -302,12 +369,13 @@ inline std::pair<int, int> write_group(const aiScene& scene, const Mesh_group& g
 }
 
 /// Writes every node's meshes: the first group on the node itself, any other on a child node of
-/// identity transform. Returns, for each Assimp mesh, the glTF node that shows it.
-inline std::vector<int> write_meshes(const aiScene& scene, const Node_table& nodes, Model_writer& writer,
-                                     tinygltf::Model& model) {
+/// identity transform, bone offsets taken by `rule`. Returns, for each Assimp mesh, the glTF node
+/// that shows it.
+inline std::vector<int> write_meshes(const aiScene& scene, const Node_table& nodes, Bind_rule rule,
+                                     Model_writer& writer, tinygltf::Model& model) {
   std::vector<int> node_of_mesh(scene.mNumMeshes, -1);
   for (std::size_t n = 0; n < nodes.source.size(); ++n) {
-    const std::vector<Mesh_group> groups = group_meshes(scene, *nodes.source[n], nodes);
+    const std::vector<Mesh_group> groups = group_meshes(scene, *nodes.source[n], nodes, rule);
     for (std::size_t g = 0; g < groups.size(); ++g) {
       const auto [mesh, skin] = write_group(scene, groups[g], nodes, writer, model);
       std::size_t holder = nodes.base + n;
