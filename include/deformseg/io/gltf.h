@@ -19,7 +19,9 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/io/character_files.h>
 #include <deformseg/io/internal/gltf_animation.h>
+#include <deformseg/io/internal/file_io.h>
 #include <deformseg/io/internal/gltf_binding.h>
+#include <deformseg/io/internal/gltf_decompression.h>
 #include <deformseg/io/internal/gltf_mesh.h>
 #include <deformseg/io/internal/gltf_welding.h>
 #include <deformseg/internal/parallel_for.h>
@@ -154,58 +156,23 @@ inline bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*
   return true;
 }
 
-inline bool starts_with_glb_magic(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[4] = {};
-  in.read(magic, 4);
-  return in.gcount() == 4 && std::string(magic, 4) == "glTF";
-}
-
-/// Throws for a required extension deformseg cannot read: compressed geometry, or one it does not know.
+/// Throws for a required extension deformseg does not know; those that change only the look of a
+/// file are let through (compressed geometry is decoded before tinygltf parses the file).
 inline void refuse_unread_extension(const std::string& name) {
-  if (name == "KHR_draco_mesh_compression")
-    throw invalid_input("the file requires KHR_draco_mesh_compression (Draco-compressed geometry), which deformseg "
-                        "does not decode");
-  if (name == "EXT_meshopt_compression" || name == "KHR_meshopt_compression")
-    throw invalid_input("the file requires " + name + " (meshopt-compressed buffers), which deformseg does not decode");
-  // Extensions that change only the look of a file, or that deformseg reads.
   const bool known = name == "KHR_mesh_quantization" || name == "KHR_texture_transform" ||
                      name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name == "KHR_lights_punctual" ||
                      name == "KHR_materials_variants" || name.starts_with("KHR_materials_");
   if (!known) throw invalid_input("the file requires the glTF extension " + name + ", which deformseg does not know");
 }
 
-/// Refuses compressed geometry and any required extension deformseg does not know.
+/// Refuses any required extension deformseg does not know.
 inline void check_extensions(const tinygltf::Model& model) {
   for (const std::string& name : model.extensionsRequired) refuse_unread_extension(name);
 }
 
-/// The names a glTF file lists as "extensionsRequired" (a GLB's in its JSON chunk, which comes
-/// first), found by scanning the text rather than parsing it: for a refusal that names them when
-/// tinygltf cannot read the file (a Draco-compressed file's accessors have no buffer view, which
-/// tinygltf refuses before any extension is looked at).
-inline std::vector<std::string> listed_required_extensions(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string text(std::size_t(1) << 20, '\0');
-  in.read(text.data(), std::streamsize(text.size()));
-  text.resize(std::size_t(std::max<std::streamsize>(in.gcount(), 0)));
-  std::vector<std::string> names;
-  const std::size_t key = text.find("\"extensionsRequired\"");
-  if (key == std::string::npos) return names;
-  std::size_t at = text.find('[', key);
-  const std::size_t end = text.find(']', key);
-  if (at == std::string::npos || end == std::string::npos || end < at) return names;
-  while ((at = text.find('"', at)) < end) {
-    const std::size_t close = text.find('"', at + 1);
-    if (close > end) break;
-    names.push_back(text.substr(at + 1, close - at - 1));
-    at = close + 1;
-  }
-  return names;
-}
-
-/// Parses a .gltf or .glb file (told apart by the GLB magic, not the extension), or an FBX or
-/// Collada file (told by its extension) into the same structures.
+/// Parses a .gltf or .glb file (told apart by the GLB magic, not the extension), its compressed
+/// geometry decoded first, or an FBX or Collada file (told by its extension) into the same
+/// structures.
 inline tinygltf::Model load_model(const std::filesystem::path& path) {
   if (is_fbx_or_collada(path)) {
 #if DEFORMSEG_HAS_ASSIMP
@@ -218,19 +185,29 @@ inline tinygltf::Model load_model(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(path, error))
     throw invalid_input("cannot open the glTF file: it does not exist or is not a file");
+  const File_bytes read = read_file_bytes(path);
+  std::span<const unsigned char> file(reinterpret_cast<const unsigned char*>(read.begin()), read.size);
+  const std::string base_dir = path.parent_path().string();
+  Bytes decompressed;
+  if (names_compression(file)) {
+    decompressed = decompressed_glb(file, base_dir);
+    file = decompressed;
+  }
+  if (file.size() > std::numeric_limits<unsigned>::max())
+    throw invalid_input("a glTF file of " + std::to_string(file.size()) + " bytes: tinygltf reads files under 4 GiB");
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&ignore_image, nullptr);
   tinygltf::Model model;
   std::string err, warn;
   bool loaded = false;
   try {
-    loaded = starts_with_glb_magic(path) ? loader.LoadBinaryFromFile(&model, &err, &warn, path.string())
-                                         : loader.LoadASCIIFromFile(&model, &err, &warn, path.string());
+    loaded = is_glb(file) ? loader.LoadBinaryFromMemory(&model, &err, &warn, file.data(), unsigned(file.size()), base_dir)
+                          : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(file.data()),
+                                                       unsigned(file.size()), base_dir);
   } catch (const std::exception& e) {
     err = e.what();
   }
   if (!loaded) {
-    for (const std::string& name : listed_required_extensions(path)) refuse_unread_extension(name);
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
     throw invalid_input("not a valid glTF file: " + (err.empty() ? std::string("tinygltf refused it") : err));
   }
@@ -502,8 +479,9 @@ public:
   /// Collada file (`.fbx`, `.dae`, told by the extension), read as `fbx_collada_model` writes it.
   /// @throws invalid_input naming the file (and the mesh, accessor or node) for: a file that
   /// does not exist or that tinygltf cannot parse (its message); an FBX or Collada file that
-  /// `fbx_collada_model` refuses, or without Assimp; Draco or meshopt compression,
-  /// or another required extension deformseg does not know (KHR_mesh_quantization is read); a
+  /// `fbx_collada_model` refuses, or without Assimp; compressed geometry that does not decode, or
+  /// whose codec deformseg was built without (`DEFORMSEG_HAS_DRACO`, `DEFORMSEG_HAS_MESHOPT`);
+  /// another required extension deformseg does not know (KHR_mesh_quantization is read); a
   /// scene without triangle; an accessor or buffer view outside its buffer, a count that
   /// disagrees, an index out of range; a node hierarchy that is not a forest; more than 2^26
   /// vertices.
