@@ -12,6 +12,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -903,6 +904,77 @@ fs::path moved_copy(const fs::path& from, const std::string& name) {
   });
 }
 
+// A new float accessor of `values` (of `type`), appended to buffer 0; gives its index.
+int append_floats(tinygltf::Model& model, const std::vector<double>& values, const std::string& type) {
+  std::vector<unsigned char>& data = model.buffers.at(0).data;
+  while (data.size() % 4 != 0) data.push_back(0);
+  tinygltf::BufferView view;
+  view.buffer = 0;
+  view.byteOffset = data.size();
+  view.byteLength = values.size() * 4;
+  for (const double v : values) {
+    const float f = float(v);
+    const auto* p = reinterpret_cast<const unsigned char*>(&f);
+    data.insert(data.end(), p, p + 4);
+  }
+  model.bufferViews.push_back(view);
+  tinygltf::Accessor accessor;
+  accessor.bufferView = int(model.bufferViews.size()) - 1;
+  accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+  accessor.type = type == "VEC3" ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4;
+  accessor.count = values.size() / (type == "VEC3" ? 3 : 4);
+  model.accessors.push_back(accessor);
+  return int(model.accessors.size()) - 1;
+}
+
+// A copy of `from` without its meshes whose clips are in centimetres with Z up, as another tool
+// exports them: a new root turns Z up into Y up and scales by 0.01; below it every translation,
+// at rest and in the keys, is in centimetres, and the former roots are turned to Z up.
+fs::path centimetres_z_up_copy(const fs::path& from, const std::string& name) {
+  return edited_copy(from, name, [](tinygltf::Model& model) {
+    for (auto& node : model.nodes) node.mesh = node.skin = -1;
+    model.meshes.clear();
+    model.skins.clear();
+    const double c = std::sqrt(0.5);
+    const std::array<double, 4> to_z_up{c, 0, 0, c};  // +90 degrees about x
+    auto& scene = model.scenes.at(std::size_t(std::max(model.defaultScene, 0)));
+    const std::set<int> roots(scene.nodes.begin(), scene.nodes.end());
+    const auto convert = [&](double* t, double* q, bool root) {  // either may be null
+      if (t) {
+        for (int k = 0; k < 3; ++k) t[k] *= 100;
+        if (root) deformseg::io::internal::gltf::rotate(to_z_up, t);
+      }
+      if (q && root) deformseg::io::internal::gltf::turn(to_z_up, q);
+    };
+    for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+      tinygltf::Node& node = model.nodes[i];
+      REQUIRE(node.matrix.empty());
+      if (node.translation.empty()) node.translation = {0, 0, 0};
+      if (node.rotation.empty()) node.rotation = {0, 0, 0, 1};
+      convert(node.translation.data(), node.rotation.data(), roots.count(int(i)) > 0);
+    }
+    for (auto& animation : model.animations)
+      for (const auto& channel : animation.channels) {
+        auto& sampler = animation.samplers.at(std::size_t(channel.sampler));
+        const bool translation = channel.target_path == "translation", rotation = channel.target_path == "rotation";
+        if (!translation && !rotation) continue;
+        REQUIRE(sampler.interpolation != "CUBICSPLINE");
+        auto values = deformseg::io::internal::gltf::read_accessor(model, sampler.output, "test").values;
+        const std::size_t width = translation ? 3 : 4;
+        for (std::size_t k = 0; k < values.size(); k += width)
+          convert(translation ? &values[k] : nullptr, rotation ? &values[k] : nullptr, roots.count(channel.target_node) > 0);
+        sampler.output = append_floats(model, values, translation ? "VEC3" : "VEC4");
+      }
+    tinygltf::Node units;
+    units.name = "centimetres, Z up";
+    units.rotation = {-c, 0, 0, c};
+    units.scale = {0.01, 0.01, 0.01};
+    units.children = scene.nodes;
+    model.nodes.push_back(units);
+    scene.nodes = {int(model.nodes.size()) - 1};
+  });
+}
+
 }  // namespace
 
 TEST_CASE("gltf: a rotated, moved, scaled copy of the Fox gives the same strain", "[gltf][data]") {
@@ -1004,6 +1076,25 @@ TEST_CASE("gltf: a character's clips, stripped of its meshes, played on its body
       CHECK(report.joints > 0);
       CHECK(report.animated_joints > 0);
       CHECK(report.animated_joints <= report.joints);
+    }
+  }
+}
+
+TEST_CASE("gltf: clips in centimetres with Z up, played on a body in metres with Y up, give its frames",
+          "[gltf][data]") {
+  for (const std::string name : {"Fox.glb", "Knight.glb"}) {
+    const fs::path body = characters() / name;
+    const deformseg::io::Gltf_file own(body), bound(body, centimetres_z_up_copy(body, "cm-z-up-" + name));
+    for (const std::string& clip : {own.clip_names().front(), own.clip_names().back()}) {
+      INFO(name << " clip " << clip);
+      const Sampled_gltf a = own.sample({.clip = clip}), b = bound.sample({.clip = clip});
+      REQUIRE(a.report.frames == b.report.frames);
+      double gap = 0, size = 0;
+      for (std::size_t i = 0; i < a.positions.size(); ++i) {
+        gap = std::max(gap, std::abs(a.positions[i] - b.positions[i]));
+        size = std::max(size, std::abs(a.positions[i]));
+      }
+      CHECK(gap <= 1e-5 * size);  // the copy's keys are floats: centimetres rounded to 24 bits
     }
   }
 }

@@ -509,7 +509,10 @@ public:
   /// rig's clips on another character); both files glTF, FBX or Collada. The geometry, skins and
   /// rest pose are the body's; `clip_names` and the clips read are `clips`'s, and
   /// `Gltf_read_report::animated_joints` says how many of the body's joints a clip moves. The
-  /// clips' translations are taken in the body's units: both files must share them.
+  /// clips' values are carried into the body's frames (`internal::gltf::frame_changes`): their
+  /// translations scaled from the clips' units to the body's, and the clips' skeleton root, with
+  /// its root motion, placed in the body's world where it stood in its own (another up axis,
+  /// other nodes above it); where both files share their frames, the values are kept to the bit.
   /// @throws invalid_input naming the file, as the constructor from a path for `body`, as
   /// tinygltf for `clips`; and, when a clip is read, naming `clips` (and mentioning `body`) for a
   /// clip that does not exist, is malformed or moves no node of the body.
@@ -520,8 +523,10 @@ public:
     try {
       auto model = std::make_shared<const tinygltf::Model>(internal::gltf::load_model(clips));
       internal::gltf::check_extensions(*model);
+      auto body_node = internal::gltf::body_nodes_by_name(file_.model, *model);
+      auto change = internal::gltf::frame_changes(file_.model, *model, body_node);
       file_.clips = internal::gltf::Bound_clips{.model = model, .file = clips.string(), .body_file = body.string(),
-                                                .body_node = internal::gltf::body_nodes_by_name(file_.model, *model)};
+                                                .body_node = std::move(body_node), .change = std::move(change)};
     } catch (const invalid_input& e) {
       throw e.located({.file = clips.string()});
     }

@@ -1,13 +1,17 @@
 // The clips of one file played on the body of another, as engines bind an animation to a model:
-// each channel moves the body's node of the same name as the node it moved in its own file.
+// each channel moves the body's node of the same name as the node it moved in its own file, its
+// values carried from the clip file's frames (units, up axis) into the body's.
 #pragma once
 
 #include <deformseg/exceptions.h>
 #include <deformseg/io/internal/gltf_animation.h>
+#include <deformseg/io/internal/gltf_scene.h>
 
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <map>
 #include <memory>
@@ -19,12 +23,25 @@
 
 namespace deformseg::io::internal::gltf {
 
+/// How the channels of a clip node change to move the body's node of its name: translations are
+/// scaled by `scale`, turned by `rotation` and moved by `offset`; rotations turned by `rotation`.
+struct Frame_change {
+  double scale = 1;
+  std::array<double, 4> rotation{0, 0, 0, 1};  // a unit quaternion (x, y, z, w)
+  std::array<double, 3> offset{0, 0, 0};
+
+  bool is_identity() const {
+    return scale == 1 && rotation == std::array<double, 4>{0, 0, 0, 1} && offset == std::array<double, 3>{0, 0, 0};
+  }
+};
+
 /// Where a body's clips come from when another file holds them.
 struct Bound_clips {
   std::shared_ptr<const tinygltf::Model> model{};
   std::string file{};                                   // the clips' file, which their errors name
   std::string body_file{};                              // the body's, which they mention
   std::vector<std::optional<std::size_t>> body_node{};  // per node of `model`: the body's node of its name
+  std::vector<Frame_change> change{};                   // per node of `model`: see `frame_changes`
 };
 
 /// The body's node of each node of `clips` whose name (not empty) a body node has: the first such.
@@ -37,6 +54,136 @@ inline std::vector<std::optional<std::size_t>> body_nodes_by_name(const tinygltf
   for (std::size_t i = 0; i < clips.nodes.size(); ++i)
     if (const auto found = by_name.find(clips.nodes[i].name); found != by_name.end()) body_node[i] = found->second;
   return body_node;
+}
+
+/// The inverse of an invertible affine transform.
+inline Affine inverse(const Affine& a) {
+  const auto& m = a.m;
+  const double det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
+                     m[2] * (m[4] * m[9] - m[5] * m[8]);
+  Affine b;
+  b.m = {(m[5] * m[10] - m[6] * m[9]) / det, (m[2] * m[9] - m[1] * m[10]) / det, (m[1] * m[6] - m[2] * m[5]) / det, 0,
+         (m[6] * m[8] - m[4] * m[10]) / det, (m[0] * m[10] - m[2] * m[8]) / det, (m[2] * m[4] - m[0] * m[6]) / det, 0,
+         (m[4] * m[9] - m[5] * m[8]) / det, (m[1] * m[8] - m[0] * m[9]) / det, (m[0] * m[5] - m[1] * m[4]) / det, 0};
+  for (int r = 0; r < 3; ++r)
+    b.m[4 * r + 3] = -(b.m[4 * r] * m[3] + b.m[4 * r + 1] * m[7] + b.m[4 * r + 2] * m[11]);
+  return b;
+}
+
+/// The size of a transform: the cube root of its linear part's determinant's magnitude.
+inline double size_of(const Affine& a) {
+  const auto& m = a.m;
+  return std::cbrt(std::abs(m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
+                            m[2] * (m[4] * m[9] - m[5] * m[8])));
+}
+
+/// The rotation of a rotation matrix `r` (row-major 3x3, in the linear part of an Affine scaled by
+/// `size`) as a unit quaternion (x, y, z, w).
+inline std::array<double, 4> quaternion_of(const Affine& a, double size) {
+  const auto r = [&](int i, int j) { return a.m[4 * i + j] / size; };
+  std::array<double, 4> q{};
+  const double trace = r(0, 0) + r(1, 1) + r(2, 2);
+  if (trace > 0) {
+    const double s = 2 * std::sqrt(1 + trace);
+    q = {(r(2, 1) - r(1, 2)) / s, (r(0, 2) - r(2, 0)) / s, (r(1, 0) - r(0, 1)) / s, s / 4};
+  } else if (r(0, 0) > r(1, 1) && r(0, 0) > r(2, 2)) {
+    const double s = 2 * std::sqrt(1 + r(0, 0) - r(1, 1) - r(2, 2));
+    q = {s / 4, (r(0, 1) + r(1, 0)) / s, (r(0, 2) + r(2, 0)) / s, (r(2, 1) - r(1, 2)) / s};
+  } else if (r(1, 1) > r(2, 2)) {
+    const double s = 2 * std::sqrt(1 + r(1, 1) - r(0, 0) - r(2, 2));
+    q = {(r(0, 1) + r(1, 0)) / s, s / 4, (r(1, 2) + r(2, 1)) / s, (r(0, 2) - r(2, 0)) / s};
+  } else {
+    const double s = 2 * std::sqrt(1 + r(2, 2) - r(0, 0) - r(1, 1));
+    q = {(r(0, 2) + r(2, 0)) / s, (r(1, 2) + r(2, 1)) / s, s / 4, (r(1, 0) - r(0, 1)) / s};
+  }
+  const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  for (double& c : q) c /= norm;
+  return q;
+}
+
+/// Each node's rest transform in its file's world, and its parent.
+struct Rest_frames {
+  std::vector<Affine> world{};
+  std::vector<int> parent{};
+};
+
+inline Rest_frames rest_frames(const tinygltf::Model& model) {
+  const Node_forest forest = node_forest(model);
+  std::vector<Affine> local;
+  for (const Node_pose& pose : rest_poses(model)) local.push_back(pose.local());
+  return {forest.world(local), forest.parent};
+}
+
+/// Per node of `clips`, how its channels change to move the body's node of its name (`body_node`).
+/// Each file's world is in metres with Y up (FBX and Collada files are read so), so a node's
+/// values carry over once expressed in the body's frames: a node whose parent is the body node's
+/// parent by name keeps its rotations, its translations scaled by the ratio of the two parents'
+/// sizes (a clip in centimetres on a body in metres); a node whose parent is not (the root of the
+/// clip's skeleton, below other nodes in each file) is moved by the change from the body parent's
+/// frame to the clip parent's (up axis, units, placement), so that it stands in the body's world
+/// where it stood in its own. Where the two files' frames agree, every change is the identity and
+/// the values are kept to the bit.
+inline std::vector<Frame_change> frame_changes(const tinygltf::Model& body, const tinygltf::Model& clips,
+                                               const std::vector<std::optional<std::size_t>>& body_node) {
+  const Rest_frames in_body = rest_frames(body), in_clips = rest_frames(clips);
+  std::vector<Frame_change> changes(clips.nodes.size());
+  for (std::size_t i = 0; i < clips.nodes.size(); ++i) {
+    if (!body_node[i]) continue;
+    const int clip_parent = in_clips.parent[i], body_parent = in_body.parent[*body_node[i]];
+    const Affine from = clip_parent < 0 ? Affine{} : in_clips.world[std::size_t(clip_parent)];
+    const Affine to = body_parent < 0 ? Affine{} : in_body.world[std::size_t(body_parent)];
+    const bool same_parent = clip_parent >= 0 && body_parent >= 0 && body_node[std::size_t(clip_parent)] == std::size_t(body_parent);
+    if (same_parent) {
+      const double a = size_of(from), b = size_of(to);
+      if (a != b && a > 0 && b > 0) changes[i].scale = a / b;
+      continue;
+    }
+    const Affine change = inverse(to) * from;
+    const double size = size_of(change);
+    if (!(size > 0) || !std::isfinite(size)) continue;
+    if (change.m == Affine{}.m) continue;
+    changes[i].scale = size;
+    changes[i].rotation = quaternion_of(change, size);
+    changes[i].offset = {change.m[3], change.m[7], change.m[11]};
+  }
+  return changes;
+}
+
+/// `q` rotated by the unit quaternion `by` (by * q), in place.
+inline void turn(const std::array<double, 4>& by, double* q) {
+  const double x = q[0], y = q[1], z = q[2], w = q[3];
+  const double a = by[0], b = by[1], c = by[2], d = by[3];
+  q[0] = d * x + a * w + b * z - c * y;
+  q[1] = d * y - a * z + b * w + c * x;
+  q[2] = d * z + a * y - b * x + c * w;
+  q[3] = d * w - a * x - b * y - c * z;
+}
+
+/// `v` (3 values) rotated by the unit quaternion `q`, in place.
+inline void rotate(const std::array<double, 4>& q, double* v) {
+  const std::array<double, 3> t{0, 0, 0};
+  const std::array<double, 3> one{1, 1, 1};
+  const Affine r = affine_from_trs(t.data(), q.data(), one.data());
+  const double p[3] = {v[0], v[1], v[2]};
+  r.apply(p, v);
+}
+
+/// Applies `change` to a channel's keys (values and CUBICSPLINE tangents, which take no offset).
+inline void change_frames(const Frame_change& change, Path path, Sampler& sampler) {
+  if (change.is_identity() || (path != Path::translation && path != Path::rotation)) return;
+  const bool cubic = sampler.interpolation == Interpolation::cubic_spline;
+  for (std::size_t k = 0; k * sampler.width + sampler.width <= sampler.values.size(); ++k) {
+    double* v = sampler.values.data() + k * sampler.width;
+    if (path == Path::rotation) {
+      turn(change.rotation, v);
+      continue;
+    }
+    const bool tangent = cubic && k % 3 != 1;
+    for (int c = 0; c < 3; ++c) v[c] *= change.scale;
+    rotate(change.rotation, v);
+    if (!tangent)
+      for (int c = 0; c < 3; ++c) v[c] += change.offset[c];
+  }
 }
 
 /// `clip`, read from `source`'s model, as a clip of `body`: each channel moved to the body's node
@@ -55,6 +202,7 @@ inline Clip bound_clip(Clip clip, const tinygltf::Model& body, const Bound_clips
       throw invalid_input("clip '" + clip.name + "' animates " + node_name(body, *node) + " of the body " +
                           source.body_file + ", which has a matrix; glTF animates TRS nodes only");
     }
+    change_frames(source.change[channel.node], channel.path, channel.sampler);
     channel.node = *node;
     kept.push_back(std::move(channel));
   }
