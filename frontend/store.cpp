@@ -64,6 +64,14 @@ void add_gltf_clips(const std::string& file, const std::string& clip, double fps
   }
 }
 
+// `options` with `body` as its body, when it names one.
+Input_options with_body(const std::string& body, const Input_options& options) {
+  if (body.empty()) return options;
+  Input_options own = options;
+  own.body = body;
+  return own;
+}
+
 // The name of the only clip of a character file ("0" for an unnamed one, "" for none), played on
 // `options.body` when it names one.
 // @throws invalid_input naming the file when it cannot be parsed or has several clips.
@@ -92,15 +100,16 @@ std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_o
       out.push_back({canonical_path(file), ""});
       continue;
     }
+    const std::string body = row.body_file.empty() ? "" : canonical_path(row.body_file.string());
     std::string clip = row.item.clip.empty() ? options.clip : row.item.clip;
     if (clip.empty()) try {  // the file's only clip, as evaluate reads it
-        clip = only_clip(row.file, options);
+        clip = only_clip(row.file, with_body(body, options));
       } catch (const invalid_input& e) {
         if (!unreadable) throw;
         unreadable->push_back(file + ": " + e.what());
         continue;
       }
-    out.push_back({canonical_path(file), clip});
+    out.push_back({canonical_path(file), clip, body});
   }
   return out;
 }
@@ -255,7 +264,8 @@ Input_options recorded_input_options(const io::Store_record& record) {
   return options;
 }
 
-io::Store_record source_record(const Clip_source& clip, const Input_options& options, bool hash) {
+io::Store_record source_record(const Clip_source& clip, const Input_options& all_clips, bool hash) {
+  const Input_options options = with_body(clip.body, all_clips);
   io::Store_record record;
   record.path = clip.file;
   record.clip = clip.clip;
@@ -422,21 +432,21 @@ Described_clip describe_clip(const Clip_source& clip, const io::Gltf_file* gltf,
 // the last (clips of other files may be described meanwhile, on other threads).
 class Gltf_parses {
 public:
-  // For the clips `order` names, read with `options` (their body).
+  // For the clips `order` names, read with `options` (their body, unless a clip names its own).
   Gltf_parses(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& order,
               const Input_options& options)
       : options_(options) {
     for (const std::size_t i : order)
-      if (io::is_character_file(clips[i].file)) ++files_[clips[i].file].clips_left;
+      if (io::is_character_file(clips[i].file)) ++files_[key(clips[i])].clips_left;
   }
 
-  // The parsed file; a parse that failed throws again for each of its clips.
-  std::shared_ptr<const io::Gltf_file> acquire(const std::string& file) {
-    File& entry = files_.at(file);
+  // The parsed file of `clip` (on its body); a parse that failed throws again for each of its clips.
+  std::shared_ptr<const io::Gltf_file> acquire(const Clip_source& clip) {
+    File& entry = files_.at(key(clip));
     const std::lock_guard lock(entry.mutex);
     if (entry.error) std::rethrow_exception(entry.error);
     if (!entry.parsed) try {
-        entry.parsed = std::make_shared<const io::Gltf_file>(character_file(file, options_));
+        entry.parsed = std::make_shared<const io::Gltf_file>(character_file(clip.file, with_body(clip.body, options_)));
       } catch (...) {
         entry.error = std::current_exception();
         throw;
@@ -444,9 +454,9 @@ public:
     return entry.parsed;
   }
 
-  // One clip of `file` described: the parse is freed after its last.
-  void release(const std::string& file) {
-    File& entry = files_.at(file);
+  // One clip of the parse `acquire` gave described: the parse is freed after its last.
+  void release(const Clip_source& clip) {
+    File& entry = files_.at(key(clip));
     const std::lock_guard lock(entry.mutex);
     if (--entry.clips_left == 0) entry.parsed.reset();
   }
@@ -458,24 +468,27 @@ private:
     std::exception_ptr error;
     std::size_t clips_left = 0;
   };
-  std::map<std::string, File> files_;  // made whole by the constructor: found concurrently, never added to
+  // A file parsed on one body: its name and its body's.
+  static std::pair<std::string, std::string> key(const Clip_source& clip) { return {clip.file, clip.body}; }
+
+  std::map<std::pair<std::string, std::string>, File> files_;  // made whole by the constructor, never added to
   const Input_options& options_;
 };
 
 // Releases a clip's parse (`Gltf_parses::release`) when it is described or has failed; nothing for
-// a clip of another format (an empty file name).
+// a clip of another format (no clip).
 class Release_parse {
 public:
-  Release_parse(Gltf_parses& parses, std::string file) : parses_(parses), file_(std::move(file)) {}
+  Release_parse(Gltf_parses& parses, const Clip_source* clip) : parses_(parses), clip_(clip) {}
   Release_parse(const Release_parse&) = delete;
   Release_parse& operator=(const Release_parse&) = delete;
   ~Release_parse() {
-    if (!file_.empty()) parses_.release(file_);
+    if (clip_) parses_.release(*clip_);
   }
 
 private:
   Gltf_parses& parses_;
-  std::string file_;
+  const Clip_source* clip_;
 };
 
 // The clips described at once, then appended in order: at least 32, so that few threads wait for
@@ -611,8 +624,8 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
       const Clip_source& clip = clips[order[first + k]];
       try {
         const std::shared_ptr<const io::Gltf_file> gltf =
-            io::is_character_file(clip.file) ? parses.acquire(clip.file) : nullptr;
-        const Release_parse release(parses, gltf ? clip.file : std::string());
+            io::is_character_file(clip.file) ? parses.acquire(clip) : nullptr;
+        const Release_parse release(parses, gltf ? &clip : nullptr);
         described[k] = describe_clip(clip, gltf.get(), options, policy, run.front);
         progress.described(clip, described[k].frame_count);
       } catch (const invalid_input& e) {

@@ -27,6 +27,9 @@ inline constexpr std::size_t store_summary_chunks = 4;
 struct Clip_source {
   std::string file;
   std::string clip;
+  /// The character file whose body the clip plays on (a labels row's `body_file`); empty: the
+  /// options' `body`.
+  std::string body{};
   /// "FILE" or "FILE#CLIP", as reports name the clip.
   std::string name() const { return clip.empty() ? file : file + "#" + clip; }
 };
@@ -45,7 +48,7 @@ std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, co
                                       std::vector<std::string>& poses, std::vector<std::string>* unreadable = nullptr);
 
 /// The clip of each row of the labels CSV `labels` (`evaluate`'s), in the rows' order: a glTF row
-/// without a clip takes `options.clip`, or the file's only clip. With `unreadable`, a row whose
+/// without a clip takes `options.clip`, or the file's only clip; a row's `body_file` is its body. With `unreadable`, a row whose
 /// file cannot be parsed for its only clip is left out, noted there, instead of thrown.
 /// @throws invalid_input naming the labels file or the glTF file, as `clip_sources`.
 std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_options& options,

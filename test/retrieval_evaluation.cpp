@@ -229,6 +229,18 @@ TEST_CASE("read_motion_labels: columns by name, defaults, files relative to the 
   CHECK(b[0].item.body == "fox");
   CHECK(b[0].item.motion == "-");
   CHECK(b[0].file == "/abs/Fox.glb");
+  CHECK(b[0].body_file.empty());
+
+  // A clip library bound to bodies: each row's body file, relative to the CSV like its file.
+  const auto bodies = test::write_file("labels/set/bodies.csv",
+                                       "file,clip,motion,body_file\nclips/walk.glb,Walk,walk,avatars/A.glb\n"
+                                       "clips/walk.glb,Run,run,/abs/B.fbx\nclips/idle.glb,,idle,\n");
+  const auto r = io::read_motion_labels(bodies);
+  CHECK(r[0].body_file == bodies.parent_path() / "avatars/A.glb");
+  CHECK(r[1].body_file == "/abs/B.fbx");
+  CHECK(r[2].body_file.empty());
+  CHECK(r[0].item.body == "avatars/A.glb");  // the body label: the body file's field, else the file's
+  CHECK(r[2].item.body == "clips/idle.glb");
 }
 
 TEST_CASE("read_motion_labels: quoted fields as spreadsheets and R write them, after a byte order mark",
@@ -255,8 +267,9 @@ TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]
     CHECK_THROWS_WITH(io::read_motion_labels(path), path.string() + message);
   };
   fails("unknown.csv", "file,clip,motion,colour\n",
-        ":1: unknown column 'colour': the header is file,clip,motion[,rig][,body]");
-  fails("no_motion.csv", "\nfile,clip\n", ":2: the header has no 'motion' column: it is file,clip,motion[,rig][,body]");
+        ":1: unknown column 'colour': the header is file,clip,motion[,rig][,body][,body_file]");
+  fails("no_motion.csv", "\nfile,clip\n",
+        ":2: the header has no 'motion' column: it is file,clip,motion[,rig][,body][,body_file]");
   fails("twice.csv", "file,clip,motion,clip\n", ":1: column 'clip' appears twice");
   fails("fields.csv", "file,clip,motion\na.glb,x,walk\nb.glb,y\n", ":3: 2 fields where the header has 3");
   fails("empty_motion.csv", "file,clip,motion\na.glb,x,\n", ":2: the motion field is empty (a distractor is '-')");

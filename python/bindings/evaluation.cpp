@@ -98,6 +98,7 @@ py::list motion_labels(const std::filesystem::path& path) {
     d["motion"] = c.item.motion;
     d["rig"] = c.item.rig;
     d["body"] = c.item.body;
+    d["body_file"] = c.body_file.string();
     out.append(d);
   }
   return out;
@@ -224,9 +225,10 @@ changed (checked as describe_to_store checks them, with the input options each w
 with). Complexity O(N^2 log N); with a store, plus N (N + 1) / 2 alignments.)doc");
 
   m.def("read_motion_labels", &motion_labels, "path"_a,
-        R"doc(The rows of a labels CSV file (header file,clip,motion[,rig][,body]; fields may be quoted
-as spreadsheets and R write them): a list of dicts with
-file (relative paths made relative to the CSV's folder), clip, motion, rig and body. Raises
+        R"doc(The rows of a labels CSV file (header file,clip,motion[,rig][,body][,body_file]; fields may
+be quoted as spreadsheets and R write them): a list of dicts with file and body_file (relative
+paths made relative to the CSV's folder; body_file empty when the row names none), clip, motion,
+rig and body. Raises
 InvalidInput naming the file and line of a bad row. Complexity O(rows).)doc");
 }
 

@@ -321,6 +321,19 @@ def test_evaluate_on_a_store_refuses_a_clip_changed_since(fox, tmp_path):
         deformseg.evaluate(store, labels)
 
 
+def test_labels_with_body_files_play_each_clip_on_its_body(characters, tmp_path):
+    # The Knight's Idle on the Barbarian's body is the Barbarian's Idle: identical signatures.
+    knight, barbarian = characters / "Knight.glb", characters / "Barbarian.glb"
+    labels = tmp_path / "labels.csv"
+    labels.write_text(f"file,clip,motion,body_file\n{knight},Idle,idle,{barbarian}\n{barbarian},Idle,idle,\n")
+    (row, own) = deformseg.read_motion_labels(labels)
+    assert (row["body_file"], row["body"], own["body_file"]) == (str(barbarian), str(barbarian), "")
+    deformseg.describe_to_store(labels, tmp_path / "S")
+    store = deformseg.open_store(tmp_path / "S")
+    assert [record["input_options"].get("body") for record in store.records] == [str(barbarian.resolve()), None]
+    assert np.array_equal(store.signatures(0), store.signatures(1))
+
+
 # ---- a store that is not one ----------------------------------------------------------------------
 
 def test_a_missing_truncated_or_corrupted_store_is_refused_naming_the_file(described, tmp_path):

@@ -416,6 +416,23 @@ def test_evaluate_store_changed_clip(tool, scratch, clips):
     succeeds(tool("evaluate", labels, "--store", folder))
 
 
+def test_describe_labels_with_body_files(tool, scratch, characters):
+    # A labels row's body_file is the body its clip plays on: the Knight's Idle on the Barbarian's
+    # body is the Barbarian's Idle, its Walking_A on the Rogue's the Rogue's; each record names its body.
+    knight, barbarian, rogue = (characters / f"{name}.glb" for name in ("Knight", "Barbarian", "Rogue"))
+    labels = scratch / "labels-bodies.csv"
+    labels.write_text(f"file,clip,motion,body_file\n{knight},Idle,idle,{barbarian}\n"
+                      f"{knight},Walking_A,walk,{rogue}\n")
+    folder = scratch / "store-body-files"
+    assert len(describe(tool, folder, labels)["described"]) == 2
+    bodies = {record["clip"]: record["input_options"]["body"] for record in store_info(tool, folder)["clips"]}
+    assert bodies == {"Idle": str(barbarian.resolve()), "Walking_A": str(rogue.resolve())}
+    for query, clip in [(f"{barbarian}#Idle", "Idle"), (f"{rogue}#Walking_A", "Walking_A")]:
+        found = tool("search", query, "--store", folder, "-k", "1", "--json", "-").json()["queries"][0]["neighbours"][0]
+        assert found["value"] == 1.0 and found["clip"] == clip
+    assert describe(tool, folder, labels)["skipped"] == [f"{knight.resolve()}#Idle", f"{knight.resolve()}#Walking_A"]
+
+
 def test_describe_with_a_body(tool, scratch, characters):
     # The Knight's Idle on the Barbarian's body is the Barbarian's Idle: found at 1; the store
     # records the body, and a body changed since describes the clip again.

@@ -28,6 +28,9 @@ struct Labelled_clip {
   /// @brief Its labels; `item.clip` names the clip in `file` (empty: none; the tool's `evaluate` then reads
   /// a file of one clip, or a `FILE.glb#CLIP` in the file column, and refuses a file of several).
   evaluation::Labelled_item item{};
+  /// @brief The character file whose body the clip plays on (the `body_file` column, relative to
+  /// the labels file's folder), as the tool's `--body`; empty when the row names none.
+  std::filesystem::path body_file{};
 };
 
 }  // namespace deformseg::io
@@ -87,13 +90,13 @@ inline std::vector<std::string> split_fields(std::string_view line, const Input_
   }
 }
 
-// The column of each of file, clip, motion, rig, body in the header (rig and body optional).
+// The column of each of file, clip, motion, rig, body, body_file in the header (the last three optional).
+inline constexpr std::array<const char*, 6> column_names{"file", "clip", "motion", "rig", "body", "body_file"};
+
 struct Columns {
-  std::array<std::optional<std::size_t>, 5> at{};
+  std::array<std::optional<std::size_t>, column_names.size()> at{};
   std::size_t count = 0;
 };
-
-inline constexpr std::array<const char*, 5> column_names{"file", "clip", "motion", "rig", "body"};
 
 inline Columns read_header(const std::string& line, const Input_location& where) {
   Columns columns;
@@ -102,7 +105,8 @@ inline Columns read_header(const std::string& line, const Input_location& where)
   for (std::size_t i = 0; i < names.size(); ++i) {
     const auto known = std::ranges::find(column_names, names[i]);
     if (known == column_names.end())
-      throw invalid_input("unknown column '" + names[i] + "': the header is file,clip,motion[,rig][,body]", where);
+      throw invalid_input("unknown column '" + names[i] + "': the header is file,clip,motion[,rig][,body][,body_file]",
+                          where);
     auto& slot = columns.at[std::size_t(known - column_names.begin())];
     if (slot) throw invalid_input("column '" + names[i] + "' appears twice", where);
     slot = i;
@@ -110,7 +114,7 @@ inline Columns read_header(const std::string& line, const Input_location& where)
   for (std::size_t k = 0; k < 3; ++k)
     if (!columns.at[k])
       throw invalid_input(std::string("the header has no '") + column_names[k] +
-                              "' column: it is file,clip,motion[,rig][,body]",
+                              "' column: it is file,clip,motion[,rig][,body][,body_file]",
                           where);
   return columns;
 }
@@ -129,7 +133,8 @@ inline Labelled_clip read_row(const std::string& line, const Columns& columns, c
   if (row.item.motion.empty())
     throw invalid_input(
         std::string("the motion field is empty (a distractor is '") + evaluation::distractor_label + "')", where);
-  if (row.item.body.empty()) row.item.body = field(0);
+  if (row.item.body.empty()) row.item.body = field(5).empty() ? field(0) : field(5);
+  if (!field(5).empty()) row.body_file = folder / field(5);
   return row;
 }
 
@@ -139,12 +144,13 @@ namespace deformseg::io {
 
 /// @brief Reads a labels file: a header line naming the columns, then one line per animation.
 ///
-/// The columns are `file`, `clip`, `motion` (required) and `rig`, `body` (optional), in any
+/// The columns are `file`, `clip`, `motion` (required) and `rig`, `body`, `body_file` (optional), in any
 /// order, separated by commas as RFC 4180 has it: a field in double quotes may hold commas, `""`
 /// standing for a quote (a quoted field ends on its line); spaces around a field are dropped, and
 /// a UTF-8 byte order mark before the header (as spreadsheets write) is skipped. `motion` is
-/// `distractor_label` ("-") for a distractor; `body` defaults to the `file` field as written, and
-/// `rig` to empty. Empty lines and lines starting with `#` are skipped.
+/// `distractor_label` ("-") for a distractor; `body_file` names the character file a clip plays on
+/// (`Labelled_clip::body_file`); `body` defaults to the `body_file` field as written, else the
+/// `file` field, and `rig` to empty. Empty lines and lines starting with `#` are skipped.
 /// @param path the CSV file.
 /// @return the rows in the file's order, `file` relative to the CSV's folder.
 /// @throws invalid_input naming the file (and the 1-based line) when it cannot be read, when the

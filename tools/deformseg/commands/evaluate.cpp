@@ -54,8 +54,8 @@ struct Read_clips {
   std::vector<std::string> skipped;  // "FILE clip NAME: MESSAGE"
 };
 
-// Reads the clips of `rows` that come from `file` (rows[i] for i in `of_file`), parsing it once;
-// a row without a clip takes --clip's.
+// Reads the clips of `rows` that come from `file` on one body (rows[i] for i in `of_file`, their
+// `body_file`, else --body), parsing it once; a row without a clip takes --clip's.
 void read_file_clips(const std::filesystem::path& file, const std::vector<std::size_t>& of_file,
                      const std::vector<io::Labelled_clip>& rows, const Evaluate_options& o, Read_clips& out) {
   const auto skip_or_throw = [&](const std::vector<std::size_t>& lost, const invalid_input& e) {
@@ -76,7 +76,9 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
   }
   std::optional<io::Gltf_file> gltf;
   try {
-    gltf.emplace(frontend::character_file(file.string(), o.read));
+    Input_options read = o.read;  // the rows of one file and one body
+    if (const auto& body = rows[of_file.front()].body_file; !body.empty()) read.body = body.string();
+    gltf.emplace(frontend::character_file(file.string(), read));
   } catch (const invalid_input& e) {
     return skip_or_throw(of_file, e);
   }
@@ -95,14 +97,16 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
 }
 
 Read_clips read_clips(const std::vector<io::Labelled_clip>& rows, const Evaluate_options& o) {
-  std::vector<std::filesystem::path> files;  // in the order of first appearance
+  using File_on_body = std::pair<std::filesystem::path, std::filesystem::path>;
+  std::vector<File_on_body> files;  // in the order of first appearance
   for (const auto& row : rows)
-    if (std::ranges::find(files, row.file) == files.end()) files.push_back(row.file);
+    if (std::ranges::find(files, File_on_body{row.file, row.body_file}) == files.end())
+      files.emplace_back(row.file, row.body_file);
   Read_clips out;
-  for (const auto& file : files) {
+  for (const auto& [file, body] : files) {
     std::vector<std::size_t> of_file;
     for (std::size_t i = 0; i < rows.size(); ++i)
-      if (rows[i].file == file) of_file.push_back(i);
+      if (rows[i].file == file && rows[i].body_file == body) of_file.push_back(i);
     if (!io::is_character_file(file) && of_file.size() > 1)
       throw invalid_input("lists " + std::to_string(of_file.size()) + " clips of " + file.string() +
                           ", which is not a character file (glTF, FBX, Collada) and holds one animation", {.file = o.labels});
@@ -341,8 +345,9 @@ void add_evaluate_command(CLI::App& app) {
       "evaluate", "How well motion similarity retrieves the same motion on other bodies: NN accuracy, mAP, "
                   "ROC-AUC, medians and the confusion table of a labelled set of clips");
   command->add_option("labels", o->labels,
-                      "CSV file with the header file,clip,motion[,rig][,body] (files relative to its folder; "
-                      "motion '-': a distractor; fields may be in double quotes)")
+                      "CSV file with the header file,clip,motion[,rig][,body][,body_file] (files relative to its "
+                      "folder; body_file: the body a row's clip plays on; motion '-': a distractor; fields may be in "
+                      "double quotes)")
       ->required();
   add_policy_options(*command, o->policy);
   add_parameters(*command, frontend::input_parameters, o->read);
