@@ -143,7 +143,7 @@ TEST_CASE("gltf compression: Draco's quantisation shows, and its step bounds the
   CHECK(gap < 1e-2);  // but within a step (1/255 of the extent)
 }
 
-TEST_CASE("gltf compression: meshopt copies (filters, KHR_mesh_quantization) read as the originals",
+TEST_CASE("gltf compression: meshopt copies of the shared characters read as the originals, filtered and quantised",
           "[gltf][meshopt][data]") {
   for (const auto& [name, clips] : characters) {
     const fs::path copy = scratch("meshopt-" + name);
