@@ -8,7 +8,10 @@ of python/deformseg/. CMake's build folder is kept below build-python/, so that 
 
 Environment: CMAKE_ARGS, more arguments for CMake's configuration (`-DDEFORMSEG_ARCH=` for a
 wheel that runs on any x86-64, `-DCMAKE_CXX_COMPILER=clang++`); CMAKE_BUILD_PARALLEL_LEVEL, the
-number of compile jobs (default: every core).
+number of compile jobs (default: every core); DEFORMSEG_CMAKE_BUILD_DIR, a build folder of this
+project configured already with the Python module (-DDEFORMSEG_BUILD_PYTHON=ON) for the Python that
+runs pip, whose target is built (nothing, when it is up to date) instead of configuring one here:
+a build that makes the module anyway packages it without compiling it twice.
 """
 import os
 import pathlib
@@ -44,12 +47,14 @@ class CMakeExtension(Extension):
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
-        build = pathlib.Path(self.build_temp).resolve() / "cmake"
-        configure = ["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
-                     f"-DPython_EXECUTABLE={sys.executable}", "-DDEFORMSEG_BUILD_PYTHON=ON",
-                     "-DDEFORMSEG_BUILD_TESTS=OFF", "-DDEFORMSEG_BUILD_EXAMPLES=OFF", *pybind11_arguments(),
-                     *shlex.split(os.environ.get("CMAKE_ARGS", ""))]
-        subprocess.run(configure, check=True)
+        configured = os.environ.get("DEFORMSEG_CMAKE_BUILD_DIR")
+        build = pathlib.Path(configured).resolve() if configured else pathlib.Path(self.build_temp).resolve() / "cmake"
+        if not configured:
+            configure = ["cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release",
+                         f"-DPython_EXECUTABLE={sys.executable}", "-DDEFORMSEG_BUILD_PYTHON=ON",
+                         "-DDEFORMSEG_BUILD_TESTS=OFF", "-DDEFORMSEG_BUILD_EXAMPLES=OFF", *pybind11_arguments(),
+                         *shlex.split(os.environ.get("CMAKE_ARGS", ""))]
+            subprocess.run(configure, check=True)
         jobs = [] if "CMAKE_BUILD_PARALLEL_LEVEL" in os.environ else ["--parallel", str(os.cpu_count() or 1)]
         subprocess.run(["cmake", "--build", str(build), "--target", ext.target, *jobs], check=True)
         built = build / "python" / "deformseg" / (ext.target + sysconfig.get_config_var("EXT_SUFFIX"))

@@ -3,9 +3,10 @@ installs it into a scratch virtual environment, offline (`--no-build-isolation -
 build tools and NumPy are the system's); the installed package imports from outside the tree and
 gives the results of the package under test.
 
-It compiles the extension once more, as a user's `pip install` does (about two minutes of one core,
-the binding files in one unit: python/CMakeLists.txt), so CTest runs it as a test of its own
-(`python.pip_install`, label `pip`) beside the C++ tests."""
+CTest runs it as a test of its own (`python.pip_install`, label `pip`), with the extension built in
+the tests' own build folder (DEFORMSEG_CMAKE_BUILD_DIR, setup.py): pip's build runs the CMake target
+there, up to date, rather than compiling the module a second time; without that variable, pip
+configures and compiles as a user's `pip install` does."""
 import os
 import pathlib
 import shutil
@@ -32,7 +33,7 @@ def source_copy(destination):
 def test_pip_install_builds_an_importable_package(tmp_path, grid):
     cmake = os.environ.get("DEFORMSEG_CMAKE")
     if not cmake:
-        pytest.skip("DEFORMSEG_CMAKE is set by CTest (python.pip_install), which runs this long build")
+        pytest.skip("DEFORMSEG_CMAKE is set by CTest (python.pip_install), which gives pip its cmake and build folder")
     source = source_copy(tmp_path / "source")
     environment = dict(os.environ, PATH=os.pathsep.join([str(pathlib.Path(cmake).parent), os.environ["PATH"]]))
     environment.pop("PYTHONPATH", None)  # the package under test must not hide the installed one
