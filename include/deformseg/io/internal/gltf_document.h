@@ -213,8 +213,13 @@ inline Bytes buffer_bytes(const Json& buffer, std::size_t index, const Glb_chunk
     if (!tinygltf::DecodeDataURI(&bytes, mime, uri->get<std::string>(), length, true))
       throw invalid_input(where + " has a data URI that is not " + std::to_string(length) + " bytes of base64");
   } else {
-    const File_bytes file = read_file_bytes(base_dir / decoded_uri(uri->get<std::string>()), length);
-    bytes.assign(file.begin(), file.begin() + file.size);
+    const std::filesystem::path path = base_dir / decoded_uri(uri->get<std::string>());
+    try {
+      const File_bytes file = read_file_bytes(path, length);
+      bytes.assign(file.begin(), file.begin() + file.size);
+    } catch (const invalid_input& e) {  // refused as the document's: its buffer is the file named
+      throw invalid_input(where + ", " + path.string() + ": " + e.message());
+    }
   }
   if (bytes.size() < length)
     throw invalid_input(where + " has " + std::to_string(bytes.size()) + " bytes, not the " + std::to_string(length) +
