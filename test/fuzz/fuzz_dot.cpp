@@ -3,7 +3,7 @@
 
 #include <deformseg/io/graphviz.h>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+DEFORMSEG_FUZZ_READER(dot) {
   return deformseg::fuzz::run_reader(data, size, ".dot", [](const std::filesystem::path& path) {
     deformseg::io::read_labelled_graph(path);
   });

@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-namespace {
+namespace fbx_collada_harness {
 
 // The input read a byte at a time; zeros past its end.
 class Bytes {
@@ -157,9 +157,8 @@ aiScene* scene(Bytes& in) {
   return s;
 }
 
-}  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+DEFORMSEG_FUZZ_READER(fbx_collada) {
   Bytes in(data, size);
   const std::unique_ptr<aiScene> built(scene(in));
   const std::filesystem::path name = "fuzz.fbx";
@@ -178,3 +177,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   });
   return 0;
 }
+
+}  // namespace fbx_collada_harness

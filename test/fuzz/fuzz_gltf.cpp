@@ -3,7 +3,7 @@
 
 #include <deformseg/io/gltf.h>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+DEFORMSEG_FUZZ_READER(gltf) {
   return deformseg::fuzz::run_reader(data, size, ".gltf", [](const std::filesystem::path& path) {
     deformseg::io::read_gltf(path, {});
   });

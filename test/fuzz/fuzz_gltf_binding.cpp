@@ -7,7 +7,7 @@
 
 #include <string>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+DEFORMSEG_FUZZ_READER(gltf_binding) {
   return deformseg::fuzz::run_reader(data, size, ".gltf", [](const std::filesystem::path& path) {
     const deformseg::io::Gltf_file bound(DEFORMSEG_FUZZ_BODY, path);
     for (std::size_t k = 0; k < bound.clip_names().size(); ++k) bound.read({.clip = std::to_string(k)});

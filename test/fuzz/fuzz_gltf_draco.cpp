@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace {
+namespace gltf_draco_harness {
 
 nlohmann::json draco_document(std::size_t bytes) {
   const auto accessor = [](int type, const char* shape) {
@@ -33,11 +33,12 @@ nlohmann::json draco_document(std::size_t bytes) {
           {"scenes", {{{"nodes", {0, 1}}}}}};
 }
 
-}  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+DEFORMSEG_FUZZ_READER(gltf_draco) {
   if (size == 0) return 0;  // a buffer of 0 bytes is not glTF
   const auto glb = deformseg::io::internal::gltf::glb_bytes(draco_document(size), {data, size});
   return deformseg::fuzz::run_reader(glb.data(), glb.size(), ".glb",
                                      [](const std::filesystem::path& path) { deformseg::io::read_gltf(path, {}); });
 }
+
+}  // namespace gltf_draco_harness

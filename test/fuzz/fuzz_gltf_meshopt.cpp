@@ -12,7 +12,7 @@
 #include <cstring>
 #include <vector>
 
-namespace {
+namespace gltf_meshopt_harness {
 
 using Json = nlohmann::json;
 
@@ -28,9 +28,8 @@ Json compressed_view(std::size_t at, std::size_t length, std::size_t count, std:
   return view;
 }
 
-}  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+DEFORMSEG_FUZZ_READER(gltf_meshopt) {
   if (size < 10) return 0;
   const std::size_t vertices = 1 + data[0] % 64, indices = 3 * (1 + data[1] % 64), keys = 1 + data[2] % 16;
   const bool sequence = (data[3] & 1) != 0;
@@ -81,3 +80,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   return deformseg::fuzz::run_reader(glb.data(), glb.size(), ".glb",
                                      [](const std::filesystem::path& path) { deformseg::io::read_gltf(path, {}); });
 }
+
+}  // namespace gltf_meshopt_harness

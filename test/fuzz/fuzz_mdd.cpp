@@ -5,7 +5,7 @@
 
 #include <deformseg/io/point_cache.h>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+DEFORMSEG_FUZZ_READER(mdd) {
   using namespace deformseg;
   const auto& path = fuzz::scratch_input(data, size, ".mdd");
   fuzz::expect_valid_outcome(path, [](const auto& p) { io::read_point_cache_info(p); });

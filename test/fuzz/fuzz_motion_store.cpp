@@ -20,7 +20,7 @@
 #include <utility>
 #include <vector>
 
-namespace {
+namespace motion_store_harness {
 
 using namespace deformseg;
 namespace fs = std::filesystem;
@@ -81,9 +81,8 @@ void read_whole(const fs::path& folder) {
   (void)keep;
 }
 
-}  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+DEFORMSEG_FUZZ_READER(motion_store) {
   if (size == 0) return 0;
   static const fs::path folder = fuzz::scratch_file(".store");
   std::error_code error;
@@ -114,3 +113,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   return 0;
 }
+
+}  // namespace motion_store_harness

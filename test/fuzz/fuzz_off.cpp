@@ -6,7 +6,7 @@
 
 #include <vector>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+DEFORMSEG_FUZZ_READER(off) {
   return deformseg::fuzz::run_reader(data, size, ".off", [](const std::filesystem::path& path) {
     const deformseg::io::Triangle_soup soup = deformseg::io::read_off(path, {.triangulate = true});
     std::vector<float> xyz(soup.points.size());

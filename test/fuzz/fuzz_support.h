@@ -1,5 +1,6 @@
 // What every reader's libFuzzer harness shares: the input written to a file (the readers take
-// paths), and the one outcome besides success that a reader may have.
+// paths), the one outcome besides success that a reader may have, and the registration of the
+// harness in the one fuzzing program (`DEFORMSEG_FUZZ_READER`; fuzz_readers.cpp).
 //
 // The file is one per process, in TMPDIR (or /dev/shm, which is memory), rewritten on every run:
 // a file per input would cost a create and an unlink per execution. Any other outcome (another
@@ -15,11 +16,35 @@
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include <unistd.h>
 
 namespace deformseg::fuzz {
+
+/// A harness: libFuzzer's entry for one reader.
+using Harness = int (*)(const std::uint8_t* data, std::size_t size);
+
+/// The harnesses of the program, by reader name.
+inline std::map<std::string, Harness>& harnesses() {
+  static std::map<std::string, Harness> all;
+  return all;
+}
+
+inline bool register_harness(const char* reader, Harness harness) {
+  harnesses().emplace(reader, harness);
+  return true;
+}
+
+/// Defines the harness of `reader`, `DEFORMSEG_FUZZ_READER(obj) { ... }`, whose body sees the
+/// input as `data` and `size`: one program holds every harness (a unity build shares the readers'
+/// compiled code), and runs the one its name gives (fuzz_obj, a link to it; fuzz_readers.cpp).
+#define DEFORMSEG_FUZZ_READER(reader)                                                              \
+  int fuzz_##reader(const std::uint8_t* data, std::size_t size);                                    \
+  [[maybe_unused]] static const bool fuzz_##reader##_registered =                                  \
+      ::deformseg::fuzz::register_harness(#reader, &fuzz_##reader);                                  \
+  int fuzz_##reader(const std::uint8_t* data, std::size_t size)
 
 /// The scratch file of this process, with `extension` (".obj", ...), which some readers look at.
 inline const std::filesystem::path& scratch_file(const char* extension) {
