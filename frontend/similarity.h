@@ -24,8 +24,7 @@ inline constexpr std::array similarity_policies{
     Choice{"motion-signature", "per-frame distributions of how fast, and how fast up or down, the surface moves at "
                                "several time scales, no correspondence needed (default)"},
     Choice{"histogram", "per-frame histograms of the strain, no correspondence needed; its values crowd near 1 "
-                        "(the Knight's Walking_A against a frozen copy of itself 0.997, against its Death_A 0.996): "
-                        "read the z-score or a rank, not the value"},
+                        "(chapter 7 of the manual gives figures): read the z-score or a rank, not the value"},
     Choice{"graph", "the thesis' method: evolving graphs, graph edit distances, clustering and label alignment "
                     "(Smith-Waterman); for bodies that deform alike, as the thesis' animals"},
     Choice{"self-similarity", "each animation's own frame x frame distances after rigid alignment"},

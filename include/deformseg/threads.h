@@ -77,8 +77,8 @@ inline std::optional<int> threads_of_openmp_variable() {
 /// @brief What a `threads` option of 0 (the default everywhere) stands for, on the calling
 /// thread: the count given to `set_default_threads` there, if any; else the environment variable
 /// `DEFORMSEG_NUM_THREADS`; else `OMP_NUM_THREADS` (its first number, at most `max_threads`,
-/// ignored when not a number of at least 1), which schedulers such as SLURM set and which
-/// deformseg followed when it used OpenMP; else the hardware's threads
+/// ignored when not a number of at least 1), which schedulers such as SLURM set; else the hardware's
+/// threads
 /// (`std::thread::hardware_concurrency()`, at least 1, at most `max_threads`).
 /// @throws invalid_input when `DEFORMSEG_NUM_THREADS` is set but not a whole number from 1 to
 /// `max_threads`, naming its value.

@@ -144,8 +144,8 @@ void bind_similarity(py::module_& m) {
       m, "similarity",
       R"doc(How alike two animations move (motion_similarity), as the tool's `similarity` command.
 
-The histogram policy's values crowd near 1 (the Knight's Walking_A against a frozen copy of itself
-0.997, against its Death_A 0.996): read the z-score or a rank, not the value. The z-score is
+The histogram policy's values crowd near 1 (chapter 7 of the manual gives figures): read the
+z-score or a rank, not the value. The z-score is
 computed against frame-shuffled copies of b, shuffled by a std::mt19937 seeded with `seed`.
 Returns a Similarity (value, score, alignment, z_score, ...). Complexity: the policy's describe of
 each, one compare, plus one compare per shuffled copy (motion-signature with DTW: O(T V) to

@@ -168,16 +168,12 @@ private:
 /// `max_seconds` is negative or not a number; cancelled when the calling thread's
 /// `Interruption_check` stops the search (threads.h; checked every 64 expansions).
 /// @par Complexity exponential in the worst case; each expanded partial mapping costs
-/// m + 1 assignment problems of at most n x m. Measured (test/bench/ged.cpp: random pairs with
-/// 3 labels, mean degree 2.5, Unit_costs; one core of a 2.6 GHz x86-64): 0.07 ms per pair at 8
-/// nodes, 0.3 ms at 10, 2 ms at 12, all exact; with edge probability 0.5, 0.8 ms at 10 nodes and
-/// 11 ms at 12.
+/// m + 1 assignment problems of at most n x m (chapter 10 of the manual gives times).
 struct Exact_ged {
   /// @brief The most partial mappings expanded (children generated) before the search stops and
-  /// reports bounds. Default 200,000: every random pair of the benchmark up to 12 nodes, sparse
-  /// or dense (edge probability 0.5), finishes with a few thousand at most, and dense 16-node
-  /// pairs usually do; an expansion costs some 10 to 50 microseconds on graphs of 12 to 30 nodes,
-  /// so the cap keeps any pair to seconds. 0: only Bipartite_ged's mapping and the root bound.
+  /// reports bounds. Default 200,000: enough for pairs of up to about 16 nodes, and a cap that
+  /// keeps any pair to seconds (chapter 10 of the manual gives the measurements). 0: only
+  /// Bipartite_ged's mapping and the root bound.
   std::size_t max_expanded = 200'000;
   /// @brief A time limit in seconds, checked every 64 expansions; 0 (the default): none. A time
   /// limit makes the result depend on the machine's speed; `max_expanded` does not.

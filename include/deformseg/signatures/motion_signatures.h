@@ -41,13 +41,11 @@ struct Motion_signature_options {
   /// interpolated linearly, so that the same motion sampled at any frame rate has the same rates.
   /// Near either end the span is cut at the animation's first or last instant, still over 2k, as if
   /// the body stood still before the first frame and after the last (game and captured clips mostly
-  /// start and end at rest; a span shifted inwards instead measured worse on the shared characters,
-  /// ROC-AUC 0.67 against 0.80). Short lags see speed, long ones the amplitude of a motion; the
+  /// start and end at rest). Short lags see speed, long ones the amplitude of a motion; the
   /// longest, 128/30 s (128 frames at 30 fps), spans most clips whole, from their first frame to
   /// their last, and so says how far the body ends from where it started (sat down, fallen, back
-  /// where it began): it raised mean average precision on the shared characters from 0.435 to 0.459,
-  /// every body left out in turn choosing it among longest lags of 32 to 128 thirtieths of a second
-  /// (chapter 7).
+  /// where it began). Chapter 7 of the manual gives how these choices measured on the shared
+  /// characters.
   /// Default {1, 4, 16, 128} thirtieths of a second (1, 4, 16 and 128 frames at 30 fps); each
   /// positive and finite.
   std::vector<double> lags = {1.0 / 30, 4.0 / 30, 16.0 / 30, 128.0 / 30};

@@ -26,11 +26,8 @@ namespace deformseg::spatiotemporal {
 
 /// @brief The options of `spatiotemporal_segmentation`, an aggregate for designated initializers.
 ///
-/// The clean-up defaults were chosen on the shared data (threshold 0.5, previous-pose strain):
-/// without them the horse gallop has 760 segments and 11.6 rigid regions per frame, the samba
-/// 1357 and 13.8; keeping segments of at least 10 triangles and 2 frames leaves 77 and 72
-/// segments, and absorbing rigid islands of up to 30 triangles leaves 1.27 and 1.30 rigid regions
-/// per frame (100 triangles would give 1.19 and 1.13: little more).
+/// The clean-up defaults keep the segments a body's parts make and drop the specks that noise in
+/// the strain makes; chapter 5 of the manual gives what they change on the shared data.
 struct Spatiotemporal_options {
   /// @brief The strain that labels cells: previous pose (default: deformed while it moves) or
   /// rest pose (deformed while it is away from its rest pose). Used by the overload that takes an

@@ -374,10 +374,7 @@ Strain_field<Value> strain_against(const Mesh& animation, const ReferenceGraph& 
 /// parameters are invalid (a given sigma that is not finite and > 0).
 /// @par Complexity
 /// O(T F), in parallel over (frame, block of triangles) work items, plus O(T F) for the
-/// normalisation. Measured (test/bench/strain.cpp, 2-core AMD EPYC): 95 to 120 million
-/// triangle-frames per second on one thread and 190 to 250 million on two, normalised, when
-/// compiled for AVX2 (`-march=x86-64-v3`); about 1.6 times fewer with the SSE2 of a default x86-64
-/// build. Gathering the vertices of each triangle through the index table takes most of the time.
+/// normalisation (chapter 10 of the manual gives throughputs).
 /// @sa Strain_options, Strain_field, put_strain_frame
 template <std::floating_point Value = float, mesh::DeformingMesh Mesh>
 Strain_field<Value> compute_strain(const Mesh& animation, const Strain_options& options = {}) {

@@ -168,9 +168,8 @@ std::size_t frame_histogram(std::span<const Value> strains, std::span<const doub
 /// is NaN; `options` valid (`bins >= 1`, `0 < min_strain < max_strain` finite, `threads` from 0 to `max_threads`).
 /// @throws invalid_input naming the first broken precondition (the triangle, or the frame and
 /// triangle of the first NaN).
-/// @par Complexity O(T (F + B)) with a logarithm per triangle-frame; O(T B) memory. Measured
-/// (test/bench/histograms.cpp, 100k triangles x 200 frames, 2-core AMD EPYC shared with other
-/// work): 115 million triangle-frames per second on one thread, 170 million on two.
+/// @par Complexity O(T (F + B)) with a logarithm per triangle-frame; O(T B) memory (chapter 10 of
+/// the manual gives throughputs).
 /// @sa histogram_distances, Strain_histogram_options
 template <std::floating_point Value>
 Strain_histograms strain_histograms(const Strain_field<Value>& field, std::span<const double> weights,
