@@ -56,11 +56,16 @@ inline std::vector<std::optional<std::size_t>> body_nodes_by_name(const tinygltf
   return body_node;
 }
 
+/// The determinant of an affine transform's linear part.
+inline double determinant(const Affine& a) {
+  const auto& m = a.m;
+  return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
+}
+
 /// The inverse of an invertible affine transform.
 inline Affine inverse(const Affine& a) {
   const auto& m = a.m;
-  const double det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
-                     m[2] * (m[4] * m[9] - m[5] * m[8]);
+  const double det = determinant(a);
   Affine b;
   b.m = {(m[5] * m[10] - m[6] * m[9]) / det, (m[2] * m[9] - m[1] * m[10]) / det, (m[1] * m[6] - m[2] * m[5]) / det, 0,
          (m[6] * m[8] - m[4] * m[10]) / det, (m[0] * m[10] - m[2] * m[8]) / det, (m[2] * m[4] - m[0] * m[6]) / det, 0,
@@ -71,11 +76,7 @@ inline Affine inverse(const Affine& a) {
 }
 
 /// The size of a transform: the cube root of its linear part's determinant's magnitude.
-inline double size_of(const Affine& a) {
-  const auto& m = a.m;
-  return std::cbrt(std::abs(m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
-                            m[2] * (m[4] * m[9] - m[5] * m[8])));
-}
+inline double size_of(const Affine& a) { return std::cbrt(std::abs(determinant(a))); }
 
 /// The rotation of a rotation matrix `r` (row-major 3x3, in the linear part of an Affine scaled by
 /// `size`) as a unit quaternion (x, y, z, w).

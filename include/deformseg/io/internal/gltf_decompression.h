@@ -60,7 +60,7 @@ inline void decode_compressed(Gltf_document& document, Decoding_budget& budget) 
   for (const char* name : {"EXT_meshopt_compression", "KHR_meshopt_compression"}) {
     if (!lists_extension(document.json, name)) continue;
 #if DEFORMSEG_HAS_MESHOPT
-    decode_meshopt_views(document, budget);
+    decode_meshopt_views(document, name, budget);
 #else
     refuse_without(name, "meshopt-compressed buffers", "libmeshoptimizer-dev");
 #endif

@@ -72,12 +72,6 @@ inline Glb_chunks glb_chunks(std::span<const unsigned char> file) {
   return chunks;
 }
 
-/// The JSON text of a .gltf or .glb file.
-inline std::string_view json_text(std::span<const unsigned char> file) {
-  if (is_glb(file)) return glb_chunks(file).json;
-  return {reinterpret_cast<const char*>(file.data()), file.size()};
-}
-
 /// `uri` with its %XX escapes decoded, as a file name.
 inline std::string decoded_uri(const std::string& uri) {
   std::string path;
@@ -135,8 +129,8 @@ private:
   std::size_t left_;
 };
 
-/// A buffer view's extension object `name`, or null.
-inline Json* view_extension(Json& object, const char* name) {
+/// The extension object `name` of a glTF object (a buffer view, a primitive), or null.
+inline Json* extension_object(Json& object, const char* name) {
   const auto extensions = object.find("extensions");
   if (extensions == object.end() || !extensions->is_object()) return nullptr;
   const auto it = extensions->find(name);
@@ -232,7 +226,8 @@ inline Bytes buffer_bytes(const Json& buffer, std::size_t index, const Glb_chunk
 /// `base_dir`).
 inline Gltf_document parse_document(std::span<const unsigned char> file, const std::filesystem::path& base_dir) {
   const bool glb = is_glb(file);
-  const Glb_chunks chunks = glb ? glb_chunks(file) : Glb_chunks{json_text(file), {}};
+  const Glb_chunks chunks =
+      glb ? glb_chunks(file) : Glb_chunks{{reinterpret_cast<const char*>(file.data()), file.size()}, {}};
   Gltf_document document;
   document.json = Json::parse(chunks.json, nullptr, false);
   if (document.json.is_discarded()) throw invalid_input("the glTF document is not valid JSON");

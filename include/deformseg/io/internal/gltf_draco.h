@@ -214,7 +214,7 @@ inline std::size_t accessor_index(const Gltf_document& document, const Json& obj
 /// Decodes one Draco-compressed primitive into `buffer`.
 inline void decode_draco_primitive(Gltf_document& document, Json& primitive, std::size_t buffer,
                                    Decoding_budget& budget, const std::string& where) {
-  const Json& extension = *view_extension(primitive, draco_extension);
+  const Json& extension = *extension_object(primitive, draco_extension);
   const std::string ext_where = where + ".extensions." + draco_extension;
   if (!extension.is_object()) throw invalid_input(ext_where + " must be an object");
   const auto mesh = decoded_draco_mesh(document, whole_number(extension, "bufferView", ext_where), ext_where);
@@ -255,11 +255,13 @@ inline void decode_draco_primitives(Gltf_document& document, Decoding_budget& bu
   if (meshes == document.json.end() || !meshes->is_array()) return;
   std::optional<std::size_t> decoded;
   for (std::size_t m = 0; m < meshes->size(); ++m) {
-    const auto primitives = (*meshes)[m].is_object() ? (*meshes)[m].find("primitives") : (*meshes)[m].end();
-    if (!(*meshes)[m].is_object() || primitives == (*meshes)[m].end() || !primitives->is_array()) continue;
+    Json& mesh = (*meshes)[m];
+    if (!mesh.is_object()) continue;
+    const auto primitives = mesh.find("primitives");
+    if (primitives == mesh.end() || !primitives->is_array()) continue;
     for (std::size_t p = 0; p < primitives->size(); ++p) {
       Json& primitive = (*primitives)[p];
-      if (!primitive.is_object() || view_extension(primitive, draco_extension) == nullptr) continue;
+      if (!primitive.is_object() || extension_object(primitive, draco_extension) == nullptr) continue;
       if (!decoded) decoded = open_buffer(document);
       const std::string where = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
       decode_draco_primitive(document, primitive, *decoded, budget, where);

@@ -15,8 +15,6 @@
 
 namespace deformseg::io::internal::gltf {
 
-inline constexpr const char* meshopt_extensions[] = {"EXT_meshopt_compression", "KHR_meshopt_compression"};
-
 /// One compressed view's extension object, read and checked.
 struct Meshopt_view {
   std::span<const unsigned char> source;
@@ -72,25 +70,24 @@ inline Bytes decoded_meshopt_view(const Meshopt_view& view, Decoding_budget& bud
   return out;
 }
 
-/// Decodes every meshopt-compressed buffer view of `document` into a new buffer, and points the
-/// view at its decoded bytes.
-inline void decode_meshopt_views(Gltf_document& document, Decoding_budget& budget) {
+/// Decodes every buffer view of `document` compressed with extension `name` (EXT_ or
+/// KHR_meshopt_compression) into a new buffer, and points the view at its decoded bytes.
+inline void decode_meshopt_views(Gltf_document& document, const char* name, Decoding_budget& budget) {
   const auto views = document.json.find("bufferViews");
   if (views == document.json.end() || !views->is_array()) return;
   std::optional<std::size_t> decoded;
-  for (std::size_t i = 0; i < views->size(); ++i)
-    for (const char* name : meshopt_extensions) {
-      Json& view = (*views)[i];
-      const Json* extension = view.is_object() ? view_extension(view, name) : nullptr;
-      if (extension == nullptr) continue;
-      const std::string where = "bufferViews[" + std::to_string(i) + "].extensions." + name;
-      const Bytes bytes = decoded_meshopt_view(meshopt_view(document, *extension, where), budget, where);
-      if (!decoded) decoded = open_buffer(document);
-      view["buffer"] = *decoded;
-      view["byteOffset"] = append_aligned(document.buffers[*decoded], bytes);
-      view["byteLength"] = bytes.size();
-      erase_extension(view, name);
-    }
+  for (std::size_t i = 0; i < views->size(); ++i) {
+    Json& view = (*views)[i];
+    const Json* extension = view.is_object() ? extension_object(view, name) : nullptr;
+    if (extension == nullptr) continue;
+    const std::string where = "bufferViews[" + std::to_string(i) + "].extensions." + name;
+    const Bytes bytes = decoded_meshopt_view(meshopt_view(document, *extension, where), budget, where);
+    if (!decoded) decoded = open_buffer(document);
+    view["buffer"] = *decoded;
+    view["byteOffset"] = append_aligned(document.buffers[*decoded], bytes);
+    view["byteLength"] = bytes.size();
+    erase_extension(view, name);
+  }
   if (decoded) close_buffer(document, *decoded);
 }
 
