@@ -1,9 +1,9 @@
 // The segments of single frames: a frame's graph, the node of each triangle, and that node
 // written into a Surface_mesh face property map; the triangles' areas weigh the nodes.
 #include <deformseg/mesh/face_areas.h>
-#include <deformseg/spatiotemporal/frame_segments.h>
-#include <deformseg/color/segment_colors.h>
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/spatiotemporal/frame_segments.h>
+#include <deformseg/spatiotemporal/segment_colors.h>
 
 #include <iostream>
 #include <numbers>
@@ -29,10 +29,10 @@ int main() {
   // The node of each face of frame 15 in a property map of the Surface_mesh.
   mesh::Surface_mesh mesh = animation.face_graph();
   auto node_of = mesh.add_property_map<mesh::Surface_mesh::Face_index, std::uint32_t>("f:segment_node", 0).first;
-  color::put_face_segments(frames, 15, mesh, node_of);
+  spatiotemporal::put_face_segments(frames, 15, mesh, node_of);
   std::size_t on_node_0 = 0;
   for (auto f : mesh.faces()) on_node_0 += node_of[f] == 0;
   std::cout << "frame 15: " << on_node_0 << " triangles on node 0 (the deformed band)\n";
-  std::cout << "the band's colour: " << int(color::segment_color(0).r) << ' ' << int(color::segment_color(0).g) << ' '
-            << int(color::segment_color(0).b) << '\n';
+  std::cout << "the band's colour: " << int(spatiotemporal::segment_color(0).r) << ' ' << int(spatiotemporal::segment_color(0).g) << ' '
+            << int(spatiotemporal::segment_color(0).b) << '\n';
 }

@@ -1,12 +1,12 @@
-// A motion store written, appended to and read back: io::Store_append adds clips (and replaces
-// one, which keeps its index) as one transaction; io::Motion_store maps them and finds a clip by
+// A motion store written, appended to and read back: store::Store_append adds clips (and replaces
+// one, which keeps its index) as one transaction; store::Motion_store maps them and finds a clip by
 // its path and name. The values follow a pattern that python/tests/test_store_format.py
 // recomputes, to check the format's Python reader bit for bit:
 //   clip c (of 12) has 1 + c % 5 rows of 4 values; value (row r, dimension k) = float(1000 c + 10 k + r) / 7,
 //   frame r = 2 r, summary = (float(c) / 3, -float(c) / 3); clip 5 is replaced by the same
 //   pattern plus 0.5 (in float) in a second append.
 // Usage: motion_store [FOLDER]   (default: a folder "store" in the working directory, made anew)
-#include <deformseg/io/motion_store.h>
+#include <deformseg/store/store_append.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -16,12 +16,12 @@
 
 namespace {
 
-namespace io = deformseg::io;
+namespace store = deformseg::store;
 
 constexpr std::size_t width = 4;
 
 struct Clip {
-  io::Store_record record;
+  store::Store_record record;
   std::vector<float> values;  // dimension-major: width runs of `rows` floats
   std::vector<std::uint32_t> frames;
   std::vector<float> summary;
@@ -44,7 +44,7 @@ Clip pattern(std::size_t c, float shift) {
   return clip;
 }
 
-void add(io::Store_append& append, const Clip& clip) {
+void add(store::Store_append& append, const Clip& clip) {
   append.add(clip.record, {clip.values.data(), clip.frames.size(), width}, clip.frames, clip.summary);
 }
 
@@ -56,12 +56,12 @@ int main(int argc, char** argv) {
   const char* options = R"({"policy": "example", "width": 4})";
   const char* layout = R"({"fields": ["third", "minus third"]})";
   {
-    io::Store_append append(folder, options, 2, layout);  // a new store: the folder is missing
+    store::Store_append append(folder, options, 2, layout);  // a new store: the folder is missing
     for (std::size_t c = 0; c < 10; ++c) add(append, pattern(c, 0));
     append.commit();
   }
   {
-    io::Store_append append(folder, options, 2, layout);
+    store::Store_append append(folder, options, 2, layout);
     const Clip changed = pattern(5, 0.5f);
     const std::size_t index = *append.store().find(changed.record.path, changed.record.clip);
     append.replace(index, changed.record, {changed.values.data(), changed.frames.size(), width}, changed.frames,
@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
     for (std::size_t c = 10; c < 12; ++c) add(append, pattern(c, 0));
     append.commit();
   }
-  const io::Motion_store store = io::Motion_store::open(folder, io::Verify::checksums);
+  const store::Motion_store store = store::Motion_store::open(folder, store::Verify::checksums);
   std::printf("%zu clips of %zu values per row, generation %llu\n", store.size(), store.width(),
               static_cast<unsigned long long>(store.generation()));
   const std::size_t i = *store.find("/motions/set1.glb", "Take1");

@@ -1,11 +1,12 @@
 // The nearest motions of a query among clips kept in a motion store: tubes bending on their own
 // schedules are described once and written into a store with their summaries; the store, opened
-// later (by another program, say), is searched in place through io::Stored_motions, and gives the
+// later (by another program, say), is searched in place through store::Stored_motions, and gives the
 // values and order the same clips give in memory.
-#include <deformseg/io/stored_motions.h>
 #include <deformseg/mesh/synthetic.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/nearest_motions.h>
+#include <deformseg/store/store_append.h>
+#include <deformseg/store/stored_motions.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -22,13 +23,13 @@ int main() {
   {
     // [write]
     constexpr std::size_t chunks = 4;
-    io::Store_append append(folder, R"({"policy": "motion-signature"})", similarity::summary_width(64, chunks),
-                            io::motion_summary_layout(chunks));
+    store::Store_append append(folder, R"({"policy": "motion-signature"})", similarity::summary_width(64, chunks),
+                            store::motion_summary_layout(chunks));
     for (std::size_t i = 0; i < 10; ++i) {
       mesh::Bending_tube spec;  // tube i bends in 2 + i frames, holds, unbends
       spec.schedule = {{5, {0.0}}, {2 + i, {std::numbers::pi / 2}}, {6, {}}, {2 + i, {0.0}}, {5, {}}};
       const auto description = policy.describe(mesh::make_bending_tube(spec).animation);
-      io::Store_record record;
+      store::Store_record record;
       record.path = "/tubes/tube" + std::to_string(i) + ".pc2";
       record.frame_count = std::uint32_t(description.frames.size());
       record.fps = 30;
@@ -41,7 +42,7 @@ int main() {
     // [write]
   }
   // [search]
-  const io::Stored_motions stored(io::Motion_store::open(folder));
+  const store::Stored_motions stored(store::Motion_store::open(folder));
   const auto found = similarity::nearest_motions(stored.view(3), stored, {.k = 3});
   // [search]
   const auto expected = similarity::nearest_motions(in_memory.view(3), in_memory, {.k = 3});

@@ -1,11 +1,11 @@
 // Writes the evolving graph of a tube bending at two joints in turn as Graphviz DOT files (one per
 // key frame), and every frame as a PLY mesh coloured by segment.
-#include <deformseg/spatiotemporal/evolving_graph.h>
-#include <deformseg/mesh/face_areas.h>
-#include <deformseg/io/graphviz.h>
 #include <deformseg/io/frame_sequence.h>
-#include <deformseg/color/segment_colors.h>
+#include <deformseg/mesh/face_areas.h>
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
+#include <deformseg/spatiotemporal/segment_colors.h>
+#include <deformseg/spatiotemporal/segment_graph_dot.h>
 
 #include <iostream>
 #include <numbers>
@@ -24,16 +24,16 @@ int main() {
   const spatiotemporal::Frame_segments frames(segmentation, animation.triangles(), mesh::face_areas(animation, 0));
   const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(frames);
 
-  for (const auto& file : io::write_key_frames_dot(graph, "two_joints_dot")) std::cout << file.string() << '\n';
+  for (const auto& file : spatiotemporal::write_key_frames_dot(graph, "two_joints_dot")) std::cout << file.string() << '\n';
   // [dot]
   std::cout << "key frame 1 as DOT:\n";
-  io::write_segment_graph_dot(std::cout, graph[1].graph);
+  spatiotemporal::write_segment_graph_dot(std::cout, graph[1].graph);
 
   // Segment 0 has the same colour in every frame; rigid triangles are grey.
   // [colors]
   const auto files =
       io::write_sequence(animation, "two_joints_segments",
-                         {.face_colors = [&](std::size_t t) { return color::segment_face_colors(frames, t); }});
+                         {.face_colors = [&](std::size_t t) { return spatiotemporal::segment_face_colors(frames, t); }});
   // [colors]
   std::cout << files.size() << " coloured meshes in two_joints_segments/\n";
 }

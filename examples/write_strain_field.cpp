@@ -1,7 +1,7 @@
 // A strain field saved for other programs: as CSV for a spreadsheet, and as a JSON header line
 // plus raw little-endian float32 values for NumPy and large data.
-#include <deformseg/io/strain_field.h>
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/strain/strain_field_files.h>
 
 #include <filesystem>
 #include <fstream>
@@ -18,8 +18,8 @@ int main() {
   const auto folder = std::filesystem::temp_directory_path() / "deformseg-write-strain-field";
   std::filesystem::create_directories(folder);
   // [write]
-  io::write_strain_csv(field, folder / "strain.csv");     // 16 lines of 1568 values
-  io::write_strain_binary(field, folder / "strain.bin");  // header line, then 16 x 1568 float32
+  strain::write_strain_csv(field, folder / "strain.csv");     // 16 lines of 1568 values
+  strain::write_strain_binary(field, folder / "strain.bin");  // header line, then 16 x 1568 float32
 
   std::ifstream binary(folder / "strain.bin", std::ios::binary);
   // [write]

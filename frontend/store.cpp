@@ -1,13 +1,14 @@
 #include "store.h"
 
+#include <deformseg/evaluation/motion_labels.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/frame_stream.h>
 #include <deformseg/io/gltf.h>
-#include <deformseg/io/motion_labels.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/store/store_append.h>
 
 #include <sys/stat.h>
 
@@ -88,9 +89,9 @@ std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_o
                                         std::vector<std::string>* unreadable) {
   std::vector<Clip_source> out;
   std::map<fs::path, std::size_t> rows_of_file;
-  const std::vector<io::Labelled_clip> rows = io::read_motion_labels(labels);
-  for (const io::Labelled_clip& row : rows) ++rows_of_file[row.file];
-  for (const io::Labelled_clip& row : rows) {
+  const std::vector<evaluation::Labelled_clip> rows = evaluation::read_motion_labels(labels);
+  for (const evaluation::Labelled_clip& row : rows) ++rows_of_file[row.file];
+  for (const evaluation::Labelled_clip& row : rows) {
     const std::string file = row.file.string();
     if (!io::is_character_file(row.file)) {
       if (rows_of_file[row.file] > 1)
@@ -149,9 +150,9 @@ File_stamp stamp(const std::vector<fs::path>& files) {
 
 // The files' hash: `hash_file` of one file, a hash of their hashes for several.
 std::uint64_t hash_files(const std::vector<fs::path>& files) {
-  if (files.size() == 1) return io::hash_file(files.front());
+  if (files.size() == 1) return store::hash_file(files.front());
   std::uint64_t hash = 0xcbf29ce484222325ull;
-  for (const fs::path& file : files) hash = (hash ^ io::hash_file(file)) * 0x100000001b3ull;
+  for (const fs::path& file : files) hash = (hash ^ store::hash_file(file)) * 0x100000001b3ull;
   return hash == 0 ? 1 : hash;
 }
 
@@ -217,7 +218,7 @@ std::string store_description(const similarity::Default_similarity& policy) {
   return description.dump();
 }
 
-similarity::Policy_choice stored_policy_choice(const io::Motion_store& store) {
+similarity::Policy_choice stored_policy_choice(const store::Motion_store& store) {
   const std::string manifest = (store.folder() / "store.json").string();
   const nlohmann::json stored = nlohmann::json::parse(store.description(), nullptr, false);
   if (!stored.is_object() || !stored.contains("up"))
@@ -248,7 +249,7 @@ std::string input_options_text(const std::string& file, const Input_options& opt
   return text.dump();
 }
 
-Input_options recorded_input_options(const io::Store_record& record) {
+Input_options recorded_input_options(const store::Store_record& record) {
   Input_options options;
   const nlohmann::json o = nlohmann::json::parse(record.input_options, nullptr, false);
   try {
@@ -264,9 +265,9 @@ Input_options recorded_input_options(const io::Store_record& record) {
   return options;
 }
 
-io::Store_record source_record(const Clip_source& clip, const Input_options& all_clips, bool hash) {
+store::Store_record source_record(const Clip_source& clip, const Input_options& all_clips, bool hash) {
   const Input_options options = with_body(clip.body, all_clips);
-  io::Store_record record;
+  store::Store_record record;
   record.path = clip.file;
   record.clip = clip.clip;
   record.input_options = input_options_text(clip.file, options);
@@ -286,7 +287,7 @@ io::Store_record source_record(const Clip_source& clip, const Input_options& all
   return record;
 }
 
-bool unchanged(const io::Store_record& stored, const io::Store_record& now, bool hash) {
+bool unchanged(const store::Store_record& stored, const store::Store_record& now, bool hash) {
   const bool same_source = hash ? stored.source_hash != 0 && stored.source_hash == now.source_hash
                                 : stored.source_mtime_ns == now.source_mtime_ns;
   return same_source && stored.input_options == now.input_options && stored.source_size == now.source_size &&
@@ -294,8 +295,8 @@ bool unchanged(const io::Store_record& stored, const io::Store_record& now, bool
          stored.topology_mtime_ns == now.topology_mtime_ns;
 }
 
-bool up_to_date(const io::Store_record& stored, const Clip_source& clip, const Input_options& options) {
-  io::Store_record now = source_record(clip, options, false);
+bool up_to_date(const store::Store_record& stored, const Clip_source& clip, const Input_options& options) {
+  store::Store_record now = source_record(clip, options, false);
   if (unchanged(stored, now, false)) return true;
   if (stored.source_hash == 0) return false;
   now.source_hash = hash_files(source_files(clip.file));
@@ -496,7 +497,7 @@ private:
 std::size_t describe_batch(int threads) { return std::max<std::size_t>(32, 4 * std::size_t(threads)); }
 
 // Appends `described` as clip `clip` of `record` (replacing the clip's old description, if any).
-void append_clip(io::Store_append& append, const Clip_source& clip, const io::Store_record& record,
+void append_clip(store::Store_append& append, const Clip_source& clip, const store::Store_record& record,
                  const Described_clip& described, Describe_report& report) {
   const similarity::Motion_signature_view view = similarity::view(described.description);
   const std::vector<std::uint32_t> frames(described.description.frames.begin(), described.description.frames.end());
@@ -513,8 +514,8 @@ void append_clip(io::Store_append& append, const Clip_source& clip, const io::St
 // changed, a file's together in the order of the files' first clips (the order they are appended
 // in); the others are reported skipped.
 std::vector<std::size_t> clips_to_describe(const std::vector<Clip_source>& clips, const Input_options& options,
-                                           bool hash, bool skip_unreadable, const io::Motion_store& store,
-                                           std::vector<io::Store_record>& records, Describe_report& report) {
+                                           bool hash, bool skip_unreadable, const store::Motion_store& store,
+                                           std::vector<store::Store_record>& records, Describe_report& report) {
   std::map<std::string, std::vector<std::size_t>> of_file;
   std::vector<std::string> files;
   for (std::size_t i = 0; i < clips.size(); ++i) {
@@ -589,13 +590,13 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
                                     const Input_options& options, const similarity::Default_similarity& policy,
                                     const Describe_run& run, const std::function<void(const std::string&)>& say) {
   const auto start_append = [&] {
-    return std::make_unique<io::Store_append>(folder, store_description(policy),
+    return std::make_unique<store::Store_append>(folder, store_description(policy),
                                               similarity::summary_width(signature_width(policy), store_summary_chunks),
-                                              io::motion_summary_layout(store_summary_chunks));
+                                              store::motion_summary_layout(store_summary_chunks));
   };
-  std::unique_ptr<io::Store_append> append = start_append();
+  std::unique_ptr<store::Store_append> append = start_append();
   Describe_report report;
-  std::vector<io::Store_record> records(clips.size());
+  std::vector<store::Store_record> records(clips.size());
   const std::vector<std::size_t> order =
       clips_to_describe(clips, options, run.hash, run.skip_unreadable, append->store(), records, report);
   Gltf_parses parses(clips, order, options);
@@ -648,7 +649,7 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
       } else {
         if (!described[k].warning.empty()) say("warning: " + clip.name() + ": " + described[k].warning);
         if (!append) append = start_append();
-        io::Store_record& record = records[order[first + k]];
+        store::Store_record& record = records[order[first + k]];
         record.frame_count = described[k].frame_count;
         record.fps = described[k].fps;
         append_clip(*append, clip, record, described[k], report);
@@ -680,13 +681,13 @@ Description_plan plan_description(const std::string& folder, const std::vector<C
                                   bool hash) {
   std::error_code error;
   const bool exists = std::filesystem::exists(std::filesystem::path(folder) / "store.json", error);
-  const io::Motion_store store = exists ? io::Motion_store::open(folder) : io::Motion_store{};
+  const store::Motion_store store = exists ? store::Motion_store::open(folder) : store::Motion_store{};
   if (exists && nlohmann::json::parse(store.description()) != nlohmann::json::parse(store_description(policy)))
     throw invalid_input("the store's clips were described with other options (deformseg store info " + folder +
                             " gives them) than " + store_description(policy),
                         {.file = folder});
   Description_plan plan;
-  std::vector<io::Store_record> records(clips.size());
+  std::vector<store::Store_record> records(clips.size());
   plan.order = clips_to_describe(clips, options, hash, false, store, records, plan.report);
   plan.report.clips = store.size();
   return plan;
@@ -698,19 +699,19 @@ Describe_report merge_stores(const std::string& folder, const std::vector<std::s
   if (parts.empty()) {
     std::error_code error;
     if (std::filesystem::exists(std::filesystem::path(folder) / "store.json", error))
-      report.clips = io::Motion_store::open(folder).size();
+      report.clips = store::Motion_store::open(folder).size();
     return report;
   }
-  const io::Motion_store first = io::Motion_store::open(parts.front());
-  io::Store_append append(folder, first.description(), first.summary_width(), first.summary_layout());
+  const store::Motion_store first = store::Motion_store::open(parts.front());
+  store::Store_append append(folder, first.description(), first.summary_width(), first.summary_layout());
   for (const std::string& name : parts) {
-    const io::Motion_store part = io::Motion_store::open(name);
+    const store::Motion_store part = store::Motion_store::open(name);
     if (part.description() != first.description() || part.summary_layout() != first.summary_layout())
       throw invalid_input("this part's clips were described with other options than " + parts.front() + "'s",
                           {.file = name});
     say("merging " + std::to_string(part.size()) + " clip(s) of " + name);
     for (std::size_t i = 0; i < part.size(); ++i) {
-      const io::Store_record record = part.record(i);
+      const store::Store_record record = part.record(i);
       const std::vector<std::uint32_t> frames(part.frames(i).begin(), part.frames(i).end());
       const std::string clip_name = stored_clip_name(part, i);
       if (const std::optional<std::size_t> at = append.store().find(record.path, record.clip)) {
@@ -727,8 +728,8 @@ Describe_report merge_stores(const std::string& folder, const std::vector<std::s
   return report;
 }
 
-std::string stored_clip_name(const io::Motion_store& store, std::size_t i) {
-  const io::Store_record record = store.record(i);
+std::string stored_clip_name(const store::Motion_store& store, std::size_t i) {
+  const store::Store_record record = store.record(i);
   return record.clip.empty() ? record.path : record.path + "#" + record.clip;
 }
 

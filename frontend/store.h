@@ -6,10 +6,10 @@
 #include "inputs.h"
 #include "similarity.h"
 
-#include <deformseg/io/motion_store.h>
-#include <deformseg/io/stored_motions.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/policy_choice.h>
+#include <deformseg/store/motion_store.h>
+#include <deformseg/store/stored_motions.h>
 
 #include <cstddef>
 #include <functional>
@@ -72,7 +72,7 @@ std::string store_description(const similarity::Default_similarity& policy);
 /// the store's clips were.
 /// @throws invalid_input naming the store when its description is not one this front end writes
 /// (another version of deformseg, other options): the message says which member differs.
-similarity::Policy_choice stored_policy_choice(const io::Motion_store& store);
+similarity::Policy_choice stored_policy_choice(const store::Motion_store& store);
 
 /// The input options as a store records them: the options that change what is read (fps,
 /// topology, triangulate, weld as it applies to `file`, refuse_defects), as canonical JSON.
@@ -80,20 +80,20 @@ std::string input_options_text(const std::string& file, const Input_options& opt
 
 /// The input options a record holds (`input_options_text`), read back; the defaults when the text
 /// is not one this front end writes (the clip then reads as changed).
-Input_options recorded_input_options(const io::Store_record& record);
+Input_options recorded_input_options(const store::Store_record& record);
 
 /// The record of `clip` as its source is now (path, clip, options, size, modification time,
 /// topology; the file's hash with `hash`), without frame count and fps.
 /// @throws invalid_input naming the file when it cannot be read.
-io::Store_record source_record(const Clip_source& clip, const Input_options& options, bool hash);
+store::Store_record source_record(const Clip_source& clip, const Input_options& options, bool hash);
 
 /// True when `stored` was described from the source `now` describes: the same input options,
 /// size and topology, and the same hash (`hash`, when `stored` has one) or modification time.
-bool unchanged(const io::Store_record& stored, const io::Store_record& now, bool hash);
+bool unchanged(const store::Store_record& stored, const store::Store_record& now, bool hash);
 
 /// True when `stored` is the clip as its source is now: the same input options, size and topology,
 /// and the same modification time, or, when it differs, the same hash (if `stored` has one).
-bool up_to_date(const io::Store_record& stored, const Clip_source& clip, const Input_options& options);
+bool up_to_date(const store::Store_record& stored, const Clip_source& clip, const Input_options& options);
 
 /// What `describe_into_store` did, each clip named ("FILE" or "FILE#CLIP").
 struct Describe_report {
@@ -182,6 +182,6 @@ Describe_report merge_stores(const std::string& folder, const std::vector<std::s
                              const std::function<void(const std::string&)>& say);
 
 /// A store's clip `i` named for reports: "FILE" or "FILE#CLIP".
-std::string stored_clip_name(const io::Motion_store& store, std::size_t i);
+std::string stored_clip_name(const store::Motion_store& store, std::size_t i);
 
 }  // namespace deformseg::frontend

@@ -7,7 +7,7 @@ namespace {
 
 // Some clips of a store, in a given order (a similarity::MotionCollection).
 struct Selected_clips {
-  const io::Stored_motions* stored;
+  const store::Stored_motions* stored;
   std::vector<std::size_t> indices;
 
   std::size_t size() const { return indices.size(); }
@@ -24,8 +24,8 @@ std::string listed_names(const std::vector<std::string>& names) {
 
 }  // namespace
 
-Store_search::Store_search(const std::string& folder, io::Verify verify)
-    : clips_(io::Motion_store::open(folder, verify)),
+Store_search::Store_search(const std::string& folder, store::Verify verify)
+    : clips_(store::Motion_store::open(folder, verify)),
       policy_(store_policy(stored_policy_choice(clips_.store()), Front::command_line)) {}
 
 std::string Store_search::name(std::size_t i) const { return stored_clip_name(store(), i); }
@@ -113,7 +113,7 @@ std::vector<std::size_t> Store_search::labelled(const std::string& labels, const
       missing.push_back(clip.name());
       continue;
     }
-    const io::Store_record record = store().record(*at);
+    const store::Store_record record = store().record(*at);
     if (!up_to_date(record, clip, read.value_or(recorded_input_options(record)))) stale.push_back(clip.name());
     else indices.push_back(*at);
   }

@@ -5,11 +5,11 @@
 
 #include "similarity.h"
 
-#include <deformseg/io/stored_motions.h>
 #include <deformseg/mesh/default_mesh.h>
 #include <deformseg/similarity/find_motion_in_collection.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/nearest_motions.h>
+#include <deformseg/store/stored_motions.h>
 
 #include <cstddef>
 #include <optional>
@@ -24,11 +24,11 @@ class Store_search {
   /// Opens the store in `folder`, checked as `verify` asks.
   /// @throws invalid_input naming the store when it cannot be opened or was described with options
   /// this front end does not write.
-  explicit Store_search(const std::string& folder, io::Verify verify = io::Verify::structure);
+  explicit Store_search(const std::string& folder, store::Verify verify = store::Verify::structure);
 
   std::size_t size() const { return clips_.size(); }
-  const io::Stored_motions& clips() const { return clips_; }
-  const io::Motion_store& store() const { return clips_.store(); }
+  const store::Stored_motions& clips() const { return clips_; }
+  const store::Motion_store& store() const { return clips_.store(); }
   const similarity::Default_similarity& policy() const { return policy_; }
   /// Clip `i` named for reports: "FILE" or "FILE#CLIP".
   std::string name(std::size_t i) const;
@@ -87,7 +87,7 @@ class Store_search {
   // Refuses, naming the store, a block (`what`: rows, columns, candidates) that is not one of its clips.
   void check_range(std::optional<similarity::Clip_range> range, const char* what) const;
 
-  io::Stored_motions clips_;
+  store::Stored_motions clips_;
   similarity::Default_similarity policy_;
 };
 

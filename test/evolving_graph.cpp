@@ -2,10 +2,11 @@
 // random label volumes, the key frames of bending tubes written out by hand, invariance, real data.
 #include "test_support.h"
 
-#include <deformseg/spatiotemporal/evolving_graph.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/graphviz.h>
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
+#include <deformseg/spatiotemporal/segment_graph_dot.h>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <Eigen/Geometry>
@@ -269,7 +270,7 @@ TEST_CASE("evolving graph: Graphviz draws every key frame of the horse", "[evolv
   const auto folder = test::unpacked("horse-gallop/horse-gallop.tar.xz") / "horse-gallop";
   const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(io::read_frame_sequence(folder.string()));
   const auto dir = test::fresh_dir("horse_key_frames_dot");
-  const auto files = io::write_key_frames_dot(graph, dir);
+  const auto files = spatiotemporal::write_key_frames_dot(graph, dir);
   REQUIRE(files.size() == graph.size());
   std::size_t with_exponent = 0;
   for (const auto& file : files) {
@@ -292,7 +293,7 @@ TEST_CASE("evolving graph: a rigid node has no segment attribute in DOT, as it h
       graph);
   boost::add_edge(0, 1, graph);
   std::ostringstream text;
-  io::write_segment_graph_dot(text, graph);
+  spatiotemporal::write_segment_graph_dot(text, graph);
   const std::string dot = text.str();
   INFO(dot);
   CHECK(dot.find("0[label=\"R\", kind=\"rigid\", triangles=\"30\", area=\"0.75\"") != std::string::npos);

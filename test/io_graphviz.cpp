@@ -1,8 +1,8 @@
 // The readers of graphs and labels first: no io header after them may lose deformseg::internal.
-#include <deformseg/io/motion_labels.h>
+#include <deformseg/evaluation/motion_labels.h>
+#include <deformseg/io/gltf.h>
 #include <deformseg/io/graphviz.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/io/gltf.h>
 
 #include <deformseg/ged/exact_ged.h>
 

@@ -1,13 +1,13 @@
-// Tests of retrieval_evaluation.h, io/motion_labels.h and the query x database similarity_matrix
+// Tests of retrieval_evaluation.h, evaluation/motion_labels.h and the query x database similarity_matrix
 // (with its progress callback): figures computed by hand, the exclusion rules, ties, queries
 // without a relevant candidate, and a brute-force check of ROC-AUC.
 #include "similarity_tubes.h"
 #include "test_support.h"
 
-#include <deformseg/io/motion_labels.h>
-#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/evaluation/motion_labels.h>
 #include <deformseg/evaluation/retrieval_evaluation.h>
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/threads.h>
 
 #include <random>
@@ -213,7 +213,7 @@ TEST_CASE("read_motion_labels: columns by name, defaults, files relative to the 
   const auto path = test::write_file("labels/set/labels.csv",
                                      "# a comment\nfile, clip,motion,rig\r\nKnight.glb,Walking_A,walk,kaykit\r\n\n"
                                      "frames/horse,,gallop,\n");
-  const auto rows = io::read_motion_labels(path);
+  const auto rows = evaluation::read_motion_labels(path);
   REQUIRE(rows.size() == 2);
   CHECK(rows[0].file == path.parent_path() / "Knight.glb");
   CHECK(rows[0].item.clip == "Walking_A");
@@ -225,7 +225,7 @@ TEST_CASE("read_motion_labels: columns by name, defaults, files relative to the 
   CHECK(rows[1].item.rig.empty());
 
   const auto with_body = test::write_file("labels/body.csv", "body,motion,file,clip\nfox,-,/abs/Fox.glb,Survey\n");
-  const auto b = io::read_motion_labels(with_body);
+  const auto b = evaluation::read_motion_labels(with_body);
   CHECK(b[0].item.body == "fox");
   CHECK(b[0].item.motion == "-");
   CHECK(b[0].file == "/abs/Fox.glb");
@@ -235,7 +235,7 @@ TEST_CASE("read_motion_labels: columns by name, defaults, files relative to the 
   const auto bodies = test::write_file("labels/set/bodies.csv",
                                        "file,clip,motion,body_file\nclips/walk.glb,Walk,walk,avatars/A.glb\n"
                                        "clips/walk.glb,Run,run,/abs/B.fbx\nclips/idle.glb,,idle,\n");
-  const auto r = io::read_motion_labels(bodies);
+  const auto r = evaluation::read_motion_labels(bodies);
   CHECK(r[0].body_file == bodies.parent_path() / "avatars/A.glb");
   CHECK(r[1].body_file == "/abs/B.fbx");
   CHECK(r[2].body_file.empty());
@@ -250,7 +250,7 @@ TEST_CASE("read_motion_labels: quoted fields as spreadsheets and R write them, a
                                      "\"Knight.glb\",\"Walk, then \"\"run\"\"\",\"walk\"\r\n"
                                      " \" spaced .glb\" , \"\" ,-\n"
                                      "a.glb,\"x\",\"\"\"\"\n");
-  const auto rows = io::read_motion_labels(path);
+  const auto rows = evaluation::read_motion_labels(path);
   REQUIRE(rows.size() == 3);
   CHECK(rows[0].file == path.parent_path() / "Knight.glb");
   CHECK(rows[0].item.clip == "Walk, then \"run\"");
@@ -264,7 +264,7 @@ TEST_CASE("read_motion_labels: quoted fields as spreadsheets and R write them, a
 TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]") {
   const auto fails = [](const std::string& name, const std::string& text, const std::string& message) {
     const auto path = test::write_file("labels/" + name, text);
-    CHECK_THROWS_WITH(io::read_motion_labels(path), path.string() + message);
+    CHECK_THROWS_WITH(evaluation::read_motion_labels(path), path.string() + message);
   };
   fails("unknown.csv", "file,clip,motion,colour\n",
         ":1: unknown column 'colour': the header is file,clip,motion[,rig][,body][,body_file]");
@@ -279,7 +279,7 @@ TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]
   fails("open_quote.csv", "file,clip,motion\na.glb,\"x,walk\n",
         ":2: field 2 opens a quote that the line does not close");
   fails("after_quote.csv", "file,clip,motion\na.glb,\"x\"y,walk\n", ":2: field 2 has text after its closing quote");
-  CHECK_THROWS_WITH(io::read_motion_labels(test::scratch_dir() / "labels/missing.csv"),
+  CHECK_THROWS_WITH(evaluation::read_motion_labels(test::scratch_dir() / "labels/missing.csv"),
                     Catch::Contains("missing.csv: cannot open the labels file"));
 }
 

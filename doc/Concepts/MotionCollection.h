@@ -28,6 +28,6 @@
 /// <tr><th>model <th>header <th>where the clips are
 /// <tr><td>deformseg::similarity::Motion_collection <td>`similarity/motion_collection.h`
 ///     <td>descriptions in memory, each summarised as it is added
-/// <tr><td>deformseg::io::Stored_motions <td>`io/stored_motions.h`
+/// <tr><td>deformseg::store::Stored_motions <td>`store/stored_motions.h`
 ///     <td>a motion store on disk (@ref store_format), read in its memory mapping
 /// </table>

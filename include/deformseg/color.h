@@ -1,8 +1,7 @@
 /// @file color.h
-/// @brief Every public header of module `color`, colours of strain and segments, for figures and coloured
-/// meshes.
+/// @brief Every public header of module `color`: the colour type of figures and coloured meshes,
+/// and the colour map of strain.
 #pragma once
 
 #include <deformseg/color/color.h>
-#include <deformseg/color/segment_colors.h>
 #include <deformseg/color/strain_colors.h>

@@ -1,6 +1,7 @@
 /// @file io.h
-/// @brief Every public header of module `io`, readers and writers: one header per format, the animation and
-/// mesh readers that choose by extension, mesh repair.
+/// @brief Every public header of module `io`, the mesh and animation formats: one header per
+/// format, the animation and mesh readers that choose by extension, mesh repair, files written
+/// whole or not at all.
 #pragma once
 
 #include <deformseg/io/character_files.h>
@@ -15,14 +16,10 @@
 #include <deformseg/io/frame_stream.h>
 #include <deformseg/io/graphviz.h>
 #include <deformseg/io/mesh_repair.h>
-#include <deformseg/io/motion_labels.h>
-#include <deformseg/io/motion_store.h>
 #include <deformseg/io/obj.h>
 #include <deformseg/io/off.h>
 #include <deformseg/io/ply.h>
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/io/read_mesh.h>
-#include <deformseg/io/stored_motions.h>
-#include <deformseg/io/strain_field.h>
 #include <deformseg/io/triangle_soup.h>

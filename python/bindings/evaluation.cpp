@@ -6,7 +6,7 @@
 #include "pickling.h"
 #include "store.h"
 
-#include <deformseg/io/motion_labels.h>
+#include <deformseg/evaluation/motion_labels.h>
 #include <deformseg/evaluation/retrieval_evaluation.h>
 
 #include <pybind11/numpy.h>
@@ -89,7 +89,7 @@ evaluation::Retrieval_scores evaluate(const py::object& similarity_like, const p
 }
 
 py::list motion_labels(const std::filesystem::path& path) {
-  const std::vector<io::Labelled_clip> clips = io::read_motion_labels(path);
+  const std::vector<evaluation::Labelled_clip> clips = evaluation::read_motion_labels(path);
   py::list out;
   for (const auto& c : clips) {
     py::dict d;

@@ -11,7 +11,7 @@
 
 #include "frontend/store.h"
 
-#include <deformseg/io/motion_labels.h>
+#include <deformseg/evaluation/motion_labels.h>
 #include <deformseg/similarity/nearest_motions.h>
 
 #include <pybind11/functional.h>
@@ -47,12 +47,12 @@ constexpr auto describe_table =
     std::tuple_cat(frontend::input_parameters, std::tuple{std::get<3>(frontend::policy_parameters)});
 static_assert(std::string_view(std::get<8>(describe_table).name) == "up");
 
-io::Verify verify_of(const std::string& name) {
+store::Verify verify_of(const std::string& name) {
   frontend::check_choice("verify", name, store_verifications, frontend::Front::python);
-  return name == "checksums" ? io::Verify::checksums : io::Verify::structure;
+  return name == "checksums" ? store::Verify::checksums : store::Verify::structure;
 }
 
-std::string verify_name(io::Verify verify) { return verify == io::Verify::checksums ? "checksums" : "structure"; }
+std::string verify_name(store::Verify verify) { return verify == store::Verify::checksums ? "checksums" : "structure"; }
 
 std::string folder_of(const Opened_store& s) { return s.search.store().folder().string(); }
 
@@ -139,7 +139,7 @@ py::dict merge_stores(const std::filesystem::path& store, const std::vector<std:
 }
 
 Opened_store open_store_at(const std::filesystem::path& folder, const std::string& verify) {
-  const io::Verify how = verify_of(verify);
+  const store::Verify how = verify_of(verify);
   Interruptible_call call;
   return Opened_store{frontend::Store_search(folder.string(), how), how};
 }
@@ -174,7 +174,7 @@ std::optional<similarity::Clip_range> clip_range(const py::object& range, const 
 }
 
 py::dict record_dict(const Opened_store& s, std::size_t i) {
-  const io::Store_record r = s.search.store().record(i);
+  const store::Store_record r = s.search.store().record(i);
   return py::dict("index"_a = i, "name"_a = s.search.name(i), "path"_a = r.path, "clip"_a = r.clip,
                   "frames"_a = r.frame_count, "fps"_a = r.fps, "rows"_a = r.rows,
                   "input_options"_a = python_of(nlohmann::json::parse(r.input_options, nullptr, false)),
@@ -193,7 +193,7 @@ py::dict nearest_dict(const Opened_store& s, const similarity::Nearest_motions& 
   py::list neighbours;
   for (std::size_t r = 0; r < found.neighbours.size(); ++r) {
     const similarity::Neighbour& n = found.neighbours[r];
-    const io::Store_record record = s.search.store().record(n.index);
+    const store::Store_record record = s.search.store().record(n.index);
     neighbours.append(py::dict("rank"_a = r + 1, "index"_a = n.index, "name"_a = s.search.name(n.index),
                                "path"_a = record.path, "clip"_a = record.clip, "value"_a = n.value));
   }
@@ -271,7 +271,7 @@ py::list find_in_store(const Opened_store& s, const Animation& query, long long 
   }
   py::list out;
   for (const similarity::Clip_match& c : matches) {
-    const io::Store_record record = s.search.store().record(c.clip);
+    const store::Store_record record = s.search.store().record(c.clip);
     out.append(py::dict("index"_a = c.clip, "name"_a = s.search.name(c.clip), "path"_a = record.path,
                         "clip"_a = record.clip, "first"_a = c.match.first, "last"_a = c.match.last,
                         "value"_a = c.match.value, "alignment"_a = c.match.alignment));
@@ -401,7 +401,7 @@ py::array stored_similarity_matrix(const Opened_store& store, const similarity::
 
 evaluation::Retrieval_scores evaluate_stored(const Opened_store& store, const std::string& labels) {
   std::vector<evaluation::Labelled_item> items;
-  for (const io::Labelled_clip& row : io::read_motion_labels(labels)) items.push_back(row.item);
+  for (const evaluation::Labelled_clip& row : evaluation::read_motion_labels(labels)) items.push_back(row.item);
   Interruptible_call call;
   const std::vector<std::size_t> labelled = store.search.labelled(labels, std::nullopt, frontend::Front::python);
   return evaluation::evaluate_retrieval(store.search.matrix(labelled), items);

@@ -8,8 +8,8 @@
 #include "frontend/store_search.h"
 
 #include <deformseg/evaluation/retrieval_evaluation.h>
-#include <deformseg/io/motion_store.h>
 #include <deformseg/similarity/policy_choice.h>
+#include <deformseg/store/motion_store.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -29,7 +29,7 @@ extern const std::array<frontend::Choice, 2> store_verifications;
 // which a pickled store is opened with again.
 struct Opened_store {
   frontend::Store_search search;
-  io::Verify verify = io::Verify::structure;
+  store::Verify verify = store::Verify::structure;
 };
 
 // The similarity of every pair of the store's clips, as described (the tool's `matrix --store`):

@@ -1,7 +1,7 @@
 """Reads a deformseg motion store with NumPy alone (no compiled module): the format's second reader.
 
 A motion store is a folder of ``.npy`` files and a JSON manifest, ``store.json``, written by
-``deformseg::io::Store_append`` (C++, ``include/deformseg/io/motion_store.h``) and described
+``deformseg::store::Store_append`` (C++, ``include/deformseg/store/motion_store.h``) and described
 field by field in ``doc/store_format.md``. ``read_store(folder)`` checks it as the C++ reader
 does (the manifest's format, version and checksum, every listed file's size, the ``.npy`` headers,
 every clip's ranges; with ``verify=True`` also every file's and clip's CRC-32) and returns a

@@ -5,17 +5,20 @@ The headers below include/deformseg/ form modules, one folder and one namespace 
 a module includes the foundation (the headers at the top: errors, threads), its own headers and
 the public headers of the modules below it, never those above; a module's internal/ folder is
 included by that module alone; a header of module M opens no namespace but deformseg::M and, for
-its details, deformseg::M::internal. Run with the include/deformseg folder; --self-test proves
-that each rule catches what it should.
+its details, deformseg::M::internal; and no header includes itself through others (no circle,
+which #pragma once would hide). Run with the include/deformseg folder; --self-test proves that
+each rule catches what it should.
 """
 import pathlib
 import re
 import sys
 import tempfile
 
-# Bottom to top: each module may include those before it.
-LAYERS = ['mesh', 'strain', 'signatures', 'temporal', 'spatiotemporal', 'ged', 'clustering',
-          'alignment', 'similarity', 'evaluation', 'color', 'io']
+# Bottom to top, as the design draws them: the mesh model; the colour type (under io, whose PLY
+# writer colours faces); io, the formats; descriptors; segmentation; graphs; alignment; similarity
+# and search; the store; evaluation. Each module may include those before it.
+LAYERS = ['mesh', 'color', 'io', 'strain', 'signatures', 'temporal', 'spatiotemporal', 'ged', 'clustering',
+          'alignment', 'similarity', 'store', 'evaluation']
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*<deformseg/([^>]+)>', re.M)
 NAMESPACE = re.compile(r'^\s*namespace\s+([\w:]+)\s*\{', re.M)
@@ -68,9 +71,34 @@ def namespace_problems(relative, text):
             for name in NAMESPACE.findall(text) if not allowed.match(name)]
 
 
+def circle_problems(includes):
+    """A circle of includes, as one problem naming its headers, found by depth-first search."""
+    state = {}  # header -> 'open' while on the search's path, 'done' after
+
+    def visit(header, path):
+        state[header] = 'open'
+        for included in includes.get(header, []):
+            if state.get(included) == 'open':
+                return path[path.index(included):] + [included]
+            if included not in state:
+                circle = visit(included, path + [included])
+                if circle:
+                    return circle
+        state[header] = 'done'
+        return None
+
+    for header in sorted(includes):
+        if header not in state:
+            circle = visit(header, [header])
+            if circle:
+                return [f'{circle[0]}: includes itself through ' + ' -> '.join(circle[1:])]
+    return []
+
+
 def problems(root):
     root = pathlib.Path(root)
     found = []
+    includes = {}
     for path in sorted(root.rglob('*.h')):
         relative = path.relative_to(root).as_posix()
         mine = module_of(relative)
@@ -78,10 +106,11 @@ def problems(root):
             found.append(f'{relative}: module {mine} is in no layer')
             continue
         text = path.read_text()
-        for included in INCLUDE.findall(text):
+        includes[relative] = INCLUDE.findall(text)
+        for included in includes[relative]:
             found += [f'{relative}: {p}' for p in include_problems(relative, included)]
         found += [f'{relative}: {p}' for p in namespace_problems(relative, text)]
-    return found
+    return found + circle_problems(includes)
 
 
 def self_test():
@@ -100,6 +129,12 @@ def self_test():
         'umbrella of its module': ({'strain.h': '#include <deformseg/strain/a.h>', 'strain/a.h': ''}, False),
         'umbrella reaching elsewhere': ({'strain.h': '#include <deformseg/mesh/a.h>', 'mesh/a.h': ''}, True),
         'module including an umbrella': ({'similarity/a.h': '#include <deformseg/strain.h>', 'strain.h': ''}, True),
+        'circle in a module': ({'strain/a.h': '#include <deformseg/strain/b.h>',
+                                'strain/b.h': '#include <deformseg/strain/c.h>',
+                                'strain/c.h': '#include <deformseg/strain/a.h>'}, True),
+        'shared header, no circle': ({'strain/a.h': '#include <deformseg/strain/b.h>\n#include <deformseg/strain/c.h>',
+                                      'strain/b.h': '#include <deformseg/strain/c.h>', 'strain/c.h': ''}, False),
+        'io above the store': ({'io/a.h': '#include <deformseg/store/b.h>', 'store/b.h': ''}, True),
     }
     failures = []
     for name, (files, broken) in cases.items():

@@ -10,6 +10,7 @@
 #include <deformseg/signatures.h>
 #include <deformseg/similarity.h>
 #include <deformseg/spatiotemporal.h>
+#include <deformseg/store.h>
 #include <deformseg/strain.h>
 #include <deformseg/temporal.h>
 
@@ -22,6 +23,8 @@ using namespace spatiotemporal;
 using namespace similarity;
 using namespace evaluation;
 using namespace color;
+using namespace io;
+using namespace store;
 // A name found in two modules would make this ambiguous.
 static_assert(sizeof(mesh::Deforming_mesh<mesh::Surface_mesh>) > 0 && sizeof(strain::Strain_field<float>) > 0);
 }  // namespace deformseg

@@ -14,8 +14,8 @@
 // Reported per size: the mean time of a query, candidates per second, the share of candidates
 // each stage rules out, and the brute force (every candidate aligned, on --brute candidates,
 // scaled to the collection) as the baseline.
+#include <deformseg/evaluation/motion_labels.h>
 #include <deformseg/io/gltf.h>
-#include <deformseg/io/motion_labels.h>
 #include <deformseg/signatures/motion_signatures.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/nearest_motions.h>
@@ -72,7 +72,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 std::vector<Motion_signature_description> describe_shared_clips() {
   const fs::path labels = fs::path(DEFORMSEG_DATA_DIR) / "characters" / "motions.csv";
   std::map<std::string, std::vector<std::string>> clips_of_file;
-  for (const auto& clip : io::read_motion_labels(labels)) clips_of_file[clip.file.string()].push_back(clip.item.clip);
+  for (const auto& clip : evaluation::read_motion_labels(labels)) clips_of_file[clip.file.string()].push_back(clip.item.clip);
   const similarity::Default_similarity policy;
   std::vector<Motion_signature_description> described;
   for (const auto& [file, clips] : clips_of_file) {

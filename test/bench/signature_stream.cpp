@@ -60,18 +60,18 @@ fs::path tube_cache(std::size_t frames) {
   std::vector<char> bytes(32 + 12 * vertices);
   const auto little = std::endian::little;
   std::copy_n("POINTCACHE2", 12, bytes.data());
-  io::internal::store<little>(bytes.data() + 12, std::int32_t{1});
-  io::internal::store<little>(bytes.data() + 16, std::int32_t(vertices));
-  io::internal::store<little>(bytes.data() + 20, 0.0f);
-  io::internal::store<little>(bytes.data() + 24, 1.0f);
-  io::internal::store<little>(bytes.data() + 28, std::int32_t(frames));
+  io::internal::store_word<little>(bytes.data() + 12, std::int32_t{1});
+  io::internal::store_word<little>(bytes.data() + 16, std::int32_t(vertices));
+  io::internal::store_word<little>(bytes.data() + 20, 0.0f);
+  io::internal::store_word<little>(bytes.data() + 24, 1.0f);
+  io::internal::store_word<little>(bytes.data() + 28, std::int32_t(frames));
   std::ofstream out(cache, std::ios::binary);
   out.write(bytes.data(), 32);
   for (std::size_t t = 0; t < frames; ++t) {
     const auto xyz = tube.frame_positions(t % cycle_frames);
     const double drift = 0.3 * std::sin(double(t) / 97.0);
     for (std::size_t i = 0; i < xyz.size(); ++i)
-      io::internal::store<little>(bytes.data() + 4 * i, float(xyz[i] + (i % 3 == 0 ? drift : 0.0)));
+      io::internal::store_word<little>(bytes.data() + 4 * i, float(xyz[i] + (i % 3 == 0 ? drift : 0.0)));
     out.write(bytes.data(), std::streamsize(12 * vertices));
   }
   return cache;

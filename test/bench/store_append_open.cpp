@@ -4,7 +4,7 @@
 //   build/test/bench/store_append_open --store-dir /tmp/ds-bench-store
 // (its name is not motion_store: that is the example program's target)
 // (the stores are made below that folder, default the system's temporary folder, and removed.)
-#include <deformseg/io/motion_store.h>
+#include <deformseg/store/store_append.h>
 
 #include <benchmark/benchmark.h>
 
@@ -17,7 +17,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-namespace io = deformseg::io;
+namespace store = deformseg::store;
 
 fs::path store_root = fs::temp_directory_path() / "deformseg-bench-store";
 constexpr std::size_t rows = 150, width = 64, summary_width = 13 * 64;
@@ -27,8 +27,8 @@ void write_store(const fs::path& folder, std::size_t clips) {
   std::vector<std::uint32_t> frames(rows);
   for (std::size_t k = 0; k < values.size(); ++k) values[k] = static_cast<float>(k % 977) / 977.0f;
   for (std::size_t r = 0; r < rows; ++r) frames[r] = static_cast<std::uint32_t>(r);
-  io::Store_append append(folder, R"({"policy": "bench"})", summary_width);
-  io::Store_record record;
+  store::Store_append append(folder, R"({"policy": "bench"})", summary_width);
+  store::Store_record record;
   record.fps = 30;
   record.frame_count = rows;
   for (std::size_t c = 0; c < clips; ++c) {
@@ -54,19 +54,19 @@ void append_clips(benchmark::State& state) {
   fs::remove_all(folder);
 }
 
-void open_store(benchmark::State& state, io::Verify verify) {
+void open_store(benchmark::State& state, store::Verify verify) {
   const auto clips = static_cast<std::size_t>(state.range(0));
   const fs::path folder = store_root / ("open-" + std::to_string(clips));
   if (!fs::exists(folder / "store.json")) write_store(folder, clips);
   for (auto _ : state) {
-    const io::Motion_store store = io::Motion_store::open(folder, verify);
+    const store::Motion_store store = store::Motion_store::open(folder, verify);
     benchmark::DoNotOptimize(store.view(store.size() - 1).values);
   }
   state.counters["clips/s"] = benchmark::Counter(double(clips), benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void open_structure(benchmark::State& state) { open_store(state, io::Verify::structure); }
-void open_checksums(benchmark::State& state) { open_store(state, io::Verify::checksums); }
+void open_structure(benchmark::State& state) { open_store(state, store::Verify::structure); }
+void open_checksums(benchmark::State& state) { open_store(state, store::Verify::checksums); }
 
 }  // namespace
 

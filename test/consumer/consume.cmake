@@ -4,8 +4,9 @@
 #   ROUTE=installed       cmake --install of the project built in BINARY_DIR into a prefix, then
 #                         find_package with CMAKE_PREFIX_PATH;
 #   ROUTE=build_tree      a build tree of SOURCE_DIR configured as a library user would (tests,
-#                         examples off, and none of their dependencies found: CLI11, Catch2,
-#                         Doxygen), then find_package with deformseg_DIR;
+#                         examples off, and none of their dependencies found: nlohmann-json,
+#                         CLI11, Catch2, Doxygen), then find_package with deformseg_DIR; without
+#                         nlohmann-json, deformseg::io reads no glTF;
 #   ROUTE=add_subdirectory the sources added to the consumer's own build.
 # The algorithms' consumer must not link TinyGLTF, and by find_package it is configured with
 # TinyGLTF hidden: the package must not look for it. The readers' consumer reads GLTF_FILE: the
@@ -29,7 +30,7 @@ if(ROUTE STREQUAL "installed")
 elseif(ROUTE STREQUAL "build_tree")
   run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/deformseg -DCMAKE_BUILD_TYPE=Release
       -DDEFORMSEG_BUILD_TESTS=OFF -DDEFORMSEG_BUILD_EXAMPLES=OFF
-      -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
+      -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
       -DCMAKE_DISABLE_FIND_PACKAGE_Catch2=ON -DCMAKE_DISABLE_FIND_PACKAGE_Doxygen=ON)
   # The library alone builds nothing: no precompiled header, no program.
   run(${CMAKE_COMMAND} --build ${WORK_DIR}/deformseg --target help)
@@ -37,7 +38,8 @@ elseif(ROUTE STREQUAL "build_tree")
     message(FATAL_ERROR "a build of the library alone has targets of the project's programs:\n${output}")
   endif()
   run(${CMAKE_COMMAND} --build ${WORK_DIR}/deformseg)
-  list(APPEND consumer_options -Ddeformseg_DIR=${WORK_DIR}/deformseg)
+  list(APPEND consumer_options -Ddeformseg_DIR=${WORK_DIR}/deformseg -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON)
+  set(HAS_GLTF OFF)
 elseif(ROUTE STREQUAL "add_subdirectory")
   list(APPEND consumer_options -DDEFORMSEG_SOURCE_DIR=${SOURCE_DIR})
   set(hide_tinygltf "")  # deformseg's own CMakeLists looks for it, for deformseg::io

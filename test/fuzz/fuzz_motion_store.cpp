@@ -1,4 +1,4 @@
-// libFuzzer harness of the motion store's reader (io/motion_store.h): the input is framed into a
+// libFuzzer harness of the motion store's reader (store/motion_store.h): the input is framed into a
 // manifest and up to 5 files of a store folder, which is then opened with Verify::checksums and
 // read whole (every view, frame, summary, record and lookup). Opening may succeed or throw an
 // invalid_input naming a file of the folder; anything else is a finding.
@@ -10,7 +10,7 @@
 // checks behind them; without it, those checksums are fuzzed as they are.
 #include "fuzz_support.h"
 
-#include <deformseg/io/motion_store.h>
+#include <deformseg/store/motion_store.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -52,10 +52,10 @@ void fix_entry(std::string& manifest, const std::string& name, std::string_view 
   if (end == std::string::npos) return;
   std::size_t offset = bytes.size();
   try {
-    offset = io::internal::Npy_header_parser(bytes.data(), bytes.size(), name).parse().data_offset;
+    offset = store::internal::Npy_header_parser(bytes.data(), bytes.size(), name).parse().data_offset;
   } catch (const invalid_input&) {
   }
-  const std::uint32_t crc = io::internal::crc32(bytes.data() + offset, bytes.size() - offset);
+  const std::uint32_t crc = store::internal::crc32(bytes.data() + offset, bytes.size() - offset);
   manifest.replace(begin, end - begin,
                    entry + ", \"bytes\": " + std::to_string(bytes.size()) + ", \"data_crc32\": " + std::to_string(crc));
 }
@@ -63,18 +63,18 @@ void fix_entry(std::string& manifest, const std::string& name, std::string_view 
 void fix_checksum(std::string& manifest) {
   const std::size_t at = manifest.rfind("\"checksum\"");
   if (at == std::string::npos) return;
-  manifest = manifest.substr(0, at) + io::internal::checksum_suffix(manifest.substr(0, at));
+  manifest = manifest.substr(0, at) + store::internal::checksum_suffix(manifest.substr(0, at));
 }
 
 void read_whole(const fs::path& folder) {
-  const io::Motion_store store = io::Motion_store::open(folder, io::Verify::checksums);
+  const store::Motion_store store = store::Motion_store::open(folder, store::Verify::checksums);
   float sum = 0;
   for (std::size_t i = 0; i < store.size(); ++i) {
     const similarity::Motion_signature_view view = store.view(i);
     for (std::size_t k = 0; k < view.rows * view.width; ++k) sum += view.values[k];
     for (const std::uint32_t frame : store.frames(i)) sum += static_cast<float>(frame);
     for (const float value : store.summary(i)) sum += value;
-    const io::Store_record record = store.record(i);
+    const store::Store_record record = store.record(i);
     if (store.find(record.path, record.clip) != i) fuzz::finding("find", "a clip not found by its own path and name");
   }
   volatile float keep = sum;  // every float read

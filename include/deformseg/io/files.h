@@ -28,7 +28,7 @@ enum class Durability {
   page_cache,
   /// @brief The file's bytes are flushed to the disk (fsync) before the rename, and the folder's
   /// entry after it, so that after a power failure the path holds either the old or the new
-  /// file whole. What a commit point needs, such as a motion store's manifest (io/motion_store.h).
+  /// file whole. What a commit point needs, such as a motion store's manifest (store/motion_store.h).
   disk
 };
 

@@ -10,8 +10,6 @@
 /// time, and can be read again from its start (`rewind`), re-reading a file's header then.
 #pragma once
 
-#include <deformseg/mesh/default_mesh.h>
-#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/internal/file_io.h>
@@ -19,6 +17,8 @@
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/io/read_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -154,7 +154,7 @@ public:
     for (std::size_t i = 0; i < decoded_.size(); ++i) {
       const char* at = bytes_.data() + 4 * i;
       decoded_[i] =
-          little ? internal::load<std::endian::little, float>(at) : internal::load<std::endian::big, float>(at);
+          little ? internal::load_word<std::endian::little, float>(at) : internal::load_word<std::endian::big, float>(at);
       if (!std::isfinite(decoded_[i]))
         internal::fail_cache(path_, internal::join("vertex ", std::to_string(i / 3), " has a non-finite coordinate"),
                              next_);

@@ -5,10 +5,8 @@
 /// Programs that include this header link `libboost_graph` (the deformseg target does).
 #pragma once
 
-#include <deformseg/spatiotemporal/evolving_graph.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/internal/file_io.h>
-#include <deformseg/color/segment_colors.h>
 
 #include <algorithm>
 #include <boost/graph/adjacency_list.hpp>
@@ -208,77 +206,6 @@ inline Labelled_graph read_labelled_graph(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw invalid_input("cannot open the graph file", {.file = path.string()});
   return read_labelled_graph(in, format, path.string());
-}
-
-}  // namespace deformseg::io
-
-namespace deformseg::io::internal {
-
-// A node's DOT attributes: its label (R, or D and the segment id), what it is, its area share in
-// percent beside it (xlabel), and its colour. A rigid node has no segment attribute, as it has
-// `null` in the tool's JSON. Every value is quoted: the shortest text of an area may have an
-// exponent (5.79e-05), which DOT's numerals do not allow.
-inline std::string dot_node_attributes(const spatiotemporal::Segment_node& n) {
-  const bool rigid = n.kind == spatiotemporal::Segment_kind::rigid;
-  const color::Rgb c = color::segment_color(n.segment);
-  char color[8];
-  std::snprintf(color, sizeof color, "#%02x%02x%02x", unsigned(c.r), unsigned(c.g), unsigned(c.b));
-  const std::string segment = rigid ? "" : "segment=\"" + std::to_string(n.segment) + "\", ";
-  return "[label=\"" + spatiotemporal::node_label(n) + "\", kind=\"" + (rigid ? "rigid" : "deformed") + "\", " +
-         segment + "triangles=\"" + std::to_string(n.triangles) + "\", area=\"" + shortest_text(n.area) +
-         "\", xlabel=\"" + std::to_string(std::lround(100 * n.area)) + "%\", style=filled, fillcolor=\"" + color +
-         "\"]";
-}
-
-}  // namespace deformseg::io::internal
-
-namespace deformseg::io {
-
-/// @brief Writes a segment graph in Graphviz DOT: an undirected `graph`, node ids 0..n-1 in the
-/// graph's order, each with `label` ("R", or "D" and the segment id, the node kind as the
-/// `deformseg ged` command reads it), `kind` ("rigid" or "deformed"), `segment` (the
-/// spatio-temporal segment's id; none on a rigid node), `triangles`, `area` (the node's share of
-/// the surface area), `xlabel` (that share in percent, drawn beside the node), and a fill colour
-/// (`segment_color`, as the meshes of `color::segment_face_colors` have it). The graph asks its
-/// layout not to overlap the nodes (`overlap=false`), which `neato` and `fdp` honour, and draws
-/// nodes as circles in a legible font.
-/// @param out the stream.
-/// @param graph the graph.
-/// @par Complexity O(n + e).
-inline void write_segment_graph_dot(std::ostream& out, const spatiotemporal::Segment_graph& graph) {
-  boost::write_graphviz(
-      out, graph, [&graph](std::ostream& o, std::size_t v) { o << internal::dot_node_attributes(graph[v]); },
-      boost::default_writer(), [](std::ostream& o) {
-        o << "graph [overlap=false, splines=true, forcelabels=true];\n"
-             "node [shape=circle, fontname=\"Helvetica\", fontsize=14];\n";
-      });
-}
-
-/// @brief Writes each key frame's graph as a DOT file (`write_segment_graph_dot`) into `folder`,
-/// named `key_frame_0000.dot` and on (zero-padded to one width), each starting with a comment
-/// that gives its frames.
-/// @param graph the evolving graph.
-/// @param folder the folder, created if needed; files of the same names are replaced.
-/// @return the files written, in key frame order.
-/// @throws invalid_input naming the folder or file when it cannot be written.
-/// @par Complexity O(total size of the graphs).
-inline std::vector<std::filesystem::path> write_key_frames_dot(const spatiotemporal::Evolving_graph& graph,
-                                                               const std::filesystem::path& folder) {
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error) throw invalid_input("cannot create the folder: " + error.message(), {.file = folder.string()});
-  const std::size_t digits = std::max<std::size_t>(4, std::to_string(graph.size()).size());
-  std::vector<std::filesystem::path> files;
-  for (std::size_t k = 0; k < graph.size(); ++k) {
-    std::string number = std::to_string(k);
-    number.insert(0, digits - number.size(), '0');
-    std::ostringstream text;
-    text << "// key frame " << k << ": frames " << graph[k].first_frame << "-" << graph[k].last_frame << "\n";
-    write_segment_graph_dot(text, graph[k].graph);
-    files.push_back(folder / ("key_frame_" + number + ".dot"));
-    internal::write_file_bytes(files.back(), text.str());
-  }
-  return files;
 }
 
 }  // namespace deformseg::io

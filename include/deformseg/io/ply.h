@@ -3,11 +3,11 @@
 #pragma once
 
 #include <deformseg/color/color.h>
-#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/internal/file_io.h>
 #include <deformseg/io/internal/text_scanner.h>
 #include <deformseg/io/triangle_soup.h>
+#include <deformseg/mesh/deforming_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -511,13 +511,13 @@ void append_ply_binary_body(const mesh::Deforming_mesh<Graph, Coordinate>& anima
   out.resize(start + xyz.size() * sizeof(Stored) + animation.num_faces() * face_size);
   char* p = out.data() + start;
   for (const Coordinate x : xyz) {
-    store<little>(p, static_cast<Stored>(x));
+    store_word<little>(p, static_cast<Stored>(x));
     p += sizeof(Stored);
   }
   for (std::size_t j = 0; j < animation.num_faces(); ++j) {
     *p++ = 3;
     for (const std::uint32_t v : animation.triangles()[j]) {
-      store<little>(p, static_cast<std::int32_t>(v));
+      store_word<little>(p, static_cast<std::int32_t>(v));
       p += 4;
     }
     if (colors.empty()) continue;

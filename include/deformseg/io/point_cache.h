@@ -14,10 +14,10 @@
 /// A file is read with one call and written with one call.
 #pragma once
 
-#include <deformseg/mesh/default_mesh.h>
-#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/internal/file_io.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 
 #include <algorithm>
 #include <bit>
@@ -96,14 +96,14 @@ inline io::Point_cache_info parse_pc2_header(const File_bytes& bytes, const std:
     fail_cache(path, "not a PC2 point cache: it does not start with the signature \"POINTCACHE2\"");
   if (bytes.size < pc2_header_size)
     fail_cache(path, join("truncated header: the file has ", std::to_string(bytes.size), " bytes, a PC2 header 32"));
-  if (const auto version = load<little, std::int32_t>(p + 12); version != 1)
+  if (const auto version = load_word<little, std::int32_t>(p + 12); version != 1)
     fail_cache(path, join("PC2 file version ", std::to_string(version), "; deformseg reads version 1"));
 
   io::Point_cache_info info{.format = io::Point_cache_format::pc2};
-  info.num_vertices = header_count(load<little, std::int32_t>(p + 16), "vertices", path);
-  info.start_frame = load<little, float>(p + 20);
-  info.sample_rate = load<little, float>(p + 24);
-  info.num_frames = header_count(load<little, std::int32_t>(p + 28), "frames", path);
+  info.num_vertices = header_count(load_word<little, std::int32_t>(p + 16), "vertices", path);
+  info.start_frame = load_word<little, float>(p + 20);
+  info.sample_rate = load_word<little, float>(p + 24);
+  info.num_frames = header_count(load_word<little, std::int32_t>(p + 28), "frames", path);
   if (!std::isfinite(info.start_frame))
     fail_cache(path, join("the header's start frame is not finite: ", shortest_text(info.start_frame)));
   if (!std::isfinite(info.sample_rate) || info.sample_rate <= 0)
@@ -125,8 +125,8 @@ inline io::Point_cache_info parse_mdd_counts(const File_bytes& bytes, const std:
     fail_cache(path,
                join("truncated header: the file has ", std::to_string(bytes.size), " bytes, an MDD header at least 8"));
   io::Point_cache_info info{.format = io::Point_cache_format::mdd};
-  info.num_frames = header_count(load<big, std::int32_t>(bytes.begin()), "frames", path);
-  info.num_vertices = header_count(load<big, std::int32_t>(bytes.begin() + 4), "vertices", path);
+  info.num_frames = header_count(load_word<big, std::int32_t>(bytes.begin()), "frames", path);
+  info.num_vertices = header_count(load_word<big, std::int32_t>(bytes.begin() + 4), "vertices", path);
   if (mdd_header_size(info.num_frames) > bytes.file_size)
     fail_cache(path, join("truncated header: its ", std::to_string(info.num_frames), " frame times need ",
                           std::to_string(mdd_header_size(info.num_frames)), " bytes, the file has ",
@@ -139,7 +139,7 @@ inline io::Point_cache_info parse_mdd_counts(const File_bytes& bytes, const std:
 inline void read_mdd_times(const File_bytes& bytes, io::Point_cache_info& info, const std::filesystem::path& path) {
   info.frame_times.resize(info.num_frames);
   for (std::size_t t = 0; t < info.num_frames; ++t) {
-    info.frame_times[t] = load<std::endian::big, float>(bytes.begin() + mdd_counts_size + 4 * t);
+    info.frame_times[t] = load_word<std::endian::big, float>(bytes.begin() + mdd_counts_size + 4 * t);
     if (!std::isfinite(info.frame_times[t]))
       fail_cache(path, join("the frame's time is not finite: ", shortest_text(info.frame_times[t])), t);
   }
@@ -201,7 +201,7 @@ mesh::Deforming_mesh<Graph, Coordinate> decode_frames(const char* first, const i
   std::vector<Coordinate> xyz(3 * info.num_vertices);
   for (std::size_t t = 0; t < info.num_frames; ++t) {
     for (Coordinate& x : xyz) {
-      x = static_cast<Coordinate>(load<order, float>(first));
+      x = static_cast<Coordinate>(load_word<order, float>(first));
       first += 4;
     }
     try {
@@ -238,7 +238,7 @@ std::vector<Coordinate> read_point_cache_positions(const std::filesystem::path& 
   std::vector<Coordinate> xyz(3 * info.num_vertices * info.num_frames);
   const char* next = bytes.begin() + header_size(info);
   for (std::size_t i = 0; i < xyz.size(); ++i, next += 4) {
-    xyz[i] = static_cast<Coordinate>(load<order, float>(next));
+    xyz[i] = static_cast<Coordinate>(load_word<order, float>(next));
     if (!std::isfinite(xyz[i]))
       fail_cache(path, join("vertex ", std::to_string(i / 3 % info.num_vertices), " has a non-finite coordinate"),
                  i / (3 * info.num_vertices));
@@ -283,7 +283,7 @@ void encode_frames(const mesh::Deforming_mesh<Graph, Coordinate>& animation, cha
                    const std::filesystem::path& path) {
   for (std::size_t t = 0; t < animation.num_frames(); ++t) {
     const std::span<const Coordinate> xyz = animation.frame_positions(t);
-    for (std::size_t i = 0; i < xyz.size(); ++i, out += 4) store<order>(out, to_float32(xyz[i], t, i, path));
+    for (std::size_t i = 0; i < xyz.size(); ++i, out += 4) store_word<order>(out, to_float32(xyz[i], t, i, path));
   }
 }
 
@@ -414,11 +414,11 @@ void write_pc2(const mesh::Deforming_mesh<Graph, Coordinate>& animation, const s
   std::string bytes(internal::cache_size(animation, internal::pc2_header_size), '\0');
   char* out = bytes.data();
   std::memcpy(out, internal::pc2_signature.data(), internal::pc2_signature.size());
-  internal::store<little>(out + 12, std::int32_t{1});
-  internal::store<little>(out + 16, static_cast<std::int32_t>(animation.num_vertices()));
-  internal::store<little>(out + 20, static_cast<float>(options.start_frame));
-  internal::store<little>(out + 24, static_cast<float>(options.sample_rate));
-  internal::store<little>(out + 28, static_cast<std::int32_t>(animation.num_frames()));
+  internal::store_word<little>(out + 12, std::int32_t{1});
+  internal::store_word<little>(out + 16, static_cast<std::int32_t>(animation.num_vertices()));
+  internal::store_word<little>(out + 20, static_cast<float>(options.start_frame));
+  internal::store_word<little>(out + 24, static_cast<float>(options.sample_rate));
+  internal::store_word<little>(out + 28, static_cast<std::int32_t>(animation.num_frames()));
   internal::encode_frames<little>(animation, out + internal::pc2_header_size, cache);
   internal::write_file_bytes(cache, bytes);
 }
@@ -449,10 +449,10 @@ void write_mdd(const mesh::Deforming_mesh<Graph, Coordinate>& animation, const s
   const std::size_t frames = animation.num_frames();
   std::string bytes(internal::cache_size(animation, internal::mdd_header_size(frames)), '\0');
   char* out = bytes.data();
-  internal::store<big>(out, static_cast<std::int32_t>(frames));
-  internal::store<big>(out + 4, static_cast<std::int32_t>(animation.num_vertices()));
+  internal::store_word<big>(out, static_cast<std::int32_t>(frames));
+  internal::store_word<big>(out + 4, static_cast<std::int32_t>(animation.num_vertices()));
   for (std::size_t t = 0; t < frames; ++t)
-    internal::store<big>(out + internal::mdd_counts_size + 4 * t, static_cast<float>(double(t) / frames_per_second));
+    internal::store_word<big>(out + internal::mdd_counts_size + 4 * t, static_cast<float>(double(t) / frames_per_second));
   internal::encode_frames<big>(animation, out + internal::mdd_header_size(frames), cache);
   internal::write_file_bytes(cache, bytes);
 }

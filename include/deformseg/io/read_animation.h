@@ -3,14 +3,14 @@
 /// frame files, or a point cache with its topology mesh.
 #pragma once
 
-#include <deformseg/mesh/default_mesh.h>
-#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/character_files.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/point_cache.h>
 #include <deformseg/io/read_mesh.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/threads.h>
 
 // glTF is read when deformseg was configured with tinygltf (its CMake target then defines
@@ -104,7 +104,8 @@ mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input
 #else
   static_cast<void>(report);
   throw invalid_input("this deformseg was built without tinygltf, which reads glTF, FBX and Collada files (Debian: "
-                      "libtinygltf-dev; link TinyGLTF::TinyGLTF and define DEFORMSEG_HAS_GLTF=1)",
+                      "libtinygltf-dev and nlohmann-json3-dev; link TinyGLTF::TinyGLTF and nlohmann_json::nlohmann_json, "
+                      "and define DEFORMSEG_HAS_GLTF=1)",
                       {.file = input});
 #endif
 }

@@ -1,7 +1,7 @@
 /// @file similarity/motion_collection.h
 /// @brief The `MotionCollection` concept, what the nearest-motion search reads (each clip's
 /// signatures and summary, by index), `Motion_collection`, its model over descriptions held in
-/// memory (`io::Motion_store` models it over a store on disk), and `Clip_range`, a block of
+/// memory (`store::Motion_store` models it over a store on disk), and `Clip_range`, a block of
 /// consecutive clips, the unit of the tiles a cluster computes.
 #pragma once
 

@@ -5,12 +5,12 @@
 
 #include <frontend/store_search.h>
 
+#include <deformseg/color/strain_colors.h>
+#include <deformseg/evaluation/motion_labels.h>
+#include <deformseg/evaluation/retrieval_evaluation.h>
 #include <deformseg/io/gltf.h>
-#include <deformseg/io/motion_labels.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/evaluation/retrieval_evaluation.h>
-#include <deformseg/color/strain_colors.h>
 
 #include <algorithm>
 #include <chrono>
@@ -50,14 +50,14 @@ std::string fixed(double value, int decimals = 3) {
 // The animations read, and the labelled clips they are (without those skipped).
 struct Read_clips {
   std::vector<mesh::Surface_mesh_animation> animations;
-  std::vector<io::Labelled_clip> clips;
+  std::vector<evaluation::Labelled_clip> clips;
   std::vector<std::string> skipped;  // "FILE clip NAME: MESSAGE"
 };
 
 // Reads the clips of `rows` that come from `file` on one body (rows[i] for i in `of_file`, their
 // `body_file`, else --body), parsing it once; a row without a clip takes --clip's.
 void read_file_clips(const std::filesystem::path& file, const std::vector<std::size_t>& of_file,
-                     const std::vector<io::Labelled_clip>& rows, const Evaluate_options& o, Read_clips& out) {
+                     const std::vector<evaluation::Labelled_clip>& rows, const Evaluate_options& o, Read_clips& out) {
   const auto skip_or_throw = [&](const std::vector<std::size_t>& lost, const invalid_input& e) {
     if (!o.skip_unreadable) throw;
     for (const std::size_t i : lost)
@@ -96,7 +96,7 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
   }
 }
 
-Read_clips read_clips(const std::vector<io::Labelled_clip>& rows, const Evaluate_options& o) {
+Read_clips read_clips(const std::vector<evaluation::Labelled_clip>& rows, const Evaluate_options& o) {
   using File_on_body = std::pair<std::filesystem::path, std::filesystem::path>;
   std::vector<File_on_body> files;  // in the order of first appearance
   for (const auto& row : rows)
@@ -118,7 +118,7 @@ Read_clips read_clips(const std::vector<io::Labelled_clip>& rows, const Evaluate
 }
 
 // The items' order in the figure: by motion (distractors last), then body, then clip.
-std::vector<std::size_t> order_by_label(const std::vector<io::Labelled_clip>& clips) {
+std::vector<std::size_t> order_by_label(const std::vector<evaluation::Labelled_clip>& clips) {
   std::vector<std::size_t> order(clips.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   const auto key = [&](std::size_t i) {
@@ -132,7 +132,7 @@ std::vector<std::size_t> order_by_label(const std::vector<io::Labelled_clip>& cl
 // The matrix with rows and columns in `order`, each value coloured (viridis) by its rank among
 // all entries, from the smallest (dark) to the largest (yellow); the motions named along both
 // sides, a white line between two of them.
-void write_grouped_heat_map(const Eigen::MatrixXd& m, const std::vector<io::Labelled_clip>& clips,
+void write_grouped_heat_map(const Eigen::MatrixXd& m, const std::vector<evaluation::Labelled_clip>& clips,
                             const std::vector<std::size_t>& order, const Evaluate_options& o,
                             const std::string& path) {
   progress("writing the matrix, grouped by motion, to " + path);
@@ -190,17 +190,17 @@ nlohmann::json scores_json(const evaluation::Retrieval_scores& s) {
 }
 
 // A clip as the labels name it: its file's name, and #CLIP for a clip of a glTF file.
-std::string clip_name(const io::Labelled_clip& clip) {
+std::string clip_name(const evaluation::Labelled_clip& clip) {
   const std::string file = clip.file.filename().string();
   return clip.item.clip.empty() ? file : file + "#" + clip.item.clip;
 }
 
 // One line per query: what it found nearest, and at which rank the first clip of its motion came.
-void print_per_query(const evaluation::Retrieval_scores& s, const std::vector<io::Labelled_clip>& clips) {
+void print_per_query(const evaluation::Retrieval_scores& s, const std::vector<evaluation::Labelled_clip>& clips) {
   std::cout << "per query (query: nearest candidate, its value; rank of the first of the query's motion)\n";
   for (const auto& q : s.per_query) {
-    const io::Labelled_clip& query = clips[q.query];
-    const io::Labelled_clip& nearest = clips[q.nearest];
+    const evaluation::Labelled_clip& query = clips[q.query];
+    const evaluation::Labelled_clip& nearest = clips[q.nearest];
     std::cout << "  " << clip_name(query) << " (" << query.item.motion << "): " << clip_name(nearest) << " ("
               << nearest.item.motion << ") " << fixed(q.nearest_similarity) << "; "
               << (q.first_relevant_rank ? "first " + query.item.motion + " at " + std::to_string(*q.first_relevant_rank)
@@ -251,7 +251,7 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
       });
     } catch (const similarity::animation_not_described& e) {
       const auto at = std::ptrdiff_t(e.index());
-      const io::Labelled_clip& clip = read.clips[e.index()];
+      const evaluation::Labelled_clip& clip = read.clips[e.index()];
       const std::string clip_text = clip.item.clip.empty() ? "" : " clip '" + clip.item.clip + "'";
       const std::string what = clip.file.string() + clip_text + ": " + e.reason();
       if (!o.skip_unreadable) throw invalid_input(what + " (--skip-unreadable leaves it out)");
@@ -268,7 +268,7 @@ Eigen::MatrixXd matrix_of_store(Read_clips& read, const Evaluate_options& o, Mat
   const frontend::Store_search library(o.store);
   library.check_policy(o.policy, frontend::Front::command_line);
   // The rows grouped by file, in the order of first appearance, as read_clips reads them.
-  const std::vector<io::Labelled_clip> rows = io::read_motion_labels(o.labels);
+  const std::vector<evaluation::Labelled_clip> rows = evaluation::read_motion_labels(o.labels);
   const std::vector<std::size_t> at = library.labelled(o.labels, o.read, frontend::Front::command_line);
   std::vector<std::size_t> selected;
   std::vector<bool> taken(rows.size(), false);
@@ -293,7 +293,7 @@ void run_evaluate(const Evaluate_options& o) {
   const auto start = Clock::now();
   Read_clips read;
   if (o.store.empty()) {
-    read = read_clips(io::read_motion_labels(o.labels), o);
+    read = read_clips(evaluation::read_motion_labels(o.labels), o);
     progress("read " + std::to_string(read.animations.size()) + " clips in " + fixed(seconds_since(start), 1) + " s");
   }
   const double read_seconds = seconds_since(start);

@@ -5,9 +5,9 @@
 
 #include <frontend/store_search.h>
 
-#include <deformseg/io/motion_store.h>
 #include <deformseg/similarity/find_motion.h>
 #include <deformseg/similarity/find_motion_in_collection.h>
+#include <deformseg/store/motion_store.h>
 
 #include <iostream>
 #include <memory>
@@ -45,7 +45,7 @@ void run_find_in_store(const Find_command_options& o) {
       library.find(inputs[0].animation, {.count = o.count, .shortest = o.shortest, .threads = o.read.threads});
   nlohmann::json found = nlohmann::json::array();
   for (const similarity::Clip_match& c : matches) {
-    const io::Store_record record = library.store().record(c.clip);
+    const store::Store_record record = library.store().record(c.clip);
     found.push_back({{"clip_index", c.clip}, {"path", record.path}, {"clip", record.clip},
                      {"first", c.match.first}, {"last", c.match.last}, {"similarity", c.match.value},
                      {"alignment", alignment_json(c.match)}});

@@ -6,9 +6,9 @@
 #include <frontend/similarity.h>
 #include <frontend/store_search.h>
 
+#include <deformseg/color/strain_colors.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/significance.h>
-#include <deformseg/color/strain_colors.h>
 
 #include <algorithm>
 #include <array>
@@ -148,7 +148,7 @@ Eigen::MatrixXd matrix_of(const Matrix_command_options& o, std::vector<std::stri
   const frontend::Store_search library(o.store);
   library.check_policy(o.policy, frontend::Front::command_line);
   for (std::size_t i = 0; i < library.size(); ++i) {
-    const io::Store_record record = library.store().record(i);
+    const store::Store_record record = library.store().record(i);
     names.push_back(library.name(i));
     const nlohmann::json clip = record.clip.empty() ? nlohmann::json() : nlohmann::json(record.clip);
     records.push_back({{"file", record.path}, {"clip", clip}, {"fps", record.fps}});

@@ -4,9 +4,9 @@
 
 #include <frontend/spatiotemporal.h>
 
-#include <deformseg/io/graphviz.h>
 #include <deformseg/io/frame_sequence.h>
-#include <deformseg/color/segment_colors.h>
+#include <deformseg/spatiotemporal/segment_colors.h>
+#include <deformseg/spatiotemporal/segment_graph_dot.h>
 
 #include <iostream>
 #include <memory>
@@ -46,12 +46,12 @@ void run(const Spatiotemporal_command_options& o) {
   const spatiotemporal::Evolving_graph& graph = result.graph;
   if (!o.dot.empty()) {
     progress("writing " + std::to_string(graph.size()) + " key frame graphs to " + o.dot);
-    io::write_key_frames_dot(graph, o.dot);
+    spatiotemporal::write_key_frames_dot(graph, o.dot);
   }
   if (!o.mesh_dir.empty()) {
     progress("writing " + std::to_string(animation.num_frames()) + " meshes coloured by segment to " + o.mesh_dir);
     io::write_sequence(animation, o.mesh_dir,
-                       {.face_colors = [&](std::size_t t) { return color::segment_face_colors(result.frames, t); }});
+                       {.face_colors = [&](std::size_t t) { return spatiotemporal::segment_face_colors(result.frames, t); }});
   }
   nlohmann::json document = frontend::evolving_graph_record(graph);
   document["input"] = o.input;

@@ -7,9 +7,9 @@
 #include <frontend/store.h>
 #include <frontend/store_search.h>
 
-#include <deformseg/io/motion_store.h>
-#include <deformseg/io/stored_motions.h>
 #include <deformseg/similarity/nearest_motions.h>
+#include <deformseg/store/motion_store.h>
+#include <deformseg/store/stored_motions.h>
 
 #include <algorithm>
 #include <chrono>
@@ -87,10 +87,10 @@ nlohmann::json pruning_json(const similarity::Pruning_report& p) {
           {"rows_abandoned", p.rows_abandoned}, {"pruned_share", p.pruned_share()}};
 }
 
-nlohmann::json neighbours_json(const std::vector<similarity::Neighbour>& neighbours, const io::Motion_store& store) {
+nlohmann::json neighbours_json(const std::vector<similarity::Neighbour>& neighbours, const store::Motion_store& store) {
   nlohmann::json found = nlohmann::json::array();
   for (std::size_t r = 0; r < neighbours.size(); ++r) {
-    const io::Store_record record = store.record(neighbours[r].index);
+    const store::Store_record record = store.record(neighbours[r].index);
     found.push_back({{"rank", r + 1}, {"index", neighbours[r].index}, {"path", record.path}, {"clip", record.clip},
                      {"value", neighbours[r].value}});
   }
@@ -103,7 +103,7 @@ void run_search(const Search_options& o) {
   frontend::check(o.read, frontend::Front::command_line);
   set_default_threads(o.read.threads);
   const frontend::Store_search library(o.store);
-  const io::Motion_store& store = library.store();
+  const store::Motion_store& store = library.store();
   for (const std::size_t i : o.clip_indices)
     if (i >= store.size())
       throw invalid_input("--clip-index " + std::to_string(i) + ": the store holds " + std::to_string(store.size()) +
@@ -182,7 +182,7 @@ void write_edges_csv(const std::vector<similarity::Nearest_motions>& graph, cons
 void run_knn_graph(const Knn_options& o) {
   set_default_threads(o.threads);
   const frontend::Store_search library(o.store);
-  const io::Motion_store& store = library.store();
+  const store::Motion_store& store = library.store();
   progress("searching the " + std::to_string(store.size()) + " clips' nearest " + std::to_string(o.k));
   const auto start = std::chrono::steady_clock::now();
   const std::vector<similarity::Nearest_motions> graph =
@@ -195,11 +195,11 @@ void run_knn_graph(const Knn_options& o) {
   if (!o.json.empty()) {
     nlohmann::json edges = nlohmann::json::array(), clips = nlohmann::json::array();
     for (std::size_t i = 0; i < store.size(); ++i) {
-      const io::Store_record record = store.record(i);
+      const store::Store_record record = store.record(i);
       clips.push_back({{"index", i}, {"name", library.name(i)}, {"path", record.path}, {"clip", record.clip}});
       for (std::size_t r = 0; r < graph[i].neighbours.size(); ++r) {
         const similarity::Neighbour& n = graph[i].neighbours[r];
-        const io::Store_record target = store.record(n.index);
+        const store::Store_record target = store.record(n.index);
         edges.push_back({{"source", i}, {"target", n.index}, {"rank", r + 1}, {"value", n.value},
                          {"source_path", record.path}, {"source_clip", record.clip}, {"target_path", target.path},
                          {"target_clip", target.clip}});
@@ -224,10 +224,10 @@ struct Store_command_options {
   std::string json;
 };
 
-nlohmann::json clips_json(const io::Motion_store& store) {
+nlohmann::json clips_json(const store::Motion_store& store) {
   nlohmann::json clips = nlohmann::json::array();
   for (std::size_t i = 0; i < store.size(); ++i) {
-    const io::Store_record r = store.record(i);
+    const store::Store_record r = store.record(i);
     clips.push_back({{"index", i}, {"path", r.path}, {"clip", r.clip}, {"frames", r.frame_count}, {"fps", r.fps},
                      {"rows", r.rows}, {"input_options", nlohmann::json::parse(r.input_options, nullptr, false)},
                      {"source_size", r.source_size}, {"source_mtime_ns", r.source_mtime_ns},
@@ -237,7 +237,7 @@ nlohmann::json clips_json(const io::Motion_store& store) {
 }
 
 void run_store_info(const Store_command_options& o) {
-  const io::Motion_store store = io::Motion_store::open(o.store);
+  const store::Motion_store store = store::Motion_store::open(o.store);
   const nlohmann::json document = {{"store", o.store},
                                    {"generation", store.generation()},
                                    {"clips", clips_json(store)},
@@ -255,7 +255,7 @@ void run_store_info(const Store_command_options& o) {
 }
 
 void run_store_verify(const Store_command_options& o) {
-  const io::Motion_store store = io::Motion_store::open(o.store, io::Verify::checksums);
+  const store::Motion_store store = store::Motion_store::open(o.store, store::Verify::checksums);
   const nlohmann::json document = {{"store", o.store}, {"clips", store.size()}, {"verified", true}};
   write_outputs(document, o.json, [&] {
     std::cout << "ok: " << store.size() << " clips, every file and clip matches its checksum\n";

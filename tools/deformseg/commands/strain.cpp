@@ -5,10 +5,10 @@
 
 #include <frontend/strain.h>
 
-#include <deformseg/io/frame_sequence.h>
-#include <deformseg/io/strain_field.h>
-#include <deformseg/strain/strain.h>
 #include <deformseg/color/strain_colors.h>
+#include <deformseg/io/frame_sequence.h>
+#include <deformseg/strain/strain.h>
+#include <deformseg/strain/strain_field_files.h>
 
 #include <algorithm>
 #include <cmath>
@@ -94,9 +94,9 @@ void write_picture(const mesh::Surface_mesh_animation& animation, const strain::
 void write_field(const strain::Strain_field<float>& field, const std::string& path) {
   progress("writing the field to " + path);
   if (std::filesystem::path(path).extension() == ".csv")
-    io::write_strain_csv(field, path);
+    strain::write_strain_csv(field, path);
   else
-    io::write_strain_binary(field, path);
+    strain::write_strain_binary(field, path);
 }
 
 nlohmann::json summary(const Strain_command_options& o, const frontend::Read_input& input,

@@ -2,12 +2,12 @@
 #include "command.h"
 #include "motion_box.h"
 
-#include <deformseg/spatiotemporal/evolving_graph.h>
+#include <deformseg/color/strain_colors.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/spatiotemporal/body_layout.h>
-#include <deformseg/color/segment_colors.h>
+#include <deformseg/spatiotemporal/evolving_graph.h>
+#include <deformseg/spatiotemporal/segment_colors.h>
 #include <deformseg/strain/strain.h>
-#include <deformseg/color/strain_colors.h>
 #include <deformseg/temporal/temporal_segmentation.h>
 
 #include <algorithm>
@@ -89,7 +89,7 @@ Face_colors strain_colors_of(const strain::Strain_field<float>& field, strain::S
 Face_colors temporal_colors(const temporal::Temporal_segmentation& segments, std::size_t faces) {
   Face_colors out{.legend = {{"kind", "list"}, {"title", "temporal segment"}, {"items", nlohmann::json::array()}}};
   for (std::size_t k = 0; k < segments.segments.size(); ++k) {
-    out.palette.push_back(color::segment_color(std::int32_t(k)));
+    out.palette.push_back(spatiotemporal::segment_color(std::int32_t(k)));
     out.legend["items"].push_back({{"name", "frames " + std::to_string(segments.segments[k].first) + "-" +
                                                 std::to_string(segments.segments[k].last)},
                                    {"color", k}});
@@ -108,7 +108,7 @@ Face_colors segment_colors_of(const spatiotemporal::Spatiotemporal_segmentation&
   for (std::size_t t = 0; t < segmentation.num_frames(); ++t)
     for (std::int32_t label : segmentation.frame_labels(t)) {
       auto [at, added] = index_of.try_emplace(label, std::uint16_t(out.palette.size()));
-      if (added) out.palette.push_back(color::segment_color(label));
+      if (added) out.palette.push_back(spatiotemporal::segment_color(label));
       out.indices.push_back(at->second);
     }
   for (const auto& [label, index] : index_of)
@@ -161,7 +161,7 @@ nlohmann::json key_frames_json(const spatiotemporal::Evolving_graph& graph) {
       nodes.push_back({{"kind", rigid ? "rigid" : "deformed"},
                        {"segment", rigid ? nlohmann::json(nullptr) : nlohmann::json(g[v].segment)},
                        {"area", g[v].area},
-                       {"color", rgb(color::segment_color(g[v].segment))}});
+                       {"color", rgb(spatiotemporal::segment_color(g[v].segment))}});
     }
     for (auto e : boost::make_iterator_range(boost::edges(g)))
       edges.push_back({boost::source(e, g), boost::target(e, g)});

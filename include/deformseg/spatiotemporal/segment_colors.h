@@ -1,4 +1,4 @@
-/// @file color/segment_colors.h
+/// @file spatiotemporal/segment_colors.h
 /// @brief Colours of spatio-temporal segments, the same in every frame, for meshes coloured by
 /// segment: `segment_color`, `segment_face_colors`, and `put_face_segments`, the node of each
 /// face in a face property map.
@@ -14,14 +14,14 @@
 #include <cstdint>
 #include <vector>
 
-namespace deformseg::color {
+namespace deformseg::spatiotemporal {
 
 /// @brief The colour of a segment: light grey for `Spatiotemporal_segmentation::rigid` (or any
 /// negative id), else a saturated colour of its own, the hue turning by the golden angle from one
 /// id to the next, so that segments with nearby ids (often neighbours in time) look different.
 /// The same id has the same colour in every frame and every run.
 /// @par Complexity O(1).
-inline Rgb segment_color(std::int32_t segment) {
+inline color::Rgb segment_color(std::int32_t segment) {
   if (segment < 0) return {200, 200, 200};
   constexpr double golden_turn = 0.381966011250105;  // 1 - 1 / phi, of a full turn
   const double hue = std::fmod(0.05 + golden_turn * double(segment), 1.0) * 6.0;
@@ -47,9 +47,9 @@ inline Rgb segment_color(std::int32_t segment) {
 /// `io::Sequence_write_options::face_colors`.
 /// @throws invalid_input when `t >= frames.num_frames()`.
 /// @par Complexity O(F).
-inline std::vector<Rgb> segment_face_colors(const spatiotemporal::Frame_segments& frames, std::size_t t) {
+inline std::vector<color::Rgb> segment_face_colors(const Frame_segments& frames, std::size_t t) {
   const auto labels = frames.segmentation().frame_labels(t);
-  std::vector<Rgb> colors(labels.size());
+  std::vector<color::Rgb> colors(labels.size());
   for (std::size_t f = 0; f < labels.size(); ++f) colors[f] = segment_color(labels[f]);
   return colors;
 }
@@ -67,11 +67,11 @@ inline std::vector<Rgb> segment_face_colors(const spatiotemporal::Frame_segments
 /// @throws invalid_input when `t` is out of range or the graph has another number of faces.
 /// @par Complexity O(F + E), as `Frame_segments::face_nodes`.
 template <mesh::FaceGraph Graph, class FacePropertyMap>
-void put_face_segments(const spatiotemporal::Frame_segments& frames, std::size_t t, const Graph& graph,
+void put_face_segments(const Frame_segments& frames, std::size_t t, const Graph& graph,
                        FacePropertyMap map) {
   const std::vector<std::uint32_t> nodes = frames.face_nodes(t);
   deformseg::strain::internal::for_each_face_index(graph, nodes.size(),
                                                    [&](auto f, std::size_t j) { put(map, f, nodes[j]); });
 }
 
-}  // namespace deformseg::color
+}  // namespace deformseg::spatiotemporal

@@ -9,7 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace deformseg::io::internal {
+namespace deformseg::store::internal {
 
 using Crc32_tables = std::array<std::array<std::uint32_t, 256>, 8>;
 
@@ -43,4 +43,4 @@ inline std::uint32_t crc32(const void* data, std::size_t size, std::uint32_t crc
   return ~crc;
 }
 
-}  // namespace deformseg::io::internal
+}  // namespace deformseg::store::internal

@@ -1,9 +1,10 @@
-// Tests of io/stored_motions.h: a store searched in place gives what the same clips give in
+// Tests of store/stored_motions.h: a store searched in place gives what the same clips give in
 // memory, bit for bit (search, knn graph, matrix); a store of other summaries is refused.
 #include "test_support.h"
 
-#include <deformseg/io/stored_motions.h>
 #include <deformseg/similarity/nearest_motions.h>
+#include <deformseg/store/store_append.h>
+#include <deformseg/store/stored_motions.h>
 
 #include <catch2/catch.hpp>
 
@@ -35,9 +36,9 @@ std::vector<similarity::Motion_signature_description> clips() {
 
 void write(const std::filesystem::path& folder, const std::vector<similarity::Motion_signature_description>& all,
            std::size_t chunks, const std::string& layout) {
-  io::Store_append append(folder, "{}", similarity::summary_width(16, chunks), layout);
+  store::Store_append append(folder, "{}", similarity::summary_width(16, chunks), layout);
   for (std::size_t c = 0; c < all.size(); ++c) {
-    io::Store_record record;
+    store::Store_record record;
     record.path = "/clips/" + std::to_string(c) + ".pc2";
     record.frame_count = std::uint32_t(all[c].frames.size());
     record.fps = 30;
@@ -53,8 +54,8 @@ void write(const std::filesystem::path& folder, const std::vector<similarity::Mo
 TEST_CASE("a store searched in place equals its clips in memory, bit for bit") {
   const auto all = clips();
   const auto folder = test::fresh_dir("stored_motions/search");
-  write(folder, all, 4, io::motion_summary_layout(4));
-  const io::Stored_motions stored(io::Motion_store::open(folder));
+  write(folder, all, 4, store::motion_summary_layout(4));
+  const store::Stored_motions stored(store::Motion_store::open(folder));
   const similarity::Motion_collection in_memory(all);
   REQUIRE(stored.size() == all.size());
   for (std::size_t q : {std::size_t(0), std::size_t(2), std::size_t(19)}) {
@@ -73,10 +74,10 @@ TEST_CASE("a store of other summaries is refused, naming its manifest") {
   const auto all = clips();
   const auto folder = test::fresh_dir("stored_motions/other");
   write(folder, all, 2, R"({"kind": "my-summary", "chunks": 2})");
-  CHECK_THROWS_WITH(io::Stored_motions(io::Motion_store::open(folder)),
+  CHECK_THROWS_WITH(store::Stored_motions(store::Motion_store::open(folder)),
                     Catch::Contains("store.json") && Catch::Contains("not motion summaries"));
   const auto wrong_width = test::fresh_dir("stored_motions/width");
-  write(wrong_width, all, 2, io::motion_summary_layout(3));
-  CHECK_THROWS_WITH(io::Stored_motions(io::Motion_store::open(wrong_width)), Catch::Contains("with 3 chunks"));
-  CHECK(io::Stored_motions(io::Motion_store{}).size() == 0);
+  write(wrong_width, all, 2, store::motion_summary_layout(3));
+  CHECK_THROWS_WITH(store::Stored_motions(store::Motion_store::open(wrong_width)), Catch::Contains("with 3 chunks"));
+  CHECK(store::Stored_motions(store::Motion_store{}).size() == 0);
 }

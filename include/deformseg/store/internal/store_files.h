@@ -1,12 +1,12 @@
-// The POSIX files of a motion store (io/motion_store.h): read-only memory maps of its immutable
+// The POSIX files of a motion store (store/motion_store.h): read-only memory maps of its immutable
 // files, the writer's lock, a data file written in pieces whose .npy header is filled in last, and
 // the check that a record's strings are UTF-8.
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/io/internal/crc32.h>
-#include <deformseg/io/internal/file_io.h>
-#include <deformseg/io/internal/npy.h>
+#include <deformseg/store/internal/crc32.h>
+#include <deformseg/store/internal/file_io.h>
+#include <deformseg/store/internal/npy.h>
 
 #include <cerrno>
 #include <cstddef>
@@ -25,7 +25,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace deformseg::io::internal {
+namespace deformseg::store::internal {
 
 /// True when `text` is valid UTF-8 (no overlong form, no surrogate, at most U+10FFFF).
 inline bool valid_utf8(std::string_view text) noexcept {
@@ -217,4 +217,4 @@ private:
   std::uint32_t data_crc_ = 0;
 };
 
-}  // namespace deformseg::io::internal
+}  // namespace deformseg::store::internal

@@ -1,4 +1,4 @@
-/// @file io/stored_motions.h
+/// @file store/stored_motions.h
 /// @brief `Stored_motions`: a motion store (`Motion_store`) read as a
 /// `similarity::MotionCollection`, so that `similarity::nearest_motions`, `knn_graph` and
 /// `similarity_matrix` search its clips in place; and `motion_summary_layout`, the summary layout
@@ -6,9 +6,9 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/io/motion_store.h>
 #include <deformseg/similarity/motion_bounds.h>
 #include <deformseg/similarity/motion_collection.h>
+#include <deformseg/store/motion_store.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -17,7 +17,7 @@
 #include <string>
 #include <utility>
 
-namespace deformseg::io {
+namespace deformseg::store {
 
 /// @brief The manifest's "summary" object of a store whose summaries are
 /// `similarity::summarize(view, chunks)`'s floats: `{"kind": "motion-summary", "chunks": K}`.
@@ -83,4 +83,4 @@ private:
 
 static_assert(similarity::MotionCollection<Stored_motions>);
 
-}  // namespace deformseg::io
+}  // namespace deformseg::store

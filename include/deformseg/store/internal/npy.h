@@ -1,12 +1,12 @@
 // The header of NumPy's .npy format, version 1.0, written and read strictly: what a motion
-// store's files are (io/motion_store.h). A file is the magic "\x93NUMPY", the version bytes 1 0,
+// store's files are (store/motion_store.h). A file is the magic "\x93NUMPY", the version bytes 1 0,
 // the header's length (2 bytes, little-endian), then the header: a Python dict literal
 // {'descr': ..., 'fortran_order': False, 'shape': (...), } padded with spaces and a '\n' so that
 // the data starts at a multiple of 64 bytes; then the data, in C order.
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/io/internal/file_io.h>
+#include <deformseg/store/internal/file_io.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-namespace deformseg::io::internal {
+namespace deformseg::store::internal {
 
 inline constexpr std::string_view npy_magic{"\x93NUMPY\x01\x00", 8};
 inline constexpr std::size_t npy_alignment = 64;
@@ -227,4 +227,4 @@ inline std::uint64_t check_npy(const char* data, std::size_t size, const std::st
   return rows;
 }
 
-}  // namespace deformseg::io::internal
+}  // namespace deformseg::store::internal

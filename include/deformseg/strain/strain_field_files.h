@@ -1,10 +1,10 @@
-/// @file io/strain_field.h
+/// @file strain/strain_field_files.h
 /// @brief Writes a `Strain_field` for other programs: as CSV (`write_strain_csv`) or as raw
 /// little-endian numbers after a one-line JSON header (`write_strain_binary`).
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/io/internal/file_io.h>
+#include <deformseg/internal/file_io.h>
 #include <deformseg/strain/strain.h>
 
 #include <bit>
@@ -15,16 +15,16 @@
 #include <string>
 #include <string_view>
 
-namespace deformseg::io::internal {
+namespace deformseg::strain::internal {
 
 // The JSON value of an optional number: the number, or null.
 inline std::string json_number_or_null(const std::optional<double>& value) {
-  return value ? shortest_text(*value) : std::string("null");
+  return value ? deformseg::internal::shortest_text(*value) : std::string("null");
 }
 
-}  // namespace deformseg::io::internal
+}  // namespace deformseg::strain::internal
 
-namespace deformseg::io {
+namespace deformseg::strain {
 
 /// @brief Writes a strain field as CSV: one line per frame, one column per triangle, the values
 /// separated by commas, no header line.
@@ -38,14 +38,14 @@ namespace deformseg::io {
 /// @throws invalid_input naming the file when it cannot be written (no partial file is left).
 /// @par Complexity O(F T), one frame's text in memory at a time.
 template <std::floating_point Value>
-void write_strain_csv(const strain::Strain_field<Value>& field, const std::filesystem::path& path) {
-  internal::Streamed_file file(path);
+void write_strain_csv(const Strain_field<Value>& field, const std::filesystem::path& path) {
+  deformseg::internal::Streamed_file file(path);
   std::string line;
   for (std::size_t t = 0; t < field.num_frames(); ++t) {
     line.clear();
     for (const Value v : field.frame(t)) {
       if (!line.empty()) line += ',';
-      internal::append_shortest(line, v);
+      deformseg::internal::append_shortest(line, v);
     }
     line += '\n';
     file.write(line);
@@ -75,10 +75,10 @@ void write_strain_csv(const strain::Strain_field<Value>& field, const std::files
 /// @throws invalid_input naming the file when it cannot be written (no partial file is left).
 /// @par Complexity O(F T), one frame's bytes in memory at a time.
 template <std::floating_point Value>
-void write_strain_binary(const strain::Strain_field<Value>& field, const std::filesystem::path& path) {
+void write_strain_binary(const Strain_field<Value>& field, const std::filesystem::path& path) {
   static_assert(sizeof(Value) == 4 || sizeof(Value) == 8, "IEEE-754 binary32 or binary64 values");
   std::string header =
-      internal::join(R"({"format": "deformseg strain field", "version": 1, "value_type": ")",
+      deformseg::internal::join(R"({"format": "deformseg strain field", "version": 1, "value_type": ")",
                      sizeof(Value) == 4 ? "float32" : "float64", R"(", "byte_order": "little", "frames": )",
                      std::to_string(field.num_frames()), R"(, "triangles": )", std::to_string(field.num_faces()),
                      R"(, "layout": "frame-major", "sigma": )", internal::json_number_or_null(field.sigma()),
@@ -87,13 +87,13 @@ void write_strain_binary(const strain::Strain_field<Value>& field, const std::fi
   header.append(alignment - 1 - header.size() % alignment, ' ');  // with the newline, a multiple of 64
   header += '\n';
 
-  internal::Streamed_file file(path);
+  deformseg::internal::Streamed_file file(path);
   file.write(header);
   std::string bytes(field.num_faces() * sizeof(Value), '\0');
   for (std::size_t t = 0; t < field.num_frames(); ++t) {
     char* out = bytes.data();
     for (const Value v : field.frame(t)) {
-      internal::store<std::endian::little>(out, v);
+      deformseg::internal::store_word<std::endian::little>(out, v);
       out += sizeof(Value);
     }
     file.write(bytes);
@@ -101,4 +101,4 @@ void write_strain_binary(const strain::Strain_field<Value>& field, const std::fi
   file.close();
 }
 
-}  // namespace deformseg::io
+}  // namespace deformseg::strain

@@ -1,8 +1,8 @@
-// Tests of io/motion_store.h: round trips bit for bit, appends and replaces, lookups, refusals,
+// Tests of store/motion_store.h: round trips bit for bit, appends and replaces, lookups, refusals,
 // every kind of damage named in its message, and appends killed with SIGKILL at several points.
 #include "test_support.h"
 
-#include <deformseg/io/motion_store.h>
+#include <deformseg/store/store_append.h>
 
 #include <nlohmann/json.hpp>
 
@@ -27,7 +27,7 @@ using namespace deformseg;
 
 // A clip of a deterministic pattern: its record, signatures (dimension-major), frames, summary.
 struct Store_test_clip {
-  io::Store_record record;
+  store::Store_record record;
   std::vector<float> values;
   std::vector<std::uint32_t> frames;
   std::vector<float> summary;
@@ -57,7 +57,7 @@ Store_test_clip store_test_clip(std::size_t seed, std::size_t width = 5, std::si
   for (std::size_t k = 0; k < rows * width; ++k) c.values.push_back(store_test_float(seed * 100003 + k + variant * 7919));
   for (std::size_t r = 0; r < rows; ++r) c.frames.push_back(static_cast<std::uint32_t>(2 * r + seed % 3));
   for (std::size_t k = 0; k < summary_width; ++k) c.summary.push_back(store_test_float(seed * 31 + k + 1000000));
-  io::Store_record& r = c.record;
+  store::Store_record& r = c.record;
   r.path = "/data/set " + std::to_string(seed / 3) + "/clip\xc3\xa9.glb";
   r.clip = seed % 3 == 0 ? "" : "Take " + std::to_string(seed);
   r.input_options = "weld=1;triangulate=0;fps=";
@@ -76,18 +76,18 @@ Store_test_clip store_test_clip(std::size_t seed, std::size_t width = 5, std::si
 
 const char* const store_test_options = R"({"policy": "motion-signature", "lags": [0.1, 0.2], "floor": 3e-3, "up": null})";
 
-std::size_t store_test_add(io::Store_append& append, const Store_test_clip& c) {
+std::size_t store_test_add(store::Store_append& append, const Store_test_clip& c) {
   return append.add(c.record, c.view(), c.frames, c.summary);
 }
 
 void store_test_write(const fs::path& folder, std::size_t first, std::size_t count) {
-  io::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
+  store::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
   for (std::size_t seed = first; seed < first + count; ++seed) store_test_add(append, store_test_clip(seed));
   append.commit();
 }
 
 // Checks that clip `i` of `store` is `c`, bit for bit, the block fields aside.
-void store_test_check_clip(const io::Motion_store& store, std::size_t i, const Store_test_clip& c) {
+void store_test_check_clip(const store::Motion_store& store, std::size_t i, const Store_test_clip& c) {
   const similarity::Motion_signature_view v = store.view(i);
   REQUIRE(v.rows == c.frames.size());
   REQUIRE(v.width == c.width);
@@ -98,7 +98,7 @@ void store_test_check_clip(const io::Motion_store& store, std::size_t i, const S
   const auto summary = store.summary(i);
   REQUIRE(summary.size() == c.summary.size());
   if (!summary.empty()) CHECK(std::memcmp(summary.data(), c.summary.data(), c.summary.size() * sizeof(float)) == 0);
-  const io::Store_record r = store.record(i);
+  const store::Store_record r = store.record(i);
   CHECK(r.path == c.record.path);
   CHECK(r.clip == c.record.clip);
   CHECK(r.input_options == c.record.input_options);
@@ -113,7 +113,7 @@ void store_test_check_clip(const io::Motion_store& store, std::size_t i, const S
   CHECK(r.rows == c.frames.size());
 }
 
-void store_test_check_seeds(const io::Motion_store& store, std::size_t count) {
+void store_test_check_seeds(const store::Motion_store& store, std::size_t count) {
   REQUIRE(store.size() == count);
   for (std::size_t i = 0; i < count; ++i) store_test_check_clip(store, i, store_test_clip(i));
 }
@@ -135,16 +135,16 @@ void store_test_rewrite(const fs::path& folder, const std::string& name, const s
   const std::string data = bytes.substr(std::min(header, bytes.size()));
   manifest.replace(entry, end - entry,
                    "\"name\": \"" + name + "\", \"bytes\": " + std::to_string(bytes.size()) + ", \"data_crc32\": " +
-                       std::to_string(io::internal::crc32(data.data(), data.size())) + "\n  ");
+                       std::to_string(store::internal::crc32(data.data(), data.size())) + "\n  ");
   const std::size_t checksum = manifest.rfind("\"checksum\"");
-  manifest = manifest.substr(0, checksum) + "\"checksum\": \"" + io::internal::checksum_text(manifest.substr(0, checksum)) + "\"}\n";
+  manifest = manifest.substr(0, checksum) + "\"checksum\": \"" + store::internal::checksum_text(manifest.substr(0, checksum)) + "\"}\n";
   store_test_put(folder / "store.json", manifest);
 }
 
 // The message of the invalid_input that opening `folder` throws ("" when it opens).
-std::string store_test_open_error(const fs::path& folder, io::Verify verify = io::Verify::structure) {
+std::string store_test_open_error(const fs::path& folder, store::Verify verify = store::Verify::structure) {
   try {
-    io::Motion_store::open(folder, verify);
+    store::Motion_store::open(folder, verify);
   } catch (const invalid_input& e) {
     return e.what();
   }
@@ -161,18 +161,18 @@ std::set<std::string> store_test_listing(const fs::path& folder) {
 
 TEST_CASE("crc32 is zlib's") {
   const std::string text = "123456789";
-  CHECK(io::internal::crc32(text.data(), text.size()) == 0xCBF43926u);
-  CHECK(io::internal::crc32(text.data() + 4, 5, io::internal::crc32(text.data(), 4)) == 0xCBF43926u);
+  CHECK(store::internal::crc32(text.data(), text.size()) == 0xCBF43926u);
+  CHECK(store::internal::crc32(text.data() + 4, 5, store::internal::crc32(text.data(), 4)) == 0xCBF43926u);
   const std::string long_text(1000, 'a');
-  CHECK(io::internal::crc32(long_text.data(), long_text.size()) == 0x9A38DA03u);  // Python: zlib.crc32(b"a" * 1000)
-  CHECK(io::internal::crc32(nullptr, 0) == 0);
+  CHECK(store::internal::crc32(long_text.data(), long_text.size()) == 0x9A38DA03u);  // Python: zlib.crc32(b"a" * 1000)
+  CHECK(store::internal::crc32(nullptr, 0) == 0);
 }
 
 TEST_CASE("motion store: a round trip gives the same floats, frames, summaries and records") {
   const fs::path folder = test::fresh_dir("motion_store/round_trip") / "S";  // missing: created
   store_test_write(folder, 0, 40);
-  for (const io::Verify verify : {io::Verify::structure, io::Verify::checksums}) {
-    const io::Motion_store store = io::Motion_store::open(folder, verify);
+  for (const store::Verify verify : {store::Verify::structure, store::Verify::checksums}) {
+    const store::Motion_store store = store::Motion_store::open(folder, verify);
     CHECK(store.generation() == 1);
     CHECK(store.width() == 5);
     CHECK(store.summary_width() == 3);
@@ -186,19 +186,19 @@ TEST_CASE("motion store: a second append adds at the end, a replace keeps the in
   const fs::path folder = test::fresh_dir("motion_store/appends");
   store_test_write(folder, 0, 10);
   store_test_write(folder, 10, 5);
-  io::Motion_store store = io::Motion_store::open(folder, io::Verify::checksums);
+  store::Motion_store store = store::Motion_store::open(folder, store::Verify::checksums);
   store_test_check_seeds(store, 15);
   CHECK(store.record(3).block.generation == 1);
   CHECK(store.record(12).block.generation == 2);
 
   const Store_test_clip changed = store_test_clip(3, 5, 3, 1);
   {
-    io::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
+    store::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
     append.replace(3, changed.record, changed.view(), changed.frames, changed.summary);
     CHECK(store_test_add(append, store_test_clip(15)) == 15);
     append.commit();
   }
-  const io::Motion_store after = io::Motion_store::open(folder, io::Verify::checksums);
+  const store::Motion_store after = store::Motion_store::open(folder, store::Verify::checksums);
   REQUIRE(after.size() == 16);
   store_test_check_clip(after, 3, changed);
   CHECK(after.record(3).block.generation == 3);
@@ -208,7 +208,7 @@ TEST_CASE("motion store: a second append adds at the end, a replace keeps the in
   store_test_check_clip(store, 3, store_test_clip(3));
 
   SECTION("a replace names the same clip") {
-    io::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
+    store::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
     const Store_test_clip other = store_test_clip(4);
     CHECK_THROWS_WITH(append.replace(3, other.record, other.view(), other.frames, other.summary),
                       Catch::Contains("clip 3 (/data/set 1/clip\xc3\xa9.glb)") && Catch::Contains("another clip"));
@@ -221,31 +221,31 @@ TEST_CASE("motion store: a second append adds at the end, a replace keeps the in
 TEST_CASE("motion store: clips are found by path and clip") {
   const fs::path folder = test::fresh_dir("motion_store/find");
   store_test_write(folder, 0, 30);
-  const io::Motion_store store = io::Motion_store::open(folder);
+  const store::Motion_store store = store::Motion_store::open(folder);
   for (std::size_t i = 0; i < 30; ++i) {
     const Store_test_clip c = store_test_clip(i);
     CHECK(store.find(c.record.path, c.record.clip) == i);
   }
   CHECK_FALSE(store.find("/data/set 0/clip\xc3\xa9.glb", "Take 3"));  // Take 3 is in set 1
   CHECK_FALSE(store.find("/nowhere", ""));
-  CHECK_FALSE(io::Motion_store().find("/data", ""));
+  CHECK_FALSE(store::Motion_store().find("/data", ""));
 }
 
 TEST_CASE("motion store: an append with other options is refused, naming the option") {
   const fs::path folder = test::fresh_dir("motion_store/options");
   store_test_write(folder, 0, 2);
   const std::string manifest = store_test_bytes(folder / "store.json");
-  CHECK_THROWS_WITH(io::Store_append(folder, R"({"policy": "motion-signature", "lags": [0.1, 0.3], "floor": 0.003, "up": null})",
+  CHECK_THROWS_WITH(store::Store_append(folder, R"({"policy": "motion-signature", "lags": [0.1, 0.3], "floor": 0.003, "up": null})",
                                      3, R"({"fields": ["lo", "hi", "mean"]})"),
                     Catch::Contains("store.json") && Catch::Contains("\"lags\" is [0.1,0.2] in the store, [0.1,0.3]"));
-  CHECK_THROWS_WITH(io::Store_append(folder, R"({"policy": "motion-signature", "lags": [0.1, 0.2], "up": null})", 3,
+  CHECK_THROWS_WITH(store::Store_append(folder, R"({"policy": "motion-signature", "lags": [0.1, 0.2], "up": null})", 3,
                                      R"({"fields": ["lo", "hi", "mean"]})"),
                     Catch::Contains("\"floor\" is 0.003 in the store, not given in this append"));
-  CHECK_THROWS_WITH(io::Store_append(folder, store_test_options, 4, R"({"fields": ["lo", "hi", "mean"]})"),
+  CHECK_THROWS_WITH(store::Store_append(folder, store_test_options, 4, R"({"fields": ["lo", "hi", "mean"]})"),
                     Catch::Contains("summaries are of another layout"));
-  CHECK_THROWS_WITH(io::Store_append(folder, "[1]", 3), Catch::Contains("must be a JSON object"));
+  CHECK_THROWS_WITH(store::Store_append(folder, "[1]", 3), Catch::Contains("must be a JSON object"));
   // Equal values written otherwise are the same options.
-  io::Store_append same(folder, R"({"up": null, "floor": 0.003, "lags": [1e-1, 0.2], "policy": "motion-signature"})", 3,
+  store::Store_append same(folder, R"({"up": null, "floor": 0.003, "lags": [1e-1, 0.2], "policy": "motion-signature"})", 3,
                         R"({"fields": ["lo", "hi", "mean"]})");
   CHECK(store_test_bytes(folder / "store.json") == manifest);
 }
@@ -256,31 +256,31 @@ TEST_CASE("motion store: an uncommitted append changes nothing") {
   const std::set<std::string> files = store_test_listing(folder);
   const std::string manifest = store_test_bytes(folder / "store.json");
   {
-    io::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
+    store::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
     for (std::size_t seed = 6; seed < 20; ++seed) store_test_add(append, store_test_clip(seed));
     const Store_test_clip changed = store_test_clip(2, 5, 3, 1);
     append.replace(2, changed.record, changed.view(), changed.frames, changed.summary);
   }
   CHECK(store_test_listing(folder) == files);
   CHECK(store_test_bytes(folder / "store.json") == manifest);
-  store_test_check_seeds(io::Motion_store::open(folder, io::Verify::checksums), 6);
+  store_test_check_seeds(store::Motion_store::open(folder, store::Verify::checksums), 6);
 
   SECTION("a store never committed is no store") {
     const fs::path fresh = test::fresh_dir("motion_store/never_committed");
-    { io::Store_append append(fresh, store_test_options, 3); store_test_add(append, store_test_clip(0)); }
+    { store::Store_append append(fresh, store_test_options, 3); store_test_add(append, store_test_clip(0)); }
     CHECK_THAT(store_test_open_error(fresh), Catch::Contains("not a motion store: the folder has no store.json"));
   }
 }
 
 TEST_CASE("motion store: an empty store, a summary of no float, one writer at a time") {
   const fs::path folder = test::fresh_dir("motion_store/empty");
-  { io::Store_append append(folder, "{}", 0); append.commit(); }
-  const io::Motion_store empty = io::Motion_store::open(folder, io::Verify::checksums);
+  { store::Store_append append(folder, "{}", 0); append.commit(); }
+  const store::Motion_store empty = store::Motion_store::open(folder, store::Verify::checksums);
   CHECK(empty.size() == 0);
   CHECK(empty.width() == 0);
   {
-    io::Store_append append(folder, "{}", 0);
-    CHECK_THROWS_WITH(io::Store_append(folder, "{}", 0), Catch::Contains("another append to this store is running") &&
+    store::Store_append append(folder, "{}", 0);
+    CHECK_THROWS_WITH(store::Store_append(folder, "{}", 0), Catch::Contains("another append to this store is running") &&
                                                                Catch::Contains((folder / "lock").string()));
     store_test_add(append, store_test_clip(5, 64, 0));
     store_test_add(append, store_test_clip(6, 64, 0));
@@ -288,7 +288,7 @@ TEST_CASE("motion store: an empty store, a summary of no float, one writer at a 
     CHECK_THROWS_WITH(store_test_add(append, narrow), Catch::Contains("4 values per row, the store's 64"));
     append.commit();
   }
-  const io::Motion_store store = io::Motion_store::open(folder, io::Verify::checksums);
+  const store::Motion_store store = store::Motion_store::open(folder, store::Verify::checksums);
   REQUIRE(store.size() == 2);
   store_test_check_clip(store, 1, store_test_clip(6, 64, 0));
   CHECK(store.summary(0).empty());
@@ -296,7 +296,7 @@ TEST_CASE("motion store: an empty store, a summary of no float, one writer at a 
   SECTION("a folder holding other files is not made a store") {
     const fs::path other = test::fresh_dir("motion_store/other_files");
     test::write_file("motion_store/other_files/notes.txt", "mine");
-    CHECK_THROWS_WITH(io::Store_append(other, "{}", 0), Catch::Contains("holds other files (notes.txt)"));
+    CHECK_THROWS_WITH(store::Store_append(other, "{}", 0), Catch::Contains("holds other files (notes.txt)"));
   }
 }
 
@@ -350,7 +350,7 @@ TEST_CASE("motion store: a flipped byte is caught, in the data with Verify::chec
     for (const std::string name : {"signatures-000001.npy", "frames-000001.npy", "summaries-000001.npy"}) {
       const std::string original = flip(name, 2);
       CHECK(store_test_open_error(folder).empty());
-      CHECK(store_test_open_error(folder, io::Verify::checksums) ==
+      CHECK(store_test_open_error(folder, store::Verify::checksums) ==
             (folder / name).string() + ": its checksum does not match the manifest's: the file is corrupted");
       store_test_put(folder / name, original);
     }
@@ -360,7 +360,7 @@ TEST_CASE("motion store: a flipped byte is caught, in the data with Verify::chec
     bytes[128] ^= 0x01;  // the first float of clip 0
     store_test_rewrite(folder, "signatures-000001.npy", bytes, 128);
     CHECK(store_test_open_error(folder).empty());
-    CHECK(store_test_open_error(folder, io::Verify::checksums) ==
+    CHECK(store_test_open_error(folder, store::Verify::checksums) ==
           (folder / "clips-000001.npy").string() + ": clip 0 (/data/set 0/clip\xc3\xa9.glb): its block's checksum does not " +
               "match: its data in generation 1 is corrupted");
   }
@@ -373,7 +373,7 @@ TEST_CASE("motion store: a bad manifest, an unknown format and a newer version a
   const std::string manifest = store_test_bytes(manifest_path);
   const auto with_checksum = [](std::string text) {
     const std::size_t checksum = text.rfind("\"checksum\"");
-    return text.substr(0, checksum) + "\"checksum\": \"" + io::internal::checksum_text(text.substr(0, checksum)) + "\"}\n";
+    return text.substr(0, checksum) + "\"checksum\": \"" + store::internal::checksum_text(text.substr(0, checksum)) + "\"}\n";
   };
   store_test_put(manifest_path, "{\"format\": \"deformseg-motion-store\", \"version\": 1,}");
   CHECK_THAT(store_test_open_error(folder),
@@ -407,25 +407,25 @@ TEST_CASE("motion store: JSON nested too deep is refused, in the manifest and in
   };
   // Options of 63 levels, in a manifest of 64, are options like any others: written, read back, compared equal.
   {
-    io::Store_append append(folder, nested(63), 0);
+    store::Store_append append(folder, nested(63), 0);
     append.add(store_test_clip(0).record, store_test_clip(0).view(), store_test_clip(0).frames, {});
     append.commit();
   }
-  const std::string options = io::Motion_store::open(folder, io::Verify::checksums).description();
-  CHECK(options == io::internal::json_text(nlohmann::ordered_json::parse(nested(63))));
-  CHECK_NOTHROW(io::Store_append(folder, nested(63), 0));
-  CHECK_THROWS_WITH(io::Store_append(folder, nested(64), 0),
+  const std::string options = store::Motion_store::open(folder, store::Verify::checksums).description();
+  CHECK(options == store::internal::json_text(nlohmann::ordered_json::parse(nested(63))));
+  CHECK_NOTHROW(store::Store_append(folder, nested(63), 0));
+  CHECK_THROWS_WITH(store::Store_append(folder, nested(64), 0),
                     Catch::StartsWith(folder.string() + ": not valid here: JSON nested more than 63 deep"));
   // The manifest's options nested 64 deep, the manifest 65, its checksum made to agree.
   const fs::path manifest_path = folder / "store.json";
   nlohmann::ordered_json manifest = nlohmann::ordered_json::parse(store_test_bytes(manifest_path));
   manifest.erase("checksum");
   manifest["description"] = nlohmann::ordered_json::parse(nested(64));
-  store_test_put(manifest_path, io::internal::with_checksum(manifest));
+  store_test_put(manifest_path, store::internal::with_checksum(manifest));
   CHECK(store_test_open_error(folder) == manifest_path.string() + ": not valid here: JSON nested more than 64 deep");
   // A manifest of the most bytes a manifest may have, every one of them an opening bracket: refused
   // at the 65th, without recursing.
-  store_test_put(manifest_path, std::string(io::internal::max_manifest_bytes, '['));
+  store_test_put(manifest_path, std::string(store::internal::max_manifest_bytes, '['));
   CHECK(store_test_open_error(folder) == manifest_path.string() + ": not valid here: JSON nested more than 64 deep");
 }
 
@@ -437,12 +437,12 @@ TEST_CASE("motion store: the checksum in another form, and a number no double ho
   // Valid JSON, the right CRC-32, but not the checksum's one form (no space after the colon).
   const std::size_t at = manifest.rfind("\"checksum\"");
   store_test_put(manifest_path, manifest.substr(0, at) + "\"checksum\":\"" +
-                                    io::internal::checksum_text(manifest.substr(0, at)) + "\"}\n");
+                                    store::internal::checksum_text(manifest.substr(0, at)) + "\"}\n");
   CHECK(store_test_open_error(folder) ==
         manifest_path.string() + ": its checksum does not match its contents: the manifest is corrupted");
   store_test_put(manifest_path, manifest);
   CHECK(store_test_open_error(folder).empty());
-  CHECK_THROWS_WITH(io::Store_append(folder, R"({"floor": 1e400})", 3),
+  CHECK_THROWS_WITH(store::Store_append(folder, R"({"floor": 1e400})", 3),
                     Catch::StartsWith(folder.string() + ": not valid JSON: number overflow parsing '1e400'"));
 }
 
@@ -482,36 +482,36 @@ TEST_CASE("motion store: an out-of-range record is named with its clip") {
   store_test_write(folder, 0, 4);
   const std::string name = "clips-000001.npy";
   const std::string original = store_test_bytes(folder / name);
-  const std::size_t header = original.size() - 4 * io::internal::clip_row_bytes;
+  const std::size_t header = original.size() - 4 * store::internal::clip_row_bytes;
   const std::string clip2 = (folder / name).string() + ": clip 2 (/data/set 0/clip\xc3\xa9.glb#Take 2)";
   const auto with_row = [&](auto change) {
-    io::internal::Clip_row row = io::internal::decode_clip_row(original.data() + header + 2 * io::internal::clip_row_bytes);
+    store::internal::Clip_row row = store::internal::decode_clip_row(original.data() + header + 2 * store::internal::clip_row_bytes);
     change(row);
     std::string bytes = original;
-    io::internal::encode_clip_row(bytes.data() + header + 2 * io::internal::clip_row_bytes, row);
+    store::internal::encode_clip_row(bytes.data() + header + 2 * store::internal::clip_row_bytes, row);
     store_test_rewrite(folder, name, bytes, header);
     return store_test_open_error(folder);
   };
   const std::uint64_t floats = (fs::file_size(folder / "signatures-000001.npy") - 128) / 4;
   const std::uint64_t last_block = (floats + 15) / 16 * 16;  // aligned, at or past the end
-  CHECK(with_row([&](io::internal::Clip_row& r) { r.numbers.block.offset = last_block; }) ==
+  CHECK(with_row([&](store::internal::Clip_row& r) { r.numbers.block.offset = last_block; }) ==
         clip2 + ": 3 rows of 5 floats at float " + std::to_string(last_block) + " run past the end of " +
             (folder / "signatures-000001.npy").string());
-  CHECK_THAT(with_row([](io::internal::Clip_row& r) { r.numbers.block.offset = 3; }), Catch::Contains("is not 64-byte aligned"));
-  CHECK(with_row([](io::internal::Clip_row& r) { r.numbers.rows = 0; }) == clip2 + ": 0 rows; a clip has at least one");
-  CHECK(with_row([](io::internal::Clip_row& r) { r.numbers.fps = -30; }) == clip2 + ": its fps is not positive and finite");
-  CHECK_THAT(with_row([](io::internal::Clip_row& r) { r.numbers.block.frames_offset = 1u << 31; }),
+  CHECK_THAT(with_row([](store::internal::Clip_row& r) { r.numbers.block.offset = 3; }), Catch::Contains("is not 64-byte aligned"));
+  CHECK(with_row([](store::internal::Clip_row& r) { r.numbers.rows = 0; }) == clip2 + ": 0 rows; a clip has at least one");
+  CHECK(with_row([](store::internal::Clip_row& r) { r.numbers.fps = -30; }) == clip2 + ": its fps is not positive and finite");
+  CHECK_THAT(with_row([](store::internal::Clip_row& r) { r.numbers.block.frames_offset = 1u << 31; }),
              Catch::Contains("3 frame numbers at 2147483648 run past the end of"));
-  CHECK_THAT(with_row([](io::internal::Clip_row& r) { r.numbers.block.summary_row = 4; }),
+  CHECK_THAT(with_row([](store::internal::Clip_row& r) { r.numbers.block.summary_row = 4; }),
              Catch::Contains("its summary row 4 would run past the end of"));
-  CHECK_THAT(with_row([](io::internal::Clip_row& r) { r.numbers.block.generation = 9; }),
+  CHECK_THAT(with_row([](store::internal::Clip_row& r) { r.numbers.block.generation = 9; }),
              Catch::Contains("its generation 9 is not among the store's segments"));
-  CHECK_THAT(with_row([](io::internal::Clip_row& r) { r.strings += 1u << 20; }),
+  CHECK_THAT(with_row([](store::internal::Clip_row& r) { r.strings += 1u << 20; }),
              Catch::Contains("clip 2: its strings at byte") && Catch::Contains("run past the end of"));
-  CHECK_THAT(with_row([](io::internal::Clip_row& r) { r.strings_length -= 1; }),
+  CHECK_THAT(with_row([](store::internal::Clip_row& r) { r.strings_length -= 1; }),
              Catch::Contains("clip 2: its strings are not 4 NUL-terminated strings"));
-  const io::internal::Clip_row clip0 = io::internal::decode_clip_row(original.data() + header);
-  CHECK(with_row([&](io::internal::Clip_row& r) {  // clip 0's strings: the same clip twice
+  const store::internal::Clip_row clip0 = store::internal::decode_clip_row(original.data() + header);
+  CHECK(with_row([&](store::internal::Clip_row& r) {  // clip 0's strings: the same clip twice
           r.strings = clip0.strings;
           r.strings_length = clip0.strings_length;
         }) == (folder / name).string() + ": clip 2 (/data/set 0/clip\xc3\xa9.glb): the same clip as clip 0");
@@ -536,7 +536,7 @@ TEST_CASE("motion store: an append killed at any point leaves the store as it wa
     if (child == 0) {
       ::close(report[0]);
       try {
-        io::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
+        store::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
         for (std::size_t seed = before; seed < before + appended; ++seed) {
           store_test_add(append, store_test_clip(seed, 5, 3));
           (void)!::write(report[1], "a", 1);
@@ -569,7 +569,7 @@ TEST_CASE("motion store: an append killed at any point leaves the store as it wa
     const int status = killed_append(signals, true);
     CHECK((WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL));
     CHECK(store_test_bytes(folder / "store.json") == manifest);
-    store_test_check_seeds(io::Motion_store::open(folder, io::Verify::checksums), before);
+    store_test_check_seeds(store::Motion_store::open(folder, store::Verify::checksums), before);
   }
   bool orphans = false;
   for (const std::string& name : store_test_listing(folder)) orphans |= name.find(".partial-") != std::string::npos;
@@ -578,7 +578,7 @@ TEST_CASE("motion store: an append killed at any point leaves the store as it wa
   // Kills wherever the child has got to, the commit included: the store is as before or as after.
   for (const std::size_t signals : {1, 75, 151}) {
     killed_append(signals, false);
-    const io::Motion_store store = io::Motion_store::open(folder, io::Verify::checksums);
+    const store::Motion_store store = store::Motion_store::open(folder, store::Verify::checksums);
     INFO("killed after " << signals << " signals: the store holds " << store.size() << " clips");
     CHECK((store.size() == before || store.size() == before + appended));
     store_test_check_seeds(store, store.size());
@@ -586,17 +586,17 @@ TEST_CASE("motion store: an append killed at any point leaves the store as it wa
   }
 
   // The next append succeeds and removes what the killed ones left.
-  const std::size_t held = io::Motion_store::open(folder).size();
+  const std::size_t held = store::Motion_store::open(folder).size();
   store_test_write(folder, held, 1);
-  const io::Motion_store store = io::Motion_store::open(folder, io::Verify::checksums);
+  const store::Motion_store store = store::Motion_store::open(folder, store::Verify::checksums);
   store_test_check_seeds(store, held + 1);
   const std::string listed = store_test_bytes(folder / "store.json");
   for (const std::string& name : store_test_listing(folder)) {
     INFO(name);
     CHECK(name.find(".partial-") == std::string::npos);
     // Beside the manifest's files: the lock, and the previous generation's tables (for readers).
-    const bool previous_table = name == io::internal::store_file_name("clips", store.generation() - 1) ||
-                                name == io::internal::store_file_name("strings", store.generation() - 1);
+    const bool previous_table = name == store::internal::store_file_name("clips", store.generation() - 1) ||
+                                name == store::internal::store_file_name("strings", store.generation() - 1);
     CHECK((name == "store.json" || name == "lock" || previous_table || listed.find('"' + name + '"') != std::string::npos));
   }
 }
@@ -612,7 +612,7 @@ TEST_CASE("motion store: any one flipped byte of any file is caught with Verify:
       std::string bytes = original;
       bytes[at] ^= 0x10;
       store_test_put(folder / name, bytes);
-      const std::string error = store_test_open_error(folder, io::Verify::checksums);
+      const std::string error = store_test_open_error(folder, store::Verify::checksums);
       INFO(name << ", byte " << at << ": " << error);
       CHECK_THAT(error, Catch::StartsWith(folder.string()));
       caught += !error.empty();
@@ -627,5 +627,5 @@ TEST_CASE("motion store: any one flipped byte of any file is caught with Verify:
     }
     store_test_put(folder / name, original);
   }
-  CHECK(store_test_open_error(folder, io::Verify::checksums).empty());
+  CHECK(store_test_open_error(folder, store::Verify::checksums).empty());
 }

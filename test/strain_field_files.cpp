@@ -1,8 +1,8 @@
 // Tests of write_strain_csv and write_strain_binary: what they write reads back to the field.
 #include "test_support.h"
 
-#include <deformseg/io/strain_field.h>
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/strain/strain_field_files.h>
 
 #include <nlohmann/json.hpp>
 
@@ -28,10 +28,10 @@ using deformseg::test::file_text;
 
 }  // namespace
 
-TEST_CASE("write_strain_csv: a line per frame, a column per triangle, values exact", "[io][strain]") {
+TEST_CASE("write_strain_csv: a line per frame, a column per triangle, values exact", "[strain][files]") {
   const auto field = bent_tube_field();
   const auto path = test::scratch_dir() / "field.csv";
-  io::write_strain_csv(field, path);
+  strain::write_strain_csv(field, path);
 
   std::istringstream lines(file_text(path));
   std::string line;
@@ -51,10 +51,10 @@ TEST_CASE("write_strain_csv: a line per frame, a column per triangle, values exa
   CHECK(t == field.num_frames());
 }
 
-TEST_CASE("write_strain_binary: a JSON header line, then the values little-endian", "[io][strain]") {
+TEST_CASE("write_strain_binary: a JSON header line, then the values little-endian", "[strain][files]") {
   const auto field = bent_tube_field();
   const auto path = test::scratch_dir() / "field.bin";
-  io::write_strain_binary(field, path);
+  strain::write_strain_binary(field, path);
 
   const std::string bytes = file_text(path);
   const auto newline = bytes.find('\n');
@@ -81,13 +81,13 @@ TEST_CASE("write_strain_binary: a JSON header line, then the values little-endia
   CHECK(std::ranges::equal(values, field.values()));
 }
 
-TEST_CASE("write_strain_binary: double fields and no sigma", "[io][strain]") {
+TEST_CASE("write_strain_binary: double fields and no sigma", "[strain][files]") {
   mesh::Bending_tube spec;
   spec.schedule = {{3, {1.0}}};
   const auto field = strain::compute_strain<double>(
       mesh::make_bending_tube(spec).animation, strain::Strain_options{.normalization = strain::No_normalization{}});
   const auto path = test::scratch_dir() / "field64.bin";
-  io::write_strain_binary(field, path);
+  strain::write_strain_binary(field, path);
   const std::string bytes = file_text(path);
   const auto header = nlohmann::json::parse(bytes.substr(0, bytes.find('\n')));
   CHECK(header["value_type"] == "float64");
@@ -95,11 +95,11 @@ TEST_CASE("write_strain_binary: double fields and no sigma", "[io][strain]") {
   CHECK(bytes.size() == bytes.find('\n') + 1 + 8 * field.values().size());
 }
 
-TEST_CASE("write_strain_csv and write_strain_binary: an unwritable path names the file", "[io][strain]") {
+TEST_CASE("write_strain_csv and write_strain_binary: an unwritable path names the file", "[strain][files]") {
   const auto field = bent_tube_field();
   const auto folder = test::fresh_dir("strain-into-folder");
-  CHECK_THROWS_WITH(io::write_strain_csv(field, folder), Catch::Contains(folder.string()) && Catch::Contains("folder"));
+  CHECK_THROWS_WITH(strain::write_strain_csv(field, folder), Catch::Contains(folder.string()) && Catch::Contains("folder"));
   const auto missing = folder / "no-such-folder" / "field.bin";
-  CHECK_THROWS_WITH(io::write_strain_binary(field, missing), Catch::Contains(missing.string()));
+  CHECK_THROWS_WITH(strain::write_strain_binary(field, missing), Catch::Contains(missing.string()));
   CHECK_FALSE(std::filesystem::exists(missing));
 }

@@ -1,9 +1,9 @@
-/// @file io/motion_labels.h
+/// @file evaluation/motion_labels.h
 /// @brief Reads the labels of a retrieval evaluation from a CSV file (`read_motion_labels`).
 #pragma once
 
-#include <deformseg/exceptions.h>
 #include <deformseg/evaluation/retrieval_evaluation.h>
+#include <deformseg/exceptions.h>
 
 #include <algorithm>
 #include <array>
@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-namespace deformseg::io {
+namespace deformseg::evaluation {
 
 /// @brief One row of a labels file: the animation's file and its labels.
 struct Labelled_clip {
@@ -27,19 +27,15 @@ struct Labelled_clip {
   std::filesystem::path file{};
   /// @brief Its labels; `item.clip` names the clip in `file` (empty: none; the tool's `evaluate` then reads
   /// a file of one clip, or a `FILE.glb#CLIP` in the file column, and refuses a file of several).
-  evaluation::Labelled_item item{};
+  Labelled_item item{};
   /// @brief The character file whose body the clip plays on (the `body_file` column, relative to
   /// the labels file's folder), as the tool's `--body`; empty when the row names none.
   std::filesystem::path body_file{};
 };
 
-}  // namespace deformseg::io
+}  // namespace deformseg::evaluation
 
-// Not deformseg::io::internal: a namespace of that name would hide deformseg::internal from every
-// io header included after this one.
-namespace deformseg::io::internal::labels {
-
-using io::Labelled_clip;
+namespace deformseg::evaluation::internal::labels {
 
 inline std::size_t skip_blanks(std::string_view line, std::size_t at) {
   while (at < line.size() && (line[at] == ' ' || line[at] == '\t')) ++at;
@@ -138,9 +134,9 @@ inline Labelled_clip read_row(const std::string& line, const Columns& columns, c
   return row;
 }
 
-}  // namespace deformseg::io::internal::labels
+}  // namespace deformseg::evaluation::internal::labels
 
-namespace deformseg::io {
+namespace deformseg::evaluation {
 
 /// @brief Reads a labels file: a header line naming the columns, then one line per animation.
 ///
@@ -189,4 +185,4 @@ inline std::vector<Labelled_clip> read_motion_labels(const std::filesystem::path
   return rows;
 }
 
-}  // namespace deformseg::io
+}  // namespace deformseg::evaluation
