@@ -297,17 +297,18 @@ private:
         : graph(std::move(g)),
           vertex_index(CGAL::get_initialized_vertex_index_map(graph)),
           face_index(CGAL::get_initialized_face_index_map(graph)) {
-      vertex_of_index = ordered(vertices(graph), vertex_index, "vertex");
-      face_of_index = ordered(faces(graph), face_index, "face");
+      vertex_of_index = ordered<vertex_descriptor>(vertices(graph), vertex_index, "vertex");
+      face_of_index = ordered<face_descriptor>(faces(graph), face_index, "face");
       triangles.reserve(face_of_index.size());
       for (std::size_t j = 0; j < face_of_index.size(); ++j) triangles.push_back(triangle(j));
     }
 
-    // The descriptors of a range sorted by their index, checking that the indices are 0..n-1.
-    template <class Range, class IndexMap>
-    static auto ordered(const Range& range, const IndexMap& index, const char* what) {
+    // The descriptors of a range sorted by their index, checking that the indices are 0..n-1. The
+    // descriptor type is the graph traits', not the range's: OpenMesh's ranges give smart handles.
+    template <class Descriptor, class Range, class IndexMap>
+    static std::vector<Descriptor> ordered(const Range& range, const IndexMap& index, const char* what) {
       const auto n = static_cast<std::size_t>(std::distance(range.begin(), range.end()));
-      std::vector<std::decay_t<decltype(*range.begin())>> by_index(n);
+      std::vector<Descriptor> by_index(n);
       std::vector<bool> seen(n, false);
       for (auto d : range) {
         const std::size_t i = get(index, d);
