@@ -1,6 +1,7 @@
 // Tests of frame_segments.h and evolving_graph.h: each frame's graph against a brute force on
 // random label volumes, the key frames of bending tubes written out by hand, invariance, real data.
 #include "test_support.h"
+#include "mesh_types.h"
 
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/graphviz.h>
@@ -190,6 +191,26 @@ TEST_CASE("evolving graph: a tube bending once gives R, then R - D - R, then R",
   CHECK(shape(rest[0].graph) == "R |");
   CHECK(shape(rest[rest.size() - 1].graph) == "D0 R R | 0-1 0-2");
   CHECK(rest[rest.size() - 1].last_frame == 30);
+}
+
+TEMPLATE_LIST_TEST_CASE("evolving graph: every mesh type gives the default model's graph, to the last bit",
+                        "[evolving_graph][mesh_types]", test::Mesh_types) {
+  mesh::Bending_tube spec = two_joints();
+  spec.shape = {.sectors = 8, .rings = 30};
+  spec.schedule = {{3, {0.0, 0.0}}, {6, {right_angle, 0.0}, linear}, {3, {}}, {6, {right_angle, right_angle}, linear}};
+  const auto tube = mesh::make_bending_tube(spec);
+  const TestType on(tube.animation);
+  for (const auto& options : {tube_options, spatiotemporal::Spatiotemporal_options{.threshold = 0.01, .parts = {0, 0}}}) {
+    const spatiotemporal::Evolving_graph expected = spatiotemporal::evolving_graph(tube.animation, options);
+    const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(on.model(), options);
+    REQUIRE(expected.size() > 1);
+    CHECK(key_frames(graph) == key_frames(expected));
+    CHECK(graph.num_segments() == expected.num_segments());
+    REQUIRE(graph.size() == expected.size());
+    for (std::size_t k = 0; k < graph.size(); ++k)
+      for (std::size_t v = 0; v < boost::num_vertices(graph[k].graph); ++v)
+        CHECK(graph[k].graph[v] == expected[k].graph[v]);  // kind, segment, triangles, area (==)
+  }
 }
 
 TEST_CASE("evolving graph: two joints bending one after the other, and overlapping", "[evolving_graph]") {

@@ -6,6 +6,7 @@
 // shared dissimilarities.
 #include "similarity_tubes.h"
 #include "test_support.h"
+#include "mesh_types.h"
 
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/subsequence_dtw.h>
@@ -383,6 +384,27 @@ TEST_CASE("find_motion: a motion embedded twice in a longer one is found at its 
     for (std::size_t y = x + 1; y < found.size(); ++y)
       CHECK((found[x].last < found[y].first || found[y].last < found[x].first));
   CHECK_THROWS_AS(similarity::find_motion(motion, longer, {.shortest = 0}), invalid_input);
+}
+
+TEMPLATE_LIST_TEST_CASE("find_motion: every mesh type gives the default model's matches, to the last bit",
+                        "[motion_signature][mesh_types]", test::Mesh_types) {
+  const mesh::Tube_shape small{.sectors = 8, .rings = 24};
+  std::vector<mesh::Tube_phase> schedule{{6, {right_angle / 2}}, {6, {0.0}}};
+  schedule.insert(schedule.end(), bend_hold_unbend.begin(), bend_hold_unbend.end());
+  schedule.push_back({8, {}});
+  const auto longer = tube(schedule, small);
+  const auto motion = tube(bend_hold_unbend, other_tube);
+  const TestType on_longer(longer), on_motion(motion);
+  const auto expected = similarity::find_motion(motion, longer, {.count = 2});
+  const auto found = similarity::find_motion(on_motion.model(), on_longer.model(), {.count = 2});
+  REQUIRE(!expected.empty());
+  REQUIRE(found.size() == expected.size());
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    CHECK(found[i].first == expected[i].first);
+    CHECK(found[i].last == expected[i].last);
+    CHECK(found[i].value == expected[i].value);
+    CHECK(found[i].alignment == expected[i].alignment);
+  }
 }
 
 TEST_CASE("similarity_significance: ordered frames stand out from shuffled ones", "[motion_signature]") {

@@ -2,6 +2,7 @@
 // parts against every vertex-triangle and edge-triangle pair, rigid bodies found and refused, the
 // layout in the segmentation, and the thesis' adjacency kept exactly with the links off.
 #include "test_support.h"
+#include "mesh_types.h"
 
 #include <deformseg/io/read_animation.h>
 #include <deformseg/mesh/default_mesh.h>
@@ -176,6 +177,30 @@ TEST_CASE("part_links: parts that move as one rigid body are linked, others not"
   // Standing still, every part moves as one with every other.
   CHECK(spatiotemporal::part_links(animation_of(points, triangles), rigid) == Links{{0, 4}, {0, 8}});
   CHECK_THROWS_AS(spatiotemporal::part_links(animation_of(points, triangles), {.contact_distance = -1}), invalid_input);
+}
+
+TEMPLATE_LIST_TEST_CASE("part_links and body_layout: every mesh type gives the default model's links and layout",
+                        "[part_links][mesh_types]", test::Mesh_types) {
+  // Part 2 touches part 0; parts 0 and 1 turn as one body while part 2 stays.
+  Points points;
+  test::Triangles triangles;
+  add_tetrahedron(points, triangles, {0, 0, 0}, 1);
+  add_tetrahedron(points, triangles, {5, 0, 0}, 1);
+  add_tetrahedron(points, triangles, {0.34, 0.34, 0.34}, 1);
+  const Eigen::Isometry3d turn(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
+  const auto animation = animation_of(points, triangles, {moved(points, 0, 8, turn)});
+  const TestType on(animation);
+
+  const auto expected = spatiotemporal::part_links(animation);
+  REQUIRE(expected.size() == 2);  // a contact and a rigid body: both kinds of link are compared
+  CHECK(spatiotemporal::part_links(on.model()) == expected);
+  const auto layout = spatiotemporal::body_layout(on.model());
+  const auto reference = spatiotemporal::body_layout(animation);
+  CHECK(layout.num_links() == reference.num_links());
+  CHECK(std::ranges::equal(layout.area_shares(), reference.area_shares()));
+  REQUIRE(layout.num_faces() == reference.num_faces());
+  for (std::size_t f = 0; f < layout.num_faces(); ++f)
+    CHECK(std::ranges::equal(layout.neighbours(f), reference.neighbours(f)));
 }
 
 TEST_CASE("body layout: touching parts make one rigid node and neighbouring segments", "[part_links]") {

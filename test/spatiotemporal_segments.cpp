@@ -1,6 +1,7 @@
 // Tests of spatiotemporal_segments.h: the union-find against a flood fill, the clean-up steps on
 // label volumes made by hand, a bending tube, invariance and determinism, real data.
 #include "test_support.h"
+#include "mesh_types.h"
 
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/spatiotemporal/spatiotemporal_segments.h>
@@ -166,6 +167,30 @@ TEST_CASE("spatio-temporal segments: a tube bending once deforms in its blend zo
   CHECK(labels_of(spatiotemporal::spatiotemporal_segmentation(mesh::make_bending_tube(placed).animation)) ==
         labels_of(s));
   CHECK(labels_of(spatiotemporal::spatiotemporal_segmentation(tube.animation)) == labels_of(s));
+}
+
+TEMPLATE_LIST_TEST_CASE("spatio-temporal segments: every mesh type gives the default model's segments",
+                        "[spatiotemporal][mesh_types]", test::Mesh_types) {
+  mesh::Bending_tube spec;
+  spec.shape = {.sectors = 8, .rings = 24};
+  spec.schedule = {{5, {}}, {8, {std::numbers::pi / 2}}, {5, {}}, {8, {0.0}}};
+  const auto tube = mesh::make_bending_tube(spec);
+  const TestType on(tube.animation);
+  for (const auto& options :
+       {spatiotemporal::Spatiotemporal_options{.threshold = 0.01}, no_clean_up,
+        spatiotemporal::Spatiotemporal_options{.reference = strain::Strain_reference::rest_pose, .threshold = 0.01}}) {
+    const auto expected = spatiotemporal::spatiotemporal_segmentation(tube.animation, options);
+    const auto s = spatiotemporal::spatiotemporal_segmentation(on.model(), options);
+    REQUIRE(expected.num_segments() > 0);
+    CHECK(labels_of(s) == labels_of(expected));
+    REQUIRE(s.num_segments() == expected.num_segments());
+    for (std::size_t k = 0; k < s.num_segments(); ++k) {
+      CHECK(s.extent(k).first_frame == expected.extent(k).first_frame);
+      CHECK(s.extent(k).last_frame == expected.extent(k).last_frame);
+      CHECK(s.extent(k).cells == expected.extent(k).cells);
+      CHECK(s.extent(k).largest_slice == expected.extent(k).largest_slice);
+    }
+  }
 }
 
 TEST_CASE("spatio-temporal segments: bad input is named", "[spatiotemporal]") {

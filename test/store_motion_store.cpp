@@ -1,12 +1,19 @@
 // Tests of store/motion_store.h: round trips bit for bit, appends and replaces, lookups, refusals,
 // every kind of damage named in its message, and appends killed with SIGKILL at several points.
 #include "test_support.h"
+#include "mesh_types.h"
 
+#include <deformseg/mesh/synthetic.h>
+#include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/store/store_append.h>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
+#include <functional>
+#include <optional>
 #include <cmath>
 #include <csignal>
 #include <cstdint>
@@ -628,4 +635,64 @@ TEST_CASE("motion store: any one flipped byte of any file is caught with Verify:
     store_test_put(folder / name, original);
   }
   CHECK(store_test_open_error(folder, store::Verify::checksums).empty());
+}
+
+// ---- Describing into a store, on every mesh type ----------------------------------------------
+namespace described_store {
+
+// Describes the animations `animations` (motion signatures, summaries of 4 chunks) into a new store
+// in `folder`, one clip each, as a describing tool does, and opens it.
+template <class Animations>
+store::Motion_store describe_into(const fs::path& folder, const Animations& animations) {
+  const similarity::Motion_signature_similarity<> policy;
+  constexpr std::size_t chunks = 4;
+  std::optional<store::Store_append> append;
+  for (std::size_t i = 0; i < animations.size(); ++i) {
+    const auto& animation = animations[i].get();
+    const similarity::Motion_signature_description description = policy.describe(animation);
+    const similarity::Motion_signature_view view = similarity::view(description);
+    if (!append) append.emplace(folder, R"({"policy": "motion-signature"})", similarity::summary_width(view.width, chunks));
+    const similarity::Motion_summary summary = similarity::summarize(view, chunks);
+    const std::vector<std::uint32_t> frames(description.frames.begin(), description.frames.end());
+    store::Store_record record;
+    record.path = "clip" + std::to_string(i);
+    record.frame_count = std::uint32_t(animation.num_frames());
+    record.fps = mesh::frames_per_second(animation);
+    append->add(record, view, frames, summary.floats);
+  }
+  append->commit();
+  return store::Motion_store::open(folder, store::Verify::checksums);
+}
+
+// Clip i of `a` and of `b` alike to the last bit: rows, frames and summary.
+bool same_clip(const store::Motion_store& a, const store::Motion_store& b, std::size_t i) {
+  const auto x = a.view(i), y = b.view(i);
+  return x.rows == y.rows && x.width == y.width && std::equal(x.values, x.values + x.rows * x.width, y.values) &&
+         std::ranges::equal(a.frames(i), b.frames(i)) && std::ranges::equal(a.summary(i), b.summary(i)) &&
+         a.record(i).frame_count == b.record(i).frame_count && a.record(i).fps == b.record(i).fps;
+}
+
+}  // namespace described_store
+
+TEMPLATE_LIST_TEST_CASE("motion store: every mesh type describes into the default model's store, to the last bit",
+                        "[motion_store][mesh_types]", test::Mesh_types) {
+  using namespace described_store;
+  const mesh::Tube_shape small{.sectors = 8, .rings = 24};
+  mesh::Bending_tube spec;
+  spec.shape = small;
+  spec.schedule = {{4, {0.0}}, {8, {test::right_angle}}, {6, {}}, {8, {0.0}}};
+  const auto bend = mesh::make_bending_tube(spec).animation;
+  spec.schedule = {{3, {test::right_angle / 2}}, {3, {0.0}}, {3, {test::right_angle / 2}}, {3, {0.0}}};
+  const auto wave = mesh::make_bending_tube(spec).animation;
+  const TestType on_bend(bend), on_wave(wave);
+  const auto& bend_model = on_bend.model();
+  const auto& wave_model = on_wave.model();
+
+  const fs::path dir = test::fresh_dir("motion_store/mesh_types");
+  const store::Motion_store expected = describe_into(dir / "default", std::array{std::cref(bend), std::cref(wave)});
+  const store::Motion_store stored = describe_into(dir / "model", std::array{std::cref(bend_model), std::cref(wave_model)});
+  REQUIRE(stored.size() == 2);
+  REQUIRE(expected.size() == 2);
+  CHECK(same_clip(stored, expected, 0));
+  CHECK(same_clip(stored, expected, 1));
 }

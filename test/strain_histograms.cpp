@@ -2,14 +2,12 @@
 // their sides, brute force on random fields, invariance to placement, independence of the mesh,
 // and the shared real animations ([data]).
 #include "test_support.h"
-#include "deforming_mesh_view.h"
+#include "mesh_types.h"
 
 #include <deformseg/strain/histogram_distance.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/strain/strain_histograms.h>
 #include <deformseg/mesh/synthetic.h>
-
-#include <CGAL/Polyhedron_3.h>
 
 #include <Eigen/Geometry>
 
@@ -214,17 +212,14 @@ TEST_CASE("strain_histograms: the options choose the strain", "[strain_histogram
                     Catch::Contains("rest frame 99"));
 }
 
-TEST_CASE("strain_histograms: Surface_mesh, Polyhedron_3 and any DeformingMesh give the same histograms",
-          "[strain_histograms]") {
-  using Polyhedron = CGAL::Polyhedron_3<mesh::Kernel>;
-  const mesh::Bending_tube spec = two_joint_tube({.sectors = 8, .rings = 20});
-  const auto on_polyhedron = mesh::make_bending_tube<Polyhedron>(spec);
-  using View = test::Deforming_mesh_view<Polyhedron>;
-  static_assert(mesh::DeformingMesh<View>);
-  const strain::Strain_histograms expected =
-      strain::strain_histograms(mesh::make_bending_tube<mesh::Surface_mesh>(spec).animation);
-  CHECK(strain::strain_histograms(on_polyhedron.animation) == expected);
-  CHECK(strain::strain_histograms(View{&on_polyhedron.animation}) == expected);
+TEMPLATE_LIST_TEST_CASE("strain_histograms: every mesh type gives the default model's histograms, to the last bit",
+                        "[strain_histograms][mesh_types]", test::Mesh_types) {
+  const auto tube = mesh::make_bending_tube(two_joint_tube({.sectors = 8, .rings = 20})).animation;
+  const TestType on(tube);
+  for (std::size_t rest_frame : {0, 5}) {
+    const strain::Strain_histogram_options options{.strain = {.rest_frame = rest_frame}};
+    CHECK(strain::strain_histograms(on.model(), options) == strain::strain_histograms(tube, options));
+  }
 }
 
 TEST_CASE("strain_histograms data: the horse gallop's second cycle repeats the first", "[strain_histograms][data]") {
