@@ -22,7 +22,9 @@
 ///
 /// \par Has models
 /// deformseg::mesh::Deforming_mesh<FaceGraph, Coordinate>, for any FaceGraph (tested with
-/// `CGAL::Surface_mesh` and `CGAL::Polyhedron_3`).
+/// `CGAL::Surface_mesh`, `CGAL::Polyhedron_3` and OpenMesh's `TriMesh_ArrayKernelT`), and types of
+/// one's own: `examples/deforming_mesh_OpenMesh_example.cpp` keeps an OpenMesh mesh and a vector of
+/// points per frame (@ref chapter_01, "Your own mesh type").
 ///
 /// \par A type that is not a model
 /// is rejected at compile time: `static_assert(deformseg::mesh::DeformingMesh<M>)` names the first
