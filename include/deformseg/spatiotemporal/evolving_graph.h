@@ -144,7 +144,9 @@ inline Evolving_graph evolving_graph(const Frame_segments& frames) {
 /// (`spatiotemporal_segmentation` with `options`, the strain with `strain_options(options)`) over
 /// its `body_layout` (with `options.parts`, area shares from the triangles' areas in frame 0), then
 /// the overload for `Frame_segments`.
-/// @tparam Mesh a `DeformingMesh`.
+/// @tparam Mesh a `DeformingMesh`; a `Deforming_mesh` is read in place, any other model is first
+/// copied once with `make_deforming_mesh`, which the strain and `body_layout` then share, where each
+/// would copy it: O(T V) time and 3 T V doubles.
 /// @throws invalid_input as `compute_strain`, `body_layout` and `spatiotemporal_segmentation`.
 /// @par Complexity O(T F) besides the strain and `part_links`.
 template <mesh::DeformingMesh Mesh>

@@ -290,7 +290,10 @@ void add_rigid_groups(const Animation& animation, std::span<const std::array<std
 /// neighbours: parts that touch at the rest pose (frame 0) and parts that move as one rigid body
 /// throughout, as `Part_link_options` defines them. Each pair once, smaller triangle first, in
 /// ascending order: the links of `Body_layout`.
-/// @tparam Mesh a `DeformingMesh`.
+/// @tparam Mesh a `DeformingMesh`; a `Deforming_mesh` is read in place, any other model is first
+/// copied with `make_deforming_mesh`, for the triangles' vertex indices (which only a
+/// `Deforming_mesh` holds) and the frames as contiguous matrices the parts' rigid motions are fitted
+/// to: O(T V) time and 3 T V doubles.
 /// @pre both options finite and >= 0; else throws `invalid_input`.
 /// @par Complexity Contacts: O(V + F) expected, with the triangles binned in a hashed grid of
 /// cells of the contact distance (or the mean triangle size), for a surface whose triangles

@@ -348,7 +348,9 @@ inline strain::Strain_options strain_options(const Spatiotemporal_options& optio
 /// @brief The spatio-temporal segments of an animation: its normalised strain against
 /// `options.reference`, with `options.sigma` (`strain_options`) over its `body_layout` with
 /// `options.parts`, then as the overload for a strain field and a layout.
-/// @tparam Mesh a `DeformingMesh`.
+/// @tparam Mesh a `DeformingMesh`; a `Deforming_mesh` is read in place, any other model is first
+/// copied once with `make_deforming_mesh`, which the strain and `body_layout` then share, where each
+/// would copy it: O(T V) time and 3 T V doubles.
 /// @throws invalid_input as `compute_strain`, `body_layout` and the other overloads.
 /// @par Complexity O(F T) for the strain, `part_links`' cost, then as the other overloads.
 template <mesh::DeformingMesh Mesh>
