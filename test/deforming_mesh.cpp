@@ -1,4 +1,5 @@
 // Tests of deforming_mesh.h: the DeformingMesh concept, Deforming_mesh, make_face_graph.
+#include "mesh_types.h"
 #include "tetrahedron.h"
 
 #include <deformseg/mesh/default_mesh.h>
@@ -9,13 +10,14 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 using namespace deformseg;
 
 namespace {
 
-using Polyhedron = CGAL::Polyhedron_3<mesh::Kernel>;
+using test::Polyhedron;
 
 using deformseg::test::tetra_points;
 using deformseg::test::tetra_triangles;
@@ -91,6 +93,27 @@ TEST_CASE("Deforming_mesh: frames added one by one, or from a point map", "[defo
   CHECK(copy.num_frames() == 3);
   CHECK(animation.num_frames() == 2);
   CHECK(&copy.face_graph() == &animation.face_graph());
+}
+
+// The face graphs of the tests: OpenMesh's TriMesh of Vec3d too, when the build found OpenMesh.
+using Face_graphs = std::tuple<mesh::Surface_mesh, Polyhedron
+#if DEFORMSEG_TEST_OPENMESH
+                               ,
+                               test::Open_mesh
+#endif
+                               >;
+
+// CGAL's point map for OpenMesh would round the points to float: make_face_graph sets them itself.
+TEMPLATE_LIST_TEST_CASE("make_face_graph keeps every point to the last bit", "[deforming_mesh]", Face_graphs) {
+  // Coordinates that float does not hold.
+  std::vector<std::array<double, 3>> points = tetra_points;
+  for (auto& p : points)
+    for (double& x : p) x = x / 3 + 0.1;
+  const TestType graph = mesh::make_face_graph<TestType>(points, tetra_triangles);
+  mesh::Deforming_mesh<TestType> animation(graph);
+  animation.add_frame_from(get(CGAL::vertex_point, animation.face_graph()));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int k = 0; k < 3; ++k) CHECK(animation.frame_positions(0)[3 * i + std::size_t(k)] == points[i][k]);
 }
 
 TEST_CASE("make_deforming_mesh copies any model, Polyhedron_3 handles included",

@@ -389,8 +389,33 @@ double frames_per_second(const M& animation) {
     return default_frames_per_second;
 }
 
+namespace internal {
+
+// Sets the point of vertex `v` of `g` to `p`. Through the graph's vertex point map, except for a
+// graph that holds points of its own type and sets them with `g.set_point(v, point)` (OpenMesh):
+// CGAL's point map for OpenMesh rounds every coordinate to float on the way in, whatever the mesh's
+// point type (unless CGAL_USE_OM_POINTS), so that a TriMesh of Vec3d would hold other points than
+// those given. Its own point type keeps them (Vec3d to the last bit; Vec3f rounds, as it must).
+template <class Point, class Graph, class PointMap, class Vertex, class P>
+void set_vertex_point(Graph& g, const PointMap& point_map, Vertex v, const P& p) {
+  if constexpr (requires { typename Graph::Point::value_type; } &&
+                requires(Graph& m, const typename Graph::Point& q) { m.set_point(v, q); }) {
+    using Scalar = typename Graph::Point::value_type;
+    g.set_point(v, typename Graph::Point(static_cast<Scalar>(p[0]), static_cast<Scalar>(p[1]),
+                                         static_cast<Scalar>(p[2])));
+  } else {
+    put(point_map, v, Point(p[0], p[1], p[2]));
+  }
+}
+
+}  // namespace internal
+
 /// @brief Builds a `FaceGraph` from points and triangles given by vertex indices, keeping the
 /// points' order as the vertex index order and the triangles' order as the face index order.
+///
+/// The points are kept as the graph's point type holds them: to the last bit for double points
+/// (`Surface_mesh`, `Polyhedron_3` on an inexact kernel, an OpenMesh mesh of `Vec3d`, which is
+/// written through its own `set_point`, as CGAL's point map for OpenMesh would round to float).
 ///
 /// @tparam Graph a default-constructible `FaceGraph` with a writable vertex point map.
 /// @param points the vertex positions, any range of 3-element indexable values.
@@ -409,7 +434,7 @@ Graph make_face_graph(const PointRange& points, const TriangleRange& triangles) 
   vertex.reserve(std::size(points));
   for (const auto& p : points) {
     vertex.push_back(add_vertex(g));
-    put(point_map, vertex.back(), Point(p[0], p[1], p[2]));
+    internal::set_vertex_point<Point>(g, point_map, vertex.back(), p);
   }
   std::size_t j = 0;
   for (const auto& tri : triangles) {
