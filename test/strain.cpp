@@ -441,6 +441,15 @@ TEMPLATE_LIST_TEST_CASE("strain: every mesh type gives the default model's field
     const strain::Strain_options options{.reference = reference, .principal_directions = true};
     CHECK(same(strain::compute_strain(on.model(), options), strain::compute_strain(tube.animation, options)));
   }
+  // Against a reference mesh: the type's own graph (its points are the rest frame's), for the type's
+  // model and for the default model, against the default model's Surface_mesh.
+  const strain::Strain_options options{.principal_directions = true};
+  const auto& graph = on.model().face_graph();
+  const auto expected = strain::compute_strain(tube.animation, tube.animation.face_graph(), options);
+  CHECK(same(strain::compute_strain(on.model(), graph, options), expected));
+  CHECK(same(strain::compute_strain(tube.animation, graph, options), expected));
+  CHECK(std::ranges::equal(strain::compute_strain<double>(on.model(), graph).values(),
+                           strain::compute_strain<double>(tube.animation, tube.animation.face_graph()).values()));
 }
 
 TEST_CASE("strain: one thread and all threads give bit-identical fields", "[strain][threads]") {
