@@ -85,8 +85,8 @@ private:
 /// @brief The layout of an animation: its triangles, their areas in frame 0 and the links
 /// `part_links` finds with `options`.
 /// @tparam Mesh a `DeformingMesh`; a `Deforming_mesh` is read in place, any other model is first
-/// copied once with `make_deforming_mesh` (as `part_links` would copy it), for the triangles'
-/// vertex indices and frame 0's areas: O(T V) time and 3 T V doubles.
+/// copied once with `make_deforming_mesh`, for the triangles' vertex indices and frame 0's areas,
+/// and `part_links` reads the copy: O(T V) time and 3 T V doubles.
 /// @throws invalid_input as `part_links`, or for an animation whose frame 0 has no area.
 /// @par Complexity as `part_links`, then as the constructor.
 template <mesh::DeformingMesh Mesh>

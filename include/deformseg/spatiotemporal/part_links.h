@@ -192,10 +192,50 @@ inline std::vector<std::vector<std::uint32_t>> part_vertices(std::span<const std
   return members;
 }
 
+// A model of DeformingMesh other than Deforming_mesh, read in place: the index tables of its
+// connectivity (a Deforming_mesh of a copy of its graph, without frames) and each frame through
+// its point map when asked for, vertex i the original of the copy's vertex i, as
+// make_deforming_mesh pairs them; the same doubles as that copy's, without its 3 T V.
+template <class Mesh>
+class Point_map_frames {
+public:
+  explicit Point_map_frames(const Mesh& animation)
+      : animation_(&animation), topology_(animation.face_graph()), original_(topology_.num_vertices()) {
+    auto copied = vertices(topology_.face_graph()).begin();
+    for (auto v : vertices(animation.face_graph())) original_[get(topology_.vertex_index_map(), *copied++)] = v;
+  }
+  std::size_t num_frames() const { return animation_->num_frames(); }
+  std::size_t num_vertices() const { return topology_.num_vertices(); }
+  auto triangles() const { return topology_.triangles(); }
+  // Frame t as a 3 x V matrix; a non-finite coordinate throws, as the copy would.
+  Eigen::Matrix3Xd frame_points(std::size_t t) const {
+    Eigen::Matrix3Xd xyz(3, Eigen::Index(original_.size()));
+    const auto points = animation_->frame_point_map(t);
+    for (std::size_t i = 0; i < original_.size(); ++i) {
+      const auto& p = get(points, original_[i]);
+      for (int k = 0; k < 3; ++k) {
+        xyz(k, Eigen::Index(i)) = CGAL::to_double(p[k]);
+        if (!std::isfinite(xyz(k, Eigen::Index(i))))
+          throw invalid_input("vertex " + std::to_string(i) + " has a non-finite coordinate", {.frame = t});
+      }
+    }
+    return xyz;
+  }
+
+private:
+  using Graph = typename Mesh::Face_graph;
+  const Mesh* animation_;
+  mesh::Deforming_mesh<Graph> topology_;
+  std::vector<typename boost::graph_traits<Graph>::vertex_descriptor> original_;
+};
+
 // The frames of an animation as 3 x V matrices in double precision.
 template <class Animation>
 Eigen::Matrix3Xd frame_points(const Animation& animation, std::size_t t) {
-  return animation.frame_matrix(t).template cast<double>();
+  if constexpr (requires { animation.frame_points(t); })
+    return animation.frame_points(t);
+  else
+    return animation.frame_matrix(t).template cast<double>();
 }
 
 // Per part, its best rigid motion from the rest pose in every frame, or none (an empty vector)
@@ -284,17 +324,48 @@ void add_rigid_groups(const Animation& animation, std::span<const std::array<std
     if (group[p] != p) links.emplace_back(first_face[group[p]], first_face[p]);
 }
 
+// part_links of a Deforming_mesh or of a Point_map_frames.
+template <class Animation>
+std::vector<std::pair<std::uint32_t, std::uint32_t>> part_links_of(const Animation& animation,
+                                                                   const Part_link_options& options) {
+  for (double value : {options.contact_distance, options.rigid_tolerance})
+    if (!(value >= 0) || !std::isfinite(value))
+      throw invalid_input("part_links: the contact distance and the rigid tolerance must be finite and >= 0");
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> links;
+  const auto triangles = animation.triangles();
+  if (animation.num_frames() == 0 || triangles.empty()) return links;
+  const std::vector<std::uint32_t> parts = internal::triangle_parts(triangles, animation.num_vertices());
+  const std::size_t count = std::size_t(*std::max_element(parts.begin(), parts.end())) + 1;
+  if (count < 2) return links;
+  const Eigen::Matrix3Xd rest = internal::frame_points(animation, 0);
+  const double diagonal = (rest.rowwise().maxCoeff() - rest.rowwise().minCoeff()).norm();
+  if (options.contact_distance > 0) {
+    const internal::Contact_scene scene(rest, triangles, parts, options.contact_distance * diagonal, diagonal);
+    internal::add_touching_vertices(scene, links);
+    internal::add_crossing_edges(scene, links);
+  }
+  if (options.rigid_tolerance > 0)
+    internal::add_rigid_groups(animation, triangles, parts, count, options.rigid_tolerance * diagonal, links);
+  for (auto& [f, g] : links)
+    if (g < f) std::swap(f, g);
+  std::sort(links.begin(), links.end());
+  links.erase(std::unique(links.begin(), links.end()), links.end());
+  return links;
+}
+
 }  // namespace internal
 
 /// @brief The pairs of triangles of different parts of `animation` that `options` makes
 /// neighbours: parts that touch at the rest pose (frame 0) and parts that move as one rigid body
 /// throughout, as `Part_link_options` defines them. Each pair once, smaller triangle first, in
 /// ascending order: the links of `Body_layout`.
-/// @tparam Mesh a `DeformingMesh`; a `Deforming_mesh` is read in place, any other model is first
-/// copied with `make_deforming_mesh`, for the triangles' vertex indices (which only a
-/// `Deforming_mesh` holds) and the frames as contiguous matrices the parts' rigid motions are fitted
-/// to: O(T V) time and 3 T V doubles.
-/// @pre both options finite and >= 0; else throws `invalid_input`.
+/// @tparam Mesh a `DeformingMesh`; a `Deforming_mesh` is read in place, any other model through
+/// its point maps, one frame at a time, into the matrices the parts' rigid motions are fitted to,
+/// with the triangles' vertex indices from a `Deforming_mesh` of a copy of its connectivity
+/// (O(V + F), no frame): the same links as on a `Deforming_mesh` copy of it, without the copy's
+/// 3 T V doubles.
+/// @pre both options finite and >= 0; else throws `invalid_input`. Every coordinate finite; a
+/// frame read with a non-finite one throws `invalid_input`.
 /// @par Complexity Contacts: O(V + F) expected, with the triangles binned in a hashed grid of
 /// cells of the contact distance (or the mean triangle size), for a surface whose triangles
 /// overlap few cells. Rigid bodies: O(T V) for the parts' rigid motions, then the pairs of rigid
@@ -304,31 +375,9 @@ template <mesh::DeformingMesh Mesh>
 std::vector<std::pair<std::uint32_t, std::uint32_t>> part_links(const Mesh& animation,
                                                                 const Part_link_options& options = {}) {
   if constexpr (!mesh::is_deforming_mesh_v<Mesh>) {
-    return part_links(mesh::make_deforming_mesh(animation), options);
+    return internal::part_links_of(internal::Point_map_frames<Mesh>(animation), options);
   } else {
-    for (double value : {options.contact_distance, options.rigid_tolerance})
-      if (!(value >= 0) || !std::isfinite(value))
-        throw invalid_input("part_links: the contact distance and the rigid tolerance must be finite and >= 0");
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> links;
-    const auto triangles = animation.triangles();
-    if (animation.num_frames() == 0 || triangles.empty()) return links;
-    const std::vector<std::uint32_t> parts = internal::triangle_parts(triangles, animation.num_vertices());
-    const std::size_t count = std::size_t(*std::max_element(parts.begin(), parts.end())) + 1;
-    if (count < 2) return links;
-    const Eigen::Matrix3Xd rest = internal::frame_points(animation, 0);
-    const double diagonal = (rest.rowwise().maxCoeff() - rest.rowwise().minCoeff()).norm();
-    if (options.contact_distance > 0) {
-      const internal::Contact_scene scene(rest, triangles, parts, options.contact_distance * diagonal, diagonal);
-      internal::add_touching_vertices(scene, links);
-      internal::add_crossing_edges(scene, links);
-    }
-    if (options.rigid_tolerance > 0)
-      internal::add_rigid_groups(animation, triangles, parts, count, options.rigid_tolerance * diagonal, links);
-    for (auto& [f, g] : links)
-      if (g < f) std::swap(f, g);
-    std::sort(links.begin(), links.end());
-    links.erase(std::unique(links.begin(), links.end()), links.end());
-    return links;
+    return internal::part_links_of(animation, options);
   }
 }
 
