@@ -602,6 +602,9 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
   Gltf_parses parses(clips, order, options);
   Clip_progress progress(order.size(), say);
   const std::size_t batch = describe_batch(thread_count(options.threads));
+  // A batch of one clip leaves the threads to its rows: they take the clips' threads.
+  similarity::Default_similarity threaded = policy;
+  threaded.signatures.threads = options.threads;
   std::vector<Described_clip> described;
   std::vector<std::optional<invalid_input>> errors;
   // The clips appended since the last commit; every `store_commit_clips` of `order` are committed.
@@ -627,7 +630,7 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
         const std::shared_ptr<const io::Gltf_file> gltf =
             io::is_character_file(clip.file) ? parses.acquire(clip) : nullptr;
         const Release_parse release(parses, gltf ? &clip : nullptr);
-        described[k] = describe_clip(clip, gltf.get(), options, policy, run.front);
+        described[k] = describe_clip(clip, gltf.get(), options, threaded, run.front);
         progress.described(clip, described[k].frame_count);
       } catch (const invalid_input& e) {
         errors[k] = e;

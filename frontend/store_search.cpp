@@ -30,15 +30,18 @@ Store_search::Store_search(const std::string& folder, store::Verify verify)
 
 std::string Store_search::name(std::size_t i) const { return stored_clip_name(store(), i); }
 
-similarity::Motion_signature_description Store_search::describe(const mesh::Surface_mesh_animation& query) const {
-  return policy_.describe(query);
+similarity::Motion_signature_description Store_search::describe(const mesh::Surface_mesh_animation& query,
+                                                                 int threads) const {
+  similarity::Default_similarity policy = policy_;
+  policy.signatures.threads = threads;
+  return policy.describe(query);
 }
 
 similarity::Nearest_motions Store_search::nearest(const mesh::Surface_mesh_animation& query,
                                                   const similarity::Nearest_motions_options& options) const {
   if (size() == 0) throw invalid_input("the store holds no clip", {.file = store().folder().string()});
   check_range(options.candidates, "candidates");  // before describing the query
-  return nearest(similarity::view(describe(query)), options);
+  return nearest(similarity::view(describe(query, options.threads)), options);
 }
 
 similarity::Nearest_motions Store_search::nearest(similarity::Motion_signature_view query,
@@ -60,7 +63,7 @@ similarity::Nearest_motions Store_search::nearest_to_clip(std::size_t i,
 std::vector<similarity::Clip_match> Store_search::find(const mesh::Surface_mesh_animation& query,
                                                       const similarity::Find_in_collection_options& options) const {
   if (size() == 0) throw invalid_input("the store holds no clip", {.file = store().folder().string()});
-  return similarity::find_motion_in_collection(describe(query), clips_, options, policy_);
+  return similarity::find_motion_in_collection(describe(query, options.threads), clips_, options, policy_);
 }
 
 std::vector<similarity::Nearest_motions> Store_search::knn_graph(
@@ -85,12 +88,12 @@ void Store_search::check_range(std::optional<similarity::Clip_range> range, cons
                         {.file = store().folder().string()});
 }
 
-Eigen::MatrixXd Store_search::matrix(const Progress& progress) const {
-  return similarity::similarity_matrix(clips_, policy_, progress);
+Eigen::MatrixXd Store_search::matrix(const Progress& progress, int threads) const {
+  return similarity::similarity_matrix(clips_, policy_, progress, threads);
 }
 
-Eigen::MatrixXd Store_search::matrix(std::vector<std::size_t> indices, const Progress& progress) const {
-  return similarity::similarity_matrix(Selected_clips{&clips_, std::move(indices)}, policy_, progress);
+Eigen::MatrixXd Store_search::matrix(std::vector<std::size_t> indices, const Progress& progress, int threads) const {
+  return similarity::similarity_matrix(Selected_clips{&clips_, std::move(indices)}, policy_, progress, threads);
 }
 
 void Store_search::check_policy(const similarity::Policy_choice& asked, Front front) const {

@@ -33,8 +33,9 @@ class Store_search {
   /// Clip `i` named for reports: "FILE" or "FILE#CLIP".
   std::string name(std::size_t i) const;
 
-  /// `query` described as the store's clips were.
-  similarity::Motion_signature_description describe(const mesh::Surface_mesh_animation& query) const;
+  /// `query` described as the store's clips were, its rows on `threads` threads (0: all the
+  /// hardware's, `thread_count`).
+  similarity::Motion_signature_description describe(const mesh::Surface_mesh_animation& query, int threads) const;
   /// The `options.k` clips nearest to `query` (`similarity::nearest_motions`).
   /// @throws invalid_input naming the store when it holds no clip, or when the candidates are not a
   /// block of its clips.
@@ -60,15 +61,17 @@ class Store_search {
   /// @throws invalid_input when the store holds no clip.
   std::vector<similarity::Clip_match> find(const mesh::Surface_mesh_animation& query,
                                            const similarity::Find_in_collection_options& options) const;
-  /// The similarity of every pair of the store's clips (`similarity::similarity_matrix`).
-  Eigen::MatrixXd matrix(const Progress& progress = {}) const;
+  /// The similarity of every pair of the store's clips (`similarity::similarity_matrix`), on
+  /// `threads` threads (0: all the hardware's, `thread_count`).
+  Eigen::MatrixXd matrix(const Progress& progress, int threads) const;
   /// A tile of the matrix: rows `rows`, columns `columns` (`similarity::similarity_tile`).
   /// @throws invalid_input naming the store when `rows` or `columns` are not blocks of its clips.
   Eigen::MatrixXd tile(similarity::Clip_range rows, similarity::Clip_range columns, const Progress& progress = {},
                        int threads = 0) const;
-  /// The similarity of every pair of clips `indices` of the store, in that order.
+  /// The similarity of every pair of clips `indices` of the store, in that order, on `threads`
+  /// threads.
   /// @pre every index is below `size()`.
-  Eigen::MatrixXd matrix(std::vector<std::size_t> indices, const Progress& progress = {}) const;
+  Eigen::MatrixXd matrix(std::vector<std::size_t> indices, const Progress& progress, int threads) const;
 
   /// Refuses policy options that contradict the store's: a policy other than motion signatures
   /// aligned by DTW (`store_policy`), or an `up` (when `asked` gives one) other than the one its

@@ -77,11 +77,8 @@ TEST_CASE("ged_matrix: the same for any number of threads", "[ged][matrix]") {
   CHECK(one.distance == two.distance);
   for (std::size_t p = 0; p < one.pairs.size(); ++p) CHECK(one.pairs[p].mapping == two.pairs[p].mapping);
   const auto uneven = deformseg::test::Uneven_costs{};
-  deformseg::set_default_threads(1);
-  const Eigen::MatrixXd serial = ged_matrix(graphs, Bipartite_ged{}, uneven);
-  deformseg::set_default_threads(7);
-  const Eigen::MatrixXd parallel = ged_matrix(graphs, Bipartite_ged{}, uneven);
-  deformseg::set_default_threads(0);
+  const Eigen::MatrixXd serial = ged_matrix(graphs, Bipartite_ged{}, uneven, {.threads = 1});
+  const Eigen::MatrixXd parallel = ged_matrix(graphs, Bipartite_ged{}, uneven, {.threads = 7});
   CHECK(serial == parallel);
 }
 

@@ -258,12 +258,12 @@ TEST_CASE("motion_signature_similarity: rising and falling at one speed are told
 
 TEST_CASE("motion_signatures: the same whatever the number of threads", "[motion_signature]") {
   const auto a = tube(bend_hold_unbend);
-  set_default_threads(1);
-  const Eigen::MatrixXd one = signatures::motion_signatures(a);
-  set_default_threads(7);
-  const Eigen::MatrixXd seven = signatures::motion_signatures(a);
-  set_default_threads(0);
+  const Eigen::MatrixXd one = signatures::motion_signatures(a, {.threads = 1});
+  const Eigen::MatrixXd seven = signatures::motion_signatures(a, {.threads = 7});
   CHECK(one == seven);
+  CHECK(one == signatures::motion_signatures(a));  // 0, the default: all the hardware's threads
+  CHECK_THROWS_WITH(signatures::motion_signatures(a, {.threads = 2000}),
+                    "motion_signatures: threads must be 0 (the default) to 1024, not 2000");
 }
 
 TEST_CASE("motion_signature_similarity: a time-shifted cyclic motion scores near 1", "[motion_signature]") {
@@ -361,9 +361,7 @@ TEST_CASE("find_motion: a motion embedded twice in a longer one is found at its 
   CHECK(found[0].value >= found[1].value);
   // The windows of a step are described on the threads: the same result on 1 and on 3.
   for (const int threads : {1, 3}) {
-    set_default_threads(threads);
-    const auto again = similarity::find_motion(motion, longer, {.count = 3});
-    set_default_threads(0);
+    const auto again = similarity::find_motion(motion, longer, {.count = 3, .threads = threads});
     REQUIRE(again.size() == found.size());
     for (std::size_t i = 0; i < found.size(); ++i) {
       CHECK(again[i].first == found[i].first);

@@ -306,15 +306,14 @@ TEST_CASE("similarity_matrix: queries x database equals the pairwise calls, what
     for (Eigen::Index d = 0; d < 3; ++d)
       CHECK(m(q, d) == similarity::motion_similarity(queries[std::size_t(q)], database[std::size_t(d)], policy).value);
   CHECK(m(0, 2) == Approx(1.0));  // tube 0 against itself
-  set_default_threads(1);
-  const Eigen::MatrixXd one_thread = similarity::similarity_matrix(queries, database, policy);
-  const Eigen::MatrixXd all_one_thread = similarity::similarity_matrix(tubes, policy);
+  const Eigen::MatrixXd one_thread = similarity::similarity_matrix(queries, database, policy, {}, 1);
+  const Eigen::MatrixXd all_one_thread = similarity::similarity_matrix(tubes, policy, {}, 1);
   for (const int threads : {2, 7}) {
-    set_default_threads(threads);
-    CHECK(one_thread == similarity::similarity_matrix(queries, database, policy));
-    CHECK(all_one_thread == similarity::similarity_matrix(tubes, policy));
+    CHECK(one_thread == similarity::similarity_matrix(queries, database, policy, {}, threads));
+    CHECK(all_one_thread == similarity::similarity_matrix(tubes, policy, {}, threads));
   }
-  set_default_threads(0);
+  CHECK_THROWS_WITH(similarity::similarity_matrix(tubes, policy, {}, -1),
+                    "similarity_matrix: threads must be 0 (the default) to 1024, not -1");
   CHECK(similarity::similarity_matrix(std::vector<mesh::Surface_mesh_animation>{}, database, policy).size() == 0);
 }
 

@@ -78,14 +78,6 @@ std::vector<std::string> input_paths(const py::object& inputs) {
   return paths;
 }
 
-// `threads` for the calls on this thread that take none (describing), then back to the default.
-struct Default_threads_scope {
-  explicit Default_threads_scope(int threads) { set_default_threads(threads); }
-  ~Default_threads_scope() { set_default_threads(0); }
-  Default_threads_scope(const Default_threads_scope&) = delete;
-  Default_threads_scope& operator=(const Default_threads_scope&) = delete;
-};
-
 py::dict describe_to_store(const py::object& inputs, const std::filesystem::path& store,
                            const frontend::Input_options& options, const similarity::Policy_choice& choice, bool hash,
                            bool skip_unreadable) {
@@ -96,7 +88,6 @@ py::dict describe_to_store(const py::object& inputs, const std::filesystem::path
   frontend::Describe_report report;
   {
     Interruptible_call call;
-    const Default_threads_scope threads(options.threads);
     report = frontend::describe_inputs(
         store.string(), paths, options, policy,
         {.hash = hash, .skip_unreadable = skip_unreadable, .front = frontend::Front::python}, [](const std::string&) {});
@@ -235,7 +226,7 @@ py::array describe_query(const Opened_store& s, const Animation& query) {
   similarity::Motion_signature_description d;
   {
     Interruptible_call call;
-    d = s.search.describe(query.mesh);
+    d = s.search.describe(query.mesh, 0);
   }
   const auto rows = py::ssize_t(d.signatures.rows()), item = py::ssize_t(sizeof(float));
   return owning(std::move(d.signatures), +[](const Eigen::MatrixXf& x) { return x.data(); },
@@ -394,7 +385,7 @@ py::array stored_similarity_matrix(const Opened_store& store, const similarity::
   Eigen::MatrixXd m;
   {
     Interruptible_call call;
-    m = store.search.matrix(progress);
+    m = store.search.matrix(progress, 0);
   }
   return array_of(std::move(m));
 }
@@ -404,7 +395,7 @@ evaluation::Retrieval_scores evaluate_stored(const Opened_store& store, const st
   for (const evaluation::Labelled_clip& row : evaluation::read_motion_labels(labels)) items.push_back(row.item);
   Interruptible_call call;
   const std::vector<std::size_t> labelled = store.search.labelled(labels, std::nullopt, frontend::Front::python);
-  return evaluation::evaluate_retrieval(store.search.matrix(labelled), items);
+  return evaluation::evaluate_retrieval(store.search.matrix(labelled, {}, 0), items);
 }
 
 void bind_store(py::module_& m) {

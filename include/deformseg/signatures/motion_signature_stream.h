@@ -196,7 +196,8 @@ inline std::size_t streamed_ring_frames(const Motion_signature_options& options,
 /// passes); and as `source.read_frame` (naming the file and the frame).
 /// @par Complexity O(I V L log k) expected, as `motion_signatures_at`, plus reading the source
 /// twice; memory O(V (2 max_lag fps + `streamed_batch_frames`)) coordinates for the ring, O(I)
-/// for the rows' frame spans, plus the result. Rows are computed in parallel, a batch at a time.
+/// for the rows' frame spans, plus the result. Rows are computed in parallel, a batch at a time, on
+/// `options.threads` threads.
 /// @par Example
 /// @include motion_signature_stream.cpp
 template <FrameSource Source>
@@ -235,7 +236,7 @@ Eigen::MatrixXd motion_signatures_streamed(Source& source, const Motion_signatur
                              std::to_string(spans[next_row].first) + " to " + std::to_string(spans[next_row].second) +
                              ", more than the ring's " + std::to_string(capacity));
     deformseg::internal::parallel_for_with_locals(
-        end - next_row, 0, 1, [&] { return internal::Row_scratch(vertices); },
+        end - next_row, options.threads, 1, [&] { return internal::Row_scratch(vertices); },
         [&](internal::Row_scratch& scratch, std::size_t k) {
           const std::size_t r = next_row + k;
           internal::signature_row(rows, frame_of, weights, instants[r], out.data() + r * rows.columns, scratch);

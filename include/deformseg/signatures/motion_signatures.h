@@ -70,6 +70,10 @@ struct Motion_signature_options {
   /// were chosen on the shared characters leaving each body out in turn (every body chose these,
   /// but the robot: its 8 queries preferred 9e-2 and 0.35).
   double vertical_weight = 0.2;
+  /// @brief The threads of the rows, computed in parallel: 0 (default) for all the hardware's
+  /// threads (`thread_count`), else 1 to `max_threads`. The signatures do not depend on it, nor
+  /// does a `Motion_signature_similarity` holding these options.
+  int threads = 0;
 };
 
 namespace internal {
@@ -319,6 +323,7 @@ inline void check_signature_options(const Motion_signature_options& options, dou
     throw invalid_input("motion_signatures: the vertical unit must be positive");
   if (options.up && !(options.vertical_weight >= 0 && std::isfinite(options.vertical_weight)))
     throw invalid_input("motion_signatures: the vertical weight must be finite and not negative");
+  thread_count(options.threads, "motion_signatures");
 }
 
 /// Throws unless an animation of `frames` frames is long enough to move.
@@ -408,8 +413,8 @@ void signature_row(const Signature_rows& rows, const FrameOf& frame_of, std::spa
 /// @pre as `motion_signatures` on raw positions; instants in [0, (T - 1) / `frames_per_second`]
 /// (an instant outside reads the nearest end frame).
 /// @throws invalid_input as `motion_signatures`.
-/// @par Complexity O(I V L log k) expected for I instants, in parallel over instants;
-/// deterministic whatever the thread count.
+/// @par Complexity O(I V L log k) expected for I instants, in parallel over instants on
+/// `options.threads` threads; deterministic whatever their number.
 /// @par Example
 /// @include motion_signatures_at.cpp
 template <class Coordinate>
@@ -430,7 +435,7 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
   Row_major out = Row_major(static_cast<Eigen::Index>(instants.size()), static_cast<Eigen::Index>(rows.columns));
   const auto frame_of = [&](std::size_t t) { return positions.data() + 3 * vertices * t; };
   deformseg::internal::parallel_for_with_locals(
-      instants.size(), 0, 1, [&] { return internal::Row_scratch(vertices); },
+      instants.size(), options.threads, 1, [&] { return internal::Row_scratch(vertices); },
       [&](internal::Row_scratch& scratch, std::size_t r) {
         internal::signature_row(rows, frame_of, weights, instants[r], out.data() + r * rows.columns, scratch);
       });

@@ -54,6 +54,9 @@ struct Find_motion_options {
   /// longest: with 0.5 (the default) a window lasts from half to twice the query's duration (a
   /// motion played up to twice as fast or as slow); with 1, exactly as long. In (0, 1].
   double shortest = 0.5;
+  /// @brief The threads that describe a step's windows: 0 (default) for all the hardware's threads
+  /// (`thread_count`), else 1 to `max_threads`. The result does not depend on it.
+  int threads = 0;
 };
 
 namespace internal {
@@ -170,6 +173,7 @@ inline std::pair<std::size_t, std::size_t> window_lengths(double length, const F
 inline void check_find_options(const Find_motion_options& options) {
   if (!(options.shortest > 0 && options.shortest <= 1))
     throw invalid_input("find_motion: shortest must be in (0, 1], not " + std::to_string(options.shortest));
+  thread_count(options.threads, "find_motion");
 }
 
 /// How many candidate windows `find_motion_in` and `find_motion` take from each stretch of frames
@@ -307,7 +311,7 @@ std::vector<Motion_match> find_cut_windows(const Policy& policy, const typename 
       if (!scored.count(w) && std::find(missing.begin(), missing.end(), w) == missing.end()) missing.push_back(w);
     if (missing.empty()) return;
     std::vector<std::optional<Similarity>> values(missing.size());
-    deformseg::internal::parallel_for(missing.size(), 0, [&](std::size_t i) {
+    deformseg::internal::parallel_for(missing.size(), options.threads, [&](std::size_t i) {
       values[i] = policy.compare(query, policy.describe(long_animation.frames(missing[i].first, missing[i].second)));
     });
     for (std::size_t i = 0; i < missing.size(); ++i) scored.emplace(missing[i], std::move(*values[i]));
@@ -412,8 +416,8 @@ std::vector<Motion_match> find_cut_windows(const Policy& policy, const typename 
 /// moved an end or both by one frame at a time while their value rises; the best window is kept,
 /// and the search goes on in the stretches left on either side of the windows found. The
 /// re-descriptions are kept, so that a later window reuses them; the windows of a step (the
-/// candidates, a window's neighbours) are described at once, one per thread (the default threads,
-/// `set_default_threads`); the result does not depend on their number. A search, not an exhaustive scan:
+/// candidates, a window's neighbours) are described at once, one per thread (`options.threads`);
+/// the result does not depend on their number. A search, not an exhaustive scan:
 /// where every window is alike (a steady wave), the window found may be another than the copy,
 /// with a value as high within a few thousandths.
 /// @tparam Mesh a `DeformingMesh` (both animations of one type; they need not share a mesh).

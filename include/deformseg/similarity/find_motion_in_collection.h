@@ -38,7 +38,7 @@ struct Find_in_collection_options {
   /// @brief The shortest window as a fraction of the query's rows, as `Find_motion_options::shortest`
   /// (default 0.5: from half to twice the query's rows). In (0, 1].
   double shortest = 0.5;
-  /// @brief The threads (0: `default_threads()`); the result does not depend on it.
+  /// @brief The threads (0: all the hardware's threads (`thread_count`)); the result does not depend on it.
   int threads = 0;
 };
 

@@ -74,17 +74,17 @@ private:
 
 namespace internal {
 
-// Each animation of `animations` described once, in parallel, reported as steps from `first_step`.
-// An animation the policy refuses is named by an animation_not_described (in the database when
-// `database`).
+// Each animation of `animations` described once, on `threads` threads, reported as steps from
+// `first_step`. An animation the policy refuses is named by an animation_not_described (in the
+// database when `database`).
 template <class Animations, class Policy>
 std::vector<typename Policy::Description> describe_all(const Animations& animations, const Policy& policy,
                                                        std::size_t first_step, std::size_t total_steps,
-                                                       const Progress& progress, bool database = false) {
+                                                       const Progress& progress, int threads, bool database = false) {
   const std::size_t n = std::size_t(std::ranges::size(animations));
   // Optional because a Description need not be default-constructible.
   std::vector<std::optional<typename Policy::Description>> made(n);
-  deformseg::internal::parallel_for_reporting(n, 0, progress, first_step, total_steps, [&](std::size_t i) {
+  deformseg::internal::parallel_for_reporting(n, threads, progress, first_step, total_steps, [&](std::size_t i) {
     try {
       made[i].emplace(policy.describe(std::ranges::begin(animations)[std::ptrdiff_t(i)]));
     } catch (const invalid_input& e) {
@@ -111,28 +111,32 @@ std::vector<typename Policy::Description> describe_all(const Animations& animati
 /// 1) / 2 steps, one a description, one a comparison; called after each parallel batch (about 5 %
 /// of the descriptions or of the pairs, at least 16), so once with `done` = N, when the
 /// descriptions are all made; default none.
+/// @param threads the threads (see threads.h): 0 (the default) for all the hardware's threads
+/// unless `DEFORMSEG_NUM_THREADS` or `OMP_NUM_THREADS` says otherwise, else 1 to `max_threads`.
 /// @return the N x N matrix of similarity values.
 /// @throws animation_not_described (an invalid_input) for the first animation, in index order,
 /// that the policy cannot describe, naming it; invalid_input as the policy does for the first
 /// failing pair.
+/// @throws invalid_input when `threads` is negative or above `max_threads`, before any work.
 /// @throws cancelled when `progress` or the calling thread's `Interruption_check` (threads.h)
 /// returned false.
-/// @par Complexity N describes and N (N + 1) / 2 compares, on `default_threads()` threads (see
-/// `set_default_threads`); the result does not depend on their number.
+/// @par Complexity N describes and N (N + 1) / 2 compares, on `threads` threads; the result does not
+/// depend on their number.
 template <std::ranges::random_access_range Animations, class Policy = Default_similarity>
   requires mesh::DeformingMesh<std::ranges::range_value_t<Animations>> &&
            SimilarityPolicy<Policy, std::ranges::range_value_t<Animations>>
 Eigen::MatrixXd similarity_matrix(const Animations& animations, const Policy& policy = {},
-                                  const Progress& progress = {}) {
+                                  const Progress& progress = {}, int threads = 0) {
+  thread_count(threads, "similarity_matrix");
   const std::size_t n = std::size_t(std::ranges::size(animations));
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i; j < n; ++j) pairs.emplace_back(i, j);
   const std::size_t total = n + pairs.size();
-  const auto descriptions = internal::describe_all(animations, policy, 0, total, progress);
+  const auto descriptions = internal::describe_all(animations, policy, 0, total, progress, threads);
   const auto size = Eigen::Index(n);
   Eigen::MatrixXd values(size, size);
-  deformseg::internal::parallel_for_reporting(pairs.size(), 0, progress, n, total, [&](std::size_t p) {
+  deformseg::internal::parallel_for_reporting(pairs.size(), threads, progress, n, total, [&](std::size_t p) {
     const auto [i, j] = pairs[p];
     const double v = policy.compare(descriptions[i], descriptions[j]).value;
     values(Eigen::Index(i), Eigen::Index(j)) = values(Eigen::Index(j), Eigen::Index(i)) = v;
@@ -151,27 +155,30 @@ Eigen::MatrixXd similarity_matrix(const Animations& animations, const Policy& po
 /// @param progress called on the calling thread as the work advances (see `Progress`): Q + D + Q D
 /// steps, after each parallel batch of the queries' descriptions, the database's and the pairs
 /// (as in the all-pairs `similarity_matrix`); default none.
+/// @param threads the threads, as the all-pairs `similarity_matrix`'s (default 0).
 /// @return the Q x D matrix of similarity values (not symmetric: a policy's `compare` need not be).
 /// @throws animation_not_described (an invalid_input) for the first query, or else the first
 /// database animation, in index order, that the policy cannot describe, naming it; invalid_input
 /// as the policy does for the first failing pair.
+/// @throws invalid_input when `threads` is negative or above `max_threads`, before any work.
 /// @throws cancelled when `progress` or the calling thread's `Interruption_check` (threads.h)
 /// returned false.
-/// @par Complexity Q + D describes and Q D compares, on `default_threads()` threads (see
-/// `set_default_threads`); the result does not depend on their number.
+/// @par Complexity Q + D describes and Q D compares, on `threads` threads; the result does not
+/// depend on their number.
 template <std::ranges::random_access_range Queries, std::ranges::random_access_range Database,
           class Policy = Default_similarity>
   requires mesh::DeformingMesh<std::ranges::range_value_t<Queries>> &&
            std::same_as<std::ranges::range_value_t<Queries>, std::ranges::range_value_t<Database>> &&
            SimilarityPolicy<Policy, std::ranges::range_value_t<Queries>>
 Eigen::MatrixXd similarity_matrix(const Queries& queries, const Database& database, const Policy& policy = {},
-                                  const Progress& progress = {}) {
+                                  const Progress& progress = {}, int threads = 0) {
+  thread_count(threads, "similarity_matrix");
   const std::size_t q = std::size_t(std::ranges::size(queries)), d = std::size_t(std::ranges::size(database));
   const std::size_t total = q + d + q * d;
-  const auto rows = internal::describe_all(queries, policy, 0, total, progress);
-  const auto columns = internal::describe_all(database, policy, q, total, progress, true);
+  const auto rows = internal::describe_all(queries, policy, 0, total, progress, threads);
+  const auto columns = internal::describe_all(database, policy, q, total, progress, threads, true);
   Eigen::MatrixXd values(static_cast<Eigen::Index>(q), static_cast<Eigen::Index>(d));
-  deformseg::internal::parallel_for_reporting(q * d, 0, progress, q + d, total, [&](std::size_t p) {
+  deformseg::internal::parallel_for_reporting(q * d, threads, progress, q + d, total, [&](std::size_t p) {
     values(Eigen::Index(p / d), Eigen::Index(p % d)) = policy.compare(rows[p / d], columns[p % d]).value;
   });
   return values;

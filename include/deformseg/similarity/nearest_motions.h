@@ -82,7 +82,8 @@ struct Nearest_motions {
 struct Nearest_motions_options {
   /// @brief How many clips to find per query. Default 10.
   std::size_t k = 10;
-  /// @brief The threads (0: `default_threads()`); the result and the counts do not depend on it.
+  /// @brief The threads (0: all the hardware's threads, `thread_count`); the result and the counts
+  /// do not depend on it.
   int threads = 0;
   /// @brief Called on the calling thread after each batch of queries (see `Progress`), one step a
   /// query; default none.
@@ -369,7 +370,7 @@ Nearest_motions nearest_motions(Motion_signature_view query, const C& collection
 /// @param collection a `MotionCollection` described with `policy`'s options.
 /// @param i the clip whose neighbours are wanted. @pre `i < collection.size()` (checked).
 /// @param options k (default 10; fewer neighbours when the collection holds at most k others),
-/// threads (default 0: `default_threads()`; the result and the counts do not depend on it); its
+/// threads (default 0: all the hardware's threads (`thread_count`); the result and the counts do not depend on it); its
 /// progress is not called (one query).
 /// @param policy the scale and alignment of the values (default: the default policy's); no window.
 /// @throws invalid_input when `i` is not a clip of `collection`, or when `policy` has a window.
@@ -471,7 +472,7 @@ inline Nearest_motions merge_nearest(std::span<const Nearest_motions> parts, std
 /// @param rows, columns the tile's clips. @pre both end at most at `collection.size()` (checked).
 /// @param policy the scale and alignment of the values (default: the default policy's); no window.
 /// @param progress one step a pair aligned (see `Progress`); default none.
-/// @param threads the threads (default 0: `default_threads()`); the values do not depend on it.
+/// @param threads the threads (default 0: all the hardware's threads (`thread_count`)); the values do not depend on it.
 /// @throws invalid_input when `rows` or `columns` are not blocks of the collection, or when `policy`
 /// has a window; cancelled as `similarity_matrix`.
 /// @par Complexity one value pass (`alignment::Dtw::mean_cost`, O(n m W)) per pair of the tile,
@@ -515,13 +516,16 @@ Eigen::MatrixXd similarity_tile(const C& collection, Clip_range rows, Clip_range
 /// @param collection a `MotionCollection` described with `policy`'s options.
 /// @param policy the scale and alignment of the values (default: the default policy's); no window.
 /// @param progress one step a pair i <= j (see `Progress`); default none.
-/// @throws invalid_input when `policy` has a window; cancelled as `similarity_matrix`.
+/// @param threads the threads (default 0: all the hardware's threads, `thread_count`); the values
+/// do not depend on it.
+/// @throws invalid_input when `policy` has a window or `threads` is out of range; cancelled as
+/// `similarity_matrix`.
 /// @par Complexity N (N + 1) / 2 value passes (`alignment::Dtw::mean_cost`), O(n m W) each, on
-/// `default_threads()` threads; O(max rows) memory per thread beyond the N x N result.
+/// `threads` threads; O(max rows) memory per thread beyond the N x N result.
 template <MotionCollection C>
 Eigen::MatrixXd similarity_matrix(const C& collection, const Motion_signature_similarity<>& policy = {},
-                                  const Progress& progress = {}) {
-  return similarity_tile(collection, all_clips(collection), all_clips(collection), policy, progress);
+                                  const Progress& progress = {}, int threads = 0) {
+  return similarity_tile(collection, all_clips(collection), all_clips(collection), policy, progress, threads);
 }
 
 }  // namespace deformseg::similarity

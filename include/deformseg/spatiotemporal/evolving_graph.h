@@ -120,14 +120,17 @@ inline Key_frame averaged_key_frame(const std::vector<Frame_graph>& frames, std:
 /// segment id, rigid ones by the segments they touch, with their multiplicity) and the same
 /// edges: exactly what the canonical order of `Frame_segments` makes comparable.
 /// @param frames the frames of a segmentation, as `Frame_segments` gives them.
+/// @param threads the threads of the frames' graphs: 0 (default) for all the hardware's threads
+/// (`thread_count`), else 1 to `max_threads`.
 /// @return the key frames, in time order.
-/// @par Complexity O(T (F + E)) for T frames of F triangles and E shared edges, frames in
-/// parallel; the result does not depend on the number of threads. Memory O(F) per
-/// thread besides the frames' (small) graphs.
-inline Evolving_graph evolving_graph(const Frame_segments& frames) {
+/// @throws invalid_input when `threads` is out of range.
+/// @par Complexity O(T (F + E)) for T frames of F triangles and E shared edges, frames on
+/// `threads` threads; the result does not depend on their number. Memory O(F) per thread besides
+/// the frames' (small) graphs.
+inline Evolving_graph evolving_graph(const Frame_segments& frames, int threads = 0) {
   const std::size_t count = frames.num_frames();
   std::vector<internal::Frame_graph> graphs(count);
-  deformseg::internal::parallel_for(count, 0, [&](std::size_t t) {
+  deformseg::internal::parallel_for(count, threads, [&](std::size_t t) {
     graphs[t] = internal::Frame_segments_access::frame_graph(frames, t);
   });
   std::vector<Key_frame> key_frames;
@@ -155,7 +158,7 @@ Evolving_graph evolving_graph(const Mesh& animation, const Spatiotemporal_option
     const auto field = strain::compute_strain(animation, strain_options(options));
     Body_layout layout = body_layout(animation, options.parts);
     const Spatiotemporal_segmentation segmentation = spatiotemporal_segmentation(field, layout, options);
-    return evolving_graph(Frame_segments(segmentation, std::move(layout)));
+    return evolving_graph(Frame_segments(segmentation, std::move(layout)), options.threads);
   } else {
     return evolving_graph(mesh::make_deforming_mesh(animation), options);
   }

@@ -69,6 +69,10 @@ struct Spatiotemporal_options {
   /// that take an animation. Default: `Part_link_options` (touching within 1 % of the diagonal,
   /// moving as one within 0.2 %); `{0, 0}` is the thesis' adjacency, shared edges only.
   Part_link_options parts{};
+  /// @brief The threads of the segmentation, of the strain the overloads taking an animation
+  /// compute and of `evolving_graph`'s frame graphs: 0 (default) for all the hardware's threads
+  /// (`thread_count`), else 1 to `max_threads`. The result does not depend on it.
+  int threads = 0;
 };
 
 /// @brief The spatio-temporal segments of an animation: for each triangle and frame, rigid or the
@@ -284,9 +288,10 @@ inline void absorb_islands(std::span<std::int32_t> labels, const Body_layout& la
 /// @param options threshold, hysteresis and clean-up (`reference` and `parts` are not used here).
 /// @return the labels, segments numbered in order of first appearance (frame, then triangle).
 /// @throws invalid_input when `layout` and the field have different triangle counts, the
-/// threshold is not finite, `min_area` not in [0, 1] or `hysteresis` not in [0, 1).
+/// threshold is not finite, `min_area` not in [0, 1], `hysteresis` not in [0, 1) or `threads` out
+/// of range.
 /// @par Complexity O(F T alpha(F T)) time for the union-find over the layout's neighbours, the
-/// islands' absorption frames in parallel (the result does not depend on the threads); memory 15
+/// islands' absorption frames on `options.threads` threads (the result does not depend on them); memory 15
 /// bytes per cell (labels, union-find, segment ids, flags), besides the layout.
 template <std::floating_point Value>
 Spatiotemporal_segmentation spatiotemporal_segmentation(const strain::Strain_field<Value>& field,
@@ -302,6 +307,7 @@ Spatiotemporal_segmentation spatiotemporal_segmentation(const strain::Strain_fie
     throw invalid_input("spatiotemporal_segmentation: the minimum area share must be in [0, 1]");
   if (!(options.hysteresis >= 0 && options.hysteresis < 1))
     throw invalid_input("spatiotemporal_segmentation: the hysteresis must be in [0, 1)");
+  thread_count(options.threads, "spatiotemporal_segmentation");
   const double low = options.threshold * (1 - options.hysteresis);
   std::vector<std::uint8_t> strong(faces * frames), candidate(faces * frames);
   for (std::size_t i = 0; i < strong.size(); ++i) {
@@ -311,7 +317,7 @@ Spatiotemporal_segmentation spatiotemporal_segmentation(const strain::Strain_fie
   std::vector<std::int32_t> labels = internal::connected_cells(candidate, strong, faces, frames, layout);
   internal::remove_small_segments(labels, faces, frames, layout.area_shares(), options);
   if (options.max_island > 0) {
-    deformseg::internal::parallel_for(frames, 0, [&](std::size_t t) {  // frames apart: each its own labels
+    deformseg::internal::parallel_for(frames, options.threads, [&](std::size_t t) {  // frames apart: each its own labels
       internal::absorb_islands(std::span<std::int32_t>(labels).subspan(t * faces, faces), layout, options.max_island);
     });
     internal::renumber_by_first_appearance(labels);
@@ -338,11 +344,13 @@ Spatiotemporal_segmentation spatiotemporal_segmentation(const strain::Strain_fie
   return spatiotemporal_segmentation(field, Body_layout(triangles), options);
 }
 
-/// @brief The strain options of a segmentation's `reference` and `sigma` (`compute_strain`'s
+/// @brief The strain options of a segmentation's `reference`, `sigma` and `threads` (`compute_strain`'s
 /// defaults otherwise).
 /// @par Complexity O(1).
 inline strain::Strain_options strain_options(const Spatiotemporal_options& options) {
-  return {.reference = options.reference, .normalization = strain::Gaussian_normalization{.sigma = options.sigma}};
+  return {.reference = options.reference,
+          .normalization = strain::Gaussian_normalization{.sigma = options.sigma},
+          .threads = options.threads};
 }
 
 /// @brief The spatio-temporal segments of an animation: its normalised strain against

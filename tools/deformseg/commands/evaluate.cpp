@@ -247,7 +247,7 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
     try {
       report = Matrix_progress{.descriptions = read.animations.size()};
       return similarity::with_policy_choice(o.policy, [&](const auto& policy) {
-        return similarity::similarity_matrix(read.animations, policy, std::ref(report));
+        return similarity::similarity_matrix(read.animations, policy, std::ref(report), o.read.threads);
       });
     } catch (const similarity::animation_not_described& e) {
       const auto at = std::ptrdiff_t(e.index());
@@ -283,13 +283,12 @@ Eigen::MatrixXd matrix_of_store(Read_clips& read, const Evaluate_options& o, Mat
   }
   progress("comparing " + std::to_string(selected.size()) + " clips of " + o.store + " pair by pair");
   report = Matrix_progress{.descriptions = 0};
-  return library.matrix(std::move(selected), std::ref(report));
+  return library.matrix(std::move(selected), std::ref(report), o.read.threads);
 }
 
 void run_evaluate(const Evaluate_options& o) {
   frontend::check(o.policy, frontend::Front::command_line);
   frontend::check(o.read, frontend::Front::command_line);
-  set_default_threads(o.read.threads);  // the matrix's threads; the readers take theirs
   const auto start = Clock::now();
   Read_clips read;
   if (o.store.empty()) {

@@ -35,7 +35,6 @@ void run_find_in_store(const Find_command_options& o) {
   if (o.inputs.size() != 1)
     throw invalid_input("find --store takes one input, the query, not " + std::to_string(o.inputs.size()));
   frontend::check(o.read, frontend::Front::command_line);
-  set_default_threads(o.read.threads);
   const frontend::Store_search library(o.store);
   if (library.size() == 0) throw invalid_input("the store holds no clip", {.file = o.store});
   const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
@@ -65,12 +64,12 @@ void run_find(const Find_command_options& o) {
   if (o.inputs.size() != 2)
     throw invalid_input("find takes the query and the long animation, or the query and --store S");
   frontend::check(o.read, frontend::Front::command_line);
-  set_default_threads(o.read.threads);
   const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
   const mesh::Surface_mesh_animation &query = inputs[0].animation, &long_animation = inputs[1].animation;
   progress("looking for " + std::to_string(query.num_frames()) + " frames in " +
            std::to_string(long_animation.num_frames()));
-  const auto matches = similarity::find_motion(query, long_animation, {.count = o.count, .shortest = o.shortest});
+  const auto matches = similarity::find_motion(query, long_animation,
+                                              {.count = o.count, .shortest = o.shortest, .threads = o.read.threads});
   nlohmann::json found = nlohmann::json::array();
   for (const similarity::Motion_match& m : matches)
     found.push_back({{"first", m.first}, {"last", m.last}, {"similarity", m.value}, {"alignment", alignment_json(m)}});

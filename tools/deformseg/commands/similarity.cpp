@@ -142,7 +142,7 @@ Eigen::MatrixXd matrix_of(const Matrix_command_options& o, std::vector<std::stri
     progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
     Matrix_progress report{.descriptions = animations.size()};
     return similarity::with_policy_choice(o.policy, [&](const auto& policy) {
-      return similarity::similarity_matrix(animations, policy, std::ref(report));
+      return similarity::similarity_matrix(animations, policy, std::ref(report), o.read.threads);
     });
   }
   const frontend::Store_search library(o.store);
@@ -155,7 +155,7 @@ Eigen::MatrixXd matrix_of(const Matrix_command_options& o, std::vector<std::stri
   }
   progress("comparing the " + std::to_string(library.size()) + " clips of " + o.store + " pair by pair");
   Matrix_progress report{.descriptions = 0};
-  return library.matrix(std::ref(report));
+  return library.matrix(std::ref(report), o.read.threads);
 }
 
 void run_matrix(const Matrix_command_options& o) {

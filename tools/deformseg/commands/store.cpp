@@ -48,7 +48,6 @@ struct Describe_options {
 void run_describe(const Describe_options& o) {
   const similarity::Default_similarity policy = frontend::store_policy(o.policy, frontend::Front::command_line);
   frontend::check(o.read, frontend::Front::command_line);
-  set_default_threads(o.read.threads);
   const auto start = std::chrono::steady_clock::now();
   const frontend::Describe_report report = frontend::describe_inputs(
       o.store, o.inputs, o.read, policy, {.hash = o.hash, .skip_unreadable = o.skip_unreadable}, progress);
@@ -101,7 +100,6 @@ void run_search(const Search_options& o) {
   if (o.queries.empty() && o.clip_indices.empty())
     throw invalid_input("search needs a query: an animation, or --clip-index I for a clip of the store");
   frontend::check(o.read, frontend::Front::command_line);
-  set_default_threads(o.read.threads);
   const frontend::Store_search library(o.store);
   const store::Motion_store& store = library.store();
   for (const std::size_t i : o.clip_indices)
@@ -180,7 +178,6 @@ void write_edges_csv(const std::vector<similarity::Nearest_motions>& graph, cons
 }
 
 void run_knn_graph(const Knn_options& o) {
-  set_default_threads(o.threads);
   const frontend::Store_search library(o.store);
   const store::Motion_store& store = library.store();
   progress("searching the " + std::to_string(store.size()) + " clips' nearest " + std::to_string(o.k));
