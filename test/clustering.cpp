@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <limits>
 #include <random>
 #include <string>
@@ -247,11 +248,15 @@ TEST_CASE("cluster: the same result whatever the number of threads", "[clusterin
                                    cluster(d, Agglomerative{.linkage = Linkage::complete, .clusters = 6}),
                                    cluster(d, K_means{}), cluster(d, K_means{.clusters = 7, .seed = 9})};
   };
-  deformseg::set_default_threads(1);
-  const std::vector<Clustering> one = all();
-  deformseg::set_default_threads(7);
-  const std::vector<Clustering> seven = all();
-  deformseg::set_default_threads(0);
+  // The clustering policies take no count: they run on `thread_count(0)`, which the environment sets.
+  const auto on = [&](const char* threads) {
+    ::setenv("DEFORMSEG_NUM_THREADS", threads, 1);
+    const std::vector<Clustering> result = all();
+    ::unsetenv("DEFORMSEG_NUM_THREADS");
+    return result;
+  };
+  const std::vector<Clustering> one = on("1");
+  const std::vector<Clustering> seven = on("7");
   for (std::size_t p = 0; p < one.size(); ++p) {
     INFO("policy " << p);
     CHECK(one[p].labels == seven[p].labels);

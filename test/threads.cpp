@@ -79,8 +79,7 @@ mesh::Surface_mesh_animation bending_tube() {
 TEST_CASE("threads: 0 is the default, counts above max_threads are refused naming them", "[threads]") {
   const Scoped_variable own("DEFORMSEG_NUM_THREADS", nullptr), openmp("OMP_NUM_THREADS", nullptr);
   const int hardware = int(std::max(1u, std::thread::hardware_concurrency()));
-  CHECK(default_threads() == std::min(hardware, max_threads));
-  CHECK(thread_count(0) == default_threads());
+  CHECK(thread_count(0) == std::min(hardware, max_threads));
   CHECK(thread_count(1) == 1);
   CHECK(thread_count(max_threads) == max_threads);
   CHECK_THROWS_AS(thread_count(max_threads + 1), invalid_input);
@@ -89,33 +88,28 @@ TEST_CASE("threads: 0 is the default, counts above max_threads are refused namin
   CHECK_THROWS_WITH(thread_count(-1), "threads must be 0 (the default) to 1024, not -1");
 }
 
-TEST_CASE("threads: the default follows set_default_threads, then the environment", "[threads]") {
+TEST_CASE("threads: 0 follows the environment, a count given is kept", "[threads]") {
   const Scoped_variable own("DEFORMSEG_NUM_THREADS", nullptr), openmp("OMP_NUM_THREADS", nullptr);
   {
     const Scoped_variable list("OMP_NUM_THREADS", "5,2");  // OpenMP's nested list: its first number
-    CHECK(default_threads() == 5);
+    CHECK(thread_count(0) == 5);
     const Scoped_variable ours("DEFORMSEG_NUM_THREADS", "3");  // deformseg's own comes first
-    CHECK(default_threads() == 3);
-    set_default_threads(6);  // and the calling thread's setting before either
-    CHECK(default_threads() == 6);
-    CHECK(thread_count(0) == 6);
-    set_default_threads(0);
-    CHECK(default_threads() == 3);
+    CHECK(thread_count(0) == 3);
+    CHECK(thread_count(6) == 6);  // and a count given before either
   }
   {
     const Scoped_variable large("OMP_NUM_THREADS", "100000");
-    CHECK(default_threads() == max_threads);
+    CHECK(thread_count(0) == max_threads);
   }
   {
     const Scoped_variable other("OMP_NUM_THREADS", "dynamic");  // not ours, not a count: ignored
-    CHECK(default_threads() >= 1);
+    CHECK(thread_count(0) >= 1);
   }
   for (const char* bad : {"0", "-2", "two", "4,2", "2000"}) {
     const Scoped_variable ours("DEFORMSEG_NUM_THREADS", bad);
-    CHECK_THROWS_WITH(default_threads(), Catch::Contains("DEFORMSEG_NUM_THREADS is '" + std::string(bad) + "'"));
+    CHECK_THROWS_WITH(thread_count(0), Catch::Contains("DEFORMSEG_NUM_THREADS is '" + std::string(bad) + "'"));
+    CHECK(thread_count(2) == 2);  // a count given does not read the environment
   }
-  CHECK_THROWS_WITH(set_default_threads(5000), Catch::Contains("not 5000"));
-  CHECK_THROWS_AS(set_default_threads(-1), invalid_input);
 }
 
 TEST_CASE("threads: every threads option refuses a count above max_threads", "[threads]") {
@@ -279,8 +273,7 @@ TEST_CASE("threads: histograms, their distances, segments and graphs are the sam
   const std::vector<double> weights(field.num_faces(), 1.0);
   const strain::Strain_histograms one = strain::strain_histograms(field, weights, {.threads = 1});
   const Eigen::MatrixXd distances = strain::histogram_distances(one, one, strain::Histogram_metric::earth_movers, 1);
-  set_default_threads(1);
-  const spatiotemporal::Spatiotemporal_options options{.threshold = 0.01, .max_island = 8};
+  spatiotemporal::Spatiotemporal_options options{.threshold = 0.01, .max_island = 8, .threads = 1};
   const spatiotemporal::Spatiotemporal_segmentation segments =
       spatiotemporal::spatiotemporal_segmentation(field, tube.triangles(), options);
   const spatiotemporal::Evolving_graph graph = spatiotemporal::evolving_graph(tube, options);
@@ -290,7 +283,7 @@ TEST_CASE("threads: histograms, their distances, segments and graphs are the sam
               .matrix() == field.matrix());
     CHECK(strain::strain_histograms(field, weights, {.threads = threads}) == one);
     CHECK(strain::histogram_distances(one, one, strain::Histogram_metric::earth_movers, threads) == distances);
-    set_default_threads(threads);
+    options.threads = threads;
     const spatiotemporal::Spatiotemporal_segmentation other =
         spatiotemporal::spatiotemporal_segmentation(field, tube.triangles(), options);
     for (std::size_t t = 0; t < field.num_frames(); ++t)
@@ -304,5 +297,4 @@ TEST_CASE("threads: histograms, their distances, segments and graphs are the sam
         CHECK(other_graph[k].graph[v].area == graph[k].graph[v].area);
     }
   }
-  set_default_threads(0);
 }

@@ -1,15 +1,17 @@
 /// @file threads.h
 /// @brief How the parallel algorithms run: the one rule for their number of threads
-/// (`thread_count`, `default_threads`, `max_threads`) and the one convention for stopping a long
+/// (`thread_count`, `max_threads`) and the one convention for stopping a long
 /// call from the thread that made it, by its `Progress` callback or by an `Interruption_scope`
 /// (either way the call throws `cancelled`, of exceptions.h).
 ///
 /// Every `threads` option of deformseg (and `--threads` of the tool, `threads=` in Python) means
-/// the same: 0, the default, for `default_threads()`, or a count from 1 to `max_threads`; any
-/// other is refused with `invalid_input` naming it. The threads are made for each call and joined
-/// before it returns (no pool lives between calls, so a process may `fork` after any call), and a
-/// parallel loop started on one of them runs on that thread alone, as nested OpenMP regions do by
-/// default. Results never depend on the number of threads.
+/// the same: 0, the default, for the environment's count or else all the hardware's threads
+/// (`thread_count`), or a count from 1 to `max_threads`; any other is refused with `invalid_input`
+/// naming it. Every parallel entry point takes its count explicitly, as a parameter or an option;
+/// no setting of the calling thread stands in for it. The threads are made for each call and
+/// joined before it returns (no pool lives between calls, so a process may `fork` after any call),
+/// and a parallel loop started on one of them runs on that thread alone, as nested OpenMP regions
+/// do by default. Results never depend on the number of threads.
 #pragma once
 
 #include <deformseg/exceptions.h>
@@ -36,9 +38,6 @@ namespace deformseg {
 inline constexpr int max_threads = 1024;
 
 namespace internal {
-
-// The calling thread's default set by set_default_threads (0: none).
-inline thread_local int default_threads_of_thread = 0;
 
 // A whole number from 1 to max_threads, or nothing.
 inline std::optional<int> parse_thread_count(std::string_view text) {
@@ -74,51 +73,39 @@ inline std::optional<int> threads_of_openmp_variable() {
 
 }  // namespace internal
 
-/// @brief What a `threads` option of 0 (the default everywhere) stands for, on the calling
-/// thread: the count given to `set_default_threads` there, if any; else the environment variable
-/// `DEFORMSEG_NUM_THREADS`; else `OMP_NUM_THREADS` (its first number, at most `max_threads`,
-/// ignored when not a number of at least 1), which schedulers such as SLURM set; else the hardware's
-/// threads
-/// (`std::thread::hardware_concurrency()`, at least 1, at most `max_threads`).
-/// @throws invalid_input when `DEFORMSEG_NUM_THREADS` is set but not a whole number from 1 to
-/// `max_threads`, naming its value.
-/// @par Complexity O(1): reads the environment at each call.
-/// @par Example
-/// @include thread_count.cpp
-inline int default_threads() {
-  if (internal::default_threads_of_thread > 0) return internal::default_threads_of_thread;
-  if (const auto n = internal::threads_of_deformseg_variable()) return *n;
-  if (const auto n = internal::threads_of_openmp_variable()) return *n;
+namespace internal {
+
+// What a `threads` option of 0 stands for: DEFORMSEG_NUM_THREADS, else OMP_NUM_THREADS, else the
+// hardware's threads. Read at each call, so that a program may set the variables as it runs.
+inline int automatic_threads() {
+  if (const auto n = threads_of_deformseg_variable()) return *n;
+  if (const auto n = threads_of_openmp_variable()) return *n;
   return int(std::clamp(std::thread::hardware_concurrency(), 1u, unsigned(max_threads)));
 }
 
-/// @brief The count a `threads` option gives: `default_threads()` for 0, `requested` itself from
-/// 1 to `max_threads`.
+}  // namespace internal
+
+/// @brief The count a `threads` option gives: `requested` itself from 1 to `max_threads`; for 0
+/// (the default everywhere), the environment variable `DEFORMSEG_NUM_THREADS`, else
+/// `OMP_NUM_THREADS` (its first number, at most `max_threads`, ignored when not a number of at
+/// least 1), which schedulers such as SLURM set, else the hardware's threads
+/// (`std::thread::hardware_concurrency()`, at least 1, at most `max_threads`). There is no other
+/// default: every parallel call takes its count as a parameter or an option.
 /// @param requested the option's value.
 /// @param context what takes the option, put before the message (e.g. "compute_strain"); may be
 /// empty.
 /// @return a count from 1 to `max_threads`.
 /// @throws invalid_input for a negative count or one above `max_threads`, naming it, e.g.
-/// "compute_strain: threads must be 0 (the default) to 1024, not 70000"; as `default_threads`.
+/// "compute_strain: threads must be 0 (the default) to 1024, not 70000"; for 0, when
+/// `DEFORMSEG_NUM_THREADS` is set but not a whole number from 1 to `max_threads`, naming its value.
+/// @par Complexity O(1): reads the environment at each call with 0.
 /// @par Example
 /// @include thread_count.cpp
 inline int thread_count(int requested, const std::string& context = {}) {
   if (requested < 0 || requested > max_threads)
     throw invalid_input((context.empty() ? "" : context + ": ") + "threads must be 0 (the default) to " +
                         std::to_string(max_threads) + ", not " + std::to_string(requested));
-  return requested == 0 ? default_threads() : requested;
-}
-
-/// @brief Sets what `threads` = 0 stands for in the calls made on the calling thread (as
-/// `omp_set_num_threads` did), for calls that take no `threads` option, such as
-/// `similarity_matrix`; 0 restores the rule of `default_threads`.
-/// @param threads 0, or a count from 1 to `max_threads`.
-/// @throws invalid_input for any other count, naming it.
-/// @par Example
-/// @include thread_count.cpp
-inline void set_default_threads(int threads) {
-  if (threads != 0) thread_count(threads, "set_default_threads");
-  internal::default_threads_of_thread = threads;
+  return requested == 0 ? internal::automatic_threads() : requested;
 }
 
 /// @brief The progress callback of deformseg's long calls (`similarity::similarity_matrix`,

@@ -187,7 +187,7 @@ void skinning(benchmark::State& state, int threads) {
 
 void skinning_one_thread(benchmark::State& state) { skinning(state, 1); }
 void skinning_all_threads(benchmark::State& state) {
-  skinning(state, deformseg::default_threads());
+  skinning(state, deformseg::thread_count(0));
 }
 
 fs::path characters() {

@@ -26,7 +26,7 @@ namespace deformseg::ged {
 
 /// @brief Options of ged_matrix and ged_matrix_results.
 struct Ged_matrix_options {
-  /// @brief Threads (0: `default_threads()`), at most `max_threads`. The result is the same for
+  /// @brief Threads (0: all the hardware's threads (`thread_count`)), at most `max_threads`. The result is the same for
   /// any number, for a
   /// deterministic policy (Exact_ged without `max_seconds`, Bipartite_ged,
   /// Assignment_lower_bound).

@@ -223,8 +223,8 @@ struct Frame_sequence_options {
   /// @brief Fan-triangulate polygons of the connectivity instead of rejecting them (see
   /// `Mesh_read_options`). Default: false.
   bool triangulate = false;
-  /// @brief Threads that read frames in parallel: 0 (default) for `default_threads()`, all the
-  /// hardware's threads unless `DEFORMSEG_NUM_THREADS` or `OMP_NUM_THREADS` says otherwise; at
+  /// @brief Threads that read frames in parallel: 0 (default) for all the hardware's threads (`thread_count`)
+  /// unless `DEFORMSEG_NUM_THREADS` or `OMP_NUM_THREADS` says otherwise; at
   /// most `max_threads`. The result does not depend on it.
   int threads = 0;
   /// @brief How the connectivity is repaired (see `repair_triangles`): by default vertices are

@@ -69,8 +69,8 @@ struct Gltf_read_options {
   /// the same for every clip: see `Gltf_file::repair`). Default: welding on (glTF splits vertices
   /// along UV seams and hard edges), defects repaired.
   Repair_options repair{.weld = true};
-  /// @brief Threads that sample frames in parallel: 0 (default) for `default_threads()`, at most
-  /// `max_threads`. The result does not depend on it.
+  /// @brief Threads that sample frames in parallel: 0 (default) for all the hardware's threads
+  /// (`thread_count`), at most `max_threads`. The result does not depend on it.
   int threads = 0;
 };
 

@@ -40,7 +40,7 @@ struct Animation_read_options {
   std::optional<std::filesystem::path> topology{};
   /// @brief Fan-triangulate polygons instead of rejecting them. Default: false.
   bool triangulate = false;
-  /// @brief Threads that read frames in parallel: 0 (default) for `default_threads()`, at most
+  /// @brief Threads that read frames in parallel: 0 (default) for all the hardware's threads (`thread_count`), at most
   /// `max_threads`.
   int threads = 0;
   /// @brief How the connectivity is repaired (see `repair_triangles`). Default: the format's,

@@ -38,7 +38,8 @@ enum class Frame_metric {
 struct Frame_distance_options {
   /// @brief The metric. Default: `Frame_metric::euclidean`.
   Frame_metric metric = Frame_metric::euclidean;
-  /// @brief Threads (0: `default_threads()`), at most `max_threads`. The result is bit-identical
+  /// @brief Threads (0: all the hardware's threads, `thread_count`), at most `max_threads`. The
+  /// result is bit-identical
   /// for any number.
   int threads = 0;
 };

@@ -128,7 +128,7 @@ double histogram_distance(const Eigen::MatrixBase<Derived1>& h1, const Eigen::Ma
 /// @param a `Ta x n` histograms, one per row.
 /// @param b `Tb x n` histograms, the same bins.
 /// @param metric earth mover's (default) or total variation, see `Histogram_metric`.
-/// @param threads threads (0, the default: `default_threads()`).
+/// @param threads threads (0, the default: all the hardware's threads (`thread_count`)).
 /// @return the `Ta x Tb` distances (an empty matrix when `a` or `b` has no row).
 /// @pre both have the same number n >= 1 of columns; every row finite, >= 0 and summing to 1
 /// (within 1e-6); `threads` from 0 to `max_threads`.

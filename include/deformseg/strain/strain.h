@@ -80,7 +80,7 @@ struct Strain_options {
   /// Default: 1e-12, so only triangles of zero area up to rounding. A larger value (1e-3, say)
   /// also sets the strain of sliver triangles to 0.
   double degenerate_tolerance = 1e-12;
-  /// @brief Threads to use: 0 (default) for `default_threads()` (all the hardware's threads
+  /// @brief Threads to use: 0 (default) for all the hardware's threads (`thread_count`)
   /// unless `DEFORMSEG_NUM_THREADS` or `OMP_NUM_THREADS` says otherwise), at most `max_threads`
   /// (see threads.h). The result is bit-identical for any number.
   int threads = 0;

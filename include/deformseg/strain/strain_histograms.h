@@ -51,7 +51,8 @@ struct Histogram_options {
   double min_strain = 0.05;
   /// @brief The upper edge of the last log-spaced bin, finite and > `min_strain`. Default: 1.
   double max_strain = 1.0;
-  /// @brief Threads (0: `default_threads()`), at most `max_threads`. The result is bit-identical
+  /// @brief Threads (0: all the hardware's threads, `thread_count`), at most `max_threads`. The
+  /// result is bit-identical
   /// for any number.
   int threads = 0;
 };

@@ -36,7 +36,7 @@ struct Raw_strain_field {
   /// frame of rest-pose strain, frame 0 of previous-pose strain), left out of `samples()`; none
   /// when the reference is a mesh of its own.
   std::optional<std::size_t> zero_frame{};
-  /// @brief Threads the normalisation may use (0: `default_threads()`); its result must not
+  /// @brief Threads the normalisation may use (0: all the hardware's threads (`thread_count`)); its result must not
   /// depend on it.
   int threads = 0;
 
