@@ -28,9 +28,14 @@ std::string listed(std::span<const Choice> choices) {
   return out;
 }
 
+std::string choice_message(std::string_view value, std::span<const Choice> choices) {
+  if (std::ranges::any_of(choices, [&](const Choice& c) { return c.name == value; })) return {};
+  return std::string("must be ").append(listed(choices)).append(", got '").append(value).append("'");
+}
+
 void check_choice(std::string_view name, std::string_view value, std::span<const Choice> choices, Front front) {
-  if (std::ranges::any_of(choices, [&](const Choice& c) { return c.name == value; })) return;
-  refuse(spelled(name, front).append(" must be ").append(listed(choices)).append(", got '").append(value).append("'"));
+  if (const std::string message = choice_message(value, choices); !message.empty())
+    refuse(spelled(name, front).append(" ").append(message));
 }
 
 namespace {

@@ -140,6 +140,10 @@ std::string spelled(std::string_view name, std::string_view value, Front front);
 /// The choices' names in a sentence: "'a', 'b' or 'c'".
 std::string listed(std::span<const Choice> choices);
 
+/// The message of `check_choice` without the parameter's name: "must be 'a', 'b' or 'c', got 'x'";
+/// empty for one of `choices`.
+std::string choice_message(std::string_view value, std::span<const Choice> choices);
+
 /// Refuses, naming the parameter as `front` spells it, a value that is not one of `choices`.
 /// @throws invalid_input "--measure must be 'a', 'b' or 'c', got 'x'".
 void check_choice(std::string_view name, std::string_view value, std::span<const Choice> choices, Front front);

@@ -11,9 +11,9 @@
 
 #include <cstdlib>
 #include <optional>
+#include <span>
 #include <string>
 #include <type_traits>
-#include <vector>
 
 namespace deformseg::tool {
 
@@ -36,6 +36,16 @@ inline CLI::Validator in_range(const frontend::Range& range, bool whole) {
 inline CLI::Validator whole_numbers(const frontend::Range& range) { return in_range(range, true); }
 /// `in_range` for a floating-point option.
 inline CLI::Validator numbers(const frontend::Range& range) { return in_range(range, false); }
+
+/// The check of a choice option, named "choice": refuses, as the command line is read, a name not
+/// among `choices`, in the front end's words, as Python's: "--policy: must be 'a', 'b' or 'c', got
+/// 'x'". Its description ("{a,b,c}") follows the option's type in the help.
+inline CLI::Validator among(std::span<const frontend::Choice> choices) {
+  std::string names;
+  for (const frontend::Choice& choice : choices) names.append(names.empty() ? "{" : ",").append(choice.name);
+  return CLI::Validator([choices](std::string& text) { return frontend::choice_message(text, choices); },
+                        names + "}", "choice");
+}
 
 /// The help of a parameter: its own, then, for a name among choices, each choice and its help.
 template <class Parameter>
@@ -60,11 +70,7 @@ void add_parameter(CLI::App& command, const frontend::Parameter<Request, Value>&
   } else {
     CLI::Option* option = command.add_option(name, value, help_of(p));
     if constexpr (frontend::is_numeric_v<Value>) option->check(in_range(p.range, frontend::is_whole_v<Value>));
-    if (p.kind == frontend::Parameter_kind::choice) {
-      std::vector<std::string> names;
-      for (const frontend::Choice& choice : p.choices) names.emplace_back(choice.name);
-      option->check(CLI::IsMember(names));
-    }
+    if (p.kind == frontend::Parameter_kind::choice) option->check(among(p.choices));
   }
 }
 
