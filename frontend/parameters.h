@@ -7,6 +7,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/threads.h>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -147,6 +148,15 @@ std::string choice_message(std::string_view value, std::span<const Choice> choic
 /// Refuses, naming the parameter as `front` spells it, a value that is not one of `choices`.
 /// @throws invalid_input "--measure must be 'a', 'b' or 'c', got 'x'".
 void check_choice(std::string_view name, std::string_view value, std::span<const Choice> choices, Front front);
+
+/// The choices of a table whose entries have more than a name and a help (the similarity policies,
+/// the alignments): the names and helps, in the table's order, for its parameter.
+template <class Entry, std::size_t N>
+constexpr std::array<Choice, N> choices_of(const std::array<Entry, N>& entries) {
+  std::array<Choice, N> out{};
+  for (std::size_t k = 0; k < N; ++k) out[k] = {entries[k].name, entries[k].help};
+  return out;
+}
 
 /// Refuses: `invalid_input(message)`, for the checks of a request.
 [[noreturn]] void refuse(const std::string& message);

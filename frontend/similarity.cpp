@@ -3,34 +3,75 @@
 #include <deformseg/io/frame_stream.h>
 #include <deformseg/similarity/significance.h>
 
+#include <algorithm>
 #include <random>
+#include <stdexcept>
 #include <type_traits>
 
 namespace deformseg::frontend {
 
-void check(const similarity::Policy_choice& choice, Front front) {
-  check_choice("policy", choice.policy, similarity_policies, front);
-  if (!choice.alignment.empty()) check_choice("alignment", choice.alignment, alignments, front);
+namespace {
+
+// The entry of `entries` named `name`, which a check has found there.
+template <class Entry, std::size_t N>
+const Entry& entry_named(const std::array<Entry, N>& entries, std::string_view name) {
+  const auto at = std::ranges::find(entries, name, &Entry::name);
+  if (at == entries.end()) throw std::logic_error("not a checked choice: '" + std::string(name) + "'");
+  return *at;
+}
+
+}  // namespace
+
+std::optional<Eigen::Vector3d> up_direction(std::string_view name) {
+  if (name.empty()) return Eigen::Vector3d::UnitY();
+  if (entry_named(up_directions, name).name == "none") return std::nullopt;  // speeds alone
+  return (name[0] == '-' ? -1.0 : 1.0) * Eigen::Vector3d::Unit(name[1] - 'x');  // "+x" ... "-z"
+}
+
+const Policy_entry& policy_entry(const Policy_choice& choice) {
+  return entry_named(similarity_policies, choice.policy);
+}
+
+std::string alignment_name(const Policy_choice& choice) {
+  return choice.alignment.empty() ? std::string(policy_entry(choice).alignment) : choice.alignment;
+}
+
+similarity::Any_policy make_policy(const Policy_choice& choice) {
+  const Policy_entry& policy = policy_entry(choice);
+  Policy_choice given = choice;
+  if (policy.threshold) given.threshold = choice.threshold.value_or(*policy.threshold);
+  return policy.make(entry_named(similarity_alignments, alignment_name(choice)).alignment, given);
+}
+
+void check(const Policy_choice& choice, Front front) {
+  check_choice("policy", choice.policy, policy_choices, front);
+  if (!choice.alignment.empty()) check_choice("alignment", choice.alignment, alignment_choices, front);
   if (!choice.up.empty()) check_choice("up", choice.up, up_directions, front);
+  const Policy_entry& policy = policy_entry(choice);
   const auto name = [&](const char* parameter) { return spelled(parameter, front); };
-  if (choice.threshold && !similarity::is_graph_policy(choice.policy))
+  if (choice.threshold && !policy.threshold)
     refuse(name("threshold") + " applies to the graph policies only, not to the " + choice.policy + " policy");
-  if (!choice.up.empty() && choice.policy != "motion-signature")
+  if (!choice.up.empty() && !policy.up)
     refuse(name("up") + " applies to the motion-signature policy only, not to the " + choice.policy + " policy");
 }
 
-void check(const Significance_request& r, const similarity::Policy_choice& choice, Front front) {
+void check(const Significance_request& r, const Policy_choice& choice, Front front) {
   const std::string name = spelled("significance", front);
   if (r.significance == 1) refuse(name + " needs 0 (none) or at least 2 shuffled copies");
-  if (r.significance.value_or(0) >= 2 && similarity::is_graph_policy(choice.policy))
+  if (r.significance.value_or(0) >= 2 && policy_entry(choice).key_frames)
     refuse(name + " does not apply to the graph policies, whose frames are key-frame labels");
 }
 
 namespace {
 
-std::size_t shuffled_copies(const similarity::Policy_choice& choice, const Significance_request& significance) {
-  return significance.significance.value_or(similarity::is_graph_policy(choice.policy) ? 0 : 20);
+std::size_t shuffled_copies(const Policy_choice& choice, const Significance_request& significance) {
+  return significance.significance.value_or(policy_entry(choice).key_frames ? 0 : 20);
 }
+
+// Whether `Policy` describes a stream of frames, a few at a time (the motion signatures).
+template <class Policy>
+constexpr bool describes_streams =
+    std::is_same_v<typename Policy::Description, similarity::Motion_signature_description>;
 
 template <class Policy, class Description>
 Compared compare_descriptions(const Policy& policy, const Description& da, const Description& db, std::size_t copies,
@@ -49,26 +90,29 @@ Compared compare_descriptions(const Policy& policy, const Description& da, const
 }  // namespace
 
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
-                 const similarity::Policy_choice& choice, const Significance_request& significance) {
-  return similarity::with_policy_choice(choice, [&](const auto& policy) {
+                 const Policy_choice& choice, const Significance_request& significance) {
+  return similarity::visit_policy(make_policy(choice), [&](const auto& policy) {
     return compare_descriptions(policy, policy.describe(a), policy.describe(b), shuffled_copies(choice, significance),
                                 significance.seed);
   });
 }
 
 std::optional<Compared> compare_streamed(const std::array<std::string, 2>& inputs, const Input_options& options,
-                                         const similarity::Policy_choice& choice,
+                                         const Policy_choice& choice,
                                          const Significance_request& significance, Front front,
                                          std::array<Streamed_input, 2>& streamed) {
-  if (choice.policy != "motion-signature") return std::nullopt;
+  const similarity::Any_policy any = make_policy(choice);
+  const auto streams = [](const auto& policy) { return describes_streams<std::remove_cvref_t<decltype(policy)>>; };
+  if (!similarity::visit_policy(any, streams)) return std::nullopt;
   const std::array<Input_name, 2> names{input_name(inputs[0], options, front), input_name(inputs[1], options, front)};
   for (const Input_name& name : names)
     if (io::is_character_file(name.file) || !reads_frame_by_frame(name.file, options)) return std::nullopt;
-  return similarity::with_policy_choice(choice, [&](const auto& policy) -> std::optional<Compared> {
-    using Description = typename std::remove_cvref_t<decltype(policy)>::Description;
-    if constexpr (!std::is_same_v<Description, similarity::Motion_signature_description>) {
+  return similarity::visit_policy(any, [&](const auto& policy) -> std::optional<Compared> {
+    using Policy = std::remove_cvref_t<decltype(policy)>;
+    if constexpr (!describes_streams<Policy>) {
       return std::nullopt;
     } else {
+      using Description = typename Policy::Description;
       std::array<std::optional<Description>, 2> described;
       for (std::size_t k = 0; k < 2; ++k) {
         const io::Animation_read_options read = animation_read_options(names[k].file, options);
@@ -86,12 +130,12 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
   });
 }
 
-nlohmann::json similarity_record(const Compared& compared, const similarity::Policy_choice& choice) {
+nlohmann::json similarity_record(const Compared& compared, const Policy_choice& choice) {
   const similarity::Similarity& s = compared.similarity;
   nlohmann::json pairs = nlohmann::json::array();
   for (const auto& [i, j] : s.alignment) pairs.push_back({i, j});
   return {{"policy", choice.policy},
-          {"alignment_policy", similarity::alignment_name(choice)},
+          {"alignment_policy", alignment_name(choice)},
           {"similarity", s.value},
           {"score", s.score},
           {"labels_a", s.labels_a},

@@ -1,47 +1,141 @@
 // The motion similarity as a command and a Python function ask for it: a policy and its
-// alignment by name, and the z-score against frame-shuffled copies.
+// alignment by name (the one table of the policies, their rules and defaults, which makes the
+// library's policy types), and the z-score against frame-shuffled copies.
 #pragma once
 
 #include "inputs.h"
 #include "parameters.h"
 
 #include <deformseg/mesh/default_mesh.h>
+#include <deformseg/similarity/any_policy.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/policy_choice.h>
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
 #include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <tuple>
+#include <type_traits>
+#include <variant>
 
 namespace deformseg::frontend {
 
-/// The similarity policies, in the order of `similarity::policy_names`.
+/// A similarity policy as a user chooses it: by name, with the options a user may set (the tool's
+/// --policy, --alignment, --threshold and --up; Python's keywords of the same names); every other
+/// parameter is the policy's default. An aggregate, for designated initializers.
+struct Policy_choice {
+  std::string policy = "motion-signature";  ///< one of `similarity_policies`; default: the first
+  std::string alignment{};                  ///< one of `similarity_alignments`; empty: the policy's own
+  std::optional<double> threshold{};        ///< a graph policy's deformed threshold; none: the policy's own
+  std::string up{};                         ///< one of `up_directions`; empty: +y
+};
+
+/// A similarity policy the front end offers: its name and help, which options apply to it, its
+/// defaults, and the library's policy it makes.
+struct Policy_entry {
+  std::string_view name;
+  std::string_view help;
+  std::string_view alignment;  ///< the alignment's name when none is given
+  /// The deformed threshold when none is given; none: the policy takes no threshold.
+  std::optional<double> threshold = std::nullopt;
+  bool up = false;          ///< whether the policy takes an up direction
+  bool key_frames = false;  ///< whether its frames are key-frame labels, which no shuffle may test
+  /// The policy aligning by `alignment`, with the options of `choice` (its threshold given).
+  similarity::Any_policy (*make)(const similarity::Any_alignment& alignment, const Policy_choice& choice) = nullptr;
+};
+
+/// The up direction a name of `up_directions` gives (+y for an empty name), none for "none".
+/// @pre `name` is empty or one of `up_directions`.
+std::optional<Eigen::Vector3d> up_direction(std::string_view name);
+
+/// `Policy` aligning by `alignment`'s, its options set by `set(policy)`.
+template <template <alignment::AlignmentPolicy> class Policy, class Set>
+similarity::Any_policy aligned_policy(const similarity::Any_alignment& alignment, const Set& set) {
+  return std::visit(
+      [&](const auto& aligner) -> similarity::Any_policy {
+        Policy<std::remove_cvref_t<decltype(aligner)>> policy{};
+        policy.alignment = aligner;
+        set(policy);
+        return policy;
+      },
+      alignment);
+}
+
+/// The similarity policies: the one table of their names, help, rules and defaults, whose names the
+/// tool's --policy and Python's policy= take; the first is the default.
 inline constexpr std::array similarity_policies{
-    Choice{"motion-signature", "per-frame distributions of how fast, and how fast up or down, the surface moves at "
-                               "several time scales, no correspondence needed (default)"},
-    Choice{"histogram", "per-frame histograms of the strain, no correspondence needed; its values crowd near 1 "
-                        "(chapter 7 of the manual gives figures): read the z-score or a rank, not the value"},
-    Choice{"graph", "the thesis' method: evolving graphs, graph edit distances, clustering and label alignment "
-                    "(Smith-Waterman); for bodies that deform alike, as the thesis' animals"},
-    Choice{"self-similarity", "each animation's own frame x frame distances after rigid alignment"},
-    Choice{"graph-characters", "the evolving graphs with settings tuned on game characters (a fixed strain scale, "
-                               "threshold 0.3, parts linked, segments of 6 frames, DTW); not the thesis' method"},
+    Policy_entry{.name = "motion-signature",
+                 .help = "per-frame distributions of how fast, and how fast up or down, the surface moves at "
+                         "several time scales, no correspondence needed (default)",
+                 .alignment = "dtw",
+                 .up = true,
+                 .make = [](const similarity::Any_alignment& alignment, const Policy_choice& choice) {
+                   return aligned_policy<similarity::Motion_signature_similarity>(
+                       alignment, [&](auto& policy) { policy.signatures.up = up_direction(choice.up); });
+                 }},
+    Policy_entry{.name = "histogram",
+                 .help = "per-frame histograms of the strain, no correspondence needed; its values crowd near 1 "
+                         "(chapter 7 of the manual gives figures): read the z-score or a rank, not the value",
+                 .alignment = "smith-waterman",
+                 .make = [](const similarity::Any_alignment& alignment, const Policy_choice&) {
+                   return aligned_policy<similarity::Strain_distribution_similarity>(alignment, [](auto&) {});
+                 }},
+    Policy_entry{.name = "graph",
+                 .help = "the thesis' method: evolving graphs, graph edit distances, clustering and label "
+                         "alignment (Smith-Waterman); for bodies that deform alike, as the thesis' animals",
+                 .alignment = "smith-waterman",
+                 .threshold = 0.5,  // thesis_segmentation()'s
+                 .key_frames = true,
+                 .make = [](const similarity::Any_alignment& alignment, const Policy_choice& choice) {
+                   return aligned_policy<similarity::Graph_similarity>(alignment, [&](auto& policy) {
+                     policy.segmentation = similarity::thesis_segmentation();
+                     policy.segmentation.threshold = *choice.threshold;
+                   });
+                 }},
+    Policy_entry{.name = "self-similarity",
+                 .help = "each animation's own frame x frame distances after rigid alignment",
+                 .alignment = "smith-waterman",
+                 .make = [](const similarity::Any_alignment& alignment, const Policy_choice&) {
+                   return aligned_policy<similarity::Self_similarity_matching>(alignment, [](auto&) {});
+                 }},
+    Policy_entry{.name = "graph-characters",
+                 .help = "the evolving graphs with settings tuned on game characters (a fixed strain scale, "
+                         "threshold 0.3, parts linked, segments of 6 frames, DTW); not the thesis' method",
+                 .alignment = "dtw",
+                 .threshold = 0.3,  // character_segmentation()'s
+                 .key_frames = true,
+                 .make = [](const similarity::Any_alignment& alignment, const Policy_choice& choice) {
+                   return aligned_policy<similarity::Graph_similarity>(alignment, [&](auto& policy) {
+                     policy.segmentation = similarity::character_segmentation();
+                     policy.segmentation.threshold = *choice.threshold;
+                   });
+                 }},
 };
 
-/// The alignments, in the order of `similarity::alignment_names`; none given: the policy's own
-/// (dtw for motion-signature and graph-characters, smith-waterman for the others).
-inline constexpr std::array alignments{
-    Choice{"smith-waterman", "local: the best matching parts"},
-    Choice{"dtw", "global: both whole"},
-    Choice{"subsequence-dtw", "open begin and end"},
+/// An alignment the front end offers: its name, its help and the library's alignment.
+struct Alignment_entry {
+  std::string_view name;
+  std::string_view help;
+  similarity::Any_alignment alignment;
 };
 
-/// The up directions of the motion signatures, in the order of `similarity::up_names`; none
-/// given: +y (glTF's up).
+/// The alignments, whose names the tool's --alignment and Python's alignment= take; none given: the
+/// policy's own (`Policy_entry::alignment`).
+inline constexpr std::array similarity_alignments{
+    Alignment_entry{"smith-waterman", "local: the best matching parts", alignment::Smith_waterman{}},
+    Alignment_entry{"dtw", "global: both whole", alignment::Dtw{}},
+    Alignment_entry{"subsequence-dtw", "open begin and end", alignment::Subsequence_dtw{}},
+};
+
+/// The names and helps of `similarity_policies` and `similarity_alignments`, for their parameters.
+inline constexpr std::array policy_choices = choices_of(similarity_policies);
+inline constexpr std::array alignment_choices = choices_of(similarity_alignments);
+
+/// The up directions of the motion signatures (`up_direction`); none given: +y (glTF's up).
 inline constexpr std::array up_directions{
     Choice{"+x", "x up"},     Choice{"-x", "x down"}, Choice{"+y", "y up (default, glTF's)"}, Choice{"-y", "y down"},
     Choice{"+z", "z up"},     Choice{"-z", "z down"}, Choice{"none", "speeds alone, blind to direction"},
@@ -49,20 +143,33 @@ inline constexpr std::array up_directions{
 
 /// The policy choice's table.
 inline constexpr std::tuple policy_parameters{
-    choice_parameter("policy", &similarity::Policy_choice::policy, "The similarity policy", similarity_policies),
-    choice_parameter("alignment", &similarity::Policy_choice::alignment,
+    choice_parameter("policy", &Policy_choice::policy, "The similarity policy", policy_choices),
+    choice_parameter("alignment", &Policy_choice::alignment,
                      "The alignment of the frames. Default: dtw for motion-signature and graph-characters, "
                      "smith-waterman for the others",
-                     alignments),
-    numeric_parameter("threshold", &similarity::Policy_choice::threshold,
+                     alignment_choices),
+    numeric_parameter("threshold", &Policy_choice::threshold,
                       "graph, graph-characters: the deformed threshold of the segmentation. Default: 0.5 for graph, "
                       "0.3 for graph-characters",
                       shares),
-    choice_parameter("up", &similarity::Policy_choice::up,
+    choice_parameter("up", &Policy_choice::up,
                      "motion-signature: the animations' up axis, whose rises and falls the signatures tell apart. "
                      "Default: +y",
                      up_directions),
 };
+
+/// The entry of `similarity_policies` that `choice` names.
+/// @pre `check(choice, front)` passed; else `std::logic_error`.
+const Policy_entry& policy_entry(const Policy_choice& choice);
+
+/// The name of the alignment of `choice`: its own, or its policy's.
+/// @pre as `policy_entry`.
+std::string alignment_name(const Policy_choice& choice);
+
+/// The library's policy that `choice` names, aligning by its alignment, with its threshold (or the
+/// policy's) and up direction; every other parameter at the library's default.
+/// @pre as `policy_entry`.
+similarity::Any_policy make_policy(const Policy_choice& choice);
 
 /// The significance of a similarity: its z-score against frame-shuffled copies of the second.
 struct Significance_request {
@@ -80,14 +187,15 @@ inline constexpr std::tuple significance_parameters{
                       counts(4294967295.0)),
 };
 
-/// Checks a policy choice's names and combinations before any input is read; the threshold's range
-/// is the table's, refused where the value comes in.
+/// Checks a policy choice's names and combinations before any input is read: the one check of the
+/// names (the tool's options and Python's keywords give its words); the threshold's range is the
+/// table's, refused where the value comes in.
 /// @throws invalid_input naming the parameter as `front` spells it.
-void check(const similarity::Policy_choice& choice, Front front);
+void check(const Policy_choice& choice, Front front);
 
 /// Checks a significance request, for `choice`, before any input is read.
 /// @throws invalid_input naming the parameter as `front` spells it.
-void check(const Significance_request& request, const similarity::Policy_choice& choice, Front front);
+void check(const Significance_request& request, const Policy_choice& choice, Front front);
 
 /// A similarity and its significance.
 struct Compared {
@@ -99,7 +207,7 @@ struct Compared {
 /// How alike `a` and `b` move under `choice` and, for a policy whose frames can be shuffled,
 /// the z-score of the value against shuffled copies of `b` as `significance` asks.
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
-                 const similarity::Policy_choice& choice, const Significance_request& significance);
+                 const Policy_choice& choice, const Significance_request& significance);
 
 /// What reading an input frame by frame found.
 struct Streamed_input {
@@ -116,12 +224,12 @@ struct Streamed_input {
 /// glTF file, a welded input, a point cache without topology, an animation of fewer than 2 frames.
 /// @throws invalid_input naming the file or the frame that cannot be read.
 std::optional<Compared> compare_streamed(const std::array<std::string, 2>& inputs, const Input_options& options,
-                                         const similarity::Policy_choice& choice,
+                                         const Policy_choice& choice,
                                          const Significance_request& significance, Front front,
                                          std::array<Streamed_input, 2>& streamed);
 
 /// A similarity as a report: {"policy", "alignment_policy", "similarity", "score", "labels_a",
 /// "labels_b", "alignment": [[i, j], ...], "compared", "z_score" (or null), "shuffled_copies"}.
-nlohmann::json similarity_record(const Compared& compared, const similarity::Policy_choice& choice);
+nlohmann::json similarity_record(const Compared& compared, const Policy_choice& choice);
 
 }  // namespace deformseg::frontend

@@ -26,6 +26,7 @@
 #include <set>
 #include <span>
 #include <utility>
+#include <variant>
 
 namespace deformseg::frontend {
 
@@ -191,15 +192,13 @@ std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, co
   return once;
 }
 
-similarity::Default_similarity store_policy(const similarity::Policy_choice& choice, Front front) {
+similarity::Default_similarity store_policy(const Policy_choice& choice, Front front) {
   check(choice, front);
-  if (choice.policy != "motion-signature" || similarity::alignment_name(choice) != "dtw")
-    throw invalid_input("a motion store holds the motion signatures aligned by dtw, not " +
-                        spelled("policy", choice.policy, front) + " with " +
-                        spelled("alignment", similarity::alignment_name(choice), front));
-  similarity::Default_similarity policy;
-  policy.signatures.up = similarity::up_direction(choice.up);
-  return policy;
+  const similarity::Any_policy policy = make_policy(choice);
+  if (const auto* signatures = std::get_if<similarity::Default_similarity>(&policy)) return *signatures;
+  throw invalid_input("a motion store holds the motion signatures aligned by dtw, not " +
+                      spelled("policy", choice.policy, front) + " with " +
+                      spelled("alignment", alignment_name(choice), front));
 }
 
 std::size_t signature_width(const similarity::Default_similarity& policy) {
@@ -218,17 +217,15 @@ std::string store_description(const similarity::Default_similarity& policy) {
   return description.dump();
 }
 
-similarity::Policy_choice stored_policy_choice(const store::Motion_store& store) {
+Policy_choice stored_policy_choice(const store::Motion_store& store) {
   const std::string manifest = (store.folder() / "store.json").string();
   const nlohmann::json stored = nlohmann::json::parse(store.description(), nullptr, false);
   if (!stored.is_object() || !stored.contains("up"))
     throw invalid_input("the store's description is not one of motion signatures: " + store.description(),
                         {.file = manifest});
-  similarity::Policy_choice choice;
-  if (stored["up"].is_null()) choice.up = "none";
-  else
-    for (const std::string_view name : similarity::up_names)
-      if (name != "none" && up_json(similarity::up_direction(std::string(name))) == stored["up"]) choice.up = name;
+  Policy_choice choice;
+  for (const Choice& up : up_directions)
+    if (up_json(up_direction(up.name)) == stored["up"]) choice.up = up.name;
   const nlohmann::json expected = nlohmann::json::parse(store_description(store_policy(choice, Front::command_line)));
   for (const auto& [key, value] : expected.items())
     if (!stored.contains(key) || stored[key] != value)

@@ -7,7 +7,6 @@
 #include "similarity.h"
 
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/policy_choice.h>
 #include <deformseg/store/motion_store.h>
 #include <deformseg/store/stored_motions.h>
 
@@ -57,7 +56,7 @@ std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_o
 /// The default policy with the signatures' up direction of `choice` (its policy must be
 /// motion-signature and its alignment dtw: what a store holds).
 /// @throws invalid_input naming the option otherwise.
-similarity::Default_similarity store_policy(const similarity::Policy_choice& choice, Front front);
+similarity::Default_similarity store_policy(const Policy_choice& choice, Front front);
 
 /// The values per row of `policy`'s signatures: lags x quantiles, twice that with an up direction
 /// (the vertical rates' quantiles follow the speeds'); the "width" a store's description records.
@@ -72,7 +71,7 @@ std::string store_description(const similarity::Default_similarity& policy);
 /// the store's clips were.
 /// @throws invalid_input naming the store when its description is not one this front end writes
 /// (another version of deformseg, other options): the message says which member differs.
-similarity::Policy_choice stored_policy_choice(const store::Motion_store& store);
+Policy_choice stored_policy_choice(const store::Motion_store& store);
 
 /// The input options as a store records them: the options that change what is read (fps,
 /// topology, triangulate, weld as it applies to `file`, refuse_defects), as canonical JSON.

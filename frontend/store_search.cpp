@@ -96,7 +96,7 @@ Eigen::MatrixXd Store_search::matrix(std::vector<std::size_t> indices, const Pro
   return similarity::similarity_matrix(Selected_clips{&clips_, std::move(indices)}, policy_, progress, threads);
 }
 
-void Store_search::check_policy(const similarity::Policy_choice& asked, Front front) const {
+void Store_search::check_policy(const Policy_choice& asked, Front front) const {
   const similarity::Default_similarity wanted = store_policy(asked, front);  // motion signatures, DTW
   if (asked.up.empty() || store_description(wanted) == store_description(policy_)) return;
   const std::string where = front == Front::python ? "MotionStore.description"

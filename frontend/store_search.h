@@ -77,7 +77,7 @@ class Store_search {
   /// aligned by DTW (`store_policy`), or an `up` (when `asked` gives one) other than the one its
   /// clips were described with.
   /// @throws invalid_input naming the option as `front` spells it (and the store, for `up`).
-  void check_policy(const similarity::Policy_choice& asked, Front front) const;
+  void check_policy(const Policy_choice& asked, Front front) const;
   /// The store's index of the clip of each row of the labels CSV `labels`, in the rows' order (a
   /// glTF row without a clip takes `read`'s, or the file's only one), each up to date with its
   /// source (`up_to_date`) as read with `read` or, without, with the options it was described with.

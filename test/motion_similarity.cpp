@@ -9,14 +9,16 @@
 
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/io/frame_sequence.h>
-#include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/policy_choice.h>
-#include <deformseg/similarity/self_similarity_matching.h>
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/similarity/any_policy.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/similarity/self_similarity_matching.h>
 
 #include <Eigen/Geometry>
 
 #include <numbers>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 using namespace deformseg;
@@ -283,7 +285,8 @@ TEST_CASE("motion similarity: the thesis' claim, the horse's gallop nearer the e
   const auto [elephant, samba] = horse_against_elephant_and_samba(similarity::Evolving_graph_similarity<>{},
                                                                   "evolving graph (the thesis')");
   CHECK(elephant > samba + 0.5);  // 0.583 and 0.042
-  CHECK(similarity::with_policy_choice({.policy = "graph"}, [&](const auto& policy) {
+  const similarity::Any_policy thesis = similarity::Graph_similarity<alignment::Smith_waterman>{};
+  CHECK(similarity::visit_policy(thesis, [&](const auto& policy) {
           return similarity::motion_similarity(gallops().horse, gallops().elephant, policy).value;
         }) == elephant);
   const auto [by_signatures, samba_by_signatures] =
@@ -344,51 +347,29 @@ TEST_CASE("motion similarity: a motion found whole inside a longer one, by the s
   check(similarity::Evolving_graph_similarity<>{}, "evolving graph (the thesis', Smith-Waterman)");
 }
 
-TEST_CASE("with_policy_choice: each name gives its policy and alignment, and bad choices are refused", "[similarity]") {
+TEST_CASE("Any_policy: visit_policy runs the policy held, with its alignment and options", "[similarity]") {
   const auto a = tube(bend_hold_unbend), b = tube(other_timing, other_tube);
-  const auto value = [&](const similarity::Policy_choice& choice) {
-    return similarity::with_policy_choice(
-        choice, [&](const auto& policy) { return similarity::motion_similarity(a, b, policy).value; });
+  const auto value = [&](const similarity::Any_policy& any) {
+    return similarity::visit_policy(any, [&](const auto& policy) { return similarity::motion_similarity(a, b, policy); })
+        .value;
   };
-  CHECK(value({}) == similarity::motion_similarity(a, b).value);
-  CHECK(value({.policy = "histogram", .alignment = "dtw"}) ==
+  CHECK(value(similarity::Default_similarity{}) == similarity::motion_similarity(a, b).value);
+  CHECK(value(similarity::Strain_distribution_similarity<alignment::Dtw>{}) ==
         similarity::motion_similarity(a, b, similarity::Strain_distribution_similarity<alignment::Dtw>{}).value);
-  CHECK(value({.policy = "self-similarity"}) ==
+  CHECK(value(similarity::Self_similarity_matching<>{}) ==
         similarity::motion_similarity(a, b, similarity::Self_similarity_matching<>{}).value);
   similarity::Evolving_graph_similarity<> graphs;
   graphs.segmentation.threshold = 0.2;
-  CHECK(value({.policy = "graph", .threshold = 0.2}) == similarity::motion_similarity(a, b, graphs).value);
-  CHECK(value({.policy = "graph"}) ==
-        similarity::motion_similarity(a, b, similarity::Evolving_graph_similarity<>{}).value);
-  auto tuned = similarity::character_graph_similarity<alignment::Smith_waterman>();
-  tuned.segmentation.threshold = 0.4;
-  CHECK(value({.policy = "graph-characters", .alignment = "smith-waterman", .threshold = 0.4}) ==
-        similarity::motion_similarity(a, b, tuned).value);
-  CHECK(value({.policy = "graph-characters"}) ==
+  CHECK(value(graphs) == similarity::motion_similarity(a, b, graphs).value);
+  CHECK(value(similarity::character_graph_similarity()) ==
         similarity::motion_similarity(a, b, similarity::character_graph_similarity()).value);
-  similarity::Motion_signature_similarity<alignment::Smith_waterman> speeds;
+  similarity::Motion_signature_similarity<alignment::Subsequence_dtw> speeds;
   speeds.signatures.up = std::nullopt;
-  CHECK(value({.alignment = "smith-waterman", .up = "none"}) == similarity::motion_similarity(a, b, speeds).value);
-  CHECK(similarity::alignment_name({.policy = "graph"}) == "smith-waterman");
-  CHECK(similarity::alignment_name({.policy = "graph-characters"}) == "dtw");
-  CHECK(similarity::alignment_name({.policy = "histogram"}) == "smith-waterman");
-  CHECK(similarity::alignment_name({}) == "dtw");
-
-  CHECK(similarity::up_direction("") == Eigen::Vector3d::UnitY());
-  CHECK(similarity::up_direction("-z") == -Eigen::Vector3d::UnitZ());
-  CHECK(similarity::up_direction("+x") == Eigen::Vector3d::UnitX());
-  CHECK(!similarity::up_direction("none"));
-  CHECK_THROWS_WITH(similarity::up_direction("z"), Catch::Contains("unknown up direction 'z'"));
-  CHECK_THROWS_WITH(similarity::check_policy_choice({.policy = "signatures"}),
-                    Catch::Contains("unknown policy 'signatures'"));
-  CHECK_THROWS_WITH(similarity::check_policy_choice({.alignment = "lcss"}),
-                    Catch::Contains("unknown alignment 'lcss'"));
-  CHECK_THROWS_WITH(similarity::check_policy_choice({.threshold = 0.3}), Catch::Contains("graph policies only"));
-  CHECK_THROWS_WITH(similarity::check_policy_choice({.policy = "graph", .threshold = 1.5}), Catch::Contains("[0, 1]"));
-  CHECK_THROWS_WITH(similarity::check_policy_choice({.policy = "histogram", .up = "+z"}),
-                    Catch::Contains("motion-signature policy only"));
-  bool ran = false;
-  CHECK_THROWS_AS(similarity::with_policy_choice({.policy = "nope"}, [&](const auto&) { return ran = true; }),
-                  invalid_input);
-  CHECK(!ran);
+  CHECK(value(speeds) == similarity::motion_similarity(a, b, speeds).value);
+  // The thesis' graphs and those tuned on characters are one type with other parameters.
+  STATIC_REQUIRE(std::is_same_v<similarity::Evolving_graph_similarity<>,
+                                similarity::Graph_similarity<alignment::Smith_waterman>>);
+  STATIC_REQUIRE(std::is_same_v<decltype(similarity::character_graph_similarity()),
+                                similarity::Graph_similarity<alignment::Dtw>>);
+  STATIC_REQUIRE(std::variant_size_v<similarity::Any_policy> == 12);  // 4 policies x 3 alignments
 }

@@ -28,8 +28,8 @@ pybind11::dict choices() {
   const std::pair<const char*, std::span<const Choice>> tables[] = {
       {"measure", strain_measures},     {"normalize", strain_normalizations},
       {"reference", strain_references}, {"method", temporal_methods},
-      {"metric", frame_metrics},        {"policy", similarity_policies},
-      {"alignment", alignments},        {"up", up_directions},
+      {"metric", frame_metrics},        {"policy", policy_choices},
+      {"alignment", alignment_choices},        {"up", up_directions},
       {"segmentation_reference", segmentation_references},
       {"verify", deformseg::python::store_verifications}};
   pybind11::dict out;

@@ -9,8 +9,8 @@
 
 #include "frontend/similarity.h"
 
+#include <deformseg/similarity/any_policy.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/policy_choice.h>
 
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -32,7 +32,7 @@ namespace {
 
 constexpr auto similarity_table = std::tuple_cat(frontend::policy_parameters, frontend::significance_parameters);
 
-frontend::Compared similarity(const Animation& a, const Animation& b, const similarity::Policy_choice& choice,
+frontend::Compared similarity(const Animation& a, const Animation& b, const frontend::Policy_choice& choice,
                               const frontend::Significance_request& significance) {
   frontend::check(choice, frontend::Front::python);
   frontend::check(significance, choice, frontend::Front::python);
@@ -68,7 +68,7 @@ struct Animation_list {
 };
 
 py::array matrix(const py::object& animations, const std::optional<py::sequence>& database,
-                 const similarity::Policy_choice& choice, const std::optional<py::function>& progress) {
+                 const frontend::Policy_choice& choice, const std::optional<py::function>& progress) {
   if (py::isinstance<Opened_store>(animations)) {  // the store's clips as described: the tool's matrix --store
     if (database) refuse("database: a MotionStore's matrix is of its own clips; search it for other animations");
     return stored_similarity_matrix(animations.cast<const Opened_store&>(), choice, progress_of(progress));
@@ -80,7 +80,7 @@ py::array matrix(const py::object& animations, const std::optional<py::sequence>
   const std::optional<Animation_list> columns =
       database ? std::optional<Animation_list>(std::in_place, *database, "database") : std::nullopt;
   const Progress report = progress_of(progress);
-  Eigen::MatrixXd m = similarity::with_policy_choice(choice, [&](const auto& p) {
+  Eigen::MatrixXd m = similarity::visit_policy(frontend::make_policy(choice), [&](const auto& p) {
     Interruptible_call call;
     return columns ? similarity::similarity_matrix(rows.range(), columns->range(), p, report)
                    : similarity::similarity_matrix(rows.range(), p, report);
@@ -139,7 +139,7 @@ void bind_similarity(py::module_& m) {
                std::to_string(s.similarity.alignment.size()) + " aligned pairs>";
       });
 
-  define_function<similarity_table, Types<const Animation&, const Animation&>, Types<>, similarity::Policy_choice,
+  define_function<similarity_table, Types<const Animation&, const Animation&>, Types<>, frontend::Policy_choice,
                   frontend::Significance_request>(
       m, "similarity",
       R"doc(How alike two animations move (motion_similarity), as the tool's `similarity` command.
@@ -153,7 +153,7 @@ describe, O(Ta Tb) to compare). Releases the GIL.)doc",
       &similarity, std::tuple{py::arg("a"), py::arg("b"), py::kw_only()});
 
   define_function<frontend::policy_parameters, Types<const py::object&, const std::optional<py::sequence>&>,
-                  Types<const std::optional<py::function>&>, similarity::Policy_choice>(
+                  Types<const std::optional<py::function>&>, frontend::Policy_choice>(
       m, "similarity_matrix",
       R"doc(The similarity of every pair of `animations`: an (N, N) float64 array, symmetric, entry (i, j)
 equal to similarity(animations[i], animations[j], ...).value; or, with `database`, the (Q, D)

@@ -79,7 +79,7 @@ std::vector<std::string> input_paths(const py::object& inputs) {
 }
 
 py::dict describe_to_store(const py::object& inputs, const std::filesystem::path& store,
-                           const frontend::Input_options& options, const similarity::Policy_choice& choice, bool hash,
+                           const frontend::Input_options& options, const frontend::Policy_choice& choice, bool hash,
                            bool skip_unreadable) {
   const std::vector<std::string> paths = input_paths(inputs);
   const similarity::Default_similarity policy = frontend::store_policy(choice, frontend::Front::python);
@@ -100,7 +100,7 @@ py::dict describe_to_store(const py::object& inputs, const std::filesystem::path
 // What `describe` of deformseg.distributed hands out: the clips describe_to_store would describe, in
 // its order, named as inputs name them ('FILE' or 'FILE#CLIP'), and those it would skip.
 py::dict describe_plan(const py::object& inputs, const std::filesystem::path& store,
-                       const frontend::Input_options& options, const similarity::Policy_choice& choice, bool hash) {
+                       const frontend::Input_options& options, const frontend::Policy_choice& choice, bool hash) {
   const std::vector<std::string> paths = input_paths(inputs);
   const similarity::Default_similarity policy = frontend::store_policy(choice, frontend::Front::python);
   frontend::check(options, frontend::Front::python);
@@ -379,7 +379,7 @@ py::array matrix_or_tile(const Opened_store& s, const py::object& rows, const py
 
 }  // namespace
 
-py::array stored_similarity_matrix(const Opened_store& store, const similarity::Policy_choice& choice,
+py::array stored_similarity_matrix(const Opened_store& store, const frontend::Policy_choice& choice,
                                    const Progress& progress) {
   store.search.check_policy(choice, frontend::Front::python);
   Eigen::MatrixXd m;
@@ -517,7 +517,7 @@ per clip of Tc rows. Releases the GIL.)doc")
   // deformseg.distributed's halves of describe_to_store: the plan on the client, the merge of the
   // workers' part stores by one writer.
   define_function<describe_table, Types<const py::object&, const std::filesystem::path&>, Types<bool>,
-                  frontend::Input_options, similarity::Policy_choice>(
+                  frontend::Input_options, frontend::Policy_choice>(
       m, "_describe_plan",
       "The clips describe_to_store(inputs, store, ...) would describe, in its order, and those it would skip: "
       "a dict of store, clips (the store's count now), describe and skipped (the clips' names), "
@@ -546,7 +546,7 @@ a store, is of a newer version, is truncated or corrupted, or was described with
 deformseg does not write. Complexity O(clips), or O(bytes) with 'checksums'. Releases the GIL.)doc");
 
   define_function<describe_table, Types<const py::object&, const std::filesystem::path&>, Types<bool, bool>,
-                  frontend::Input_options, similarity::Policy_choice>(
+                  frontend::Input_options, frontend::Policy_choice>(
       m, "describe_to_store",
       R"doc(Describes clips once into the motion store in the folder `store` (made when missing), as the
 tool's `deformseg describe INPUTS --store S`: `inputs` a path or a sequence of paths, each an

@@ -8,7 +8,6 @@
 #include "frontend/store_search.h"
 
 #include <deformseg/evaluation/retrieval_evaluation.h>
-#include <deformseg/similarity/policy_choice.h>
 #include <deformseg/store/motion_store.h>
 
 #include <pybind11/numpy.h>
@@ -34,7 +33,7 @@ struct Opened_store {
 
 // The similarity of every pair of the store's clips, as described (the tool's `matrix --store`):
 // the policy options must be the store's (motion-signature, dtw; `up`, when given, its own).
-pybind11::array stored_similarity_matrix(const Opened_store& store, const similarity::Policy_choice& choice,
+pybind11::array stored_similarity_matrix(const Opened_store& store, const frontend::Policy_choice& choice,
                                          const Progress& progress);
 
 // The retrieval scores of the clips of the labels CSV `labels` as the store holds them (the tool's

@@ -8,7 +8,9 @@ import pytest
 
 from conftest import fails, reads_nothing, succeeds, synth
 
-POLICIES = ["motion-signature", "histogram", "self-similarity", "graph", "graph-characters"]
+# Each policy with the alignment it takes when none is given.
+POLICIES = {"motion-signature": "dtw", "histogram": "smith-waterman", "self-similarity": "smith-waterman",
+            "graph": "smith-waterman", "graph-characters": "dtw"}
 
 
 @pytest.mark.parametrize("policy", POLICIES)
@@ -16,6 +18,7 @@ def test_similarity_self(tool, scratch, synth_obj, policy):
     png = scratch / f"similarity-{policy}.png"
     result = tool("similarity", synth_obj[0], synth_obj[0], "--policy", policy, "--png", png, "--json", "-").json()
     assert result["similarity"] == 1.0 and result["policy"] == policy
+    assert result["alignment_policy"] == POLICIES[policy]
     assert isinstance(result["alignment"], list) and "labels_a" in result
     assert png.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
 
@@ -49,6 +52,15 @@ def test_similarity_graph_policies(tool, synth_obj, bend_once):
     assert thesis["similarity"] != tuned["similarity"]
 
 
+# The graph policies' thresholds when none is given, as --threshold says: 0.5 for the thesis'
+# method, 0.3 for the settings tuned on characters.
+@pytest.mark.parametrize("policy,threshold", [("graph", "0.5"), ("graph-characters", "0.3")])
+def test_similarity_graph_default_threshold(tool, synth_obj, bend_once, policy, threshold):
+    given = tool("similarity", synth_obj[0], bend_once[0], "--policy", policy, "--threshold", threshold, "--json", "-")
+    default = tool("similarity", synth_obj[0], bend_once[0], "--policy", policy, "--json", "-")
+    assert given.json()["similarity"] == default.json()["similarity"]
+
+
 def test_similarity_one_copy(tool, scratch):
     reads_nothing(fails(tool("similarity", scratch / "no-such-a", scratch / "no-such-b", "--significance", "1"),
                         "--significance needs 0 (none) or at least 2"))
@@ -64,7 +76,9 @@ def test_similarity_missing_input(tool, scratch, synth_obj):
 
 
 def test_similarity_unknown_policy(tool):
-    fails(tool("similarity", "a", "b", "--policy", "magic"), "--policy")
+    fails(tool("similarity", "a", "b", "--policy", "magic"),
+          "--policy: must be 'motion-signature', 'histogram', 'graph', 'self-similarity' or 'graph-characters', "
+          "got 'magic'")
 
 
 def test_similarity_threshold_not_graph(tool, scratch):

@@ -1,5 +1,5 @@
 // The similarity policy options that the similarity, matrix and evaluate sub-commands share: the
-// command-line face of deformseg::similarity::Policy_choice, from the front end's table.
+// command-line face of the front end's Policy_choice, from the front end's table.
 #pragma once
 
 #include "parameters.h"
@@ -10,7 +10,7 @@
 
 namespace deformseg::tool {
 
-using Policy_options = similarity::Policy_choice;
+using Policy_options = frontend::Policy_choice;
 
 /// Adds --policy, --alignment, --threshold and --up.
 inline void add_policy_options(CLI::App& command, Policy_options& o) {

@@ -246,7 +246,7 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
   while (true) {
     try {
       report = Matrix_progress{.descriptions = read.animations.size()};
-      return similarity::with_policy_choice(o.policy, [&](const auto& policy) {
+      return similarity::visit_policy(frontend::make_policy(o.policy), [&](const auto& policy) {
         return similarity::similarity_matrix(read.animations, policy, std::ref(report), o.read.threads);
       });
     } catch (const similarity::animation_not_described& e) {
@@ -318,7 +318,7 @@ void run_evaluate(const Evaluate_options& o) {
     }
     document = {{"labels", o.labels},
                 {"policy", o.policy.policy},
-                {"alignment_policy", similarity::alignment_name(o.policy)},
+                {"alignment_policy", frontend::alignment_name(o.policy)},
                 {"fps", o.read.fps},
                 {"inputs", inputs},
                 {"skipped", read.skipped},

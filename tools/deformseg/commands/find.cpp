@@ -50,7 +50,7 @@ void run_find_in_store(const Find_command_options& o) {
                      {"alignment", alignment_json(c.match)}});
   }
   const nlohmann::json document = {{"query", o.inputs[0]},         {"store", o.store},
-                                   {"sources", sources(inputs, o.read)}, {"policy", "motion-signature"},
+                                   {"sources", sources(inputs, o.read)}, {"policy", frontend::Policy_choice{}.policy},
                                    {"values", "descriptions as stored"}, {"matches", found}};
   write_outputs(document, o.json, [&] {
     for (const similarity::Clip_match& c : matches)
@@ -75,7 +75,7 @@ void run_find(const Find_command_options& o) {
     found.push_back({{"first", m.first}, {"last", m.last}, {"similarity", m.value}, {"alignment", alignment_json(m)}});
   const nlohmann::json document = {
       {"query", o.inputs[0]}, {"long", o.inputs[1]}, {"sources", sources(inputs, o.read)},
-      {"policy", "motion-signature"}, {"matches", found}};
+      {"policy", frontend::Policy_choice{}.policy}, {"matches", found}};
   write_outputs(document, o.json, [&] {
     for (const similarity::Motion_match& m : matches)
       std::cout << "frames " << m.first << " to " << m.last << "  similarity " << value_text(m.value) << '\n';

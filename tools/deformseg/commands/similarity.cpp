@@ -45,7 +45,7 @@ void write_alignment_figure(const similarity::Similarity& s, const Similarity_co
       axis->separators.push_back(std::size_t(axis->labels[k].first));
   Matrix_figure figure(
       frames_a, frames_b, cell,
-      "similarity " + value_text(s.value) + " (" + o.policy.policy + ", " + similarity::alignment_name(o.policy) + ")",
+      "similarity " + value_text(s.value) + " (" + o.policy.policy + ", " + frontend::alignment_name(o.policy) + ")",
       rows, columns, std::nullopt);
   for (std::size_t i = 0; i < frames_a; ++i)
     for (std::size_t j = 0; j < frames_b; ++j) figure.fill_cell(i, j, {245, 245, 245});
@@ -121,7 +121,7 @@ void write_heat_map(const Eigen::MatrixXd& m, const Matrix_command_options& o, c
   const double low = std::min(m.minCoeff(), 1.0 - 1e-12);
   std::vector<std::string> names;
   for (const std::string& input : inputs) names.push_back(short_name(input));
-  Matrix_figure figure(n, n, cell, "similarity (" + o.policy.policy + ", " + similarity::alignment_name(o.policy) + ")",
+  Matrix_figure figure(n, n, cell, "similarity (" + o.policy.policy + ", " + frontend::alignment_name(o.policy) + ")",
                        named_axis("", names), named_axis("", names),
                        Color_bar{"similarity", low, 1.0, [](double f) { return color::strain_color(f); }});
   for (std::size_t i = 0; i < n; ++i)
@@ -141,7 +141,7 @@ Eigen::MatrixXd matrix_of(const Matrix_command_options& o, std::vector<std::stri
     names = o.inputs;
     progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
     Matrix_progress report{.descriptions = animations.size()};
-    return similarity::with_policy_choice(o.policy, [&](const auto& policy) {
+    return similarity::visit_policy(frontend::make_policy(o.policy), [&](const auto& policy) {
       return similarity::similarity_matrix(animations, policy, std::ref(report), o.read.threads);
     });
   }
@@ -178,7 +178,7 @@ void run_matrix(const Matrix_command_options& o) {
     for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
   }
   const nlohmann::json document = {{"inputs", names}, {"sources", records}, {"policy", o.policy.policy},
-                                   {"alignment_policy", similarity::alignment_name(o.policy)}, {"similarity", rows}};
+                                   {"alignment_policy", frontend::alignment_name(o.policy)}, {"similarity", rows}};
   write_outputs(document, o.json, [&] {
     for (std::size_t i = 0; i < names.size(); ++i) {
       std::cout << i << "  " << names[i] << "\n  ";
