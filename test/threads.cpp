@@ -169,8 +169,8 @@ TEST_CASE("parallel_for: per-worker locals, and nested loops run on their worker
         if (std::this_thread::get_id() != worker) other_thread = true;
       });
     });
-    // A loop of one thread runs on the calling thread, as any loop: it may start threads below.
-    if (threads > 1) CHECK_FALSE(other_thread.load());
+    // On one thread as on several: the loops below run on their worker (threads = 1 is one thread).
+    CHECK_FALSE(other_thread.load());
     CHECK(workers.size() <= std::size_t(threads));
   }
 }
@@ -242,6 +242,21 @@ TEST_CASE("interruption: an exact graph edit distance search stops between expan
   const auto a = test::random_labelled_graph(random, 20, 1, 0.5), b = test::random_labelled_graph(random, 20, 1, 0.5);
   const Interruption_scope scope([] { return false; });
   CHECK_THROWS_AS(ged::Exact_ged{}(a, b), cancelled);
+}
+
+TEST_CASE("parallel_for: a loop of one index, not asked for one thread, lets the loops below use threads",
+          "[threads]") {
+  std::atomic<bool> elsewhere{false};
+  const auto caller = std::this_thread::get_id();
+  parallel_for(1, 2, [&](std::size_t) {
+    parallel_for(
+        64, 2, [&](std::size_t) {
+          if (std::this_thread::get_id() != caller) elsewhere = true;
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));  // long enough for the second to start
+        },
+        std::size_t{1});
+  });
+  CHECK(elsewhere.load());
 }
 
 TEST_CASE("parallel_for: a loop of cheap steps below its grain runs on the calling thread alone", "[threads]") {

@@ -11,7 +11,8 @@
 /// no setting of the calling thread stands in for it. The threads are made for each call and
 /// joined before it returns (no pool lives between calls, so a process may `fork` after any call),
 /// and a parallel loop started on one of them runs on that thread alone, as nested OpenMP regions
-/// do by default. Results never depend on the number of threads.
+/// do by default; so does a loop inside one asked for one thread, so that `threads = 1` means one
+/// thread for the whole call. Results never depend on the number of threads.
 #pragma once
 
 #include <deformseg/exceptions.h>

@@ -129,10 +129,10 @@ private:
   std::exception_ptr failure_, interruption_;
 };
 
-// Marks the calling thread as a loop's worker while it lives.
+// Marks the calling thread as a loop's worker while it lives (when `marks`).
 class Worker_mark {
 public:
-  Worker_mark() : before_(inside_parallel_loop) { inside_parallel_loop = true; }
+  explicit Worker_mark(bool marks = true) : before_(inside_parallel_loop) { inside_parallel_loop = before_ || marks; }
   ~Worker_mark() { inside_parallel_loop = before_; }
   Worker_mark(const Worker_mark&) = delete;
   Worker_mark& operator=(const Worker_mark&) = delete;
@@ -158,9 +158,12 @@ auto parallel_for_with_locals(std::size_t count, int threads, std::size_t chunk,
                               const Body& body) {
   using Local = std::invoke_result_t<MakeLocal>;
   chunk = std::max<std::size_t>(chunk, 1);
-  const std::size_t workers = count == 0 ? 0 : loop_workers(count, chunk, thread_count(threads));
+  const int asked = thread_count(threads);
+  const std::size_t workers = count == 0 ? 0 : loop_workers(count, chunk, asked);
   std::vector<Local> locals;
   if (workers <= 1) {  // on this thread, in index order: the first exception is the lowest index's
+    // A loop asked for one thread keeps the loops its body starts on it too, as its workers would.
+    const Worker_mark mark(asked == 1);
     locals.push_back(make_local());
     for (std::size_t i = 0; i < count; ++i) {
       body(locals.front(), i);
