@@ -42,4 +42,5 @@ int main() {
         similarity::visit_policy(policy, [&](const auto& p) { return similarity::motion_similarity(a, b, p); });
     std::printf("%-42s %.3f (%zu aligned pairs)\n", name, s.value, s.alignment.size());
   }
+  return 0;
 }

@@ -26,4 +26,5 @@ int main() {
   for (std::size_t v = 0; v < boost::num_vertices(compact); ++v)
     std::printf("  %s: %zu triangles, area %.2f\n", spatiotemporal::node_label(compact[v]).c_str(),
                 compact[v].triangles, compact[v].area);
+  return 0;
 }

@@ -65,4 +65,5 @@ int main() {
   // [reference_mesh]
   std::cout << "against the straight mesh, sigma given " << *against_mesh.sigma() << ", frame 20 triangle " << bent
             << ": " << against_mesh(bent, 20) << '\n';
+  return 0;
 }

@@ -29,4 +29,5 @@ int main() {
   std::cout << compact.num_frames() << " frames; " << animation.memory_bytes() << " bytes as double, "
             << compact.memory_bytes() << " as float\n";
   std::cout << "frame 4, vertex 1: " << compact.frame_matrix(4).col(1).transpose() << '\n';
+  return 0;
 }

@@ -34,4 +34,5 @@ int main() {
   std::cout << "frame 1, vertex 2 (point map): " << get(points_at_1, animation.vertex_descriptors()[2]) << '\n';
   std::cout << "triangle 1: " << animation.triangles()[1][0] << ' ' << animation.triangles()[1][1] << ' '
             << animation.triangles()[1][2] << '\n';
+  return 0;
 }

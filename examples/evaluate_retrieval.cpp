@@ -34,4 +34,5 @@ int main() {
               << q.nearest_similarity << "), first " << query.motion << " at rank "
               << (q.first_relevant_rank ? std::to_string(*q.first_relevant_rank) : "none") << '\n';
   }
+  return 0;
 }

@@ -29,4 +29,5 @@ int main() {
     std::cout << ", " << boost::num_edges(key.graph) << " edge(s)\n";
   }
   std::cout << "frame 15 is in key frame " << graph.key_frame_of(15) << '\n';
+  return 0;
 }

@@ -33,4 +33,5 @@ int main() {
   const similarity::Similarity s = similarity::motion_similarity(a, b, policy);
   std::cout << "one bend against two: " << s.value << " (DTW cost " << s.score << ")\n" << s.compared << '\n';
   std::cout << "one bend against itself: " << similarity::motion_similarity(a, a, policy).value << '\n';
+  return 0;
 }

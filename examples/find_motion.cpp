@@ -29,4 +29,5 @@ int main() {
   for (const similarity::Motion_match& m : similarity::find_motion(query, long_animation, {.count = 3}))
     std::printf("frames %3zu to %3zu of %zu: %.3f (%zu frame pairs)\n", m.first, m.last,
                 long_animation.num_frames(), m.value, m.alignment.size());
+  return 0;
 }

@@ -24,4 +24,5 @@ int main() {
   const temporal::Segment_cost cost(euclidean);
   std::cout << "mean distance " << cost.mean_distance() << "; Ds(0, 9) " << cost(0, 9) << ", Ds(13, 22) "
             << cost(13, 22) << ", Ds(5, 18) " << cost(5, 18) << " (across a transition)\n";
+  return 0;
 }

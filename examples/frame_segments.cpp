@@ -35,4 +35,5 @@ int main() {
   std::cout << "frame 15: " << on_node_0 << " triangles on node 0 (the deformed band)\n";
   std::cout << "the band's colour: " << int(spatiotemporal::segment_color(0).r) << ' ' << int(spatiotemporal::segment_color(0).g) << ' '
             << int(spatiotemporal::segment_color(0).b) << '\n';
+  return 0;
 }

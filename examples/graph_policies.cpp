@@ -47,4 +47,5 @@ int main() {
   print("the characters' segmentation", similarity::character_segmentation());
   compare("the thesis' graph policy (Smith-Waterman)", similarity::Evolving_graph_similarity<>{});
   compare("tuned on game characters (DTW)", similarity::character_graph_similarity());
+  return 0;
 }

@@ -29,4 +29,5 @@ int main() {
               faster.diagonal().mean());
   std::printf("total variation, frame 8: %.4f\n",
               strain::histogram_distance(a.row(8), b.row(8), strain::Histogram_metric::total_variation));
+  return 0;
 }

@@ -30,4 +30,5 @@ int main() {
     std::cout << "phase " << p << ": frames " << tube.phase_frames[p][0] << " to " << tube.phase_frames[p][1]
               << ", angles at its end " << tube.joint_angles[tube.phase_frames[p][1]][0] << ", "
               << tube.joint_angles[tube.phase_frames[p][1]][1] << '\n';
+  return 0;
 }

@@ -65,4 +65,5 @@ int main() {
     std::printf("%-48s %.3f  (z-score %5.1f, %zu frame pairs)\n", c.name, s.value,
                 similarity::similarity_significance(policy, query, described, 20, random), s.alignment.size());
   }
+  return 0;
 }

@@ -47,4 +47,5 @@ int main() {
   std::cout << "standing still against the thin tube, by the shorter: "
             << similarity::motion_similarity(d, a, strain).value
             << ", by the longer: " << similarity::motion_similarity(d, a, by_longer).value << '\n';
+  return 0;
 }

@@ -35,4 +35,5 @@ int main() {
     for (const auto& n : graph[i].neighbours) std::cout << ' ' << n.index;
     std::cout << '\n';
   }
+  return 0;
 }

@@ -54,4 +54,5 @@ int main() {
   const auto b = mesh::make_bending_tube(spec).animation;
   std::cout << "own policy, thin against thick tube: "
             << similarity::motion_similarity(a, b, Deformed_area_similarity{}).value << '\n';
+  return 0;
 }

@@ -50,4 +50,5 @@ int main() {
   print_graph("shared edges only (the thesis)", {.parts = {.contact_distance = 0, .rigid_tolerance = 0}});
   print_graph("parts that touch", {.parts = {.contact_distance = 0.01, .rigid_tolerance = 0}});
   print_graph("and parts that move as one", {});
+  return 0;
 }

@@ -31,4 +31,5 @@ int main() {
   }
   std::cout << strained << " of " << mesh.number_of_faces() << " faces have a normalised strain above 0.1 at frame 8\n";
   std::cout << "face " << most << ": strain " << strain[most] << ", stretched along " << direction[most] << '\n';
+  return 0;
 }

@@ -54,4 +54,5 @@ int main(int argc, char** argv) {
   } catch (const invalid_input& e) {
     std::cout << "error: " << e.what() << "\n  file: " << e.where().file << "\n  message: " << e.message() << '\n';
   }
+  return 0;
 }

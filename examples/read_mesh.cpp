@@ -64,4 +64,5 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << e.what() << '\n';
     return 1;
   }
+  return 0;
 }

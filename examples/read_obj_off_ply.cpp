@@ -48,4 +48,5 @@ int main(int argc, char** argv) {
   build_and_print("tube.obj", io::read_obj("tube.obj"));
   build_and_print("tube.off", io::read_off("tube.off"));
   build_and_print("tube.ply", io::read_ply("tube.ply"));
+  return 0;
 }

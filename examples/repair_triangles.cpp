@@ -64,4 +64,5 @@ int main() {
   } catch (const invalid_input& e) {
     std::cout << "refused: " << e.what() << '\n';
   }
+  return 0;
 }

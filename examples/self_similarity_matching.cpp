@@ -52,4 +52,5 @@ int main() {
     const double z = similarity::self_similarity_significance(policy, query, described, 20, random);
     std::printf("%-50s value %.3f, z %5.1f, %zu frames aligned\n", c.name, s.value, z, s.alignment.size());
   }
+  return 0;
 }

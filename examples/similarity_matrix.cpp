@@ -39,4 +39,5 @@ int main() {
     std::cout << "animation " << e.index() << " not described: " << e.reason() << '\n';
   }
   // [pose]
+  return 0;
 }

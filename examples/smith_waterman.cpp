@@ -31,4 +31,5 @@ int main() {
                  al::Smith_waterman{}.score(4, 5, distance) == close.score
              ? 0
              : 1;
+  return 0;
 }

@@ -31,4 +31,5 @@ int main() {
       animation,
       {.reference = strain::Strain_reference::rest_pose, .min_triangles = 1, .min_frames = 1, .max_island = 0});
   std::cout << "against the rest pose, without clean-up: " << pose.num_segments() << " segments\n";
+  return 0;
 }

@@ -27,4 +27,5 @@ int main() {
   std::size_t not_darkest = 0;
   for (const color::Rgb& c : colors) not_darkest += c == color::strain_colormap.front() ? 0 : 1;
   std::cout << colors.size() << " face colours for frame 6, " << not_darkest << " of them above the colour of 0\n";
+  return 0;
 }

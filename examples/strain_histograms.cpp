@@ -25,4 +25,5 @@ int main() {
       tube, {.strain = {.reference = strain::Strain_reference::rest_pose, .normalization = strain::No_normalization{}},
              .histogram = {.bins = 4, .min_strain = 1e-3}});
   std::printf("against the rest pose, frame 18 (bent): rigid %.3f\n", coarse(18, 0));
+  return 0;
 }

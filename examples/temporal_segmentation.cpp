@@ -57,4 +57,5 @@ int main() {
   // [use]
   std::cout << "frame 30 is in segment " << own.segment_of(30) << ", of cost " << own.segments[own.segment_of(30)].cost
             << '\n';
+  return 0;
 }

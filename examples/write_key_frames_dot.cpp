@@ -36,4 +36,5 @@ int main() {
                          {.face_colors = [&](std::size_t t) { return spatiotemporal::segment_face_colors(frames, t); }});
   // [colors]
   std::cout << files.size() << " coloured meshes in two_joints_segments/\n";
+  return 0;
 }

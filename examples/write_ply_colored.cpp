@@ -29,4 +29,5 @@ int main() {
   io::write_obj(animation, last, "tube.obj");
   std::cout << "frame " << last << ": " << animation.num_vertices() << " vertices, " << animation.num_faces()
             << " triangles, written to tube_colored.ply (binary), tube_colored_ascii.ply and tube.obj\n";
+  return 0;
 }

@@ -39,4 +39,5 @@ int main() {
             << '\n';
   std::cout << ply.size() << " PLY files, " << ply.front().string() << " to " << ply.back().string() << '\n'
             << obj.size() << " OBJ files, " << obj.front().string() << " to " << obj.back().string() << '\n';
+  return 0;
 }

@@ -29,4 +29,5 @@ int main() {
             << "strain.bin: " << std::filesystem::file_size(folder / "strain.bin") << " bytes, header:\n"
             << header.substr(0, header.find_last_not_of(' ') + 1) << '\n';
   std::filesystem::remove_all(folder);
+  return 0;
 }
