@@ -14,10 +14,11 @@ import re
 import sys
 import tempfile
 
-# Bottom to top, as the design draws them: the mesh model; the colour type (under io, whose PLY
-# writer colours faces); io, the formats; descriptors; segmentation; graphs; alignment; similarity
-# and search; the store; evaluation. Each module may include those before it.
-LAYERS = ['mesh', 'color', 'io', 'strain', 'signatures', 'temporal', 'spatiotemporal', 'ged', 'clustering',
+# Bottom to top, as the design draws them, with the colour type, which includes nothing, at the
+# bottom (io's PLY writer colours faces): the mesh model; io, the formats; descriptors;
+# segmentation; graphs; alignment; similarity and search; the store; evaluation. Each module may
+# include those before it.
+LAYERS = ['color', 'mesh', 'io', 'strain', 'signatures', 'temporal', 'spatiotemporal', 'ged', 'clustering',
           'alignment', 'similarity', 'store', 'evaluation']
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*<deformseg/([^>]+)>', re.M)
