@@ -65,6 +65,16 @@ similarity::Any_policy aligned_policy(const similarity::Any_alignment& alignment
       alignment);
 }
 
+/// The evolving-graph policy aligning by `alignment`, segmenting as `segmentation()` with the
+/// threshold of `choice` (given).
+template <spatiotemporal::Spatiotemporal_options (*segmentation)()>
+similarity::Any_policy graph_policy(const similarity::Any_alignment& alignment, const Policy_choice& choice) {
+  return aligned_policy<similarity::Graph_similarity>(alignment, [&](auto& policy) {
+    policy.segmentation = segmentation();
+    policy.segmentation.threshold = *choice.threshold;
+  });
+}
+
 /// The similarity policies: the one table of their names, help, rules and defaults, whose names the
 /// tool's --policy and Python's policy= take; the first is the default.
 inline constexpr std::array similarity_policies{
@@ -90,12 +100,7 @@ inline constexpr std::array similarity_policies{
                  .alignment = "smith-waterman",
                  .threshold = 0.5,  // thesis_segmentation()'s
                  .key_frames = true,
-                 .make = [](const similarity::Any_alignment& alignment, const Policy_choice& choice) {
-                   return aligned_policy<similarity::Graph_similarity>(alignment, [&](auto& policy) {
-                     policy.segmentation = similarity::thesis_segmentation();
-                     policy.segmentation.threshold = *choice.threshold;
-                   });
-                 }},
+                 .make = graph_policy<similarity::thesis_segmentation>},
     Policy_entry{.name = "self-similarity",
                  .help = "each animation's own frame x frame distances after rigid alignment",
                  .alignment = "smith-waterman",
@@ -108,12 +113,7 @@ inline constexpr std::array similarity_policies{
                  .alignment = "dtw",
                  .threshold = 0.3,  // character_segmentation()'s
                  .key_frames = true,
-                 .make = [](const similarity::Any_alignment& alignment, const Policy_choice& choice) {
-                   return aligned_policy<similarity::Graph_similarity>(alignment, [&](auto& policy) {
-                     policy.segmentation = similarity::character_segmentation();
-                     policy.segmentation.threshold = *choice.threshold;
-                   });
-                 }},
+                 .make = graph_policy<similarity::character_segmentation>},
 };
 
 /// An alignment the front end offers: its name, its help and the library's alignment.
