@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <random>
+#include <ranges>
 #include <stdexcept>
 #include <type_traits>
 
@@ -94,6 +95,37 @@ Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh
   return similarity::visit_policy(make_policy(choice), [&](const auto& policy) {
     return compare_descriptions(policy, policy.describe(a), policy.describe(b), shuffled_copies(choice, significance),
                                 significance.seed);
+  });
+}
+
+namespace {
+
+// The animations at `addresses`, as a random-access range of animations.
+auto animations_at(Animation_addresses addresses) {
+  return addresses | std::views::transform([](const mesh::Surface_mesh_animation* animation)
+                                               -> const mesh::Surface_mesh_animation& { return *animation; });
+}
+
+}  // namespace
+
+Eigen::MatrixXd similarity_matrix(Animation_addresses animations, const Policy_choice& choice,
+                                  const Progress& progress, int threads) {
+  return similarity::visit_policy(make_policy(choice), [&](const auto& policy) {
+    return similarity::similarity_matrix(animations_at(animations), policy, progress, threads);
+  });
+}
+
+Eigen::MatrixXd similarity_matrix(std::span<const mesh::Surface_mesh_animation> animations,
+                                  const Policy_choice& choice, const Progress& progress, int threads) {
+  std::vector<const mesh::Surface_mesh_animation*> addresses;
+  for (const mesh::Surface_mesh_animation& animation : animations) addresses.push_back(&animation);
+  return similarity_matrix(addresses, choice, progress, threads);
+}
+
+Eigen::MatrixXd similarity_matrix(Animation_addresses queries, Animation_addresses database,
+                                  const Policy_choice& choice, const Progress& progress, int threads) {
+  return similarity::visit_policy(make_policy(choice), [&](const auto& policy) {
+    return similarity::similarity_matrix(animations_at(queries), animations_at(database), policy, progress, threads);
   });
 }
 

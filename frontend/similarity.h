@@ -9,6 +9,7 @@
 #include <deformseg/mesh/default_mesh.h>
 #include <deformseg/similarity/any_policy.h>
 #include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <tuple>
@@ -208,6 +210,28 @@ struct Compared {
 /// the z-score of the value against shuffled copies of `b` as `significance` asks.
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
                  const Policy_choice& choice, const Significance_request& significance);
+
+/// Animations as the similarity matrices of the front end take them: by address, so that a caller's
+/// animations need not be gathered into one container (Python's list, the tool's clips).
+using Animation_addresses = std::span<const mesh::Surface_mesh_animation* const>;
+
+/// `similarity::similarity_matrix` of every pair of `animations` under `choice`: the policies'
+/// matrices compiled once, here, for the tool and the Python module.
+/// @pre `check(choice, front)` passed, no address is null; `threads` as the library's (0: all).
+/// @throws as `similarity::similarity_matrix` (`animation_not_described`, `cancelled`, ...).
+/// @par Complexity N descriptions and N (N + 1) / 2 comparisons of the policy.
+Eigen::MatrixXd similarity_matrix(Animation_addresses animations, const Policy_choice& choice,
+                                  const Progress& progress = {}, int threads = 0);
+
+/// The all-pairs `similarity_matrix` of animations held in one container.
+Eigen::MatrixXd similarity_matrix(std::span<const mesh::Surface_mesh_animation> animations,
+                                  const Policy_choice& choice, const Progress& progress = {}, int threads = 0);
+
+/// `similarity::similarity_matrix` of `queries` (rows) against `database` (columns) under `choice`.
+/// @pre as the all-pairs `similarity_matrix`.
+/// @par Complexity Q + D descriptions and Q D comparisons of the policy.
+Eigen::MatrixXd similarity_matrix(Animation_addresses queries, Animation_addresses database,
+                                  const Policy_choice& choice, const Progress& progress = {}, int threads = 0);
 
 /// What reading an input frame by frame found.
 struct Streamed_input {

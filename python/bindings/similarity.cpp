@@ -9,8 +9,8 @@
 
 #include "frontend/similarity.h"
 
-#include <deformseg/similarity/any_policy.h>
 #include <deformseg/similarity/motion_similarity.h>
+
 
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -18,8 +18,6 @@
 
 #include <cstddef>
 #include <optional>
-#include <ranges>
-#include <span>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -42,8 +40,8 @@ frontend::Compared similarity(const Animation& a, const Animation& b, const fron
   return frontend::compare(a.mesh, b.mesh, choice, significance);
 }
 
-// The animations of a Python sequence, as a random-access range of references (no copy); the
-// Python objects stay referenced in `held` while the GIL is released.
+// The animations of a Python sequence, by address (no copy); the Python objects stay referenced
+// in `held` while the GIL is released.
 struct Animation_list {
   std::vector<py::object> held;
   std::vector<const mesh::Surface_mesh_animation*> meshes;
@@ -60,31 +58,28 @@ struct Animation_list {
       held.push_back(std::move(item));
     }
   }
-  auto range() const {
-    return meshes |
-           std::views::transform(
-               [](const mesh::Surface_mesh_animation* m) -> const mesh::Surface_mesh_animation& { return *m; });
-  }
 };
 
 py::array matrix(const py::object& animations, const std::optional<py::sequence>& database,
-                 const frontend::Policy_choice& choice, const std::optional<py::function>& progress) {
+                 const frontend::Policy_choice& choice, const std::optional<py::function>& progress, int threads) {
   if (py::isinstance<Opened_store>(animations)) {  // the store's clips as described: the tool's matrix --store
     if (database) refuse("database: a MotionStore's matrix is of its own clips; search it for other animations");
-    return stored_similarity_matrix(animations.cast<const Opened_store&>(), choice, progress_of(progress));
+    return stored_similarity_matrix(animations.cast<const Opened_store&>(), choice, progress_of(progress), threads);
   }
   if (!py::isinstance<py::sequence>(animations))
     throw py::type_error("animations: expected a sequence of Animation or a MotionStore, got " + type_name(animations));
   frontend::check(choice, frontend::Front::python);
+  whole_argument("threads", threads, frontend::thread_counts);
   const Animation_list rows(py::reinterpret_borrow<py::sequence>(animations), "animations");
   const std::optional<Animation_list> columns =
       database ? std::optional<Animation_list>(std::in_place, *database, "database") : std::nullopt;
   const Progress report = progress_of(progress);
-  Eigen::MatrixXd m = similarity::visit_policy(frontend::make_policy(choice), [&](const auto& p) {
+  Eigen::MatrixXd m;
+  {
     Interruptible_call call;
-    return columns ? similarity::similarity_matrix(rows.range(), columns->range(), p, report)
-                   : similarity::similarity_matrix(rows.range(), p, report);
-  });
+    m = columns ? frontend::similarity_matrix(rows.meshes, columns->meshes, choice, report, threads)
+                : frontend::similarity_matrix(rows.meshes, choice, report, threads);
+  }
   const auto r = py::ssize_t(m.rows()), c = py::ssize_t(m.cols()), item = py::ssize_t(sizeof(double));
   return owning(std::move(m), +[](const Eigen::MatrixXd& x) { return x.data(); }, {r, c}, {item, r * item});
 }
@@ -153,12 +148,13 @@ describe, O(Ta Tb) to compare). Releases the GIL.)doc",
       &similarity, std::tuple{py::arg("a"), py::arg("b"), py::kw_only()});
 
   define_function<frontend::policy_parameters, Types<const py::object&, const std::optional<py::sequence>&>,
-                  Types<const std::optional<py::function>&>, frontend::Policy_choice>(
+                  Types<const std::optional<py::function>&, int>, frontend::Policy_choice>(
       m, "similarity_matrix",
       R"doc(The similarity of every pair of `animations`: an (N, N) float64 array, symmetric, entry (i, j)
 equal to similarity(animations[i], animations[j], ...).value; or, with `database`, the (Q, D)
 array of each animation against each of the database. Each animation is described once, then
-pairs are compared in parallel; the result does not depend on the number of threads.
+pairs are compared in parallel on `threads` threads (default 0: all the hardware's, else 1 to the
+library's max_threads); the result does not depend on their number.
 policy, alignment, threshold, up: as `similarity`. progress (default None): called as
 progress(done, total) on the calling thread (with the GIL) as the work advances, N + N (N + 1) / 2
 steps (Q + D + Q D with a database); returning False stops the work and raises SimilarityStopped.
@@ -169,7 +165,7 @@ policy must then be the store's (motion-signature, dtw; `up`, when given, its ow
 InvalidInput naming the store. Complexity N describes and N (N + 1) / 2 compares. Releases the
 GIL.)doc",
       &matrix, std::tuple{py::arg("animations"), py::arg_v("database", py::none()), py::kw_only()},
-      std::tuple{py::arg_v("progress", py::none())});
+      std::tuple{py::arg_v("progress", py::none()), py::arg_v("threads", 0)});
 }
 
 }  // namespace deformseg::python

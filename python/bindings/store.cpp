@@ -380,12 +380,13 @@ py::array matrix_or_tile(const Opened_store& s, const py::object& rows, const py
 }  // namespace
 
 py::array stored_similarity_matrix(const Opened_store& store, const frontend::Policy_choice& choice,
-                                   const Progress& progress) {
+                                   const Progress& progress, int threads) {
   store.search.check_policy(choice, frontend::Front::python);
+  whole_argument("threads", threads, frontend::thread_counts);
   Eigen::MatrixXd m;
   {
     Interruptible_call call;
-    m = store.search.matrix(progress, 0);
+    m = store.search.matrix(progress, threads);
   }
   return array_of(std::move(m));
 }

@@ -32,9 +32,10 @@ struct Opened_store {
 };
 
 // The similarity of every pair of the store's clips, as described (the tool's `matrix --store`):
-// the policy options must be the store's (motion-signature, dtw; `up`, when given, its own).
+// the policy options must be the store's (motion-signature, dtw; `up`, when given, its own); on
+// `threads` threads (checked).
 pybind11::array stored_similarity_matrix(const Opened_store& store, const frontend::Policy_choice& choice,
-                                         const Progress& progress);
+                                         const Progress& progress, int threads);
 
 // The retrieval scores of the clips of the labels CSV `labels` as the store holds them (the tool's
 // `evaluate LABELS --store S`), the items in the rows' order.

@@ -237,6 +237,7 @@ def similarity_matrix(
     threshold: Optional[float] = None,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
     progress: Optional[Callable[[int, int], Optional[bool]]] = None,
+    threads: int = 0,
 ) -> npt.NDArray[np.float64]: ...  # (N, N), or (Q, D) with a database
 
 class MotionMatch:

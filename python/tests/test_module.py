@@ -254,6 +254,17 @@ def test_similarity_matrix_reports_progress_and_stops(grid):
         deformseg.similarity_matrix(animations, progress=failing)
 
 
+def test_similarity_matrix_on_any_number_of_threads_is_the_same(grid):
+    animations = [deformseg.Animation(*grid(3, 4, 8 + k, seed=k)) for k in range(4)]
+    for policy in ("motion-signature", "histogram", "self-similarity"):
+        one = deformseg.similarity_matrix(animations, policy=policy, threads=1)
+        assert np.array_equal(one, deformseg.similarity_matrix(animations, policy=policy, threads=2))
+        assert np.array_equal(one[:2, 1:], deformseg.similarity_matrix(animations[:2], animations[1:],
+                                                                         policy=policy, threads=2))
+    with pytest.raises(deformseg.InvalidInput, match=r"threads must be a whole number in \[0, "):
+        deformseg.similarity_matrix(animations, threads=-1)
+
+
 def test_similarity_matrix_names_a_pose_of_one_frame(grid):
     faces, frames = grid(3, 4, 8)
     animations = [deformseg.Animation(faces, frames), deformseg.Animation(faces, frames[:1])]

@@ -246,9 +246,7 @@ Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Mat
   while (true) {
     try {
       report = Matrix_progress{.descriptions = read.animations.size()};
-      return similarity::visit_policy(frontend::make_policy(o.policy), [&](const auto& policy) {
-        return similarity::similarity_matrix(read.animations, policy, std::ref(report), o.read.threads);
-      });
+      return frontend::similarity_matrix(read.animations, o.policy, std::ref(report), o.read.threads);
     } catch (const similarity::animation_not_described& e) {
       const auto at = std::ptrdiff_t(e.index());
       const evaluation::Labelled_clip& clip = read.clips[e.index()];

@@ -8,7 +8,6 @@
 
 #include <deformseg/color/strain_colors.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/significance.h>
 
 #include <algorithm>
 #include <array>
@@ -16,7 +15,6 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <random>
 
 namespace deformseg::tool {
 namespace {
@@ -141,9 +139,7 @@ Eigen::MatrixXd matrix_of(const Matrix_command_options& o, std::vector<std::stri
     names = o.inputs;
     progress("comparing " + std::to_string(animations.size()) + " animations pair by pair");
     Matrix_progress report{.descriptions = animations.size()};
-    return similarity::visit_policy(frontend::make_policy(o.policy), [&](const auto& policy) {
-      return similarity::similarity_matrix(animations, policy, std::ref(report), o.read.threads);
-    });
+    return frontend::similarity_matrix(animations, o.policy, std::ref(report), o.read.threads);
   }
   const frontend::Store_search library(o.store);
   library.check_policy(o.policy, frontend::Front::command_line);
