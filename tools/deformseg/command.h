@@ -80,6 +80,9 @@ void progress(const std::string& line);
 /// every digit.
 std::string value_text(double value);
 
+/// The seconds from `start` to now, on the steady clock.
+double seconds_since(std::chrono::steady_clock::time_point start);
+
 /// A similarity matrix's progress (a `Progress`) on standard error: a line when its
 /// `descriptions` are all made, with their time, and one about every 5 % of the steps.
 struct Matrix_progress {

@@ -35,12 +35,6 @@ struct Evaluate_options {
   bool per_query = false;
 };
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 std::string fixed(double value, int decimals = 3) {
   char text[32];
   std::snprintf(text, sizeof text, "%.*f", decimals, value);
@@ -287,7 +281,7 @@ Eigen::MatrixXd matrix_of_store(Read_clips& read, const Evaluate_options& o, Mat
 void run_evaluate(const Evaluate_options& o) {
   frontend::check(o.policy, frontend::Front::command_line);
   frontend::check(o.read, frontend::Front::command_line);
-  const auto start = Clock::now();
+  const auto start = std::chrono::steady_clock::now();
   Read_clips read;
   if (o.store.empty()) {
     read = read_clips(evaluation::read_motion_labels(o.labels), o);

@@ -22,10 +22,6 @@
 namespace deformseg::tool {
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 // Values in text as JSON writes them: the shortest decimal that reads back to the same double.
 std::string exact(double value) { return nlohmann::json(value).dump(); }
 
