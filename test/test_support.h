@@ -1,4 +1,5 @@
-// Helpers shared by the tests: the shared real data, a scratch folder, small files.
+// Helpers shared by the tests: the shared real data, a scratch folder, small files, an environment
+// variable set for a scope.
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -87,6 +89,31 @@ inline fs::path unpacked(const std::string& archive) {
   if (already_there) fs::remove_all(mine);
   return target;
 }
+
+/// Sets an environment variable for its lifetime (unsets it for a null value), the value before
+/// restored after.
+class Scoped_variable {
+public:
+  Scoped_variable(const char* name, const char* value) : name_(name) {
+    if (const char* before = std::getenv(name)) before_ = before;
+    if (value)
+      ::setenv(name, value, 1);
+    else
+      ::unsetenv(name);
+  }
+  ~Scoped_variable() {
+    if (before_)
+      ::setenv(name_, before_->c_str(), 1);
+    else
+      ::unsetenv(name_);
+  }
+  Scoped_variable(const Scoped_variable&) = delete;
+  Scoped_variable& operator=(const Scoped_variable&) = delete;
+
+private:
+  const char* name_;
+  std::optional<std::string> before_;
+};
 
 /// A face-vertex index table.
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;

@@ -16,6 +16,7 @@
 #include <deformseg/threads.h>
 
 #include "ged_support.h"
+#include "test_support.h"
 
 #include <catch2/catch.hpp>
 
@@ -25,7 +26,6 @@
 #include <mutex>
 #include <numbers>
 #include <random>
-#include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -37,32 +37,9 @@ using namespace deformseg;
 using deformseg::internal::cheap_steps;
 using deformseg::internal::parallel_for;
 using deformseg::internal::parallel_for_with_locals;
+using deformseg::test::Scoped_variable;
 
 namespace {
-
-// Sets an environment variable for its lifetime, the value before restored after.
-class Scoped_variable {
-public:
-  Scoped_variable(const char* name, const char* value) : name_(name) {
-    if (const char* before = std::getenv(name)) before_ = before;
-    if (value)
-      ::setenv(name, value, 1);
-    else
-      ::unsetenv(name);
-  }
-  ~Scoped_variable() {
-    if (before_)
-      ::setenv(name_, before_->c_str(), 1);
-    else
-      ::unsetenv(name_);
-  }
-  Scoped_variable(const Scoped_variable&) = delete;
-  Scoped_variable& operator=(const Scoped_variable&) = delete;
-
-private:
-  const char* name_;
-  std::optional<std::string> before_;
-};
 
 const std::vector<int> thread_counts{1, 2, 7};
 
