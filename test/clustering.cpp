@@ -5,10 +5,11 @@
 #include <deformseg/threads.h>
 
 #include "clustering_support.h"
+#include "test_support.h"
 
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
+#include <algorithm>
 #include <limits>
 #include <random>
 #include <string>
@@ -25,6 +26,7 @@ using deformseg::clustering::K_medoids;
 using deformseg::clustering::Linkage;
 using deformseg::clustering::silhouette;
 using deformseg::clustering::WeightedClusteringPolicy;
+using deformseg::test::Scoped_variable;
 using deformseg_clustering_test::make_blobs;
 using deformseg_clustering_test::on_a_line;
 
@@ -72,6 +74,13 @@ bool share_label_at_distance_zero(const Eigen::MatrixXd& d, const Clustering& c)
     for (Eigen::Index j = 0; j < d.cols(); ++j)
       if (d(i, j) == 0 && c.labels[std::size_t(i)] != c.labels[std::size_t(j)]) return false;
   return true;
+}
+
+// A policy of the library on `threads` threads, through `cluster` on as many.
+template <class Policy>
+Clustering on_threads(const Eigen::MatrixXd& d, Policy policy, int threads) {
+  policy.threads = threads;
+  return cluster(d, policy, threads);
 }
 
 bool is_canonical(const Clustering& c) {
@@ -240,27 +249,74 @@ TEST_CASE("cluster: a policy of one's own compiles and runs", "[clustering]") {
   CHECK_THROWS_AS(cluster(blobs.distances, Too_few_labels{}), deformseg::invalid_input);
 }
 
-TEST_CASE("cluster: the same result whatever the number of threads", "[clustering]") {
-  const auto blobs = make_blobs({40, 50, 30, 45}, 2, 3.0);  // overlapping blobs: close calls
+TEST_CASE("cluster: the same result on 1, 2 or all threads", "[clustering]") {
+  auto blobs = make_blobs({40, 50, 30, 45}, 2, 3.0);  // overlapping blobs: close calls
   const Eigen::MatrixXd& d = blobs.distances;
-  const auto all = [&] {
-    return std::vector<Clustering>{cluster(d, K_medoids{}), cluster(d, Agglomerative{}),
-                                   cluster(d, Agglomerative{.linkage = Linkage::complete, .clusters = 6}),
-                                   cluster(d, K_means{}), cluster(d, K_means{.clusters = 7, .seed = 9})};
+  // With copies of items, `cluster` hands the policies weighted groups: their other overload.
+  for (std::size_t i = 0; i < 20; ++i) blobs.points.push_back(blobs.points[7 * i]);
+  const Eigen::MatrixXd with_copies = deformseg_clustering_test::euclidean_distances(blobs.points);
+  const auto check = [&](auto policy, const char* name) {
+    for (const Eigen::MatrixXd* m : {&d, &with_copies}) {
+      INFO(name << (m == &d ? "" : ", with copies"));
+      const Clustering one = on_threads(*m, policy, 1);
+      for (const int threads : {2, 0}) {
+        INFO("threads " << threads);
+        const Clustering other = on_threads(*m, policy, threads);
+        CHECK(other.labels == one.labels);
+        CHECK(other.medoids == one.medoids);
+        CHECK(other.silhouette == one.silhouette);  // bit-identical
+        CHECK(other.iterations == one.iterations);
+        CHECK(other.converged == one.converged);
+        CHECK(silhouette(*m, one.labels, threads) == silhouette(*m, one.labels, 1));
+      }
+    }
   };
-  // The clustering policies take no count: they run on `thread_count(0)`, which the environment sets.
-  const auto on = [&](const char* threads) {
-    ::setenv("DEFORMSEG_NUM_THREADS", threads, 1);
-    const std::vector<Clustering> result = all();
-    ::unsetenv("DEFORMSEG_NUM_THREADS");
-    return result;
+  check(K_medoids{}, "K_medoids");
+  check(Agglomerative{}, "Agglomerative");
+  check(Agglomerative{.linkage = Linkage::complete, .clusters = 6}, "Agglomerative, complete, 6 clusters");
+  check(K_means{}, "K_means");
+  check(K_means{.clusters = 7, .seed = 9}, "K_means, 7 clusters");
+}
+
+TEST_CASE("cluster: every loop runs on the count given, none on the environment's", "[clustering]") {
+  const Eigen::MatrixXd d = make_blobs({40, 50, 30, 45}, 2, 3.0).distances;  // loops long enough to share
+  // Only a count of 0 reads the environment, and refuses this value: any loop left on 0 throws.
+  const Scoped_variable unreadable("DEFORMSEG_NUM_THREADS", "many");
+  const auto check = [&](auto policy, const char* name) {
+    INFO(name);
+    for (const int threads : {1, 2}) CHECK_NOTHROW(on_threads(d, policy, threads));
+    const std::string refused = "DEFORMSEG_NUM_THREADS is 'many'";
+    CHECK_THROWS_WITH(on_threads(d, policy, 0), Catch::Contains(refused));
+    policy.threads = 2;
+    CHECK_THROWS_WITH(cluster(d, policy), Catch::Contains(refused));  // cluster's own count
+    policy.threads = 0;
+    CHECK_THROWS_WITH(cluster(d, policy, 2), Catch::Contains(refused));  // the policy's
   };
-  const std::vector<Clustering> one = on("1");
-  const std::vector<Clustering> seven = on("7");
-  for (std::size_t p = 0; p < one.size(); ++p) {
-    INFO("policy " << p);
-    CHECK(one[p].labels == seven[p].labels);
-    CHECK(one[p].medoids == seven[p].medoids);
-    CHECK(one[p].silhouette == seven[p].silhouette);  // bit-identical
+  check(K_medoids{}, "K_medoids");
+  check(Agglomerative{}, "Agglomerative");
+  check(K_means{}, "K_means");
+  std::vector<std::size_t> halves(std::size_t(d.rows()), 0);
+  std::fill(halves.begin() + d.rows() / 2, halves.end(), 1);
+  CHECK_NOTHROW(silhouette(d, halves, 2));
+}
+
+TEST_CASE("cluster and the policies: a thread count out of range is refused before any work", "[clustering]") {
+  Eigen::MatrixXd asymmetric = on_a_line({0, 1, 3});
+  asymmetric(0, 1) = 1.5;  // refused too, but after the count
+  const Grouped_items groups = group_identical_items(on_a_line({0, 1, 3}));
+  for (const int threads : {-1, deformseg::max_threads + 1}) {
+    const auto refused = [&](const std::string& who) {
+      return who + ": threads must be 0 (the default) to " + std::to_string(deformseg::max_threads) + ", not " +
+             std::to_string(threads);
+    };
+    CHECK_THROWS_WITH(K_medoids{.threads = threads}(asymmetric), refused("K_medoids"));
+    CHECK_THROWS_WITH(K_medoids{.threads = threads}(groups), refused("K_medoids"));
+    CHECK_THROWS_WITH(Agglomerative{.threads = threads}(asymmetric), refused("Agglomerative"));
+    CHECK_THROWS_WITH(Agglomerative{.threads = threads}(groups), refused("Agglomerative"));
+    CHECK_THROWS_WITH(K_means{.threads = threads}(asymmetric), refused("K_means"));
+    CHECK_THROWS_WITH(K_means{.threads = threads}(groups), refused("K_means"));
+    CHECK_THROWS_WITH(cluster(asymmetric, K_medoids{}, threads), refused("cluster"));
+    CHECK_THROWS_WITH(cluster(on_a_line({0, 1, 3}), K_means{.threads = threads}), refused("K_means"));
+    CHECK_THROWS_WITH(silhouette(asymmetric, {0, 0, 1}, threads), refused("silhouette"));
   }
 }

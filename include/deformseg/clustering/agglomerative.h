@@ -5,6 +5,7 @@
 
 #include <deformseg/clustering/clustering.h>
 #include <deformseg/exceptions.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
 
@@ -120,6 +121,7 @@ inline Clustering cut(const std::vector<Merge>& merges, std::size_t n, std::size
 /// - `linkage`: default `Linkage::average`.
 /// - `clusters`: default none. `height`: default none. At most one of them.
 /// - `max_clusters`: default 10.
+/// - `threads`: default 0 (all the hardware's threads); the result does not depend on it.
 /// @par Complexity
 /// O(n^2) time for the dendrogram, O(n) per cut, plus O(n^2) per silhouette with k by silhouette;
 /// O(n^2) memory (a copy of the matrix).
@@ -134,17 +136,22 @@ struct Agglomerative {
   std::optional<double> height{};
   /// @brief The largest k tried when neither `clusters` nor `height` is given (>= 2). Default: 10.
   std::size_t max_clusters = 10;
+  /// @brief The threads of the medoids and the silhouettes (the dendrogram is built on the calling
+  /// thread): 0 (default) for all the hardware's threads (`thread_count`), else 1 to
+  /// `max_threads`. The result does not depend on it.
+  int threads = 0;
 
   /// @brief Clusters the items of `distances`.
   /// @param distances an n x n distance matrix (see `check_distance_matrix`).
   /// @return the clustering; labels canonical.
-  /// @throws invalid_input when `distances` is not a distance matrix, both `clusters` and
-  /// `height` are given, `clusters` is 0 or more than n, `height` is negative or not finite, or
-  /// `max_clusters` < 2.
+  /// @throws invalid_input when `threads` is out of range (before any work), `distances` is not
+  /// a distance matrix, both `clusters` and `height` are given, `clusters` is 0 or more than n,
+  /// `height` is negative or not finite, or `max_clusters` < 2.
   Clustering operator()(const Eigen::MatrixXd& distances) const {
+    const int used = thread_count(threads, "Agglomerative");
     check_distance_matrix(distances, "Agglomerative");
     const auto n = std::size_t(distances.rows());
-    return solve(distances, std::vector<double>(n, 1.0), n);
+    return solve(distances, std::vector<double>(n, 1.0), n, used);
   }
 
   /// @brief Clusters weighted groups of items (one label per group), as `cluster` does.
@@ -152,12 +159,14 @@ struct Agglomerative {
   /// @return the clustering of the groups.
   /// @throws invalid_input as the other overload, or when the groups are inconsistent.
   Clustering operator()(const Grouped_items& groups) const {
+    const int used = thread_count(threads, "Agglomerative");
     internal::check_groups(groups, "Agglomerative");
-    return solve(groups.distances, groups.weights, groups.group_of_item.size());
+    return solve(groups.distances, groups.weights, groups.group_of_item.size(), used);
   }
 
 private:
-  Clustering solve(const Eigen::MatrixXd& d, const std::vector<double>& w, std::size_t items) const {
+  // `used`: `threads` as thread_count resolved it.
+  Clustering solve(const Eigen::MatrixXd& d, const std::vector<double>& w, std::size_t items, int used) const {
     if (clusters && height) throw invalid_input("Agglomerative: give clusters or height, not both");
     if (height && !(*height >= 0 && std::isfinite(*height)))
       throw invalid_input("Agglomerative: height " + std::to_string(*height) + " is not a finite number >= 0");
@@ -166,10 +175,10 @@ private:
     if (height) {
       const auto below = std::upper_bound(merges.begin(), merges.end(), *height,
                                           [](double h, const internal::Merge& m) { return h < m.height; });
-      return internal::finish(d, w, internal::cut(merges, n, std::size_t(below - merges.begin())));
+      return internal::finish(d, w, internal::cut(merges, n, std::size_t(below - merges.begin())), used);
     }
     return internal::given_or_best_k(n, items, clusters, max_clusters, "Agglomerative", [&](std::size_t k) {
-      return internal::finish(d, w, internal::cut(merges, n, n - k));
+      return internal::finish(d, w, internal::cut(merges, n, n - k), used);
     });
   }
 };

@@ -7,6 +7,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/internal/random.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
 
@@ -159,15 +160,15 @@ inline std::vector<std::size_t> canonicalize(std::vector<std::size_t>& labels) {
 
 // Mean silhouette of weighted items: item i stands for weights[i] items at distance 0 from one
 // another. labels are 0..k-1. With unit weights, Rousseeuw's silhouette; a cluster of one item
-// scores 0, and one cluster scores 0 overall.
+// scores 0, and one cluster scores 0 overall. Items in parallel on `threads` threads.
 inline double weighted_silhouette(const Eigen::MatrixXd& d, const std::vector<double>& weights,
-                                  const std::vector<std::size_t>& labels, std::size_t clusters) {
+                                  const std::vector<std::size_t>& labels, std::size_t clusters, int threads) {
   const std::size_t n = labels.size();
   if (clusters < 2 || n == 0) return 0.0;
   std::vector<double> size(clusters, 0.0);
   for (std::size_t i = 0; i < n; ++i) size[labels[i]] += weights[i];
   std::vector<double> score(n, 0.0);
-  deformseg::internal::parallel_for(n, 0, [&](std::size_t i) {
+  deformseg::internal::parallel_for(n, threads, [&](std::size_t i) {
     std::vector<double> sum(clusters, 0.0);  // weighted distance from i to each cluster
     for (std::size_t j = 0; j < n; ++j) sum[labels[j]] += weights[j] * d(Eigen::Index(j), Eigen::Index(i));
     const std::size_t own = labels[i];
@@ -189,10 +190,11 @@ inline double weighted_silhouette(const Eigen::MatrixXd& d, const std::vector<do
 
 // The medoid of each cluster: least weighted sum of distances to its cluster, ties to the least item.
 inline std::vector<std::size_t> medoids_of(const Eigen::MatrixXd& d, const std::vector<double>& weights,
-                                           const std::vector<std::size_t>& labels, std::size_t clusters) {
+                                           const std::vector<std::size_t>& labels, std::size_t clusters,
+                                           int threads) {
   const std::size_t n = labels.size();
   std::vector<double> within(n, 0.0);
-  deformseg::internal::parallel_for(n, 0, [&](std::size_t i) {
+  deformseg::internal::parallel_for(n, threads, [&](std::size_t i) {
     for (std::size_t j = 0; j < n; ++j)
       if (labels[j] == labels[i]) within[i] += weights[j] * d(Eigen::Index(j), Eigen::Index(i));
   }, deformseg::internal::cheap_steps);
@@ -205,8 +207,9 @@ inline std::vector<std::size_t> medoids_of(const Eigen::MatrixXd& d, const std::
 }
 
 // A policy's result made canonical: labels renumbered, the policy's medoids kept when they fit
-// (one per label 0..k-1, each in its cluster) or else computed, the silhouette computed.
-inline Clustering finish(const Eigen::MatrixXd& d, const std::vector<double>& weights, Clustering c) {
+// (one per label 0..k-1, each in its cluster) or else computed, the silhouette computed, on
+// `threads` threads.
+inline Clustering finish(const Eigen::MatrixXd& d, const std::vector<double>& weights, Clustering c, int threads) {
   const std::size_t k = distinct_labels(c.labels);
   bool medoids_fit = c.medoids.size() == k;
   for (std::size_t m = 0; medoids_fit && m < k; ++m)
@@ -218,9 +221,9 @@ inline Clustering finish(const Eigen::MatrixXd& d, const std::vector<double>& we
     for (std::size_t m = 0; m < k; ++m) medoids[renumber[m]] = c.medoids[m];
     c.medoids = std::move(medoids);
   } else {
-    c.medoids = medoids_of(d, weights, c.labels, k);
+    c.medoids = medoids_of(d, weights, c.labels, k, threads);
   }
-  c.silhouette = weighted_silhouette(d, weights, c.labels, k);
+  c.silhouette = weighted_silhouette(d, weights, c.labels, k, threads);
   return c;
 }
 
@@ -332,11 +335,15 @@ inline Grouped_items group_identical_items(const Eigen::MatrixXd& distances) {
 /// is 0. The result is the mean of s(i) over the items, in [-1, 1].
 /// @param distances an n x n distance matrix.
 /// @param labels the cluster of each item (any values; they only say which items are together).
+/// @param threads the threads of the items' scores: 0 (default) for all the hardware's threads
+/// (`thread_count`), else 1 to `max_threads`. The result does not depend on it.
 /// @pre `distances` passes `check_distance_matrix`; `labels.size() == n`.
 /// @return the mean silhouette.
-/// @throws invalid_input when a precondition is broken.
+/// @throws invalid_input when a precondition is broken or `threads` is out of range.
 /// @par Complexity O(n^2 + n k) time, O(n + k) extra memory (per thread).
-inline double silhouette(const Eigen::MatrixXd& distances, const std::vector<std::size_t>& labels) {
+inline double silhouette(const Eigen::MatrixXd& distances, const std::vector<std::size_t>& labels,
+                         int threads = 0) {
+  threads = thread_count(threads, "silhouette");
   check_distance_matrix(distances, "silhouette");
   if (labels.size() != std::size_t(distances.rows()))
     throw invalid_input("silhouette: " + std::to_string(labels.size()) + " labels for " +
@@ -344,7 +351,7 @@ inline double silhouette(const Eigen::MatrixXd& distances, const std::vector<std
   std::vector<std::size_t> canonical = labels;
   internal::canonicalize(canonical);
   return internal::weighted_silhouette(distances, std::vector<double>(labels.size(), 1.0), canonical,
-                                       internal::distinct_labels(canonical));
+                                       internal::distinct_labels(canonical), threads);
 }
 
 /// @brief Clusters the items of a distance matrix with `policy`, so that items at distance
@@ -360,13 +367,19 @@ inline double silhouette(const Eigen::MatrixXd& distances, const std::vector<std
 /// groups gives one cluster per group.
 /// @tparam Policy a `ClusteringPolicy`: `K_medoids`, `Agglomerative`, `K_means`, or one's own.
 /// @param distances an n x n distance matrix: symmetric, zero diagonal, non-negative, finite.
-/// @param policy the policy with its options.
+/// @param policy the policy with its options (its threads among them, for `K_medoids`, `K_means`
+/// and `Agglomerative`).
+/// @param threads the threads of `cluster`'s own loops (the medoids and the silhouette): 0
+/// (default) for all the hardware's threads (`thread_count`), else 1 to `max_threads`. The result
+/// does not depend on it.
 /// @return the clustering of the n items.
-/// @throws invalid_input when `distances` is not a distance matrix (naming the entry), when the
-/// policy's options are invalid, or when the policy returns the wrong number of labels.
+/// @throws invalid_input when `threads` is out of range (before any work), when `distances` is
+/// not a distance matrix (naming the entry), when the policy's options are invalid, or when the
+/// policy returns the wrong number of labels.
 /// @par Complexity O(n^2) plus the policy's on the groups.
 template <ClusteringPolicy Policy>
-Clustering cluster(const Eigen::MatrixXd& distances, const Policy& policy) {
+Clustering cluster(const Eigen::MatrixXd& distances, const Policy& policy, int threads = 0) {
+  threads = thread_count(threads, "cluster");
   check_distance_matrix(distances, "cluster");
   const auto n = std::size_t(distances.rows());
   if (internal::zero_distance_groups(distances).first_item.size() == n) {  // no items at distance 0
@@ -374,7 +387,7 @@ Clustering cluster(const Eigen::MatrixXd& distances, const Policy& policy) {
     if (c.labels.size() != n)
       throw invalid_input("cluster: the policy gave " + std::to_string(c.labels.size()) + " labels for " +
                           std::to_string(n) + " items");
-    return internal::finish(distances, std::vector<double>(n, 1.0), std::move(c));
+    return internal::finish(distances, std::vector<double>(n, 1.0), std::move(c), threads);
   }
   const Grouped_items groups = group_identical_items(distances);
   const std::size_t g = groups.weights.size();
@@ -387,12 +400,13 @@ Clustering cluster(const Eigen::MatrixXd& distances, const Policy& policy) {
     throw invalid_input("cluster: the policy gave " + std::to_string(c.labels.size()) + " labels for " +
                         std::to_string(g) + " groups of items at distance 0");
   // Canonical on the groups first, so that the policy's medoids are checked and kept.
-  c = internal::finish(groups.distances, groups.weights, std::move(c));
+  c = internal::finish(groups.distances, groups.weights, std::move(c), threads);
   Clustering result{std::vector<std::size_t>(n), c.clusters, {}, 0.0, c.iterations, c.converged};
   for (std::size_t i = 0; i < n; ++i) result.labels[i] = c.labels[groups.group_of_item[i]];
   for (const std::size_t m : c.medoids) result.medoids.push_back(groups.first_item[m]);
   // Already canonical: groups are numbered by their first item, and their labels are canonical.
-  result.silhouette = internal::weighted_silhouette(distances, std::vector<double>(n, 1.0), result.labels, c.clusters);
+  result.silhouette =
+      internal::weighted_silhouette(distances, std::vector<double>(n, 1.0), result.labels, c.clusters, threads);
   return result;
 }
 

@@ -5,6 +5,7 @@
 
 #include <deformseg/clustering/clustering.h>
 #include <deformseg/exceptions.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
 
@@ -41,10 +42,12 @@ inline Eigen::MatrixXd embedding(const Grouped_items& g, const std::vector<std::
   return x;
 }
 
-// One k-means run on the columns of x: k-means++ seeding, then Lloyd steps.
+// One k-means run on the columns of x: k-means++ seeding, then Lloyd steps, each assigning the
+// points in parallel on `threads` threads.
 class Lloyd {
 public:
-  Lloyd(const Eigen::MatrixXd& x, const std::vector<double>& w) : x_(x), w_(w), n_(std::size_t(x.cols())) {}
+  Lloyd(const Eigen::MatrixXd& x, const std::vector<double>& w, int threads)
+      : x_(x), w_(w), n_(std::size_t(x.cols())), threads_(threads) {}
 
   struct Run {
     std::vector<std::size_t> labels;
@@ -121,7 +124,7 @@ private:
   // Each point to its nearest centre (ties to the least); whether any label changed.
   bool assign(const Eigen::MatrixXd& centres, std::vector<std::size_t>& labels, std::vector<double>& distance) const {
     std::vector<char> changed(n_, 0);
-    deformseg::internal::parallel_for(n_, 0, [&](std::size_t i) {
+    deformseg::internal::parallel_for(n_, threads_, [&](std::size_t i) {
       std::size_t best = 0;
       double least = std::numeric_limits<double>::infinity();
       for (Eigen::Index c = 0; c < centres.cols(); ++c) {
@@ -169,6 +172,7 @@ private:
   const Eigen::MatrixXd& x_;
   const std::vector<double>& w_;
   std::size_t n_;
+  int threads_;
 };
 
 }  // namespace internal
@@ -195,6 +199,7 @@ private:
 /// - `clusters`: k; default none: the k in 2..`max_clusters` of best mean silhouette.
 /// - `max_clusters`: default 10. `prototypes`: default empty (all items).
 /// - `seed`: default 0. `max_iterations`: default 100. `restarts`: default 3.
+/// - `threads`: default 0 (all the hardware's threads); the result does not depend on it.
 /// @par Complexity
 /// O(restarts x (k n p + iterations x k n p)) time for n items and p prototypes (p = n by
 /// default), plus O(n^2) for the silhouette; O(n p) memory; with k by silhouette, that for each k.
@@ -214,19 +219,25 @@ struct K_means {
   std::size_t max_iterations = 100;
   /// @brief The number of seeded runs, the best kept (>= 1). Default: 3.
   std::size_t restarts = 3;
+  /// @brief The threads of the Lloyd steps' assignments, the medoids and the silhouettes: 0
+  /// (default) for all the hardware's threads (`thread_count`), else 1 to `max_threads`. The
+  /// result does not depend on it.
+  int threads = 0;
 
   /// @brief Clusters the items of `distances`.
   /// @param distances an n x n distance matrix (see `check_distance_matrix`).
   /// @return the clustering; labels canonical.
-  /// @throws invalid_input when `distances` is not a distance matrix, `clusters` is 0 or more
-  /// than n, `max_clusters` < 2, `restarts` is 0, or a prototype is not an item.
+  /// @throws invalid_input when `threads` is out of range (before any work), `distances` is not
+  /// a distance matrix, `clusters` is 0 or more than n, `max_clusters` < 2, `restarts` is 0, or a
+  /// prototype is not an item.
   Clustering operator()(const Eigen::MatrixXd& distances) const {
+    const int used = thread_count(threads, "K_means");
     check_distance_matrix(distances, "K_means");
     const auto n = std::size_t(distances.rows());
     Grouped_items items{distances, std::vector<double>(n, 1.0), std::vector<std::size_t>(n), {}};
     std::iota(items.group_of_item.begin(), items.group_of_item.end(), std::size_t{0});
     items.first_item = items.group_of_item;
-    return solve(items);
+    return solve(items, used);
   }
 
   /// @brief Clusters weighted groups of items (one label per group), as `cluster` does;
@@ -235,20 +246,22 @@ struct K_means {
   /// @return the clustering of the groups.
   /// @throws invalid_input as the other overload, or when the groups are inconsistent.
   Clustering operator()(const Grouped_items& groups) const {
+    const int used = thread_count(threads, "K_means");
     internal::check_groups(groups, "K_means");
-    return solve(groups);
+    return solve(groups, used);
   }
 
 private:
-  Clustering solve(const Grouped_items& g) const {
+  // `used`: `threads` as thread_count resolved it.
+  Clustering solve(const Grouped_items& g, int used) const {
     if (restarts == 0) throw invalid_input("K_means: restarts must be at least 1");
     const Eigen::MatrixXd x = internal::embedding(g, prototypes);
-    const internal::Lloyd lloyd(x, g.weights);
+    const internal::Lloyd lloyd(x, g.weights, used);
     return internal::given_or_best_k(g.weights.size(), g.group_of_item.size(), clusters, max_clusters, "K_means",
-                                     [&](std::size_t k) { return best_of_runs(g, lloyd, k); });
+                                     [&](std::size_t k) { return best_of_runs(g, lloyd, k, used); });
   }
 
-  Clustering best_of_runs(const Grouped_items& g, const internal::Lloyd& lloyd, std::size_t k) const {
+  Clustering best_of_runs(const Grouped_items& g, const internal::Lloyd& lloyd, std::size_t k, int used) const {
     Clustering c;
     if (k == 0) return c;
     deformseg::internal::Random_engine random(seed);
@@ -260,7 +273,7 @@ private:
     c.labels = std::move(best.labels);
     c.iterations = best.iterations;
     c.converged = best.converged;
-    return internal::finish(g.distances, g.weights, std::move(c));
+    return internal::finish(g.distances, g.weights, std::move(c), used);
   }
 };
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deformseg/clustering/clustering.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
 
@@ -51,9 +52,10 @@ struct Nearest_medoids {
 };
 
 // BUILD: the medoid of least total distance, then, k - 1 times, the item that lowers the total
-// distance most. Candidates are scanned in `order`, so that ties go to the first in it.
+// distance most. Candidates are scanned in `order`, so that ties go to the first in it. Gains in
+// parallel on `threads` threads.
 inline std::vector<std::size_t> pam_build(const Eigen::MatrixXd& d, const std::vector<double>& w, std::size_t k,
-                                          const std::vector<std::size_t>& order) {
+                                          const std::vector<std::size_t>& order, int threads) {
   const auto n = std::size_t(d.rows());
   std::vector<double> nearest(n, std::numeric_limits<double>::infinity());
   std::vector<char> is_medoid(n, 0);
@@ -61,7 +63,7 @@ inline std::vector<std::size_t> pam_build(const Eigen::MatrixXd& d, const std::v
   std::vector<double> gain(n);
   while (medoids.size() < k) {
     // The gain of j as a medoid (the first one: minus its total distance).
-    deformseg::internal::parallel_for(n, 0, [&](std::size_t j) {
+    deformseg::internal::parallel_for(n, threads, [&](std::size_t j) {
       double g = 0;
       for (std::size_t i = 0; i < n; ++i) {
         const double x = d(Eigen::Index(i), Eigen::Index(j));
@@ -122,6 +124,7 @@ inline Swap best_swap_for(const Eigen::MatrixXd& d, const std::vector<double>& w
 /// - `max_clusters`: default 10.
 /// - `seed`: the order in which ties are broken; default 0. The result is the same for a seed.
 /// - `max_iterations`: the most swaps; default 100.
+/// - `threads`: default 0 (all the hardware's threads); the result does not depend on it.
 /// @par Complexity
 /// O(k n^2) for BUILD and O(n^2 + k n) per swap, O(n + k) memory besides the matrix (per
 /// thread); with k by silhouette, that for each k in 2..max_clusters.
@@ -137,16 +140,21 @@ struct K_medoids {
   std::uint64_t seed = 0;
   /// @brief The most swaps SWAP makes (0: BUILD only). Default: 100.
   std::size_t max_iterations = 100;
+  /// @brief The threads of BUILD's gains, SWAP's candidates and the silhouettes: 0 (default) for
+  /// all the hardware's threads (`thread_count`), else 1 to `max_threads`. The result does not
+  /// depend on it.
+  int threads = 0;
 
   /// @brief Clusters the items of `distances`.
   /// @param distances an n x n distance matrix (see `check_distance_matrix`).
   /// @return the clustering, with its medoids; labels canonical.
-  /// @throws invalid_input when `distances` is not a distance matrix, `clusters` is 0 or more
-  /// than n, or `max_clusters` < 2.
+  /// @throws invalid_input when `threads` is out of range (before any work), `distances` is not
+  /// a distance matrix, `clusters` is 0 or more than n, or `max_clusters` < 2.
   Clustering operator()(const Eigen::MatrixXd& distances) const {
+    const int used = thread_count(threads, "K_medoids");
     check_distance_matrix(distances, "K_medoids");
     const auto n = std::size_t(distances.rows());
-    return solve(distances, std::vector<double>(n, 1.0), n);
+    return solve(distances, std::vector<double>(n, 1.0), n, used);
   }
 
   /// @brief Clusters weighted groups of items (one label per group), as `cluster` does.
@@ -154,28 +162,31 @@ struct K_medoids {
   /// @return the clustering of the groups.
   /// @throws invalid_input as the other overload, or when the groups are inconsistent.
   Clustering operator()(const Grouped_items& groups) const {
+    const int used = thread_count(threads, "K_medoids");
     internal::check_groups(groups, "K_medoids");
-    return solve(groups.distances, groups.weights, groups.group_of_item.size());
+    return solve(groups.distances, groups.weights, groups.group_of_item.size(), used);
   }
 
 private:
-  Clustering solve(const Eigen::MatrixXd& d, const std::vector<double>& w, std::size_t items) const {
-    return internal::given_or_best_k(w.size(), items, clusters, max_clusters, "K_medoids",
-                                     [&](std::size_t k) { return internal::finish(d, w, pam(d, w, k)); });
+  // `used`: `threads` as thread_count resolved it.
+  Clustering solve(const Eigen::MatrixXd& d, const std::vector<double>& w, std::size_t items, int used) const {
+    return internal::given_or_best_k(w.size(), items, clusters, max_clusters, "K_medoids", [&](std::size_t k) {
+      return internal::finish(d, w, pam(d, w, k, used), used);
+    });
   }
 
-  Clustering pam(const Eigen::MatrixXd& d, const std::vector<double>& w, std::size_t k) const {
+  Clustering pam(const Eigen::MatrixXd& d, const std::vector<double>& w, std::size_t k, int used) const {
     const auto n = std::size_t(d.rows());
     Clustering c;
     if (k == 0) return c;
     const std::vector<std::size_t> order = deformseg::internal::shuffled_indices(n, seed);
-    c.medoids = internal::pam_build(d, w, k, order);
+    c.medoids = internal::pam_build(d, w, k, order, used);
     internal::Nearest_medoids near(d, c.medoids);
     std::vector<char> is_medoid(n, 0);
     for (const std::size_t m : c.medoids) is_medoid[m] = 1;
     std::vector<internal::Swap> swaps(n);
     for (;;) {
-      deformseg::internal::parallel_for(n, 0, [&](std::size_t h) {
+      deformseg::internal::parallel_for(n, used, [&](std::size_t h) {
         swaps[h] = is_medoid[h] ? internal::Swap{} : internal::best_swap_for(d, w, near, k, h);
       }, deformseg::internal::cheap_steps);
       std::size_t best = n;
