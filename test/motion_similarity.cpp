@@ -2,7 +2,8 @@
 // rankings the issue asks for on synthetic tubes, on the cat and lion poses and on the gallop's
 // cycles, the matrix. Each ranking runs with the policies and prints their values. All pass them;
 // what the strain and graph policies cannot see (which of two alike joints bends first) is checked
-// as the known limitation it is, and the motion signatures, which see it, are checked to.
+// as the known limitation it is, and the motion signatures, which see it, are checked to. The graph
+// policy gives the same on any number of threads, and its loops take the count it is given.
 #include "similarity_tubes.h"
 #include "test_support.h"
 #include "mesh_types.h"
@@ -327,6 +328,67 @@ TEST_CASE("similarity matrix: symmetric, ones on the diagonal, equal to the pair
   check(similarity::Strain_distribution_similarity<>{});
   check(similarity::Evolving_graph_similarity<>{});
   CHECK(similarity::similarity_matrix(std::vector<mesh::Surface_mesh_animation>{}).size() == 0);
+}
+
+TEST_CASE("evolving graph similarity: the same descriptions and similarity on 1, 2 or all threads", "[similarity]") {
+  const auto a = tube(bend_hold_unbend), b = tube(other_timing, other_tube);
+  const auto check = [&](auto policy, const char* name) {
+    INFO(name);
+    for (const auto labels : {similarity::Label_dissimilarity::mismatch, similarity::Label_dissimilarity::medoids,
+                              similarity::Label_dissimilarity::graphs}) {
+      INFO("labels " << int(labels));
+      policy.labels = labels;
+      policy.threads = 1;
+      const auto da = policy.describe(a), db = policy.describe(b);
+      const similarity::Similarity one = policy.compare(da, db);
+      for (const int threads : {2, 0}) {
+        INFO("threads " << threads);
+        policy.threads = threads;
+        const auto other_a = policy.describe(a), other_b = policy.describe(b);
+        CHECK(other_a.distances == da.distances);  // bit-identical
+        CHECK(other_b.distances == db.distances);
+        const similarity::Similarity other = policy.compare(other_a, other_b);
+        CHECK(other.value == one.value);
+        CHECK(other.score == one.score);
+        CHECK(other.labels_a == one.labels_a);
+        CHECK(other.labels_b == one.labels_b);
+        CHECK(other.alignment == one.alignment);
+      }
+    }
+  };
+  check(similarity::Evolving_graph_similarity<>{}, "the thesis'");
+  check(similarity::character_graph_similarity(), "tuned on characters");
+}
+
+TEST_CASE("evolving graph similarity: its loops run on the counts given, none on the environment's", "[similarity]") {
+  const auto a = tube(bend_hold_unbend), b = tube(other_timing, other_tube);
+  similarity::Evolving_graph_similarity<> policy;
+  policy.segmentation.threads = 1;
+  policy.clustering.threads = 1;
+  // Only a count of 0 reads the environment, and refuses this value: any loop left on 0 throws.
+  const test::Scoped_variable unreadable("DEFORMSEG_NUM_THREADS", "many");
+  policy.threads = 2;
+  const auto da = policy.describe(a), db = policy.describe(b);
+  REQUIRE(da.graphs.size() * db.graphs.size() >= 2);  // compare's pairs shared by 2 threads
+  CHECK_NOTHROW(policy.compare(da, db));
+  policy.threads = 0;
+  CHECK_THROWS_WITH(policy.describe(a), Catch::Contains("DEFORMSEG_NUM_THREADS is 'many'"));
+  CHECK_THROWS_WITH(policy.compare(da, db), Catch::Contains("DEFORMSEG_NUM_THREADS is 'many'"));
+}
+
+TEST_CASE("evolving graph similarity: a thread count out of range is refused before any work", "[similarity]") {
+  const auto a = tube(bend_hold_unbend);
+  similarity::Evolving_graph_similarity<> policy;
+  const auto da = policy.describe(a);
+  policy.segmentation.min_area = 2;  // refused too, but after the count
+  CHECK_THROWS_WITH(policy.describe(a), Catch::Contains("the minimum area share must be in [0, 1]"));
+  for (const int threads : {-1, max_threads + 1}) {
+    policy.threads = threads;
+    const std::string refused = "Evolving_graph_similarity: threads must be 0 (the default) to " +
+                                std::to_string(max_threads) + ", not " + std::to_string(threads);
+    CHECK_THROWS_WITH(policy.describe(a), refused);
+    CHECK_THROWS_WITH(policy.compare(da, da), refused);
+  }
 }
 
 TEST_CASE("motion similarity: a motion found whole inside a longer one, by the shorter or the longer", "[similarity]") {

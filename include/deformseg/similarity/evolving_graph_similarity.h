@@ -16,6 +16,7 @@
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/similarity/segment_costs.h>
 #include <deformseg/similarity/similarity.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
 
@@ -110,6 +111,12 @@ struct Evolving_graph_similarity {
   Alignment alignment{};
   /// @brief How the score becomes the similarity. Default: `Best_score_normalization`.
   Normalization normalization{};
+  /// @brief The threads of the edit distances (`describe`'s `ged::ged_matrix`, `compare`'s pairs
+  /// of A's and B's graphs) and of `clustering::cluster`'s own loops: 0 (default) for all the
+  /// hardware's threads (`thread_count`), else 1 to `max_threads`. The segmentation and the
+  /// clustering take their own (`segmentation.threads`; `clustering.threads` for the library's
+  /// clustering policies). The result does not depend on it.
+  int threads = 0;
 
   /// @brief What is compared of one animation: its evolving graph, its key-frame graphs and their
   /// edit distances among themselves.
@@ -122,21 +129,23 @@ struct Evolving_graph_similarity {
 
   /// @brief The evolving graph of `animation` and the edit distances of its key frames.
   /// @tparam Mesh a `DeformingMesh`.
-  /// @throws invalid_input as `evolving_graph`.
+  /// @throws invalid_input for `threads` out of range (before any work); as `evolving_graph`.
   template <mesh::DeformingMesh Mesh>
   Description describe(const Mesh& animation) const {
+    const int used = thread_count(threads, "Evolving_graph_similarity");
     Description d{spatiotemporal::evolving_graph(animation, segmentation), {}, {}};
     for (const spatiotemporal::Key_frame& k : d.graph)
       d.graphs.push_back(compact_graphs ? spatiotemporal::compact_segment_graph(k.graph) : k.graph);
-    d.distances = ged::ged_matrix(d.graphs, ged, costs);
+    d.distances = ged::ged_matrix(d.graphs, ged, costs, {.threads = used});
     return d;
   }
 
   /// @brief The similarity of two animations from their descriptions.
-  /// @throws invalid_input as the policies do.
+  /// @throws invalid_input for `threads` out of range (before any work); as the policies do.
   Similarity compare(const Description& a, const Description& b) const {
-    const Eigen::MatrixXd distances = joint_distances(a, b);
-    const clustering::Clustering clusters = clustering::cluster(distances, clustering);
+    const int used = thread_count(threads, "Evolving_graph_similarity");
+    const Eigen::MatrixXd distances = joint_distances(a, b, used);
+    const clustering::Clustering clusters = clustering::cluster(distances, clustering, used);
     Similarity result;
     result.labels_a = frame_labels(a.graph, clusters.labels, 0);
     result.labels_b = frame_labels(b.graph, clusters.labels, a.graphs.size());
@@ -163,13 +172,13 @@ struct Evolving_graph_similarity {
 
 private:
   // The edit distances of all key-frame graphs, A's then B's: the two descriptions' own blocks
-  // and the A x B block computed here, pairs in parallel.
-  Eigen::MatrixXd joint_distances(const Description& a, const Description& b) const {
+  // and the A x B block computed here, pairs in parallel on `used` threads.
+  Eigen::MatrixXd joint_distances(const Description& a, const Description& b, int used) const {
     const Eigen::Index na = Eigen::Index(a.graphs.size()), nb = Eigen::Index(b.graphs.size());
     Eigen::MatrixXd d(na + nb, na + nb);
     d.topLeftCorner(na, na) = a.distances;
     d.bottomRightCorner(nb, nb) = b.distances;
-    deformseg::internal::parallel_for(std::size_t(na * nb), 0, [&](std::size_t p) {
+    deformseg::internal::parallel_for(std::size_t(na * nb), used, [&](std::size_t p) {
       const Eigen::Index i = Eigen::Index(p) / nb, j = Eigen::Index(p) % nb;
       d(i, na + j) = d(na + j, i) = ged(a.graphs[std::size_t(i)], b.graphs[std::size_t(j)], costs).distance;
     });
