@@ -35,12 +35,31 @@ inline fs::path environment_path(const char* name, const char* fallback) {
 /// [data] and are not run when it is absent.
 inline fs::path data_dir() { return environment_path("DEFORMSEG_DATA_DIR", "../shared/data"); }
 
-/// A scratch folder of the build tree for files that tests make: below the working directory,
-/// which CTest sets to the test folder of the build tree.
-inline fs::path scratch_dir() {
+/// The scratch folder of the build tree: below the working directory, which CTest sets to the
+/// test folder of the build tree.
+inline fs::path shared_scratch_dir() {
   fs::path dir = fs::absolute("scratch");
   fs::create_directories(dir);
   return dir;
+}
+
+/// This process's folder below the scratch folder, for the files that tests make, removed when the
+/// process ends. CTest runs test cases in parallel processes, and test cases write files of the
+/// same names (a glTF scene that three cases sample): in one folder a case could read a file that
+/// another was writing.
+inline fs::path scratch_dir() {
+  struct Own_folder {
+    pid_t owner = ::getpid();
+    fs::path dir = shared_scratch_dir() / ("process-" + std::to_string(owner));
+    Own_folder() { fs::create_directories(dir); }
+    ~Own_folder() {  // in its process only: a forked child that exits normally leaves it
+      std::error_code ignored;
+      if (::getpid() == owner) fs::remove_all(dir, ignored);
+    }
+  };
+  static const Own_folder own;
+  fs::create_directories(own.dir);  // a test may have removed it
+  return own.dir;
 }
 
 /// A fresh, empty folder below the scratch folder.
@@ -77,7 +96,7 @@ inline std::string at(const fs::path& path, std::size_t line, const std::string&
 /// process's own and renamed into place: a reader never sees a half-unpacked folder, and of two
 /// processes racing, the second one's rename fails and it keeps the first one's.
 inline fs::path unpacked(const std::string& archive) {
-  const fs::path target = scratch_dir() / "data" / fs::path(archive).stem().stem();
+  const fs::path target = shared_scratch_dir() / "data" / fs::path(archive).stem().stem();
   if (fs::exists(target)) return target;
   const fs::path mine = target.string() + ".partial-" + std::to_string(::getpid());
   fs::remove_all(mine);
