@@ -11,7 +11,6 @@
 
 #include <deformseg/similarity/motion_similarity.h>
 
-
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
