@@ -33,6 +33,7 @@ bool in_band(std::size_t i, std::size_t j, std::size_t n, std::size_t m, std::si
 }  // namespace
 
 static_assert(deformseg::alignment::AlignmentPolicy<Dtw>);
+static_assert(deformseg::alignment::ScoreAndLengthPolicy<Dtw>);
 static_assert(!Dtw::higher_is_better);
 
 TEST_CASE("Dtw: a small numeric example worked by hand", "[alignment]") {
@@ -381,4 +382,36 @@ TEST_CASE("A dissimilarity that gives whole rows is read by rows, with the same 
   std::size_t cell_calls = 0, row_calls = 0;
   CHECK_THROWS_WITH(Dtw{}.mean_cost(2, 5, Counted_row_dissimilarity{&bad, &cell_calls, &row_calls}),
                     Catch::Contains("d(1, 3)"));
+}
+
+TEST_CASE("Dtw::score_and_length is align's score and number of pairs, through a byte per cell or in linear "
+          "space, ties included",
+          "[alignment]") {
+  std::mt19937 random(45);
+  for (int trial = 0; trial < 400; ++trial) {
+    std::size_t n = 1 + random() % 13, m = 1 + random() % 13;
+    if (trial % 40 == 5) n = 60 + random() % 7;
+    if (trial % 40 == 6) m = 60 + random() % 7;
+    const Eigen::MatrixXd d = deformseg::alignment_test::random_dissimilarities(n, m, trial, random);
+    const auto dis = deformseg::alignment::matrix_dissimilarity(d);
+    for (const std::optional<std::size_t> window : {std::optional<std::size_t>{}, std::optional<std::size_t>(4)}) {
+      for (const std::size_t budget : {std::size_t(1) << 25, std::size_t(0)}) {  // 0: always in linear space
+        const Dtw dtw{.window = window, .max_trace_bytes = budget};
+        INFO("trial " << trial << ", " << n << " x " << m << ", budget " << budget);
+        Alignment path;
+        try {
+          path = dtw.align(n, m, dis);
+        } catch (const deformseg::invalid_input&) {  // the band does not connect the corners
+          CHECK_THROWS_AS(dtw.score_and_length(n, m, dis), deformseg::invalid_input);
+          continue;
+        }
+        const deformseg::alignment::Score_and_length value = dtw.score_and_length(n, m, dis);
+        CHECK(bits(value.score) == bits(path.score));
+        CHECK(value.length == path.pairs.size());
+      }
+    }
+  }
+  const std::vector<int> empty;
+  const auto none = Dtw{}.score_and_length(0, 0, deformseg::alignment::label_mismatch(empty, empty));
+  CHECK((none.score == 0 && none.length == 0));
 }

@@ -3,7 +3,9 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <string>
@@ -75,6 +77,7 @@ Eigen::MatrixXd mismatch_matrix(const std::string& a, const std::string& b) {
 
 static_assert(deformseg::alignment::AlignmentPolicy<Smith_waterman>);
 static_assert(Smith_waterman::higher_is_better);
+static_assert(deformseg::alignment::ScoreAndLengthPolicy<Smith_waterman>);
 
 TEST_CASE("Smith_waterman: the textbook example, linear gaps", "[alignment]") {
   // Wikipedia's example: match 3, mismatch -3, gap 2. Best: GTT-AC over GTTGAC, 5 * 3 - 2 = 13.
@@ -215,3 +218,35 @@ struct Not_an_alignment_policy {  // no higher_is_better
 }  // namespace
 
 static_assert(!deformseg::alignment::AlignmentPolicy<Not_an_alignment_policy>);
+
+TEST_CASE("Smith_waterman::score_and_length is align's score and number of pairs, linear and affine gaps, ties "
+          "included",
+          "[alignment]") {
+  std::mt19937 random(47);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 600; ++trial) {
+    const std::size_t n = random() % 14, m = random() % 14;
+    Eigen::MatrixXd d(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(m));
+    for (Eigen::Index k = 0; k < d.size(); ++k)  // quantised on most trials: ties everywhere
+      d(k) = trial % 3 == 2 ? unit(random) : 0.5 * double(random() % 3);
+    // Scores on a grid of halves (exact sums, so equal paths tie), or drawn.
+    Smith_waterman p;
+    if (trial % 2 == 0) {
+      p.match = 1;
+      p.mismatch = -0.5 * double(random() % 4);
+      p.gap_open = 0.5 * double(random() % 4);
+      p.gap_extend = trial % 4 == 0 ? p.gap_open : 0.5 * double(random() % (1 + unsigned(2 * p.gap_open)));
+    } else {
+      p.match = 0.5 + unit(random);
+      p.mismatch = p.match - 3 * unit(random);
+      p.gap_open = 2 * unit(random);
+      p.gap_extend = trial % 3 == 0 ? p.gap_open : p.gap_open * unit(random);
+    }
+    const auto dis = deformseg::alignment::matrix_dissimilarity(d);
+    INFO("trial " << trial << ", " << n << " x " << m << ", gaps " << p.gap_open << " / " << p.gap_extend);
+    const Alignment path = p.align(n, m, dis);
+    const deformseg::alignment::Score_and_length value = p.score_and_length(n, m, dis);
+    CHECK(std::bit_cast<std::uint64_t>(value.score) == std::bit_cast<std::uint64_t>(path.score));
+    CHECK(value.length == path.pairs.size());
+  }
+}

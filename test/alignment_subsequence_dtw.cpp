@@ -4,7 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -30,6 +32,7 @@ double brute_force_subsequence(const Eigen::MatrixXd& d) {
 
 static_assert(deformseg::alignment::AlignmentPolicy<Subsequence_dtw>);
 static_assert(!Subsequence_dtw::higher_is_better);
+static_assert(deformseg::alignment::ScoreAndLengthPolicy<Subsequence_dtw>);
 
 TEST_CASE("Subsequence_dtw: a query found inside a longer sequence costs nothing", "[alignment]") {
   const std::vector<int> query{1, 2, 2}, other{5, 1, 2, 3, 1, 2};
@@ -106,4 +109,30 @@ TEST_CASE("Subsequence_dtw: score alone equals align on long sequences", "[align
       CHECK(policy.score(n, m, dis) == policy.align(n, m, dis).score);
     }
   }
+}
+
+TEST_CASE("Subsequence_dtw::score_and_length is align's score and number of pairs, either query, ties included",
+          "[alignment]") {
+  std::mt19937 random(46);
+  for (int trial = 0; trial < 400; ++trial) {
+    std::size_t n = 1 + random() % 13, m = 1 + random() % 13;
+    if (trial % 40 == 5) n = 60 + random() % 7;
+    if (trial % 40 == 6) m = 60 + random() % 7;
+    const Eigen::MatrixXd d = deformseg::alignment_test::random_dissimilarities(n, m, trial, random);
+    const auto dis = deformseg::alignment::matrix_dissimilarity(d);
+    for (const Subsequence_query query : {Subsequence_query::first, Subsequence_query::shorter}) {
+      for (const std::size_t budget : {std::size_t(1) << 25, std::size_t(0)}) {  // 0: always in linear space
+        const Subsequence_dtw policy{.query = query, .max_trace_bytes = budget};
+        INFO("trial " << trial << ", " << n << " x " << m << ", budget " << budget);
+        const Alignment path = policy.align(n, m, dis);
+        const deformseg::alignment::Score_and_length value = policy.score_and_length(n, m, dis);
+        CHECK(std::bit_cast<std::uint64_t>(value.score) == std::bit_cast<std::uint64_t>(path.score));
+        CHECK(value.length == path.pairs.size());
+      }
+    }
+  }
+  const std::vector<int> empty, some{1, 2};
+  CHECK(Subsequence_dtw{}.score_and_length(0, 0, deformseg::alignment::label_mismatch(empty, empty)).length == 0);
+  CHECK_THROWS_AS(Subsequence_dtw{}.score_and_length(0, 2, deformseg::alignment::label_mismatch(empty, some)),
+                  deformseg::invalid_input);
 }

@@ -1,7 +1,7 @@
 /// @file alignment/alignment.h
-/// @brief What an alignment policy returns (`Alignment`), the `AlignmentPolicy` concept, the
-/// dissimilarity adaptors `label_mismatch` and `matrix_dissimilarity`, and `align` for two label
-/// sequences.
+/// @brief What an alignment policy returns (`Alignment`, and `Score_and_length` without the
+/// pairs), the `AlignmentPolicy` and `ScoreAndLengthPolicy` concepts, the dissimilarity
+/// adaptors `label_mismatch` and `matrix_dissimilarity`, and `align` for two label sequences.
 #pragma once
 
 #include <Eigen/Core>
@@ -25,6 +25,22 @@ struct Alignment {
   /// against a gap are omitted. A local alignment gives only its local part (possibly none).
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
 };
+
+/// @brief An alignment's score and its number of pairs, without the pairs: all that
+/// `similarity::Best_score_normalization` reads of an alignment, which a policy can compute in
+/// memory linear in the lengths (`ScoreAndLengthPolicy`) where the pairs need a traceback.
+struct Score_and_length {
+  /// @brief `Alignment::score`, bit for bit.
+  double score = 0;
+  /// @brief The number of aligned pairs, `Alignment::pairs.size()`.
+  std::size_t length = 0;
+};
+
+/// @brief The score and the number of pairs of `alignment`.
+/// @par Complexity O(1).
+inline Score_and_length score_and_length(const Alignment& alignment) {
+  return {alignment.score, alignment.pairs.size()};
+}
 
 /// @brief A pairwise dissimilarity: `d(i, j)` is a `double >= 0`, finite, between element i of
 /// the first sequence and element j of the second; typically in [0, 1] (0 for equal elements).
@@ -70,6 +86,17 @@ concept AlignmentPolicy = std::copy_constructible<P> &&
                             { P::higher_is_better } -> std::convertible_to<bool>;
                             typename std::bool_constant<P::higher_is_better>;
                           };
+
+/// @brief An `AlignmentPolicy` that also gives `align`'s score and number of pairs without the
+/// pairs: for `const P& p`, `p.score_and_length(n, m, d)` returns
+/// `score_and_length(p.align(n, m, d))` exactly (the same score bit for bit, the length of the
+/// path that `align`'s ties choose), in memory linear in one length. The library's three policies
+/// model it; `Motion_signature_similarity` scores the significance's shuffled copies so.
+template <class P>
+concept ScoreAndLengthPolicy =
+    AlignmentPolicy<P> && requires(const P& p, std::size_t n, const internal::Dissimilarity_archetype& d) {
+      { p.score_and_length(n, n, d) } -> std::same_as<Score_and_length>;
+    };
 
 /// @brief The dissimilarity of two label sequences: 0 where the labels are equal, 1 elsewhere.
 /// Refers to the sequences, which must outlive it; made by `label_mismatch`.

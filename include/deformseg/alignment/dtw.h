@@ -1,7 +1,8 @@
 /// @file alignment/dtw.h
 /// @brief `Dtw`: dynamic time warping, the global alignment of two sequences of least total
 /// dissimilarity, with an optional Sakoe–Chiba window, its path in linear space on long
-/// sequences; `Dtw::mean_cost`, the cost and length of its path without the path.
+/// sequences; `Dtw::mean_cost` and `Dtw::score_and_length`, the cost and length of its path
+/// without the path.
 #pragma once
 
 #include <deformseg/alignment/alignment.h>
@@ -176,6 +177,15 @@ double dtw_cost(std::size_t rows, std::size_t cols, const D& d, const Band& band
   return Dtw_pass<false, D>{rows, cols, d, band, ends, nullptr, who}.run().cost;
 }
 
+// dtw_align's score and number of pairs, by the value pass (never abandoned), in O(cols) memory.
+template <class D>
+Score_and_length dtw_score_and_length(std::size_t rows, std::size_t cols, const D& d, const Band& band,
+                                      Dtw_ends ends, const char* who) {
+  const Mean_cost_abandoning never(rows, cols, {});
+  const Dtw_mean_cost value = Dtw_value_pass<D>(rows, cols, d, band, never, ends, who).run();
+  return {value.score, value.length};
+}
+
 }  // namespace internal
 
 /// @brief Alignment policy (models `AlignmentPolicy`): dynamic time warping, the warping path
@@ -291,6 +301,18 @@ struct Dtw {
     const internal::Band band = checked_band(n, m);
     const internal::Mean_cost_abandoning abandoning(n, m, options);
     return internal::Dtw_value_pass<D>(n, m, d, band, abandoning).run();
+  }
+
+  /// @brief The cost of `align(n, m, d)`'s path, bit for bit, and its number of cells, without the
+  /// path (`score_and_length(align(n, m, d))`): all that `similarity::Best_score_normalization`
+  /// reads, one minus the mean dissimilarity along the path. `mean_cost` without abandoning.
+  /// @param n, m, d as `align`.
+  /// @throws invalid_input as `score`.
+  /// @par Complexity as `mean_cost`: O(n m) time (less with a window), O(m) memory.
+  template <Dissimilarity D>
+  Score_and_length score_and_length(std::size_t n, std::size_t m, const D& d) const {
+    const Dtw_mean_cost value = mean_cost(n, m, d);
+    return {value.score, value.length};
   }
 
 private:

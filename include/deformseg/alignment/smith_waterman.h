@@ -35,34 +35,56 @@ struct Sw_scores {
 struct Sw_end {
   double score = 0;
   std::size_t row = 0, col = 0;  // 1-based grid cell where the best alignment ends; 0: none
+  std::size_t pairs = 0;         // the pairs of its traceback, when counted
+};
+
+// Per column, the pairs of the tracebacks from the row above's H and F (the vertical gap state)
+// there, when the pass counts them: h[j], vertical[j] as the pass's h and vertical_gap.
+struct Sw_counts {
+  std::size_t* h = nullptr;
+  std::size_t* vertical = nullptr;
 };
 
 // One row of the grid as the pass walks along it: the scores of its cells against the row
-// above, its running values, its best cell so far.
-template <bool Affine, bool Trace>
+// above, its running values, its best cell so far. With Count, beside each state's score the
+// number of pairs of the traceback from it (the predecessor its trace bits name, one more pair
+// for a diagonal step, none for a fresh start), so that the best cell's is that of align's pairs.
+template <bool Affine, bool Trace, bool Count = false>
 struct Sw_row {
   const double* substitution = nullptr;  // substitution[j - 1]: score of cell j
   Trace_byte* trace = nullptr;           // this row's trace bytes, when Trace
   double diagonal = 0, left = 0, horizontal_gap = -std::numeric_limits<double>::infinity();
   double best = 0;
   std::size_t best_col = 0;
+  std::size_t diagonal_pairs = 0, left_pairs = 0, horizontal_pairs = 0, best_pairs = 0;  // with Count
 
   // Cell j (1-based): h[j] and vertical_gap[j] hold the row above's H and F there, and get this
-  // row's. On ties H prefers, in order: stopping (0), the diagonal, the vertical gap, the
-  // horizontal gap; a gap state prefers opening.
-  void step(std::size_t j, double* h, double* vertical_gap, const Sw_scores& sc) {
+  // row's (counts.h[j], counts.vertical[j] their pairs, with Count). On ties H prefers, in order:
+  // stopping (0), the diagonal, the vertical gap, the horizontal gap; a gap state prefers opening.
+  void step(std::size_t j, double* h, double* vertical_gap, Sw_counts counts, const Sw_scores& sc) {
     const double up = h[j];
     double vertical = up - sc.open, horizontal = left - sc.open;
+    std::size_t up_pairs = 0, vertical_pairs = 0, horizontal_from = 0;
+    if constexpr (Count) {
+      up_pairs = vertical_pairs = counts.h[j];
+      horizontal_from = left_pairs;
+    }
     unsigned gap_bits = 0;
     if constexpr (Affine) {
       const double vertical_extended = vertical_gap[j] - sc.extend;
-      gap_bits |= vertical_extended > vertical ? sw_vertical_extends : 0;
+      const bool vertical_extends = vertical_extended > vertical;
+      gap_bits |= vertical_extends ? sw_vertical_extends : 0;
       vertical = std::max(vertical, vertical_extended);
       vertical_gap[j] = vertical;
       const double horizontal_extended = horizontal_gap - sc.extend;
-      gap_bits |= horizontal_extended > horizontal ? sw_horizontal_extends : 0;
+      const bool horizontal_extends = horizontal_extended > horizontal;
+      gap_bits |= horizontal_extends ? sw_horizontal_extends : 0;
       horizontal = std::max(horizontal, horizontal_extended);
       horizontal_gap = horizontal;
+      if constexpr (Count) {
+        vertical_pairs = counts.vertical[j] = vertical_extends ? counts.vertical[j] : vertical_pairs;
+        horizontal_from = horizontal_pairs = horizontal_extends ? horizontal_pairs : horizontal_from;
+      }
     }
     double v = diagonal + substitution[j - 1];
     const unsigned diagonal_wins = v > 0.0;
@@ -73,20 +95,31 @@ struct Sw_row {
     v = std::max(v, horizontal);
     if constexpr (Trace)
       trace[j - 1] = Trace_byte(diagonal_wins | vertical_wins << 1 | horizontal_wins << 2 | gap_bits);
+    std::size_t pairs = 0;
+    if constexpr (Count) {
+      // The traceback's order: the horizontal gap, else the vertical gap, else the diagonal.
+      pairs = horizontal_wins ? horizontal_from
+              : vertical_wins ? vertical_pairs
+              : diagonal_wins ? diagonal_pairs + 1
+                              : 0;
+      diagonal_pairs = up_pairs;
+      counts.h[j] = left_pairs = pairs;
+    }
     diagonal = up;
     h[j] = left = v;
     if (v > best) {
       best = v;
       best_col = j;
+      if constexpr (Count) best_pairs = pairs;
     }
   }
 };
 
 // K consecutive rows from `first` (1-based), walked together (walk_skewed).
-template <std::size_t K, bool Affine, bool Trace, class D>
+template <std::size_t K, bool Affine, bool Trace, bool Count, class D>
 void sw_rows(std::size_t first, std::size_t cols, const D& d, const Sw_scores sc, double* h, double* vertical_gap,
-             double* substitution, Trace_byte* trace, Sw_end& end) {
-  std::array<Sw_row<Affine, Trace>, K> rows;
+             Sw_counts counts, double* substitution, Trace_byte* trace, Sw_end& end) {
+  std::array<Sw_row<Affine, Trace, Count>, K> rows;
   for_each_index<K>([&](auto k) {
     double* s = substitution + k * cols;
     read_row(d, first + k - 1, 0, cols, s, "Smith_waterman");
@@ -94,25 +127,30 @@ void sw_rows(std::size_t first, std::size_t cols, const D& d, const Sw_scores sc
     rows[k].substitution = s;
     if constexpr (Trace) rows[k].trace = trace + (first + k - 1) * cols;
   });
-  walk_skewed(rows, cols, [&](auto& row, std::size_t, std::size_t j) { row.step(j, h, vertical_gap, sc); });
+  walk_skewed(rows, cols, [&](auto& row, std::size_t, std::size_t j) { row.step(j, h, vertical_gap, counts, sc); });
   for_each_index<K>([&](auto k) {
-    if (rows[k].best > end.score) end = {rows[k].best, first + k, rows[k].best_col};
+    if (rows[k].best > end.score) end = {rows[k].best, first + k, rows[k].best_col, rows[k].best_pairs};
   });
 }
 
 // The whole rows x cols grid, rows outer, `rows_at_once` rows at a time: the best local score and
-// where it ends (the first best cell in row-major order), and the trace bytes when Trace.
-template <bool Affine, bool Trace, class D>
+// where it ends (the first best cell in row-major order), the trace bytes when Trace, the number
+// of its traceback's pairs when Count.
+template <bool Affine, bool Trace, bool Count = false, class D>
 Sw_end sw_pass(std::size_t rows, std::size_t cols, const D& d, const Sw_scores& sc, Trace_byte* trace) {
   require_row_length(cols, "Smith_waterman");
   std::vector<double> h(cols + 1, 0.0), substitution(rows_at_once * cols);
   std::vector<double> vertical_gap(Affine ? cols + 1 : 0, -std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> h_pairs(Count ? cols + 1 : 0, 0), vertical_pairs(Count && Affine ? cols + 1 : 0, 0);
+  const Sw_counts counts{h_pairs.data(), vertical_pairs.data()};
   Sw_end end;
   std::size_t i = 1;
   double* const gap = vertical_gap.data();
   for (; i + rows_at_once <= rows + 1; i += rows_at_once)
-    sw_rows<rows_at_once, Affine, Trace>(i, cols, d, sc, h.data(), gap, substitution.data(), trace, end);
-  for (; i <= rows; ++i) sw_rows<1, Affine, Trace>(i, cols, d, sc, h.data(), gap, substitution.data(), trace, end);
+    sw_rows<rows_at_once, Affine, Trace, Count>(i, cols, d, sc, h.data(), gap, counts, substitution.data(), trace,
+                                                end);
+  for (; i <= rows; ++i)
+    sw_rows<1, Affine, Trace, Count>(i, cols, d, sc, h.data(), gap, counts, substitution.data(), trace, end);
   return end;
 }
 
@@ -209,6 +247,22 @@ struct Smith_waterman {
     }
     return affine() ? internal::sw_pass<true, false>(n, m, d, sc, nullptr).score
                     : internal::sw_pass<false, false>(n, m, d, sc, nullptr).score;
+  }
+
+  /// @brief The score of `align(n, m, d)`, bit for bit, and its number of pairs, without the pairs
+  /// (`score_and_length(align(n, m, d))`): `align`'s pass over the same grid, carrying per cell
+  /// and gap state the number of pairs of the traceback from there, with `align`'s ties.
+  /// `similarity::Best_score_normalization` reads only the score; the count serves a
+  /// normalisation of one's own.
+  /// @param n, m, d as `align`.
+  /// @throws invalid_input as `score`.
+  /// @par Complexity O(n m) time, O(m) memory.
+  template <Dissimilarity D>
+  Score_and_length score_and_length(std::size_t n, std::size_t m, const D& d) const {
+    const internal::Sw_scores sc = checked_scores();
+    const internal::Sw_end end = affine() ? internal::sw_pass<true, false, true>(n, m, d, sc, nullptr)
+                                          : internal::sw_pass<false, false, true>(n, m, d, sc, nullptr);
+    return {end.score, end.pairs};
   }
 
 private:

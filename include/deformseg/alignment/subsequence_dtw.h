@@ -81,6 +81,23 @@ struct Subsequence_dtw {
                               query_is_a ? query_along_cols() : query_along_rows(), "Subsequence_dtw");
   }
 
+  /// @brief The cost of `align(n, m, d)`'s path, bit for bit, and its number of pairs, without the
+  /// path (`score_and_length(align(n, m, d))`): a pass over the same grid as `align` (the query
+  /// along its rows) carrying, per cell, the length of the path the traceback would follow to it,
+  /// with `align`'s ties. What `similarity::Best_score_normalization` reads.
+  /// @param n, m, d as `align`.
+  /// @throws invalid_input as `score`.
+  /// @par Complexity O(n m) time; O(m) memory when the query is A, O(n) when it is B.
+  template <Dissimilarity D>
+  Score_and_length score_and_length(std::size_t n, std::size_t m, const D& d) const {
+    if (check_lengths(n, m)) return {};
+    if (query == Subsequence_query::first || n <= m)
+      return internal::dtw_score_and_length(n, m, d, internal::Band(n, m, {}), query_along_rows(),
+                                            "Subsequence_dtw");
+    return internal::dtw_score_and_length(m, n, internal::Transposed<D>{d}, internal::Band(m, n, {}),
+                                          query_along_rows(), "Subsequence_dtw");
+  }
+
 private:
   // True when both are empty; throws when one is.
   static bool check_lengths(std::size_t n, std::size_t m) {

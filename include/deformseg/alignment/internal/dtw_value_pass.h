@@ -121,16 +121,20 @@ private:
   double threshold_ = 0;
 };
 
-// The value pass over an n x m grid, rows outer, paths from (0, 0) to the far corner: without a
-// band rows_at_once rows at a time (walk_skewed), with one a row at a time over its columns; the
-// abandoning test after every rows_at_once rows and after the last.
+// The value pass over an n x m grid, rows outer, paths from (0, 0) to the far corner, or with the
+// free starts and the end in the last row of `ends` (Subsequence_dtw's query along the rows; not
+// the end in the last column, nor with a band): without a band rows_at_once rows at a time
+// (walk_skewed), with one a row at a time over its columns; the abandoning test (paths to the
+// corner only) after every rows_at_once rows and after the last. A free start is a virtual cell
+// of cost 0 and length 0, as the traceback leaves the grid there.
 template <class D>
 class Dtw_value_pass {
 public:
-  Dtw_value_pass(std::size_t n, std::size_t m, const D& d, const Band& band, const Mean_cost_abandoning& abandoning)
-      : n_(n), m_(m), d_(d), band_(band), abandoning_(abandoning) {
-    require_row_length(m, "Dtw");
-    at_.assign(m + 1, dtw_unreachable);
+  Dtw_value_pass(std::size_t n, std::size_t m, const D& d, const Band& band, const Mean_cost_abandoning& abandoning,
+                 Dtw_ends ends = {}, const char* who = "Dtw")
+      : n_(n), m_(m), d_(d), band_(band), abandoning_(abandoning), ends_(ends), who_(who) {
+    require_row_length(m, who);
+    at_.assign(m + 1, ends.start_on_first_row ? 0.0 : dtw_unreachable);
     at_[0] = 0;  // the virtual cell before (0, 0)
     length_.assign(m + 1, 0);
     cost_.resize(rows_at_once * m);
@@ -149,8 +153,11 @@ public:
       i += step;
       if (i < n_ && i % rows_at_once == 0 && abandons_after(i - 1)) return {0, 0, true, i};
     }
-    if (abandoning_.final_above(at_[m_], length_[m_])) return {0, 0, true, n_};
-    return {at_[m_], length_[m_], false, n_};
+    std::size_t end = m_;  // the corner, or the first least cell of the last row, as Dtw_pass's
+    if (ends_.end != Dtw_ends::End::corner)
+      end = std::size_t(std::min_element(at_.begin() + 1, at_.end()) - at_.begin());
+    if (abandoning_.final_above(at_[end], length_[end])) return {0, 0, true, n_};
+    return {at_[end], length_[end], false, n_};
   }
 
 private:
@@ -163,10 +170,12 @@ private:
   template <std::size_t K>
   void rows_together(std::size_t first) {
     std::array<Dtw_length_row, K> row;
+    const double before_column_0 = ends_.start_on_first_col ? 0.0 : dtw_unreachable;
     for_each_index<K>([&](auto k) {
-      read_row(d_, first + k, 0, m_, cost_.data() + k * m_, "Dtw");
+      read_row(d_, first + k, 0, m_, cost_.data() + k * m_, who_);
       row[k].cost = cost_.data() + k * m_;
-      row[k].diagonal = first + k == 0 ? 0.0 : dtw_unreachable;
+      row[k].diagonal = first + k == 0 ? 0.0 : before_column_0;
+      row[k].left = before_column_0;
     });
     double* at = at_.data();
     std::size_t* length = length_.data();
@@ -176,7 +185,7 @@ private:
   // Row i over its band only; cells outside the band hold dtw_unreachable when read.
   void banded_row(std::size_t i) {
     const std::size_t lo = band_.first(i), hi = band_.last(i);
-    read_row(d_, i, lo, hi - lo + 1, cost_.data() + lo, "Dtw");
+    read_row(d_, i, lo, hi - lo + 1, cost_.data() + lo, who_);
     Dtw_length_row row;
     row.cost = cost_.data();
     row.diagonal = at_[lo];
@@ -189,6 +198,8 @@ private:
   const D& d_;
   const Band& band_;
   const Mean_cost_abandoning& abandoning_;
+  Dtw_ends ends_;
+  const char* who_;
   std::vector<double> at_, cost_;
   std::vector<std::size_t> length_;
 };
