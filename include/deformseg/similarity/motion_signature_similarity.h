@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -95,20 +96,29 @@ inline std::vector<std::pair<std::size_t, std::size_t>> pairs_of_frames(
   return out;
 }
 
+// Dissimilarities kept row by row, each row contiguous: the alignments read them so.
+using Row_major_floats = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
 // The columns of an n x m matrix of valid dissimilarities in the order `order` gives: d(i, t) =
-// matrix(i, order[t]). Refers to both.
+// matrix(i, order[t]). Refers to both. A row is gathered from the matrix's row i, contiguous, so
+// that the shuffled reads stay within one row's cache lines.
 struct Reordered_columns {
-  const Eigen::MatrixXf& matrix;
+  const Row_major_floats& matrix;
   std::span<const std::size_t> order;
   static constexpr bool values_are_valid = true;
   double operator()(std::size_t i, std::size_t t) const { return matrix(Eigen::Index(i), Eigen::Index(order[t])); }
+  void row(std::size_t i, std::size_t first, std::size_t count, double* out) const {
+    const float* row = matrix.data() + i * std::size_t(matrix.cols());
+    for (std::size_t k = 0; k < count; ++k) out[k] = row[order[first + k]];
+  }
 };
 
 // Every value of `d` as a matrix of Scalar: double, or float, which holds the kernel's values (float
-// computations) exactly in half the memory.
-template <class Scalar>
-Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> dissimilarity_matrix(const Motion_signature_dissimilarity& d) {
-  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> out(Eigen::Index(d.rows()), Eigen::Index(d.cols()));
+// computations) exactly in half the memory; column-major, or row-major with Options.
+template <class Scalar, int Options = Eigen::ColMajor>
+Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Options> dissimilarity_matrix(
+    const Motion_signature_dissimilarity& d) {
+  Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Options> out(Eigen::Index(d.rows()), Eigen::Index(d.cols()));
   std::vector<double> row(d.cols());
   for (std::size_t i = 0; i < d.rows(); ++i) {
     d.row(i, 0, d.cols(), row.data());
@@ -119,21 +129,32 @@ Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> dissimilarity_matrix(const
 
 // What Motion_signature_similarity::reordering_comparison returns: the frame dissimilarities of
 // a and b computed once, and the alignment and normalization to score b's reorderings with.
+// Normalises the alignment's score and length alone when the policy gives them and the
+// normalization takes them (Dtw, Subsequence_dtw, Smith_waterman with Best_score_normalization):
+// no path, linear memory, the same value bit for bit; otherwise the whole alignment.
 template <class Alignment, class Normalization>
 class Reordering_comparison {
 public:
-  Reordering_comparison(Eigen::MatrixXf d, const Alignment& alignment, const Normalization& normalization)
+  Reordering_comparison(Row_major_floats d, const Alignment& alignment, const Normalization& normalization)
       : d_(std::move(d)), alignment_(alignment), normalization_(normalization) {}
 
-  // The value of a against b with its rows in the order `order`.
+  // The value of a against b with its rows in the order `order`. Safe to call from several threads.
   double operator()(std::span<const std::size_t> order) const {
     const std::size_t n = std::size_t(d_.rows()), m = std::size_t(d_.cols());
-    const alignment::Alignment aligned = alignment_.align(n, m, Reordered_columns{d_, order});
-    return normalization_(alignment_, aligned, n, m);
+    const Reordered_columns d{d_, order};
+    if constexpr (without_path)
+      return normalization_(alignment_, alignment_.score_and_length(n, m, d), n, m);
+    else
+      return normalization_(alignment_, alignment_.align(n, m, d), n, m);
   }
 
 private:
-  Eigen::MatrixXf d_;
+  static constexpr bool without_path =
+      alignment::ScoreAndLengthPolicy<Alignment> &&
+      std::is_invocable_r_v<double, const Normalization&, const Alignment&, const alignment::Score_and_length&,
+                            std::size_t, std::size_t>;
+
+  Row_major_floats d_;
   Alignment alignment_;
   Normalization normalization_;
 };
@@ -296,13 +317,18 @@ struct Motion_signature_similarity {
   /// `compare(a, reordered_frames(b, order)).value` bit for bit, which computes the `Ra x Rb`
   /// frame dissimilarities once, here, and for each order only the alignment of their columns
   /// reordered (a reordered row of b has the very dissimilarities it had in place, the kernel's
-  /// values depending on the two rows alone).
+  /// values depending on the two rows alone). The value needs no path: when `Alignment` models
+  /// `alignment::ScoreAndLengthPolicy` and `normalization` takes an
+  /// `alignment::Score_and_length` (the library's policies with `Best_score_normalization`),
+  /// `c(order)` normalises `alignment.score_and_length`'s score and number of pairs, those of the
+  /// path; otherwise it aligns in full. `c` may be called from several threads at once.
   /// @throws invalid_input as `dissimilarity`.
   /// @par Complexity here O(Ra Rb width), O(Ra Rb) floats of memory (kept by `c`); each
-  /// `c(order)` the alignment's O(Ra Rb).
+  /// `c(order)` the alignment's O(Ra Rb) time, in O(Ra + Rb) memory without the path (with it,
+  /// O(Ra Rb) bytes for the traceback, up to the policy's `max_trace_bytes`).
   internal::Reordering_comparison<Alignment, Normalization> reordering_comparison(const Description& a,
                                                                                   const Description& b) const {
-    return {internal::dissimilarity_matrix<float>(dissimilarity(a, b)), alignment, normalization};
+    return {internal::dissimilarity_matrix<float, Eigen::RowMajor>(dissimilarity(a, b)), alignment, normalization};
   }
 };
 

@@ -70,12 +70,22 @@ struct Best_score_normalization {
   Normalize_by length = Normalize_by::shorter;
 
   /// @brief The similarity of `result`, the alignment by `policy` of sequences of `n` and `m`
-  /// elements.
+  /// elements: the value of its score and number of pairs (below).
   /// @par Complexity for a maximising policy, its score of two perfect sequences of the chosen
   /// length k: O(k^2) for Smith–Waterman (by default k = min(n, m), so no more than the alignment
   /// itself); else O(1).
   template <alignment::AlignmentPolicy Policy>
   double operator()(const Policy& policy, const alignment::Alignment& result, std::size_t n, std::size_t m) const {
+    return (*this)(policy, alignment::score_and_length(result), n, m);
+  }
+
+  /// @brief The same similarity from the alignment's score and number of pairs alone (what a
+  /// `ScoreAndLengthPolicy`'s `score_and_length` gives, without the pairs): bit for bit the value
+  /// of the alignment they come from.
+  /// @par Complexity as above.
+  template <alignment::AlignmentPolicy Policy>
+  double operator()(const Policy& policy, const alignment::Score_and_length& result, std::size_t n,
+                    std::size_t m) const {
     if (n == 0 || m == 0) return 0.0;
     double value = 0;
     if constexpr (Policy::higher_is_better) {
@@ -83,7 +93,7 @@ struct Best_score_normalization {
       const double best = policy.score(k, k, [](std::size_t, std::size_t) { return 0.0; });
       value = best > 0 ? result.score / best : 0.0;
     } else {
-      value = result.pairs.empty() ? 0.0 : 1.0 - result.score / double(result.pairs.size());
+      value = result.length == 0 ? 0.0 : 1.0 - result.score / double(result.length);
     }
     return std::clamp(value, 0.0, 1.0);
   }
