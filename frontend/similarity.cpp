@@ -76,12 +76,12 @@ constexpr bool describes_streams =
 
 template <class Policy, class Description>
 Compared compare_descriptions(const Policy& policy, const Description& da, const Description& db, std::size_t copies,
-                              unsigned seed) {
+                              unsigned seed, int threads) {
   Compared out{policy.compare(da, db), std::nullopt, 0};
   if constexpr (similarity::ReorderableDescription<Description>) {
     if (copies >= 2) {
       std::mt19937 random(seed);
-      out.z_score = similarity::similarity_significance(policy, da, db, copies, random);
+      out.z_score = similarity::similarity_significance(policy, da, db, copies, random, threads);
       out.shuffled_copies = copies;
     }
   }
@@ -91,10 +91,10 @@ Compared compare_descriptions(const Policy& policy, const Description& da, const
 }  // namespace
 
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
-                 const Policy_choice& choice, const Significance_request& significance) {
+                 const Policy_choice& choice, const Significance_request& significance, int threads) {
   return similarity::visit_policy(make_policy(choice), [&](const auto& policy) {
     return compare_descriptions(policy, policy.describe(a), policy.describe(b), shuffled_copies(choice, significance),
-                                significance.seed);
+                                significance.seed, threads);
   });
 }
 
@@ -157,7 +157,7 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
         if (!described[k]) return std::nullopt;
       }
       return compare_descriptions(policy, *described[0], *described[1], shuffled_copies(choice, significance),
-                                  significance.seed);
+                                  significance.seed, options.threads);
     }
   });
 }

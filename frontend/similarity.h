@@ -207,9 +207,10 @@ struct Compared {
 };
 
 /// How alike `a` and `b` move under `choice` and, for a policy whose frames can be shuffled,
-/// the z-score of the value against shuffled copies of `b` as `significance` asks.
+/// the z-score of the value against shuffled copies of `b` as `significance` asks, the copies
+/// scored on `threads` threads (0: all; the z-score does not depend on it).
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
-                 const Policy_choice& choice, const Significance_request& significance);
+                 const Policy_choice& choice, const Significance_request& significance, int threads = 0);
 
 /// Animations as the similarity matrices of the front end take them: by address, so that a caller's
 /// animations need not be gathered into one container (Python's list, the tool's clips).
@@ -243,7 +244,8 @@ struct Streamed_input {
 /// policy describes a stream holding the frames its longest lag spans, not the whole animation
 /// (a point cache with its topology, a frame sequence; neither welded, since welding compares every
 /// frame), with the same result as `compare` of the animations read whole. `streamed` gets their
-/// frame counts and outlying vertices (refused with `options.refuse_defects`).
+/// frame counts and outlying vertices (refused with `options.refuse_defects`). The shuffled copies
+/// are scored on `options.threads` threads.
 /// @return nullopt, having described nothing, when an input must be read whole: another policy, a
 /// glTF file, a welded input, a point cache without topology, an animation of fewer than 2 frames.
 /// @throws invalid_input naming the file or the frame that cannot be read.

@@ -1,7 +1,8 @@
 // Tests of similarity/significance.h with the motion signatures: the shuffled copies scored from
 // their alignments' scores and lengths (no path) give the full alignments' values bit for bit, for
 // each alignment policy, on quantised signatures (equal dissimilarities everywhere, so ties); no
-// path is traced for a copy; the z-score equals a reference that compares each copy in turn.
+// path is traced for a copy; the z-score equals a reference that compares each copy in turn, and
+// does not depend on the number of threads.
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/alignment/subsequence_dtw.h>
@@ -65,7 +66,7 @@ double reference_significance(const Policy& policy, const Description& a, const 
 
 // Each shuffled copy's value from reordering_comparison is, bit for bit, the normalization of the
 // full alignment of the reordered dissimilarities, and compare's value; then the z-score is the
-// reference's, with the same draws.
+// reference's on 1 and 2 threads, with the same draws.
 template <class Alignment>
 void check_policy(const Alignment& alignment, int seed) {
   const sim::Motion_signature_similarity<Alignment> policy{.scale = 1.5, .alignment = alignment};
@@ -86,11 +87,14 @@ void check_policy(const Alignment& alignment, int seed) {
       CHECK(identical(comparison(order), policy.compare(a, shuffled).value));
       deformseg::internal::shuffle(order.begin(), order.end(), random);
     }
-    const std::size_t copies = 20;
-    std::mt19937 one{unsigned(trial)}, reference{unsigned(trial)};
-    const double z = sim::similarity_significance(policy, a, b, copies, one);
+    const std::size_t copies = trial % 4 == 3 ? 70 : 20;  // 70: more than a batch of draws
+    std::mt19937 one{unsigned(trial)}, two{unsigned(trial)}, reference{unsigned(trial)};
+    const double z = sim::similarity_significance(policy, a, b, copies, one, 1);
     CHECK(identical(z, reference_significance(policy, a, b, copies, reference)));
-    CHECK(one() == reference());  // the same draws
+    CHECK(identical(z, sim::similarity_significance(policy, a, b, copies, two, 2)));
+    const auto next = reference();  // the same draws
+    CHECK(one() == next);
+    CHECK(two() == next);
   }
 }
 
@@ -109,6 +113,13 @@ struct Whole_alignment_normalization {
   double operator()(const Path_counting_dtw& p, const al::Alignment& a, std::size_t n, std::size_t m) const {
     return sim::Best_score_normalization{}(p, a, n, m);
   }
+};
+
+// Motion_signature_similarity seen through compare alone: similarity_significance compares each copy.
+struct Compare_only {
+  sim::Motion_signature_similarity<> policy;
+  using Description = significance_test::Description;
+  sim::Similarity compare(const Description& a, const Description& b) const { return policy.compare(a, b); }
 };
 
 static_assert(al::ScoreAndLengthPolicy<Path_counting_dtw>);
@@ -141,11 +152,25 @@ TEST_CASE("similarity_significance: the shuffled copies trace no path when the n
   const Description a = quantised(40, 4, random), b = quantised(35, 4, random);
   const sim::Motion_signature_similarity<Path_counting_dtw> path_free;
   std::mt19937 first(3), second(3);
-  const double z = sim::similarity_significance(path_free, a, b, 20, first);
+  const double z = sim::similarity_significance(path_free, a, b, 20, first, 2);
   CHECK(*path_free.alignment.paths == 1);  // compare's alone
   const sim::Motion_signature_similarity<Path_counting_dtw, Whole_alignment_normalization> whole;
-  CHECK(identical(z, sim::similarity_significance(whole, a, b, 20, second)));
+  CHECK(identical(z, sim::similarity_significance(whole, a, b, 20, second, 2)));
   CHECK(*whole.alignment.paths == 21);
+}
+
+TEST_CASE("similarity_significance: the copies compared one by one give the same z-score on 1, 2 and 3 threads",
+          "[significance]") {
+  std::mt19937 random(10);
+  const Description a = quantised(30, 5, random), b = quantised(25, 5, random);
+  const Compare_only policy;
+  std::mt19937 one(4), two(4), three(4), reference(4);
+  const double z = sim::similarity_significance(policy, a, b, 67, one, 1);
+  CHECK(identical(z, reference_significance(policy, a, b, 67, reference)));
+  CHECK(identical(z, sim::similarity_significance(policy, a, b, 67, two, 2)));
+  CHECK(identical(z, sim::similarity_significance(policy, a, b, 67, three, 3)));
+  CHECK(one() == reference());
+  CHECK_THROWS_AS(sim::similarity_significance(policy, a, b, 20, one, -1), deformseg::invalid_input);
 }
 
 }  // namespace significance_test

@@ -222,13 +222,16 @@ inline std::size_t frame_count(const Self_similarity_description& d) { return st
 /// `policy.compare(a, b).value` against `copies` copies of `b` with frames shuffled by `random`.
 /// @tparam Policy a `Self_similarity_matching`.
 /// @tparam Random a generator of 32 or 64 uniform bits: `std::mt19937` or `std::mt19937_64`.
+/// @param threads the threads that compare the copies: 0 (default) for all (`thread_count`), else
+/// 1 to `max_threads`. The result does not depend on it.
 /// @return the z-score; 0 when the copies all score the same as each other (no spread).
-/// @throws invalid_input when `copies < 2`, or as `compare`.
+/// @throws invalid_input when `copies < 2` or `threads` is out of range, or as `compare`.
 /// @par Complexity `copies + 1` compares.
 template <class Policy, class Random>
 double self_similarity_significance(const Policy& policy, const Self_similarity_description& a,
-                                    const Self_similarity_description& b, std::size_t copies, Random& random) {
-  return similarity_significance(policy, a, b, copies, random);
+                                    const Self_similarity_description& b, std::size_t copies, Random& random,
+                                    int threads = 0) {
+  return similarity_significance(policy, a, b, copies, random, threads);
 }
 
 }  // namespace deformseg::similarity

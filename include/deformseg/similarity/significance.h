@@ -5,7 +5,9 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/internal/random.h>
+#include <deformseg/threads.h>
 
 #include <Eigen/Core>
 
@@ -70,26 +72,47 @@ concept ReorderingComparison = requires(const Policy& p, const Description& d, s
 /// with a low z-score means alike poses or rhythms in another order. Deterministic for a given
 /// generator state (the caller passes it, so runs repeat exactly), and the same with every
 /// standard library: the shuffles are deformseg's own (Fisher-Yates on draws of the generator's
-/// bits), not `std::shuffle`, whose algorithm each library chooses.
-/// @tparam Policy a `SimilarityPolicy` whose `Description` is a `ReorderableDescription`.
+/// bits), not `std::shuffle`, whose algorithm each library chooses. The shuffles are drawn in
+/// order from `random`, each from the one before (up to 64 at a time), and only then scored,
+/// on `threads` threads, so the z-score and the generator's state after the call do not depend
+/// on the number of threads.
+/// @tparam Policy a `SimilarityPolicy` whose `Description` is a `ReorderableDescription`; its
+/// `compare` (or its `reordering_comparison`'s calls) may run on several threads at once.
 /// @tparam Random a generator of 32 or 64 uniform bits: `std::mt19937` or `std::mt19937_64`.
+/// @param threads the threads that score the copies: 0 (default) for the environment's count or
+/// all the hardware's (`thread_count`), else 1 to `max_threads`. The result does not depend on it.
 /// @return the z-score; 0 when the copies all score the same (no spread).
-/// @throws invalid_input when `copies < 2`, or as `compare`.
+/// @throws invalid_input when `copies < 2` or `threads` is out of range (before any draw), or as
+/// `compare`; `cancelled` when an `Interruption_scope` of the calling thread stops the copies.
 /// @par Complexity `copies + 1` compares; with a policy that models `ReorderingComparison`, one
 /// compare, one `reordering_comparison` and `copies` of its calls (for `Motion_signature_similarity`,
-/// the frame dissimilarities once and `copies + 1` alignments: the values are the same).
+/// the frame dissimilarities once and `copies` alignments' scores and lengths, no path: the values
+/// are the same). Memory: up to 64 orders of `frame_count(b)` indices, and what the copies scored
+/// at once take.
 template <class Policy, ReorderableDescription Description, deformseg::internal::Bits_generator Random>
 double similarity_significance(const Policy& policy, const Description& a, const Description& b, std::size_t copies,
-                               Random& random) {
+                               Random& random, int threads = 0) {
   if (copies < 2) throw invalid_input("similarity_significance: fewer than 2 shuffled copies");
+  threads = thread_count(threads, "similarity_significance");
   const double value = policy.compare(a, b).value;
-  std::vector<std::size_t> order(frame_count(b));
+  const std::size_t frames = frame_count(b);
+  std::vector<std::size_t> order(frames);
   std::iota(order.begin(), order.end(), std::size_t(0));
-  std::vector<double> shuffled;
+  std::vector<double> shuffled(copies);
+  // A batch of orders drawn one after the other, then scored in parallel: the draws stay in the
+  // order of the copies, and the memory bounded however many copies are asked for.
+  constexpr std::size_t batch = 64;
+  std::vector<std::size_t> orders(std::min(copies, batch) * frames);
   const auto score_copies = [&](const auto& value_of) {
-    for (std::size_t c = 0; c < copies; ++c) {
-      deformseg::internal::shuffle(order.begin(), order.end(), random);
-      shuffled.push_back(value_of(std::span<const std::size_t>(order)));
+    for (std::size_t first = 0; first < copies; first += batch) {
+      const std::size_t count = std::min(batch, copies - first);
+      for (std::size_t c = 0; c < count; ++c) {
+        deformseg::internal::shuffle(order.begin(), order.end(), random);
+        std::copy(order.begin(), order.end(), orders.begin() + std::ptrdiff_t(c * frames));
+      }
+      deformseg::internal::parallel_for(count, threads, [&](std::size_t c) {
+        shuffled[first + c] = value_of(std::span<const std::size_t>(orders.data() + c * frames, frames));
+      });
     }
   };
   if constexpr (ReorderingComparison<Policy, Description>)

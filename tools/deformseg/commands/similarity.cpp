@@ -93,8 +93,8 @@ void run_similarity(const Similarity_command_options& o) {
   const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
   const mesh::Surface_mesh_animation &a = inputs[0].animation, &b = inputs[1].animation;
   progress("comparing " + std::to_string(a.num_frames()) + " and " + std::to_string(b.num_frames()) + " frames");
-  report_similarity(o, frontend::compare(a, b, o.policy, o.significance), sources(inputs, o.read), a.num_frames(),
-                    b.num_frames());
+  report_similarity(o, frontend::compare(a, b, o.policy, o.significance, o.read.threads), sources(inputs, o.read),
+                    a.num_frames(), b.num_frames());
 }
 
 // ---- deformseg matrix INPUT... ---------------------------------------------------------------
