@@ -28,10 +28,15 @@
 ///     <td>the same score alone; the library's policies need memory linear in `min(n, m)`
 /// <tr><td>`P::higher_is_better` <td>`constexpr bool`
 ///     <td>true when the score is to be maximised, false when it is a cost
+/// <tr><td>`p.score_and_length(n, m, d)` (optional) <td>deformseg::alignment::Score_and_length
+///     <td>`align`'s score bit for bit and its number of pairs, without the pairs (memory linear
+///     in one length): deformseg::alignment::ScoreAndLengthPolicy, which the library's policies
+///     model and the significance's shuffled copies use (@ref chapter_07)
 /// </table>
 ///
-/// `align` and `score` are templates over the dissimilarity's type (the concept checks them with
-/// an archetype, a class with only `double operator()(std::size_t, std::size_t) const`).
+/// `align`, `score` and `score_and_length` are templates over the dissimilarity's type (the
+/// concepts check them with an archetype, a class with only
+/// `double operator()(std::size_t, std::size_t) const`).
 ///
 /// A caller that normalises scores generically reads `higher_is_better`: Smith–Waterman's score
 /// grows with similarity, the DTW costs shrink.

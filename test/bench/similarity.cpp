@@ -17,8 +17,9 @@
 //   double_scalar/N   the double code the kernel replaced, 1 - exp(-|a_i - b_j|^2 unit) per cell
 //                     from Eigen rows: the baseline, measured in the same run.
 // `significance/shared` and `significance/per_copy`: similarity_significance with 20 shuffled
-// copies on two tubes' descriptions, the dissimilarities computed once (reordering_comparison) or
-// the policy compared afresh on each copy (the generic path, as before).
+// copies on two tubes' descriptions, on one thread, the dissimilarities computed once and each
+// copy's value without its path (reordering_comparison) or the policy compared afresh on each copy
+// (the generic path, as before).
 #include <deformseg/similarity/motion_signature_kernel.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/significance.h>
@@ -158,7 +159,7 @@ void significance(benchmark::State& state) {
   const Policy policy{signatures};
   for (auto _ : state) {
     std::mt19937 random(1);
-    benchmark::DoNotOptimize(similarity::similarity_significance(policy, a, b, 20, random));
+    benchmark::DoNotOptimize(similarity::similarity_significance(policy, a, b, 20, random, 1));
   }
 }
 
