@@ -389,9 +389,7 @@ TEST_CASE("Dtw::score_and_length is align's score and number of pairs, through a
           "[alignment]") {
   std::mt19937 random(45);
   for (int trial = 0; trial < 400; ++trial) {
-    std::size_t n = 1 + random() % 13, m = 1 + random() % 13;
-    if (trial % 40 == 5) n = 60 + random() % 7;
-    if (trial % 40 == 6) m = 60 + random() % 7;
+    const auto [n, m] = deformseg::alignment_test::small_shape(trial, random);
     const Eigen::MatrixXd d = deformseg::alignment_test::random_dissimilarities(n, m, trial, random);
     const auto dis = deformseg::alignment::matrix_dissimilarity(d);
     for (const std::optional<std::size_t> window : {std::optional<std::size_t>{}, std::optional<std::size_t>(4)}) {
@@ -405,9 +403,7 @@ TEST_CASE("Dtw::score_and_length is align's score and number of pairs, through a
           CHECK_THROWS_AS(dtw.score_and_length(n, m, dis), deformseg::invalid_input);
           continue;
         }
-        const deformseg::alignment::Score_and_length value = dtw.score_and_length(n, m, dis);
-        CHECK(bits(value.score) == bits(path.score));
-        CHECK(value.length == path.pairs.size());
+        deformseg::alignment_test::check_score_and_length(dtw.score_and_length(n, m, dis), path);
       }
     }
   }

@@ -4,9 +4,7 @@
 
 #include <catch2/catch.hpp>
 
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -115,19 +113,15 @@ TEST_CASE("Subsequence_dtw::score_and_length is align's score and number of pair
           "[alignment]") {
   std::mt19937 random(46);
   for (int trial = 0; trial < 400; ++trial) {
-    std::size_t n = 1 + random() % 13, m = 1 + random() % 13;
-    if (trial % 40 == 5) n = 60 + random() % 7;
-    if (trial % 40 == 6) m = 60 + random() % 7;
+    const auto [n, m] = deformseg::alignment_test::small_shape(trial, random);
     const Eigen::MatrixXd d = deformseg::alignment_test::random_dissimilarities(n, m, trial, random);
     const auto dis = deformseg::alignment::matrix_dissimilarity(d);
     for (const Subsequence_query query : {Subsequence_query::first, Subsequence_query::shorter}) {
       for (const std::size_t budget : {std::size_t(1) << 25, std::size_t(0)}) {  // 0: always in linear space
         const Subsequence_dtw policy{.query = query, .max_trace_bytes = budget};
         INFO("trial " << trial << ", " << n << " x " << m << ", budget " << budget);
-        const Alignment path = policy.align(n, m, dis);
-        const deformseg::alignment::Score_and_length value = policy.score_and_length(n, m, dis);
-        CHECK(std::bit_cast<std::uint64_t>(value.score) == std::bit_cast<std::uint64_t>(path.score));
-        CHECK(value.length == path.pairs.size());
+        deformseg::alignment_test::check_score_and_length(policy.score_and_length(n, m, dis),
+                                                          policy.align(n, m, dis));
       }
     }
   }

@@ -1,5 +1,6 @@
-// What the tests of the DTW policies share: warping paths enumerated one by one (the brute force
-// they are checked against), path checks, random dissimilarity matrices.
+// What the tests of the alignment policies share: warping paths enumerated one by one (the brute
+// force the DTW policies are checked against), path checks, random dissimilarity matrices and
+// shapes, the check of score_and_length against align.
 #pragma once
 
 #include <deformseg/alignment/alignment.h>
@@ -9,7 +10,9 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <functional>
 #include <limits>
@@ -92,6 +95,21 @@ inline Eigen::MatrixXd random_dissimilarities(std::size_t n, std::size_t m, int 
     for (Eigen::Index k = 0; k < d.size(); ++k) d(k) = unit(random);
   }
   return d;
+}
+
+// A grid's shape for `trial`: up to 13 x 13, with 60 to 66 rows or columns on a trial in 20.
+inline std::pair<std::size_t, std::size_t> small_shape(int trial, std::mt19937& random) {
+  std::size_t n = 1 + random() % 13, m = 1 + random() % 13;
+  if (trial % 40 == 5) n = 60 + random() % 7;
+  if (trial % 40 == 6) m = 60 + random() % 7;
+  return {n, m};
+}
+
+// `value`, a policy's score_and_length, is `path`'s, its align's: the score bit for bit, and the
+// number of pairs.
+inline void check_score_and_length(const alignment::Score_and_length& value, const alignment::Alignment& path) {
+  CHECK(std::bit_cast<std::uint64_t>(value.score) == std::bit_cast<std::uint64_t>(path.score));
+  CHECK(value.length == path.pairs.size());
 }
 
 }  // namespace deformseg::alignment_test
