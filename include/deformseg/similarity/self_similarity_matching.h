@@ -222,6 +222,7 @@ inline std::size_t frame_count(const Self_similarity_description& d) { return st
 /// `policy.compare(a, b).value` against `copies` copies of `b` with frames shuffled by `random`.
 /// @tparam Policy a `Self_similarity_matching`.
 /// @tparam Random a generator of 32 or 64 uniform bits: `std::mt19937` or `std::mt19937_64`.
+/// @param policy, a, b, copies, random as `similarity_significance`.
 /// @param threads the threads that compare the copies: 0 (default) for all (`thread_count`), else
 /// 1 to `max_threads`. The result does not depend on it.
 /// @return the z-score; 0 when the copies all score the same as each other (no spread).

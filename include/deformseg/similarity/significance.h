@@ -79,6 +79,10 @@ concept ReorderingComparison = requires(const Policy& p, const Description& d, s
 /// @tparam Policy a `SimilarityPolicy` whose `Description` is a `ReorderableDescription`; its
 /// `compare` (or its `reordering_comparison`'s calls) may run on several threads at once.
 /// @tparam Random a generator of 32 or 64 uniform bits: `std::mt19937` or `std::mt19937_64`.
+/// @param policy the policy that compares `a` with `b` and with each shuffled copy of `b`.
+/// @param a, b the descriptions; `b`'s frames are shuffled.
+/// @param copies how many shuffled copies, at least 2.
+/// @param random the generator of the shuffles, advanced by them.
 /// @param threads the threads that score the copies: 0 (default) for the environment's count or
 /// all the hardware's (`thread_count`), else 1 to `max_threads`. The result does not depend on it.
 /// @return the z-score; 0 when the copies all score the same (no spread).
