@@ -3,6 +3,7 @@
 #include "test_support.h"
 
 #include <deformseg/io/frame_sequence.h>
+#include <deformseg/io/frame_stream.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/outlying_vertices.h>
 #include <deformseg/io/read_animation.h>
@@ -15,6 +16,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -46,6 +48,46 @@ void check_point(const Sampled_gltf& s, std::size_t t, std::size_t v, double x, 
   CHECK(p[0] == Approx(x).margin(eps).epsilon(0));
   CHECK(p[1] == Approx(y).margin(eps).epsilon(0));
   CHECK(p[2] == Approx(z).margin(eps).epsilon(0));
+}
+
+// Some vertices sampled alone (every vertex backwards, every third twice) give, bit for bit, the
+// same vertices of `sample` (every vertex skinned); and `read` and a frame source, which pose only
+// the vertices the welding keeps, give every vertex skinned, then welded.
+void check_posed_alone(const deformseg::io::Gltf_file& file, const Gltf_read_options& options) {
+  const Sampled_gltf all = file.sample(options);
+  std::vector<std::uint32_t> some;
+  for (std::size_t v = all.num_vertices; v-- > 0;) {
+    some.push_back(std::uint32_t(v));
+    if (v % 3 == 0) some.push_back(std::uint32_t(v));
+  }
+  auto sampler = file.frame_sampler(options, some);
+  REQUIRE(sampler.num_vertices() == some.size());
+  REQUIRE(sampler.num_frames() == all.report.frames);
+  std::vector<double> frame(3 * some.size());
+  std::size_t differ = 0;
+  for (std::size_t t = 0; t < sampler.num_frames(); ++t) {
+    sampler.sample_frame(t, frame);
+    for (std::size_t i = 0; i < some.size(); ++i)
+      differ += std::memcmp(&frame[3 * i], &all.positions[(t * all.num_vertices + some[i]) * 3], 3 * sizeof(double)) != 0;
+  }
+  CHECK(differ == 0);
+  const std::vector<std::uint32_t> kept = file.repair(options.repair).source_vertex;
+  const std::vector<double> welded = deformseg::io::internal::positions_of_sources<double>(
+      std::span<const double>(all.positions), all.num_vertices, kept);
+  const auto animation = file.read(options);
+  REQUIRE(animation.num_vertices() == kept.size());
+  const auto read = animation.all_positions();
+  REQUIRE(read.size() == welded.size());
+  CHECK(std::memcmp(read.data(), welded.data(), welded.size() * sizeof(double)) == 0);
+  deformseg::io::Gltf_frame_source source(file, options);
+  REQUIRE(source.num_vertices() == kept.size());
+  REQUIRE(source.num_frames() == all.report.frames);
+  frame.resize(3 * source.num_vertices());
+  for (std::size_t t = 0; t < source.num_frames(); ++t) {
+    source.read_frame(frame);
+    differ += std::memcmp(frame.data(), welded.data() + t * frame.size(), frame.size() * sizeof(double)) != 0;
+  }
+  CHECK(differ == 0);
 }
 
 fs::path write(const Gltf_writer& w, const std::string& name) {
@@ -250,6 +292,7 @@ TEST_CASE("gltf: 8 influences with normalised byte weights / no weight at all st
   check_point(s, 0, 0, 5, 0, 0);
   check_point(s, 0, 1, 1, 0, 7);  // rigid to the mesh node, whose transform then applies
   check_point(s, 0, 2, 8, 1, 0);
+  check_posed_alone(deformseg::io::Gltf_file(write(w, "eight.gltf")), {});
 }
 
 TEST_CASE("gltf: a weighted joint that is negative, fractional or past the skin is dropped, or refused, named",
@@ -380,6 +423,7 @@ TEST_CASE("gltf: animated morph target weights, node and mesh weights at rest", 
     check_point(s, 1, 2, 1, 3, 3.5);
     check_point(s, 2, 1, 2.5, 2, 3);
     check_point(s, 2, 2, 1, 3, 4);
+    check_posed_alone(deformseg::io::Gltf_file(write(w, "morph_animated.gltf")), {.fps = 2});
   }
 }
 
@@ -976,6 +1020,23 @@ fs::path centimetres_z_up_copy(const fs::path& from, const std::string& name) {
 }
 
 }  // namespace
+
+TEST_CASE("gltf: the vertices a clip's frame source poses alone are those of every vertex skinned, then welded",
+          "[gltf][data]") {
+  // Skinned bodies of 4 influences (the library's animals, the KayKit characters), rigid parts
+  // on bones and morph targets (the robot), a triangle soup welded to a fifth (the Fox).
+  const fs::path data = deformseg::test::data_dir();
+  for (const fs::path& path : {data / "library" / "animals_pack" / "Alpaca.glb", data / "characters" / "Knight.glb",
+                               data / "characters" / "RobotExpressive.glb", data / "characters" / "Fox.glb"}) {
+    REQUIRE(fs::exists(path));  // [data]: run only where the shared data are
+    const deformseg::io::Gltf_file file(path);
+    const std::vector<std::string> clips = file.clip_names();
+    for (std::size_t c = 0; c < clips.size(); c += 4) {
+      INFO(path.filename().string() << "#" << clips[c]);
+      check_posed_alone(file, {.clip = clips[c]});
+    }
+  }
+}
 
 TEST_CASE("gltf: a rotated, moved, scaled copy of the Fox gives the same strain", "[gltf][data]") {
   const fs::path fox = characters() / "Fox.glb";

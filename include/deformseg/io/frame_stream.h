@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -273,10 +274,41 @@ private:
 };
 
 #if DEFORMSEG_HAS_GLTF
+/// @brief The connectivity every clip of a `Gltf_file` shares, as `Gltf_frame_source` gives it:
+/// the file's `Gltf_file::repair` and its triangles numbered as `Gltf_file::read` numbers them.
+/// Made once for a file and shared by the sources of its clips, so that no clip welds and repairs
+/// the scene again.
+class Gltf_connectivity {
+public:
+  /// @brief The connectivity of `file`, which must outlive it and stay where it is, repaired by
+  /// `repair` (default: `Gltf_read_options`'s, welding on).
+  /// @throws invalid_input naming the file, as `Gltf_file::repair`.
+  /// @par Complexity O(V + F log F): the repair's, and a `Surface_mesh` built once for the order
+  /// of the triangles.
+  explicit Gltf_connectivity(const Gltf_file& file, const Repair_options& repair = Gltf_read_options{}.repair)
+      : file_(&file), repaired_(file.repair(repair)) {
+    // The order of a Surface_mesh's triangles does not depend on where its vertices are.
+    std::vector<double> anywhere(3 * repaired_.source_vertex.size(), 0.0);
+    triangles_ = internal::animation_triangles(repaired_, std::move(anywhere));
+  }
+
+  /// @brief The file.
+  const Gltf_file& file() const noexcept { return *file_; }
+  /// @brief The repair: output vertex i moves as the file's vertex `source_vertex[i]`.
+  const Repaired_triangles& repaired() const noexcept { return repaired_; }
+  /// @brief The repaired triangles, as `Gltf_file::read` numbers them.
+  std::span<const std::array<std::uint32_t, 3>> triangles() const noexcept { return triangles_; }
+
+private:
+  const Gltf_file* file_;
+  Repaired_triangles repaired_;
+  std::vector<std::array<std::uint32_t, 3>> triangles_;
+};
+
 /// @brief One clip of a `Gltf_file` sampled one frame at a time (`Gltf_file::frame_sampler`), as
 /// `double`, with the connectivity `Gltf_file::read` gives every clip (welded by what the file
 /// fixes, repaired): a `signatures::FrameSource` whose frames, vertices and triangles are those
-/// of `Gltf_file::read` with the same options.
+/// of `Gltf_file::read` with the same options. Only the vertices that the repair keeps are posed.
 class Gltf_frame_source {
 public:
   /// @brief The coordinate type frames are read in.
@@ -285,47 +317,48 @@ public:
   /// @brief The clip `options.clip` of `file`, which must outlive the source and stay where it
   /// is, sampled at `options.fps`, with the connectivity of `file.repair(options.repair)`.
   /// @throws invalid_input naming the file, as `Gltf_file::frame_sampler` and `Gltf_file::repair`.
-  /// @par Complexity the repair's O(V + F log F), and one frame sampled.
+  /// @par Complexity the repair's O(V + F log F).
   Gltf_frame_source(const Gltf_file& file, const Gltf_read_options& options)
-      : sampler_(file.frame_sampler(options)), repaired_(file.repair(options.repair)), fps_(options.fps) {
-    std::vector<double> first(3 * num_vertices());
-    read_frame(std::span<double>(first));
-    triangles_ = internal::animation_triangles(repaired_, std::move(first));
-    next_ = 0;
-  }
+      : Gltf_frame_source(std::make_shared<const Gltf_connectivity>(file, options.repair), options) {}
+
+  /// @brief The clip `options.clip` of `connectivity.file()`, sampled at `options.fps`, with
+  /// `connectivity` (made once for the file's clips; `options.repair` is not used).
+  /// @throws invalid_input naming the file, as `Gltf_file::frame_sampler`.
+  /// @par Complexity O(size of the clip's channels + V log V) for V output vertices.
+  Gltf_frame_source(std::shared_ptr<const Gltf_connectivity> connectivity, const Gltf_read_options& options)
+      : connectivity_(std::move(connectivity)),
+        sampler_(connectivity_->file().frame_sampler(
+            options, std::span<const std::uint32_t>(connectivity_->repaired().source_vertex))),
+        fps_(options.fps) {}
 
   /// @brief V, the vertices after welding and repair.
-  std::size_t num_vertices() const noexcept { return repaired_.source_vertex.size(); }
+  std::size_t num_vertices() const noexcept { return connectivity_->repaired().source_vertex.size(); }
   /// @brief T, the clip's frames at the frame rate asked.
   std::size_t num_frames() const noexcept { return sampler_.num_frames(); }
   /// @brief The frame rate the clip is sampled at.
   double frames_per_second() const noexcept { return fps_; }
   /// @brief The repaired triangles, as `Gltf_file::read` numbers them.
-  std::span<const std::array<std::uint32_t, 3>> triangles() const noexcept { return triangles_; }
+  std::span<const std::array<std::uint32_t, 3>> triangles() const noexcept { return connectivity_->triangles(); }
 
-  /// @brief Samples the next frame's `3V` coordinates into `out`.
+  /// @brief Samples the next frame's `3V` coordinates into `out`: those of the vertices the
+  /// repair keeps, each posed once.
   /// @throws invalid_input naming the file and the frame past the last frame or for a non-finite
-  /// position.
-  /// @par Complexity one frame of `Gltf_file::sample`.
+  /// position (of a vertex kept).
+  /// @par Complexity one frame of `Gltf_file::sample` for the V vertices kept.
   void read_frame(std::span<double> out) {
-    sampled_.resize(3 * sampler_.num_vertices());
     if (out.size() != 3 * num_vertices())
       throw invalid_input("Gltf_frame_source: a frame of " + std::to_string(out.size()) + " coordinates",
                           {.frame = next_});
-    sampler_.sample_frame(next_, std::span<double>(sampled_));
-    internal::gather_sources(std::span<const double>(sampled_),
-                             std::span<const std::uint32_t>(repaired_.source_vertex), out);
+    sampler_.sample_frame(next_, out);
     ++next_;
   }
   /// @brief Goes back to frame 0 (the parsed file does not change).
   void rewind() noexcept { next_ = 0; }
 
 private:
+  std::shared_ptr<const Gltf_connectivity> connectivity_;
   Gltf_frame_sampler sampler_;
-  Repaired_triangles repaired_;
   double fps_;
-  std::vector<std::array<std::uint32_t, 3>> triangles_;
-  std::vector<double> sampled_;
   std::size_t next_ = 0;
 };
 #endif

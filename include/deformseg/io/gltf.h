@@ -52,6 +52,7 @@
 #include <span>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -247,25 +248,30 @@ inline void check_options(const io::Gltf_read_options& options) {
   thread_count(options.threads);
 }
 
-/// Poses frame `t` of the `frames` frames of `clip` (or the rest pose) sampled at `fps` into `out`
-/// (3V values); throws naming the frame for a non-finite coordinate.
+/// Poses frame `t` of the `frames` frames of `clip` (or the rest pose) sampled at `fps` into `out`:
+/// every vertex (3V values), or those of `selection` when not null (3 per output vertex); throws
+/// naming the frame and the smallest scene vertex posed with a non-finite coordinate.
 inline void pose_frame(const Rig& rig, const Clip* clip, double fps, std::size_t frames, std::size_t t,
-                       Pose_scratch& scratch, double* out) {
-  const std::size_t block = 3 * rig.geometry.vertices;
-  pose_at(rig, clip, clip ? frame_time(clip->start, clip->end, fps, t, frames) : 0.0, scratch, out);
-  const double* bad = std::find_if(out, out + block, [](double x) { return !std::isfinite(x); });
-  if (bad != out + block)
-    throw invalid_input("vertex " + std::to_string(std::size_t(bad - out) / 3) + " has a non-finite position",
-                        {.frame = t});
+                       const Vertex_selection* selection, Pose_scratch& scratch, double* out) {
+  const double time = clip ? frame_time(clip->start, clip->end, fps, t, frames) : 0.0;
+  if (selection) pose_selected_at(rig, clip, time, *selection, scratch, out);
+  else pose_at(rig, clip, time, scratch, out);
+  const std::size_t block = 3 * (selection ? selection->input.size() : rig.geometry.vertices);
+  if (std::all_of(out, out + block, [](double x) { return std::isfinite(x); })) return;
+  std::size_t vertex = rig.geometry.vertices;
+  for (std::size_t i = 0; i < block; ++i)
+    if (!std::isfinite(out[i])) vertex = std::min<std::size_t>(vertex, selection ? selection->input[i / 3] : i / 3);
+  throw invalid_input("vertex " + std::to_string(vertex) + " has a non-finite position", {.frame = t});
 }
 
-/// Samples every frame of `clip` (or the rest pose) into `positions`, in parallel; throws the
-/// error of the lowest frame with a non-finite coordinate, whatever the number of threads.
+/// Samples every frame of `clip` (or the rest pose) into `positions`, every vertex or those of
+/// `selection` when not null, in parallel; throws the error of the lowest frame with a non-finite
+/// coordinate, whatever the number of threads.
 inline void sample_frames(const Rig& rig, const Clip* clip, double fps, std::size_t frames, int threads,
-                          std::vector<double>& positions) {
-  const std::size_t block = 3 * rig.geometry.vertices;
+                          const Vertex_selection* selection, std::vector<double>& positions) {
+  const std::size_t block = 3 * (selection ? selection->input.size() : rig.geometry.vertices);
   const auto sample = [&](Pose_scratch& scratch, std::size_t t) {
-    pose_frame(rig, clip, fps, frames, t, scratch, positions.data() + t * block);
+    pose_frame(rig, clip, fps, frames, t, selection, scratch, positions.data() + t * block);
   };
   deformseg::internal::parallel_for_with_locals(frames, threads, 1, [] { return Pose_scratch{}; }, sample);
 }
@@ -307,7 +313,10 @@ inline Loaded_file load_file(tinygltf::Model model) {
   return file;
 }
 
-inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_options& options) {
+/// Samples the clip `options` names: every vertex, or the scene's vertices `vertices` when not
+/// null (then `num_vertices` is their number, and the triangles are left out).
+inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_options& options,
+                               const std::vector<std::uint32_t>* vertices = nullptr) {
   check_options(options);
   const Rig& rig = file.rig;
   io::Sampled_gltf sampled;
@@ -323,13 +332,16 @@ inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_opti
     std::tie(report.animated_joints, report.joints) = animated_joints(file.model, *clip);
   }
   report.skipped = rig.geometry.skipped;
-  if (report.frames > max_coordinates / (3 * rig.geometry.vertices))
-    throw invalid_input(std::to_string(report.frames) + " frames of " + std::to_string(rig.geometry.vertices) +
+  std::optional<Vertex_selection> selection;
+  if (vertices) selection = select_vertices(rig.geometry, *vertices);
+  sampled.num_vertices = vertices ? vertices->size() : rig.geometry.vertices;
+  if (report.frames > max_coordinates / (3 * std::max<std::size_t>(sampled.num_vertices, 1)))
+    throw invalid_input(std::to_string(report.frames) + " frames of " + std::to_string(sampled.num_vertices) +
                         " vertices exceed the " + std::to_string(max_coordinates) + " coordinates deformseg samples");
-  sampled.num_vertices = rig.geometry.vertices;
-  sampled.positions.resize(report.frames * 3 * rig.geometry.vertices);
-  sample_frames(rig, clip, options.fps, report.frames, options.threads, sampled.positions);
-  sampled.triangles = rig.geometry.triangles;
+  sampled.positions.resize(report.frames * 3 * sampled.num_vertices);
+  sample_frames(rig, clip, options.fps, report.frames, options.threads, selection ? &*selection : nullptr,
+                sampled.positions);
+  if (!vertices) sampled.triangles = rig.geometry.triangles;
   return sampled;
 }
 
@@ -377,9 +389,9 @@ inline io::Gltf_mesh_info mesh_info(const tinygltf::Model& model, std::size_t me
   return info;
 }
 
-inline io::Gltf_contents contents(const std::filesystem::path& path, double fps) {
+/// What a parsed model holds, its clips' frames counted at `fps` (`io::gltf_contents`).
+inline io::Gltf_contents contents(const tinygltf::Model& model, double fps) {
   check_options({.fps = fps});
-  const tinygltf::Model model = load_model(path);
   check_extensions(model);
   io::Gltf_contents result;
   result.nodes = model.nodes.size();
@@ -406,6 +418,11 @@ inline io::Gltf_contents contents(const std::filesystem::path& path, double fps)
   return result;
 }
 
+inline io::Gltf_contents contents(const std::filesystem::path& path, double fps) {
+  check_options({.fps = fps});
+  return contents(load_model(path), fps);
+}
+
 }  // namespace deformseg::io::internal::gltf
 
 namespace deformseg::io {
@@ -413,24 +430,29 @@ namespace deformseg::io {
 class Gltf_file;
 
 /// @brief One clip of a `Gltf_file` sampled a frame at a time (`Gltf_file::frame_sampler`), in
-/// the vertex order of `Sampled_gltf`, before any repair.
+/// the vertex order of `Sampled_gltf`, before any repair: every vertex, or the vertices asked.
 class Gltf_frame_sampler {
 public:
   /// @brief The number of frames T of the clip at the frame rate asked (1 without animation).
   std::size_t num_frames() const noexcept { return frames_; }
-  /// @brief The number of vertices V of a frame, before any repair.
-  std::size_t num_vertices() const noexcept { return rig_->geometry.vertices; }
+  /// @brief The number of vertices V of a frame: the scene's before any repair, or the number of
+  /// vertices asked.
+  std::size_t num_vertices() const noexcept {
+    return selection_ ? selection_->input.size() : rig_->geometry.vertices;
+  }
   /// @brief Writes frame `t`'s `3V` coordinates to `out`.
   /// @pre `out` holds `3V` values and `t < num_frames()`; otherwise throws `invalid_input`.
-  /// @throws invalid_input naming the file and the frame for a non-finite position.
-  /// @par Complexity O(N + J + V I), as one frame of `Gltf_file::sample`.
+  /// @throws invalid_input naming the file, the frame and the smallest vertex (numbered as in
+  /// `Sampled_gltf`) of a non-finite position.
+  /// @par Complexity O(N + J + V I), as one frame of `Gltf_file::sample`, V the vertices sampled.
   void sample_frame(std::size_t t, std::span<double> out) {
     if (t >= frames_ || out.size() != 3 * num_vertices())
       throw invalid_input("Gltf_frame_sampler: no frame " + std::to_string(t) + " of " + std::to_string(out.size()) +
                               " coordinates in a clip of " + std::to_string(frames_) + " frames",
                           {.file = path_.string(), .frame = t});
     try {
-      internal::gltf::pose_frame(*rig_, clip_ ? &*clip_ : nullptr, fps_, frames_, t, scratch_, out.data());
+      internal::gltf::pose_frame(*rig_, clip_ ? &*clip_ : nullptr, fps_, frames_, t,
+                                 selection_ ? &*selection_ : nullptr, scratch_, out.data());
     } catch (const invalid_input& e) {
       throw e.located({.file = path_.string()});
     }
@@ -439,14 +461,17 @@ public:
 private:
   friend class Gltf_file;
   Gltf_frame_sampler(std::filesystem::path path, const internal::gltf::Rig& rig,
-                     std::optional<internal::gltf::Clip> clip, std::size_t frames, double fps)
-      : path_(std::move(path)), rig_(&rig), clip_(std::move(clip)), frames_(frames), fps_(fps) {}
+                     std::optional<internal::gltf::Clip> clip, std::size_t frames, double fps,
+                     std::optional<internal::gltf::Vertex_selection> selection)
+      : path_(std::move(path)), rig_(&rig), clip_(std::move(clip)), frames_(frames), fps_(fps),
+        selection_(std::move(selection)) {}
 
   std::filesystem::path path_;
   const internal::gltf::Rig* rig_;
   std::optional<internal::gltf::Clip> clip_;
   std::size_t frames_;
   double fps_;
+  std::optional<internal::gltf::Vertex_selection> selection_;
   internal::gltf::Pose_scratch scratch_{};
 };
 
@@ -542,6 +567,20 @@ public:
   /// @brief The number of vertices V a sampled clip has, before any repair.
   std::size_t num_vertices() const noexcept { return file_.rig.geometry.vertices; }
 
+  /// @brief What the file holds, as `gltf_contents(path(), fps)` gives it, from this parse (of a
+  /// body played with another file's clips: the body's own): its clips with their frame counts
+  /// at `fps`, skins, meshes, vertices and triangles.
+  /// @pre `fps > 0`.
+  /// @throws invalid_input naming the file, as `gltf_contents` (a malformed clip).
+  /// @par Complexity O(size of the model).
+  Gltf_contents contents(double fps = 30) const {
+    try {
+      return internal::gltf::contents(file_.model, fps);
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path_.string()});
+    }
+  }
+
   /// @brief Samples one clip, without repair: the vertices in the file's order (see `Sampled_gltf`).
   /// @param options `clip` (default: the first), `fps` (30), `threads` (0: all); `repair` is not
   /// used here.
@@ -570,6 +609,19 @@ public:
   /// sampler, or more than 10^6 frames.
   /// @par Complexity O(size of the clip's channels).
   Gltf_frame_sampler frame_sampler(const Gltf_read_options& options = {}) const;
+
+  /// @brief Samples some vertices of one clip a frame at a time: vertex i of frame `t` of the
+  /// sampler equals vertex `vertices[i]` of frame `t` of `sample(options)`, bit for bit; the
+  /// others are not posed (the vertices that `repair` keeps, say, its `source_vertex`: about 1,100
+  /// of the 4,400 of an animal of the shared library, welded along its seams).
+  /// @param options `clip` (default: the first) and `fps` (30); the others are not used.
+  /// @param vertices vertices numbered as in `Sampled_gltf`, in any order, repeats allowed.
+  /// @return a sampler that refers to this file, which must outlive it and stay where it is.
+  /// @pre every vertex is below `num_vertices()`; `options.fps > 0`.
+  /// @throws invalid_input naming the file as the overload without vertices, or for a vertex
+  /// outside the scene.
+  /// @par Complexity O(size of the clip's channels + V log V) for V vertices.
+  Gltf_frame_sampler frame_sampler(const Gltf_read_options& options, std::span<const std::uint32_t> vertices) const;
 
   /// @brief The connectivity every clip of the file shares, repaired by `options` and decided
   /// from the file alone, whatever the clip: what `read` gives every clip.
@@ -600,7 +652,9 @@ public:
 
   /// @brief Reads one clip as an animation: `sample`, then the connectivity of
   /// `repair(options.repair)`, which every clip of the file shares, each output vertex moving as
-  /// its source vertex (welding on by default).
+  /// its source vertex (welding on by default). Only the source vertices are posed, each once,
+  /// which gives their positions in `sample` bit for bit; a non-finite position of a vertex the
+  /// repair leaves out (welded to another, or in no triangle) is not seen.
   /// @tparam Graph the connectivity type (default `Surface_mesh`).
   /// @tparam Coordinate the stored coordinate type (default `double`).
   /// @param options `clip` (default: the first), `fps` (30), `repair` (weld, defects repaired),
@@ -609,18 +663,24 @@ public:
   /// and what the repair changed, when not null.
   /// @pre as `sample` and `repair`.
   /// @throws invalid_input naming the file, as `sample` and `repair`.
-  /// @par Complexity that of `sample`, plus the repair's O(V + F log F) and a copy of the positions.
+  /// @par Complexity that of `sample` for the V' source vertices alone, plus the repair's
+  /// O(V + F log F).
   template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
   mesh::Deforming_mesh<Graph, Coordinate> read(const Gltf_read_options& options = {},
                                          Gltf_read_report* report = nullptr) const {
-    Sampled_gltf sampled = sample(options);
     const Repaired_triangles repaired = repair(options.repair);
+    Sampled_gltf sampled;
     try {
-      mesh::Deforming_mesh<Graph, Coordinate> animation = internal::animation_of<Graph, Coordinate>(
-          repaired,
-          internal::positions_of_sources<Coordinate>(std::span<const double>(sampled.positions), sampled.num_vertices,
-                                                     repaired.source_vertex),
-          &sampled.report.repair);
+      sampled = internal::gltf::sample(file_, options, &repaired.source_vertex);
+    } catch (const invalid_input& e) {
+      throw e.located({.file = path_.string()});
+    }
+    try {
+      std::vector<Coordinate> positions;
+      if constexpr (std::is_same_v<Coordinate, double>) positions = std::move(sampled.positions);
+      else positions.assign(sampled.positions.begin(), sampled.positions.end());
+      mesh::Deforming_mesh<Graph, Coordinate> animation =
+          internal::animation_of<Graph, Coordinate>(repaired, std::move(positions), &sampled.report.repair);
       animation.set_frames_per_second(options.fps);
       if (report) *report = std::move(sampled.report);
       return animation;
@@ -645,7 +705,18 @@ private:
 inline Gltf_frame_sampler Gltf_file::frame_sampler(const Gltf_read_options& options) const {
   try {
     auto [clip, frames] = internal::gltf::clip_and_frames(file_, options);
-    return Gltf_frame_sampler(path_, file_.rig, std::move(clip), frames, options.fps);
+    return Gltf_frame_sampler(path_, file_.rig, std::move(clip), frames, options.fps, std::nullopt);
+  } catch (const invalid_input& e) {
+    throw e.located({.file = path_.string()});
+  }
+}
+
+inline Gltf_frame_sampler Gltf_file::frame_sampler(const Gltf_read_options& options,
+                                                   std::span<const std::uint32_t> vertices) const {
+  try {
+    auto [clip, frames] = internal::gltf::clip_and_frames(file_, options);
+    return Gltf_frame_sampler(path_, file_.rig, std::move(clip), frames, options.fps,
+                              internal::gltf::select_vertices(file_.rig.geometry, vertices));
   } catch (const invalid_input& e) {
     throw e.located({.file = path_.string()});
   }

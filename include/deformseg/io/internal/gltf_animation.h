@@ -13,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -130,13 +132,14 @@ inline Rig read_rig(const tinygltf::Model& model) {
 struct Pose_scratch {
   std::vector<Node_pose> nodes{};
   std::vector<std::vector<double>> weights{};
-  std::vector<Affine> local{}, table{};
+  std::vector<Affine> local{}, world{}, table{};
   std::vector<double> morphed{};
 };
 
-/// Writes the positions of every vertex at time `t` of `clip` (rest pose when null) to `out`
-/// (3 per vertex, in part order).
-inline void pose_at(const Rig& rig, const Clip* clip, double t, Pose_scratch& scratch, double* out) {
+/// The nodes' world transforms (`scratch.world`), the joint table (`scratch.table`) and the morph
+/// weights (`scratch.weights`) at time `t` of `clip` (rest pose when null): what every vertex of
+/// the frame is posed with, computed once per frame.
+inline void pose_nodes(const Rig& rig, const Clip* clip, double t, Pose_scratch& scratch) {
   scratch.nodes = rig.rest;
   scratch.weights = rig.rest_weights;
   for (std::size_t c = 0; clip && c < clip->channels.size(); ++c) {
@@ -151,11 +154,57 @@ inline void pose_at(const Rig& rig, const Clip* clip, double t, Pose_scratch& sc
   }
   scratch.local.resize(scratch.nodes.size());
   for (std::size_t i = 0; i < scratch.nodes.size(); ++i) scratch.local[i] = scratch.nodes[i].local();
-  const std::vector<Affine> world = rig.forest.world(scratch.local);
-  joint_table(rig.skins, rig.geometry.parts, world, scratch.table);
+  rig.forest.world(scratch.local, scratch.world);
+  joint_table(rig.skins, rig.geometry.parts, scratch.world, scratch.table);
+}
+
+/// Writes the positions of every vertex at time `t` of `clip` (rest pose when null) to `out`
+/// (3 per vertex, in part order).
+inline void pose_at(const Rig& rig, const Clip* clip, double t, Pose_scratch& scratch, double* out) {
+  pose_nodes(rig, clip, t, scratch);
   for (const Mesh_part& part : rig.geometry.parts)
-    pose_part(part, world, scratch.table, &scratch.weights[part.node], scratch.morphed,
+    pose_part(part, scratch.world, scratch.table, &scratch.weights[part.node], scratch.morphed,
               out + 3 * part.first_vertex);
+}
+
+/// Some of a scene's vertices, to be posed alone, by part: output vertex i is scene vertex
+/// `input[i]` (vertices in part order, as `pose_at` writes them).
+struct Vertex_selection {
+  std::vector<Part_selection> parts{};
+  std::vector<std::uint32_t> input{};
+};
+
+/// The selection of scene vertices `vertices` (each below `geometry.vertices`, in any order,
+/// repeats allowed), output vertex i being `vertices[i]`.
+/// @throws invalid_input for a vertex outside the scene.
+inline Vertex_selection select_vertices(const Scene_geometry& geometry, std::span<const std::uint32_t> vertices) {
+  Vertex_selection selection{.input = {vertices.begin(), vertices.end()}};
+  std::vector<std::uint32_t> by_vertex(vertices.size());  // output vertices by scene vertex: parts in order
+  for (std::uint32_t i = 0; i < by_vertex.size(); ++i) by_vertex[i] = i;
+  std::stable_sort(by_vertex.begin(), by_vertex.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return vertices[a] < vertices[b]; });
+  std::size_t part = 0;
+  for (const std::uint32_t slot : by_vertex) {
+    const std::uint32_t v = vertices[slot];
+    if (v >= geometry.vertices)
+      throw invalid_input("vertex " + std::to_string(v) + " asked of a scene of " + std::to_string(geometry.vertices));
+    while (v >= geometry.parts[part].first_vertex + geometry.parts[part].vertex_count) ++part;
+    if (selection.parts.empty() || selection.parts.back().part != part) selection.parts.push_back({.part = part});
+    selection.parts.back().vertex.push_back(std::uint32_t(v - geometry.parts[part].first_vertex));
+    selection.parts.back().slot.push_back(slot);
+  }
+  return selection;
+}
+
+/// Writes the positions of the vertices of `selection` at time `t` of `clip` (rest pose when null)
+/// to `out` (3 per output vertex): bit for bit those `pose_at` gives the same vertices.
+inline void pose_selected_at(const Rig& rig, const Clip* clip, double t, const Vertex_selection& selection,
+                             Pose_scratch& scratch, double* out) {
+  pose_nodes(rig, clip, t, scratch);
+  for (const Part_selection& of_part : selection.parts) {
+    const Mesh_part& part = rig.geometry.parts[of_part.part];
+    pose_selected(part, of_part, scratch.world, scratch.table, &scratch.weights[part.node], out);
+  }
 }
 
 }  // namespace deformseg::io::internal::gltf

@@ -113,10 +113,16 @@ struct Node_forest {
 
   /// World transforms of every node from their local ones.
   std::vector<Affine> world(const std::vector<Affine>& local) const {
-    std::vector<Affine> result(local.size());
+    std::vector<Affine> result;
+    world(local, result);
+    return result;
+  }
+
+  /// The same into `result`, whose memory serves again from frame to frame.
+  void world(const std::vector<Affine>& local, std::vector<Affine>& result) const {
+    result.resize(local.size());
     for (std::size_t i : parents_first)
       result[i] = parent[i] < 0 ? local[i] : result[std::size_t(parent[i])] * local[i];
-    return result;
   }
 };
 
