@@ -25,6 +25,7 @@
 #include <mutex>
 #include <set>
 #include <span>
+#include <system_error>
 #include <utility>
 #include <variant>
 
@@ -48,15 +49,35 @@ std::string canonical_path(const std::string& path) {
   return fs::absolute(path).lexically_normal().string();
 }
 
+// glTF files parsed to list their clips (`add_gltf_clips`), kept for their description
+// (`Gltf_parses`) so that a file given whole is parsed once (a parse is about a fifteenth of
+// describing the clips of an animal of the shared library). Up to `budget` bytes of files; a file
+// beyond is parsed again.
+struct Listed_parses {
+  static constexpr std::uintmax_t budget = std::uintmax_t(256) << 20;
+  std::map<std::string, std::shared_ptr<const io::Gltf_file>> files;  // by canonical path
+  std::uintmax_t bytes = 0;
+};
+
 // The clips of a glTF file: `clip` when given, else every clip of the file of 2 frames or more at
 // `fps` (the others, poses, go to `poses`); a file without clips gives its one animation under "".
+// The file's parse is kept in `parses`, when given and within its budget.
 void add_gltf_clips(const std::string& file, const std::string& clip, double fps, std::vector<Clip_source>& out,
-                    std::vector<std::string>& poses) {
+                    std::vector<std::string>& poses, Listed_parses* parses) {
   if (!clip.empty()) {
     out.push_back({canonical_path(file), clip});
     return;
   }
-  const io::Gltf_contents contents = io::gltf_contents(file, fps);
+  std::shared_ptr<const io::Gltf_file> parsed;
+  std::error_code error;
+  const std::uintmax_t size = fs::file_size(file, error);
+  if (parses && !error && parses->bytes + size <= Listed_parses::budget) try {
+      parsed = std::make_shared<const io::Gltf_file>(file);
+    } catch (const invalid_input&) {
+      // Listed as before (gltf_contents says what is wrong); its clips fail when described.
+    }
+  const io::Gltf_contents contents = parsed ? parsed->contents(fps) : io::gltf_contents(file, fps);
+  if (parsed) parses->files[canonical_path(file)] = parsed, parses->bytes += size;
   if (contents.clips.empty()) out.push_back({canonical_path(file), ""});
   for (std::size_t k = 0; k < contents.clips.size(); ++k) {
     const Clip_source source{canonical_path(file),
@@ -162,10 +183,10 @@ nlohmann::json up_json(const std::optional<Eigen::Vector3d>& up) {
   return {(*up)[0], (*up)[1], (*up)[2]};
 }
 
-}  // namespace
-
-std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, const Input_options& options,
-                                      std::vector<std::string>& poses, std::vector<std::string>* unreadable) {
+// `clip_sources`, the files parsed to list their clips kept in `parses` when given.
+std::vector<Clip_source> list_clips(const std::vector<std::string>& inputs, const Input_options& options,
+                                    std::vector<std::string>& poses, std::vector<std::string>* unreadable,
+                                    Listed_parses* parses) {
   check_clip_applies(inputs, options, Front::command_line);
   std::vector<Clip_source> all;
   for (const std::string& input : inputs) {
@@ -179,7 +200,7 @@ std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, co
       continue;
     }
     try {
-      add_gltf_clips(name.file, name.clip, options.fps, all, poses);
+      add_gltf_clips(name.file, name.clip, options.fps, all, poses, options.body.empty() ? parses : nullptr);
     } catch (const invalid_input& e) {
       if (!unreadable) throw;
       unreadable->push_back(input + ": " + e.what());
@@ -190,6 +211,13 @@ std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, co
   for (Clip_source& clip : all)
     if (seen.insert({clip.file, clip.clip}).second) once.push_back(std::move(clip));
   return once;
+}
+
+}  // namespace
+
+std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, const Input_options& options,
+                                      std::vector<std::string>& poses, std::vector<std::string>* unreadable) {
+  return list_clips(inputs, options, poses, unreadable, nullptr);
 }
 
 similarity::Default_similarity store_policy(const Policy_choice& choice, Front front) {
@@ -410,15 +438,15 @@ Described_clip describe_streamed(Source& source, const Clip_source& clip, const 
   return described;
 }
 
-// Describes `clip` as `read_input` reads it, frame by frame: a glTF clip from `gltf` (welded, when
-// it is, by what the file fixes: the stream's connectivity is read's); a point cache or frame
-// sequence through `io::with_frame_source` with the same topology, triangulation, repair and fps,
-// when it `reads_frame_by_frame`.
-Described_clip describe_clip(const Clip_source& clip, const io::Gltf_file* gltf, const Input_options& options,
+// Describes `clip` as `read_input` reads it, frame by frame: a glTF clip from `gltf` with
+// `connectivity`, the file's (welded, when it is, by what the file fixes: the stream's connectivity
+// is read's); a point cache or frame sequence through `io::with_frame_source` with the same
+// topology, triangulation, repair and fps, when it `reads_frame_by_frame`.
+Described_clip describe_clip(const Clip_source& clip, const io::Gltf_file* gltf,
+                             std::shared_ptr<const io::Gltf_connectivity> connectivity, const Input_options& options,
                              const similarity::Default_similarity& policy, Front front) {
   if (gltf) {
-    io::Gltf_frame_source source(*gltf,
-                                 {.clip = clip.clip, .fps = options.fps, .repair = repair_options(clip.file, options)});
+    io::Gltf_frame_source source(std::move(connectivity), {.clip = clip.clip, .fps = options.fps});
     return describe_streamed(source, clip, gltf, options, policy, front);
   }
   if (!reads_frame_by_frame(clip.file, options)) return describe_whole(clip, nullptr, options, policy, front);
@@ -426,16 +454,24 @@ Described_clip describe_clip(const Clip_source& clip, const io::Gltf_file* gltf,
                                [&](auto& source) { return describe_streamed(source, clip, nullptr, options, policy, front); });
 }
 
-// Each glTF file parsed once for its clips, by the first of them to be described, and freed after
-// the last (clips of other files may be described meanwhile, on other threads).
+// Each glTF file parsed once for its clips, by the first of them to be described, its connectivity
+// repaired once, by the first to stream one, and both freed after the last (clips of other files
+// may be described meanwhile, on other threads).
 class Gltf_parses {
 public:
-  // For the clips `order` names, read with `options` (their body, unless a clip names its own).
+  // For the clips `order` names, read with `options` (their body, unless a clip names its own);
+  // the files that `listed` holds (parsed without a body) taken from it.
   Gltf_parses(const std::vector<Clip_source>& clips, const std::vector<std::size_t>& order,
-              const Input_options& options)
+              const Input_options& options, Listed_parses* listed)
       : options_(options) {
     for (const std::size_t i : order)
       if (io::is_character_file(clips[i].file)) ++files_[key(clips[i])].clips_left;
+    if (!listed) return;
+    for (auto& [file_and_body, entry] : files_)
+      if (file_and_body.second.empty() && options.body.empty())
+        if (const auto parsed = listed->files.find(file_and_body.first); parsed != listed->files.end())
+          entry.parsed = parsed->second;
+    listed->files.clear();  // the files of no clip to describe are freed now
   }
 
   // The parsed file of `clip` (on its body); a parse that failed throws again for each of its clips.
@@ -452,18 +488,35 @@ public:
     return entry.parsed;
   }
 
+  // The connectivity of the file of `clip` (acquired), as `read_input` repairs it; a repair that
+  // failed throws again for each of its clips.
+  std::shared_ptr<const io::Gltf_connectivity> connectivity(const Clip_source& clip) {
+    File& entry = files_.at(key(clip));
+    const std::lock_guard lock(entry.mutex);
+    if (entry.repair_error) std::rethrow_exception(entry.repair_error);
+    if (!entry.connectivity) try {
+        entry.connectivity =
+            std::make_shared<const io::Gltf_connectivity>(*entry.parsed, repair_options(clip.file, options_));
+      } catch (...) {
+        entry.repair_error = std::current_exception();
+        throw;
+      }
+    return entry.connectivity;
+  }
+
   // One clip of the parse `acquire` gave described: the parse is freed after its last.
   void release(const Clip_source& clip) {
     File& entry = files_.at(key(clip));
     const std::lock_guard lock(entry.mutex);
-    if (--entry.clips_left == 0) entry.parsed.reset();
+    if (--entry.clips_left == 0) entry.connectivity.reset(), entry.parsed.reset();
   }
 
 private:
   struct File {
     std::mutex mutex;
     std::shared_ptr<const io::Gltf_file> parsed;
-    std::exception_ptr error;
+    std::shared_ptr<const io::Gltf_connectivity> connectivity;  // refers to `parsed`
+    std::exception_ptr error, repair_error;
     std::size_t clips_left = 0;
   };
   // A file parsed on one body: its name and its body's.
@@ -581,11 +634,11 @@ void announce_files(const std::vector<Clip_source>& clips, const std::vector<std
   }
 }
 
-}  // namespace
-
-Describe_report describe_into_store(const std::string& folder, const std::vector<Clip_source>& clips,
-                                    const Input_options& options, const similarity::Default_similarity& policy,
-                                    const Describe_run& run, const std::function<void(const std::string&)>& say) {
+// `describe_into_store`, taking the files that `listed` holds parsed.
+Describe_report describe_clips(const std::string& folder, const std::vector<Clip_source>& clips,
+                               const Input_options& options, const similarity::Default_similarity& policy,
+                               const Describe_run& run, const std::function<void(const std::string&)>& say,
+                               Listed_parses* listed) {
   const auto start_append = [&] {
     return std::make_unique<store::Store_append>(folder, store_description(policy),
                                               similarity::summary_width(signature_width(policy), store_summary_chunks),
@@ -596,7 +649,7 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
   std::vector<store::Store_record> records(clips.size());
   const std::vector<std::size_t> order =
       clips_to_describe(clips, options, run.hash, run.skip_unreadable, append->store(), records, report);
-  Gltf_parses parses(clips, order, options);
+  Gltf_parses parses(clips, order, options, listed);
   Clip_progress progress(order.size(), say);
   const std::size_t batch = describe_batch(thread_count(options.threads));
   // A batch of one clip leaves the threads to its rows: they take the clips' threads.
@@ -627,7 +680,8 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
         const std::shared_ptr<const io::Gltf_file> gltf =
             io::is_character_file(clip.file) ? parses.acquire(clip) : nullptr;
         const Release_parse release(parses, gltf ? &clip : nullptr);
-        described[k] = describe_clip(clip, gltf.get(), options, threaded, run.front);
+        described[k] = describe_clip(clip, gltf.get(), gltf ? parses.connectivity(clip) : nullptr, options, threaded,
+                                     run.front);
         progress.described(clip, described[k].frame_count);
       } catch (const invalid_input& e) {
         errors[k] = e;
@@ -662,15 +716,25 @@ Describe_report describe_into_store(const std::string& folder, const std::vector
   return report;
 }
 
+}  // namespace
+
+Describe_report describe_into_store(const std::string& folder, const std::vector<Clip_source>& clips,
+                                    const Input_options& options, const similarity::Default_similarity& policy,
+                                    const Describe_run& run, const std::function<void(const std::string&)>& say) {
+  return describe_clips(folder, clips, options, policy, run, say, nullptr);
+}
+
 Describe_report describe_inputs(const std::string& folder, const std::vector<std::string>& inputs,
                                 const Input_options& options, const similarity::Default_similarity& policy,
                                 const Describe_run& run, const std::function<void(const std::string&)>& say) {
   std::vector<std::string> poses, unlisted;
-  const std::vector<Clip_source> clips = clip_sources(inputs, options, poses, run.skip_unreadable ? &unlisted : nullptr);
+  Listed_parses listed;
+  const std::vector<Clip_source> clips =
+      list_clips(inputs, options, poses, run.skip_unreadable ? &unlisted : nullptr, &listed);
   say(std::to_string(clips.size()) + " clip(s) named by the inputs");
   for (const std::string& pose : poses) say("left out " + pose + ": a pose of 1 frame, no motion");
   for (const std::string& input : unlisted) say("left out " + input);
-  Describe_report report = describe_into_store(folder, clips, options, policy, run, say);
+  Describe_report report = describe_clips(folder, clips, options, policy, run, say, &listed);
   report.unreadable.insert(report.unreadable.begin(), unlisted.begin(), unlisted.end());
   report.poses = std::move(poses);
   return report;
