@@ -7,7 +7,8 @@
 /// and after it. The stream is read twice: first for the first frame's area weights and the RMS
 /// radius over every frame (the unit of the rates, added in the order `motion_signatures_at` adds
 /// it); then through a ring of the frames that the next rows read, each row computed, in parallel
-/// with its neighbours, as soon as its last frame is in.
+/// with its neighbours, as soon as its last frame is in. A clip no longer than the ring (most game
+/// clips: 273 frames at 30 fps with the default lags) is read once, into the ring.
 #pragma once
 
 #include <deformseg/exceptions.h>
@@ -128,19 +129,24 @@ inline std::size_t ring_frames(std::span<const std::pair<std::size_t, std::size_
   return std::min(frames, widest + streamed_batch_frames);
 }
 
-/// The first pass: the first frame's area weights, and the RMS radius over every frame.
-template <FrameSource Source>
-std::pair<std::vector<double>, double> weights_and_radius(Source& source, std::size_t frames) {
+/// The first pass: the first frame's area weights, and the RMS radius over every frame, each frame
+/// read into `frame_of(t)` (`3V` coordinates: the same place for every frame, or a place each).
+template <FrameSource Source, class FrameOf>
+std::pair<std::vector<double>, double> weights_and_radius(Source& source, std::size_t frames,
+                                                          const FrameOf& frame_of) {
   const std::size_t vertices = source.num_vertices();
-  std::vector<typename Source::Coordinate> frame(3 * vertices);
-  source.read_frame(std::span(frame));
-  const std::vector<double> first(frame.begin(), frame.end());
+  const auto read = [&](std::size_t t) {
+    source.read_frame(std::span<typename Source::Coordinate>(frame_of(t), 3 * vertices));
+    return frame_of(t);
+  };
+  const auto* frame = read(0);
+  const std::vector<double> first(frame, frame + 3 * vertices);
   std::vector<double> weights = vertex_area_weights(std::span<const double>(first), source.triangles(), vertices);
   double sum = 0;
   for (std::size_t t = 0;; ++t) {
-    add_frame_spread(frame.data(), std::span<const double>(weights), sum);
+    add_frame_spread(frame, std::span<const double>(weights), sum);
     if (t + 1 == frames) break;
-    source.read_frame(std::span(frame));
+    frame = read(t + 1);
   }
   return {std::move(weights), std::sqrt(sum / double(frames))};
 }
@@ -182,7 +188,8 @@ inline std::size_t streamed_ring_frames(const Motion_signature_options& options,
 /// which `Source::Coordinate` is exact) with those weights, at the same frame rate and instants,
 /// whatever the number of threads: each row is computed by the same code from the same values.
 /// The source is read twice from its start (`rewind` before each pass): first for the weights and
-/// the RMS radius over every frame, then through a ring of `streamed_ring_frames` frames.
+/// the RMS radius over every frame, then through a ring of `streamed_ring_frames` frames; once
+/// (one `rewind`, before it) when that ring holds every frame, which the first pass then fills.
 /// @tparam Source a `FrameSource`.
 /// @param source the animation; its frame rate is `source.frames_per_second()`.
 /// @param options the lags, quantiles, floor and up direction (as `motion_signatures`).
@@ -192,10 +199,10 @@ inline std::size_t streamed_ring_frames(const Motion_signature_options& options,
 /// @return the `I x (lags x quantiles)` signatures, twice as wide with an up direction.
 /// @throws invalid_input as `motion_signatures` (fewer than two frames, bad options or frame rate,
 /// an animation without extent); for instants out of order or not finite; when the source has no
-/// vertex, or a different frame or vertex count after its rewind (a file rewritten between the
-/// passes); and as `source.read_frame` (naming the file and the frame).
+/// vertex, or a different frame or vertex count after its second rewind (a file rewritten between
+/// the passes); and as `source.read_frame` (naming the file and the frame).
 /// @par Complexity O(I V L log k) expected, as `motion_signatures_at`, plus reading the source
-/// twice; memory O(V (2 max_lag fps + `streamed_batch_frames`)) coordinates for the ring, O(I)
+/// twice (once when the ring holds every frame); memory O(V (2 max_lag fps + `streamed_batch_frames`)) coordinates for the ring, O(I)
 /// for the rows' frame spans, plus the result. Rows are computed in parallel, a batch at a time, on
 /// `options.threads` threads.
 /// @par Example
@@ -210,21 +217,27 @@ Eigen::MatrixXd motion_signatures_streamed(Source& source, const Motion_signatur
   internal::check_frame_count(frames);
   internal::check_signature_options(options, fps);
 
-  source.rewind();
-  const std::pair<std::vector<double>, double> first_pass = internal::weights_and_radius(source, frames);
-  const std::span<const double> weights(first_pass.first);
-  internal::check_radius(first_pass.second);
-  const internal::Signature_rows rows = internal::signature_rows(options, fps, frames, first_pass.second);
-  const auto spans = internal::frames_of_rows(rows, instants);
-  source.rewind();
-  internal::check_unchanged(source, frames, vertices);
-
+  // The rows' frames do not depend on the radius: the ring's size is known before the first pass.
+  const auto spans = internal::frames_of_rows(internal::signature_rows(options, fps, frames, 1.0), instants);
   const std::size_t capacity = internal::ring_frames(spans, frames), block = 3 * vertices;
   std::vector<Coordinate> ring(capacity * block);
   const auto frame_of = [&](std::size_t t) { return ring.data() + block * (t % capacity); };
+  // A ring that holds every frame is filled by the first pass, and the source read once.
+  const bool once = capacity == frames;
+  source.rewind();
+  const std::pair<std::vector<double>, double> first_pass =
+      internal::weights_and_radius(source, frames, [&](std::size_t t) { return frame_of(once ? t : 0); });
+  const std::span<const double> weights(first_pass.first);
+  internal::check_radius(first_pass.second);
+  const internal::Signature_rows rows = internal::signature_rows(options, fps, frames, first_pass.second);
+  if (!once) {
+    source.rewind();
+    internal::check_unchanged(source, frames, vertices);
+  }
+
   using Row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   Row_major out(static_cast<Eigen::Index>(instants.size()), static_cast<Eigen::Index>(rows.columns));
-  std::size_t loaded = 0;  // frames read into the ring so far
+  std::size_t loaded = once ? frames : 0;  // frames read into the ring so far
   for (std::size_t next_row = 0; next_row < instants.size();) {
     // Frame `loaded` replaces frame `loaded - capacity`, which no row from `next_row` on reads.
     while (loaded < frames && loaded < spans[next_row].first + capacity)
