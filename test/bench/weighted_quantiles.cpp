@@ -1,6 +1,7 @@
 // The 8 area-weighted quantiles of a frame's rates, as motion signatures take them twice per lag
-// and frame: the radix selection (signatures::internal::weighted_quantiles) against a sort of the
-// rates and a walk up to each level (the reference it equals), at 1,000, 10,000 and 100,000
+// and frame: the radix selection (signatures::internal::weighted_quantiles) and one round of its
+// buckets checked against rounding (Bucket_quantiles, which motion signatures use) against a sort
+// of the rates and a walk up to each level (the reference they equal), at 1,000, 10,000 and 100,000
 // rates (a game character, a captured body, a dense scan). The rates are log-normal, spread over
 // about 16 octaves, a fifth of them exactly 0 (vertices that stand still); `items` counts rates,
 // and `ratio_to_sort` is the selection's processor time over the sort's in the same run.
@@ -56,37 +57,56 @@ void sort_and_walk(std::vector<Keyed_rate>& rates, double* out) {
 
 std::map<long, double> sort_seconds_per_call;  // per size, for the ratio
 
-// The timed loop copies a set of rates before each call (both variants alike), since either
-// reorders them.
-template <bool radix>
+enum class Way { sort, radix, buckets };
+
+// The timed loop copies a set of rates before each call (every variant alike), since the sort and
+// the radix selection reorder them; the buckets read the keys and weights apart, as a frame's
+// rates give them, and keep their bucket span from call to call.
+template <Way way>
 void quantiles_of(benchmark::State& state) {
   const auto n = std::size_t(state.range(0));
   const auto sets = rate_sets(n);
   std::vector<Keyed_rate> rates(n), spare(n);
+  std::vector<std::uint64_t> keys(n);
+  std::vector<double> weights(n);
+  deformseg::signatures::internal::Bucket_quantiles buckets;
+  deformseg::signatures::internal::Bucket_quantiles::Bucket_span span;
   double out[quantiles];
   std::size_t i = 0;
   const std::clock_t start = std::clock();
   for (auto _ : state) {
-    rates = sets[i++ % sets.size()];
-    if constexpr (radix)
-      deformseg::signatures::internal::weighted_quantiles(rates, spare, quantiles, out);
-    else
-      sort_and_walk(rates, out);
+    const auto& set = sets[i++ % sets.size()];
+    if constexpr (way == Way::buckets) {
+      std::uint64_t low = set[0].key, high = low;
+      for (std::size_t r = 0; r < n; ++r) {
+        keys[r] = set[r].key, weights[r] = set[r].weight;
+        low = std::min(low, keys[r]), high = std::max(high, keys[r]);
+      }
+      buckets.quantiles(keys, low, high, weights, quantiles, out, span, rates, spare);
+    } else {
+      rates = set;
+      if constexpr (way == Way::radix)
+        deformseg::signatures::internal::weighted_quantiles(rates, spare, quantiles, out);
+      else
+        sort_and_walk(rates, out);
+    }
     benchmark::DoNotOptimize(out);
   }
   const double per_call = double(std::clock() - start) / CLOCKS_PER_SEC / double(state.iterations());
   state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(n));
-  if (!radix) sort_seconds_per_call[state.range(0)] = per_call;
+  if (way == Way::sort) sort_seconds_per_call[state.range(0)] = per_call;
   else if (sort_seconds_per_call.count(state.range(0)))
     state.counters["ratio_to_sort"] = per_call / sort_seconds_per_call[state.range(0)];
 }
 
-void sort(benchmark::State& state) { quantiles_of<false>(state); }
-void radix_selection(benchmark::State& state) { quantiles_of<true>(state); }
+void sort(benchmark::State& state) { quantiles_of<Way::sort>(state); }
+void radix_selection(benchmark::State& state) { quantiles_of<Way::radix>(state); }
+void bucket_selection(benchmark::State& state) { quantiles_of<Way::buckets>(state); }
 
 }  // namespace
 
 BENCHMARK(sort)->Arg(1000)->Arg(10000)->Arg(100000)->MeasureProcessCPUTime();
 BENCHMARK(radix_selection)->Arg(1000)->Arg(10000)->Arg(100000)->MeasureProcessCPUTime();
+BENCHMARK(bucket_selection)->Arg(1000)->Arg(10000)->Arg(100000)->MeasureProcessCPUTime();
 
 BENCHMARK_MAIN();

@@ -15,6 +15,7 @@
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/parallel_for.h>
+#include <deformseg/signatures/internal/weighted_quantiles.h>
 #include <deformseg/signatures/procrustes_distances.h>
 
 #include <Eigen/Core>
@@ -77,164 +78,6 @@ struct Motion_signature_options {
 };
 
 namespace internal {
-
-/// A rate as the selection of quantiles orders it: its value's `order_key`, and its weight.
-struct Keyed_rate {
-  std::uint64_t key;
-  double weight;
-};
-
-/// An unsigned key that orders as `value` does (-0 just below +0): the bits of a positive double
-/// with the sign bit set, those of a negative one flipped.
-inline std::uint64_t order_key(double value) {
-  const auto bits = std::bit_cast<std::uint64_t>(value);
-  return bits >> 63 ? ~bits : bits | (std::uint64_t(1) << 63);
-}
-
-/// The value whose `order_key` is `key`.
-inline double key_value(std::uint64_t key) {
-  return std::bit_cast<double>(key >> 63 ? key & ~(std::uint64_t(1) << 63) : ~key);
-}
-
-/// The level of quantile q of k: (q + 1/2) / k of the total weight.
-inline double quantile_level(std::size_t q, std::size_t k) { return (double(q) + 0.5) / double(k); }
-
-/// The buckets of a round of the selection of quantiles: rates whose keys lie in [low, high] spread
-/// over equal spans of their values' logarithms, so that a bucket holds a share of a few rates
-/// whatever the magnitudes. Magnitudes below 2^-40 of the largest are lumped with zero (rates of
-/// exactly 0, a vertex that stands still, are common), and the sign kept: a key maps to
-/// `middle + c` or `middle - c`, c the magnitude's bits above those of 2^-40 of the largest.
-class Key_buckets {
-public:
-  /// At most 2^bits buckets. @pre low < high.
-  Key_buckets(std::uint64_t low, std::uint64_t high, int bits) {
-    const std::uint64_t largest = std::max(magnitude(low), magnitude(high));
-    constexpr std::uint64_t octaves = std::uint64_t(40) << 52;  // the exponent's bits start at bit 52
-    tiny_ = largest > octaves ? largest - octaves : 0;
-    middle_ = largest - tiny_;
-    lowest_ = spread(low);
-    const std::uint64_t span = spread(high) - lowest_;
-    shift_ = std::max(int(std::bit_width(span)) - bits, 0);
-    count_ = std::size_t(span >> shift_) + 1;
-  }
-  /// The number of buckets (1 when every rate is 0).
-  std::size_t count() const { return count_; }
-  /// The bucket of `key`, in [0, count()): not decreasing with the key.
-  std::size_t operator()(std::uint64_t key) const { return std::size_t((spread(key) - lowest_) >> shift_); }
-
-private:
-  // The bits of |value|, which order as the magnitudes do.
-  static std::uint64_t magnitude(std::uint64_t key) { return (key >> 63 ? key : ~key) & ~(std::uint64_t(1) << 63); }
-  std::uint64_t spread(std::uint64_t key) const {
-    const std::uint64_t m = magnitude(key), c = m > tiny_ ? m - tiny_ : 0;
-    return key >> 63 ? middle_ + c : middle_ - c;
-  }
-
-  std::uint64_t tiny_ = 0, middle_ = 0, lowest_ = 0;
-  int shift_ = 0;
-  std::size_t count_ = 1;
-};
-
-/// The quantiles `first` to `last` (exclusive) of `k`, all of which lie in `rates` (whose keys are
-/// in [low, high]) after the weight `before` of the rates below it, into `out`: a radix selection.
-/// The rates are counted into `Key_buckets` (at most 1024, about 4 rates a bucket), the buckets'
-/// weights summed up to each level, and only the rates of the buckets that hold a level gathered
-/// into `spare` (as long as `rates`) and selected from further; parts of at most 32 rates are
-/// sorted and walked.
-inline void select_weighted_quantiles(std::span<Keyed_rate> rates, std::span<Keyed_rate> spare, double before,
-                                      std::size_t first, std::size_t last, std::size_t k, std::uint64_t low,
-                                      std::uint64_t high, double* out) {
-  if (first == last) return;
-  if (low == high) {
-    for (std::size_t q = first; q < last; ++q) out[q] = key_value(low);
-    return;
-  }
-  if (rates.size() <= 32) {  // few enough to sort, then walk up to each level
-    std::sort(rates.begin(), rates.end(), [](const Keyed_rate& a, const Keyed_rate& b) { return a.key < b.key; });
-    std::size_t at = 0;
-    double cumulative = before + rates[0].weight;
-    for (std::size_t q = first; q < last; ++q) {
-      while (cumulative < quantile_level(q, k) && at + 1 < rates.size()) cumulative += rates[++at].weight;
-      out[q] = key_value(rates[at].key);
-    }
-    return;
-  }
-  constexpr int max_bits = 10;
-  const int bits = std::clamp(int(std::bit_width(rates.size())) - 2, 4, max_bits);
-  const Key_buckets bucket(low, high, bits);
-  const std::size_t buckets = bucket.count();
-  if (buckets == 1) {  // zeros of both signs, equal values
-    for (std::size_t q = first; q < last; ++q) out[q] = key_value(low);
-    return;
-  }
-  std::array<double, std::size_t(1) << max_bits> weight;
-  std::array<std::uint32_t, std::size_t(1) << max_bits> count;
-  std::fill_n(weight.begin(), buckets, 0.0);
-  std::fill_n(count.begin(), buckets, 0);
-  for (const Keyed_rate& r : rates) {
-    const std::size_t b = bucket(r.key);
-    weight[b] += r.weight, ++count[b];
-  }
-  // The buckets that hold levels: each with the weight below it, its quantiles and its place in `spare`.
-  struct Part {
-    std::size_t first, last, begin, size;
-    double before;
-    std::uint64_t low, high;
-  };
-  // At most one per quantile: 64 in place, more (k > 64) on the heap.
-  std::array<Part, 64> near;
-  std::vector<Part> far;
-  const auto part = [&](std::size_t p) -> Part& { return p < near.size() ? near[p] : far[p - near.size()]; };
-  constexpr std::uint16_t none = 0xffff;
-  std::array<std::uint16_t, std::size_t(1) << max_bits> part_of;
-  std::fill_n(part_of.begin(), buckets, none);
-  std::size_t q = first, parts = 0, filled = 0;
-  double cumulative = before;
-  for (std::size_t b = 0; b < buckets && q < last; ++b) {
-    if (count[b] == 0) continue;
-    const double through = cumulative + weight[b];
-    std::size_t end = q;
-    while (end < last && (b + 1 == buckets || quantile_level(end, k) <= through)) ++end;
-    if (end > q) {
-      const Part made{q, end, filled, 0, cumulative, ~std::uint64_t(0), 0};
-      if (parts < near.size()) near[parts] = made;
-      else far.push_back(made);
-      part_of[b] = std::uint16_t(parts++), filled += count[b];
-    }
-    q = end, cumulative = through;
-  }
-  for (const Keyed_rate& r : rates)
-    if (const std::uint16_t p = part_of[bucket(r.key)]; p != none) {
-      Part& into = part(p);
-      spare[into.begin + into.size++] = r;
-      into.low = std::min(into.low, r.key), into.high = std::max(into.high, r.key);
-    }
-  // Each part's rates are in `spare` now; `rates` serves as their scratch.
-  for (std::size_t p = 0; p < parts; ++p) {
-    const Part& into = part(p);
-    select_weighted_quantiles(spare.subspan(into.begin, into.size), rates.subspan(into.begin, into.size),
-                              into.before, into.first, into.last, k, into.low, into.high, out);
-  }
-}
-
-/// The `k` area-weighted quantiles of `rates` (keyed values and their weights, weights summing to
-/// 1), which it reorders, using `spare` (as long) as scratch: quantile q is the smallest rate whose
-/// cumulative weight reaches (q + 1/2) / k (the largest rate if rounding leaves the total short of
-/// it). O(n) expected for rates spread over many magnitudes, O(n log n) at worst.
-inline void weighted_quantiles(std::span<Keyed_rate> rates, std::span<Keyed_rate> spare, std::size_t k,
-                               double* out) {
-  if (rates.empty()) return;
-  std::uint64_t low = rates[0].key, high = low;
-  for (const Keyed_rate& r : rates) low = std::min(low, r.key), high = std::max(high, r.key);
-  select_weighted_quantiles(rates, spare, 0.0, 0, k, k, low, high, out);
-}
-
-/// `weighted_quantiles` of (value, weight) pairs.
-inline void weighted_quantiles(const std::vector<std::pair<double, double>>& rates, std::size_t k, double* out) {
-  std::vector<Keyed_rate> keyed(rates.size()), spare(rates.size());
-  for (std::size_t i = 0; i < rates.size(); ++i) keyed[i] = {order_key(rates[i].first), rates[i].second};
-  weighted_quantiles(keyed, spare, k, out);
-}
 
 /// Where the instant `time` (seconds from the first frame) falls among frames sampled at `fps`:
 /// the frame at or before it and the fraction of the way to the next, the instant first cut to the
@@ -369,39 +212,98 @@ inline std::pair<std::size_t, std::size_t> frames_of_row(const Signature_rows& r
   return {first, last};
 }
 
-/// The scratch of `signature_row`: V rates each for the speeds, the vertical rates and the selection.
-struct Row_scratch {
-  explicit Row_scratch(std::size_t vertices) : speeds(vertices), rises(vertices), spare(vertices) {}
-  std::vector<Keyed_rate> speeds, rises, spare;
+/// A lag's share of the last row that one `Row_scratch` computed: where its two instants fell
+/// among the frames, and its signature values (the speeds', then the vertical rates'). A row whose
+/// instants fall at the same places has the same values: near both ends of a clip, where spans are
+/// cut at its first and last frames (every row of a clip shorter than the longest lag).
+struct Lag_values {
+  std::pair<std::size_t, double> before{~std::size_t(0), 0.0}, after{~std::size_t(0), 0.0};
+  std::vector<double> values;
 };
+
+/// The scratch of `signature_row`, kept from row to row by one thread: V keys each for the speeds
+/// and the vertical rates of a lag, the selection's, the span of the buckets of each lag's speeds
+/// and vertical rates, and each lag's last values.
+struct Row_scratch {
+  explicit Row_scratch(std::size_t vertices)
+      : speeds(vertices), rises(vertices), keyed(vertices), spare(vertices) {}
+  std::vector<std::uint64_t> speeds, rises;
+  std::vector<Keyed_rate> keyed, spare;
+  Bucket_quantiles selection;
+  std::vector<Bucket_quantiles::Bucket_span> spans;  // per lag: the speeds', the vertical rates'
+  std::vector<Lag_values> last;                      // per lag
+};
+
+/// The smallest and largest of some keys.
+struct Key_range {
+  std::uint64_t low = ~std::uint64_t(0), high = 0;
+  void add(std::uint64_t key) { low = std::min(low, key), high = std::max(high, key); }
+};
+
+/// The `order_key`s of the vertices' speeds and, with `up`, vertical rates between two instants,
+/// in units of `unit` per coordinate unit of displacement, and their ranges.
+template <class Coordinate>
+std::pair<Key_range, Key_range> displacement_rates(const Frames_around<Coordinate>& before,
+                                                   const Frames_around<Coordinate>& after, std::size_t vertices,
+                                                   double unit, const std::optional<Eigen::Vector3d>& up,
+                                                   std::uint64_t* speeds, std::uint64_t* rises) {
+  Key_range speed, rise;
+  // Positions read as they are where both instants fall on frames (whole lags), as `point_at` does.
+  const bool on_frames = before.fraction == 0 && after.fraction == 0;
+  const auto rates = [&](const auto& displacement) {
+    for (std::size_t v = 0; v < vertices; ++v) {
+      const Eigen::Vector3d d = displacement(v);
+      speed.add(speeds[v] = order_key(d.norm() * unit));
+      if (up) rise.add(rises[v] = order_key(d.dot(*up) * unit));
+    }
+  };
+  if (on_frames)
+    rates([&](std::size_t v) -> Eigen::Vector3d { return point(after.before, v) - point(before.before, v); });
+  else
+    rates([&](std::size_t v) -> Eigen::Vector3d { return point_at(after, v) - point_at(before, v); });
+  return {speed, rise};
+}
 
 /// The signature at `instant` into `row` (`rows.columns` values), the frames read through
 /// `frame_of(t)` (frame t's `3V` coordinates).
 template <class FrameOf>
 void signature_row(const Signature_rows& rows, const FrameOf& frame_of, std::span<const double> weights,
                    double instant, double* row, Row_scratch& scratch) {
-  std::vector<Keyed_rate>& speeds = scratch.speeds;
-  std::vector<Keyed_rate>& rises = scratch.rises;
   const Motion_signature_options& options = rows.options;
   const std::size_t vertices = weights.size(), k = options.quantiles, lags = options.lags.size();
   const double vertical_factor = std::sqrt(options.vertical_weight);
+  scratch.spans.resize(2 * lags);
+  scratch.last.resize(lags);
+  const auto quantiles = [&](std::size_t stream, const std::vector<std::uint64_t>& keys, Key_range range,
+                              double* out) {
+    scratch.selection.quantiles(keys, range.low, range.high, weights, k, out, scratch.spans[stream], scratch.keyed,
+                                scratch.spare);
+  };
   for (std::size_t l = 0; l < lags; ++l) {
     const double lag = options.lags[l];
-    const auto before = frames_around(frame_of, frame_at(instant - lag, rows.frames_per_second, rows.frames));
-    const auto after = frames_around(frame_of, frame_at(instant + lag, rows.frames_per_second, rows.frames));
-    const double unit = 1.0 / (2.0 * lag * rows.radius);
-    for (std::size_t v = 0; v < vertices; ++v) {
-      const Eigen::Vector3d d = point_at(after, v) - point_at(before, v);
-      speeds[v] = {order_key(d.norm() * unit), weights[v]};
-      if (rows.up) rises[v] = {order_key(d.dot(*rows.up) * unit), weights[v]};
-    }
+    const auto at_before = frame_at(instant - lag, rows.frames_per_second, rows.frames);
+    const auto at_after = frame_at(instant + lag, rows.frames_per_second, rows.frames);
     double* speed_quantiles = row + l * k;
-    weighted_quantiles(speeds, scratch.spare, k, speed_quantiles);
-    for (std::size_t q = 0; q < k; ++q) speed_quantiles[q] = std::log(std::max(speed_quantiles[q], options.floor));
-    if (!rows.up) continue;
     double* vertical = speed_quantiles + lags * k;
-    weighted_quantiles(rises, scratch.spare, k, vertical);
+    Lag_values& last = scratch.last[l];
+    if (last.before == at_before && last.after == at_after) {
+      std::copy_n(last.values.begin(), k, speed_quantiles);
+      if (rows.up) std::copy_n(last.values.begin() + std::ptrdiff_t(k), k, vertical);
+      continue;
+    }
+    const auto before = frames_around(frame_of, at_before);
+    const auto after = frames_around(frame_of, at_after);
+    const double unit = 1.0 / (2.0 * lag * rows.radius);
+    const auto [speed, rise] =
+        displacement_rates(before, after, vertices, unit, rows.up, scratch.speeds.data(), scratch.rises.data());
+    quantiles(2 * l, scratch.speeds, speed, speed_quantiles);
+    for (std::size_t q = 0; q < k; ++q) speed_quantiles[q] = std::log(std::max(speed_quantiles[q], options.floor));
+    last.values.assign(speed_quantiles, speed_quantiles + k);
+    last.before = at_before, last.after = at_after;
+    if (!rows.up) continue;
+    quantiles(2 * l + 1, scratch.rises, rise, vertical);
     for (std::size_t q = 0; q < k; ++q) vertical[q] = vertical_factor * std::asinh(vertical[q] / options.vertical_unit);
+    last.values.insert(last.values.end(), vertical, vertical + k);
   }
 }
 
