@@ -67,8 +67,10 @@ void check_posed_alone(const deformseg::io::Gltf_file& file, const Gltf_read_opt
   std::size_t differ = 0;
   for (std::size_t t = 0; t < sampler.num_frames(); ++t) {
     sampler.sample_frame(t, frame);
-    for (std::size_t i = 0; i < some.size(); ++i)
-      differ += std::memcmp(&frame[3 * i], &all.positions[(t * all.num_vertices + some[i]) * 3], 3 * sizeof(double)) != 0;
+    for (std::size_t i = 0; i < some.size(); ++i) {
+      const double* expected = &all.positions[(t * all.num_vertices + some[i]) * 3];
+      differ += std::memcmp(&frame[3 * i], expected, 3 * sizeof(double)) != 0;
+    }
   }
   CHECK(differ == 0);
   const std::vector<std::uint32_t> kept = file.repair(options.repair).source_vertex;

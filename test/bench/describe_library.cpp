@@ -107,7 +107,8 @@ std::size_t read_alone(const std::vector<fs::path>& files) {
 struct Store {
   Store(const fs::path& folder, std::size_t width)
       : append(folder, R"({"policy": "motion-signature", "bench": true})",
-               ds::similarity::summary_width(width, summary_chunks), ds::store::motion_summary_layout(summary_chunks)) {}
+               ds::similarity::summary_width(width, summary_chunks),
+               ds::store::motion_summary_layout(summary_chunks)) {}
 
   void add(const std::string& file, const std::string& clip, std::size_t frames,
            const ds::similarity::Motion_signature_description& description) {

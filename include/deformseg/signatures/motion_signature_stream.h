@@ -202,9 +202,9 @@ inline std::size_t streamed_ring_frames(const Motion_signature_options& options,
 /// vertex, or a different frame or vertex count after its second rewind (a file rewritten between
 /// the passes); and as `source.read_frame` (naming the file and the frame).
 /// @par Complexity O(I V L log k) expected, as `motion_signatures_at`, plus reading the source
-/// twice (once when the ring holds every frame); memory O(V (2 max_lag fps + `streamed_batch_frames`)) coordinates for the ring, O(I)
-/// for the rows' frame spans, plus the result. Rows are computed in parallel, a batch at a time, on
-/// `options.threads` threads.
+/// twice (once when the ring holds every frame); memory O(V (2 max_lag fps +
+/// `streamed_batch_frames`)) coordinates for the ring, O(I) for the rows' frame spans, plus the
+/// result. Rows are computed in parallel, a batch at a time, on `options.threads` threads.
 /// @par Example
 /// @include motion_signature_stream.cpp
 template <FrameSource Source>

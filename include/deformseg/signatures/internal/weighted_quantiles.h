@@ -349,7 +349,10 @@ private:
               std::size_t last, std::size_t k, double* out) {
     if (part.size() <= 16) return walk(part, below, first, last, k, out);
     std::uint64_t low = ~std::uint64_t(0), high = 0;
-    for (const Keyed_rate& r : part) low = std::min(low, bucket.offset(r.key)), high = std::max(high, bucket.offset(r.key));
+    for (const Keyed_rate& r : part) {
+      const std::uint64_t offset = bucket.offset(r.key);
+      low = std::min(low, offset), high = std::max(high, offset);
+    }
     if (low == high) return walk(part, below, first, last, k, out);
     constexpr int sub_bits = 4;
     const int sub_shift = std::max(int(std::bit_width(high - low)) - sub_bits, 0);
