@@ -37,11 +37,28 @@ std::string alignment_name(const Policy_choice& choice) {
   return choice.alignment.empty() ? std::string(policy_entry(choice).alignment) : choice.alignment;
 }
 
-similarity::Any_policy make_policy(const Policy_choice& choice) {
-  const Policy_entry& policy = policy_entry(choice);
+namespace {
+
+// The threads of `policy`'s own loops, wherever its type keeps them.
+template <class Policy>
+void set_threads(Policy& policy, int threads) {
+  if constexpr (requires { policy.signatures.threads; }) policy.signatures.threads = threads;
+  if constexpr (requires { policy.histograms.histogram.threads; })
+    policy.histograms.strain.threads = policy.histograms.histogram.threads = threads;
+  if constexpr (requires { policy.segmentation.threads; }) policy.threads = policy.segmentation.threads = threads;
+  if constexpr (requires { policy.clustering.threads; }) policy.clustering.threads = threads;
+}
+
+}  // namespace
+
+similarity::Any_policy make_policy(const Policy_choice& choice, int threads) {
+  const Policy_entry& entry = policy_entry(choice);
   Policy_choice given = choice;
-  if (policy.threshold) given.threshold = choice.threshold.value_or(*policy.threshold);
-  return policy.make(entry_named(similarity_alignments, alignment_name(choice)).alignment, given);
+  if (entry.threshold) given.threshold = choice.threshold.value_or(*entry.threshold);
+  const similarity::Any_alignment& alignment = entry_named(similarity_alignments, alignment_name(choice)).alignment;
+  similarity::Any_policy policy = entry.make(alignment, given);
+  std::visit([&](auto& chosen) { set_threads(chosen, threads); }, policy);
+  return policy;
 }
 
 void check(const Policy_choice& choice, Front front) {
@@ -92,7 +109,7 @@ Compared compare_descriptions(const Policy& policy, const Description& da, const
 
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
                  const Policy_choice& choice, const Significance_request& significance, int threads) {
-  return similarity::visit_policy(make_policy(choice), [&](const auto& policy) {
+  return similarity::visit_policy(make_policy(choice, threads), [&](const auto& policy) {
     return compare_descriptions(policy, policy.describe(a), policy.describe(b), shuffled_copies(choice, significance),
                                 significance.seed, threads);
   });
@@ -133,7 +150,7 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
                                          const Policy_choice& choice,
                                          const Significance_request& significance, Front front,
                                          std::array<Streamed_input, 2>& streamed) {
-  const similarity::Any_policy any = make_policy(choice);
+  const similarity::Any_policy any = make_policy(choice, options.threads);
   const auto streams = [](const auto& policy) { return describes_streams<std::remove_cvref_t<decltype(policy)>>; };
   if (!similarity::visit_policy(any, streams)) return std::nullopt;
   const std::array<Input_name, 2> names{input_name(inputs[0], options, front), input_name(inputs[1], options, front)};

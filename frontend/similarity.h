@@ -169,9 +169,11 @@ const Policy_entry& policy_entry(const Policy_choice& choice);
 std::string alignment_name(const Policy_choice& choice);
 
 /// The library's policy that `choice` names, aligning by its alignment, with its threshold (or the
-/// policy's) and up direction; every other parameter at the library's default.
-/// @pre as `policy_entry`.
-similarity::Any_policy make_policy(const Policy_choice& choice);
+/// policy's) and up direction, its own loops (describing, and a graph policy's edit distances and
+/// clustering) on `threads` threads (0: all; a loop inside another parallel loop, as a similarity
+/// matrix's pairs, runs on one); every other parameter at the library's default.
+/// @pre as `policy_entry`; `threads` in [0, max_threads], else the policy refuses it when used.
+similarity::Any_policy make_policy(const Policy_choice& choice, int threads = 0);
 
 /// The significance of a similarity: its z-score against frame-shuffled copies of the second.
 struct Significance_request {
@@ -207,8 +209,8 @@ struct Compared {
 };
 
 /// How alike `a` and `b` move under `choice` and, for a policy whose frames can be shuffled,
-/// the z-score of the value against shuffled copies of `b` as `significance` asks, the copies
-/// scored on `threads` threads (0: all; the z-score does not depend on it).
+/// the z-score of the value against shuffled copies of `b` as `significance` asks: each described
+/// and the copies scored on `threads` threads (0: all; the result does not depend on it).
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
                  const Policy_choice& choice, const Significance_request& significance, int threads = 0);
 

@@ -137,3 +137,17 @@ def test_similarity_streamed_equals_read_whole(tool, scratch, synth_obj, bend_on
         assert "frame by frame" in streamed.err and "frame by frame" not in whole.err
         assert streamed.out == whole.out
         assert len(streamed.json()["alignment"]) > 0
+
+
+# --threads reaches every loop of a comparison, the policy's own included: with the environment's
+# count unreadable, one thread compares by every policy (a loop left on the environment's count
+# fails), the same as on two; the environment's count is read only when --threads asks for it.
+@pytest.mark.parametrize("policy", POLICIES)
+def test_similarity_threads_reach_the_policy(tool, synth_obj, bend_once, policy, monkeypatch):
+    args = ["similarity", synth_obj[0], bend_once[0], "--policy", policy, "--json", "-"]
+    two = succeeds(tool(*args, "--threads", "2")).json()
+    monkeypatch.setenv("DEFORMSEG_NUM_THREADS", "many")
+    one = succeeds(tool(*args, "--threads", "1")).json()
+    assert one["similarity"] == two["similarity"] and one["alignment"] == two["alignment"]
+    assert one.get("z_score") == two.get("z_score")
+    fails(tool(*args), "DEFORMSEG_NUM_THREADS is 'many'")
