@@ -39,6 +39,7 @@ int main(int argc, char** argv) try {
   // motion (as B's quicker bend) is another motion.
   const similarity::Similarity alike = similarity::motion_similarity(a, b);
   std::cout << "similarity of A and B: " << alike.value << '\n';
+  return 0;
 } catch (const std::exception& error) {  // deformseg::invalid_input names the file, line or frame
   std::cerr << "error: " << error.what() << '\n';
   return 1;

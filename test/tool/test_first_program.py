@@ -11,10 +11,12 @@ from conftest import fails, run_program, succeeds
 
 @pytest.fixture(scope="session")
 def first_program():
+    # The program of the examples' group that holds it, and the argument that names it there.
     program = os.environ.get("DEFORMSEG_FIRST_PROGRAM")
-    if not program:
-        pytest.fail("DEFORMSEG_FIRST_PROGRAM is not set: run these tests through CTest")
-    return lambda *args: run_program(program, *args)
+    name = os.environ.get("DEFORMSEG_FIRST_PROGRAM_ARGUMENT")
+    if not program or not name:
+        pytest.fail("DEFORMSEG_FIRST_PROGRAM(_ARGUMENT) is not set: run these tests through CTest")
+    return lambda *args: run_program(program, name, *args)
 
 
 def test_first_program_clips(first_program, characters):
