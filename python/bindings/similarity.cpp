@@ -30,13 +30,14 @@ namespace {
 constexpr auto similarity_table = std::tuple_cat(frontend::policy_parameters, frontend::significance_parameters);
 
 frontend::Compared similarity(const Animation& a, const Animation& b, const frontend::Policy_choice& choice,
-                              const frontend::Significance_request& significance) {
+                              const frontend::Significance_request& significance, int threads) {
   frontend::check(choice, frontend::Front::python);
   frontend::check(significance, choice, frontend::Front::python);
+  whole_argument("threads", threads, frontend::thread_counts);
   require_motion(a.mesh, "a");
   require_motion(b.mesh, "b");
   Interruptible_call call;
-  return frontend::compare(a.mesh, b.mesh, choice, significance);
+  return frontend::compare(a.mesh, b.mesh, choice, significance, threads);
 }
 
 // The animations of a Python sequence, by address (no copy); the Python objects stay referenced
@@ -133,7 +134,7 @@ void bind_similarity(py::module_& m) {
                std::to_string(s.similarity.alignment.size()) + " aligned pairs>";
       });
 
-  define_function<similarity_table, Types<const Animation&, const Animation&>, Types<>, frontend::Policy_choice,
+  define_function<similarity_table, Types<const Animation&, const Animation&>, Types<int>, frontend::Policy_choice,
                   frontend::Significance_request>(
       m, "similarity",
       R"doc(How alike two animations move (motion_similarity), as the tool's `similarity` command.
@@ -143,8 +144,10 @@ z-score or a rank, not the value. The z-score is
 computed against frame-shuffled copies of b, shuffled by a std::mt19937 seeded with `seed`.
 Returns a Similarity (value, score, alignment, z_score, ...). Complexity: the policy's describe of
 each, one compare, plus one compare per shuffled copy (motion-signature with DTW: O(T V) to
-describe, O(Ta Tb) to compare). Releases the GIL.)doc",
-      &similarity, std::tuple{py::arg("a"), py::arg("b"), py::kw_only()});
+describe, O(Ta Tb) to compare). Each is described and the copies scored on `threads` threads
+(default 0: all the hardware's, else 1 to the library's max_threads); the result does not depend
+on their number. Releases the GIL.)doc",
+      &similarity, std::tuple{py::arg("a"), py::arg("b"), py::kw_only()}, std::tuple{py::arg_v("threads", 0)});
 
   define_function<frontend::policy_parameters, Types<const py::object&, const std::optional<py::sequence>&>,
                   Types<const std::optional<py::function>&, int>, frontend::Policy_choice>(

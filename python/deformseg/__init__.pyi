@@ -227,6 +227,7 @@ def similarity(
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
     significance: Optional[int] = None,
     seed: int = 1,
+    threads: int = 0,
 ) -> Similarity: ...
 def similarity_matrix(
     animations: Union[Sequence[Animation], MotionStore],  # a store: its clips as described, no database

@@ -265,6 +265,16 @@ def test_similarity_matrix_on_any_number_of_threads_is_the_same(grid):
         deformseg.similarity_matrix(animations, threads=-1)
 
 
+def test_similarity_on_any_number_of_threads_is_the_same(grid):
+    a, b = (deformseg.Animation(*grid(3, 4, 10 + k, seed=k)) for k in range(2))
+    for policy in ("motion-signature", "histogram", "graph"):
+        one = deformseg.similarity(a, b, policy=policy, threads=1)
+        two = deformseg.similarity(a, b, policy=policy, threads=2)
+        assert (one.value, one.alignment, one.z_score) == (two.value, two.alignment, two.z_score)
+    with pytest.raises(deformseg.InvalidInput, match=r"threads must be a whole number in \[0, "):
+        deformseg.similarity(a, b, threads=-1)
+
+
 def test_similarity_matrix_names_a_pose_of_one_frame(grid):
     faces, frames = grid(3, 4, 8)
     animations = [deformseg.Animation(faces, frames), deformseg.Animation(faces, frames[:1])]
