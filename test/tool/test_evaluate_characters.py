@@ -47,3 +47,21 @@ def test_evaluate_all_characters_self_similarity(tool, motions):
                 r"items +362\n", r"queries +306\n", r"NN accuracy +0\.(3[1-9]|[4-9][0-9])[0-9]\n",
                 r"mAP +0\.(2[7-9]|[3-9][0-9])[0-9]\n", r"ROC-AUC +0\.(69|[7-9][0-9])[0-9]\n",
                 r"median different +0\.3[0-6][0-9] ")
+
+
+# A file's clips are read in parallel and kept or skipped in their order: the same report on 1 and
+# 2 threads, two missing clips skipped in order; without --skip-unreadable the first is named.
+def test_evaluate_reads_clips_in_parallel(tool, scratch, characters, motions):
+    rows = ELEVEN_CLIPS[:3] + ["Knight.glb,No_such_clip_A,walk,kaykit"] + ELEVEN_CLIPS[3:]
+    rows += ["Knight.glb,No_such_clip_B,idle,kaykit"]
+    labels = scratch / "parallel.csv"
+    labels.write_text("file,clip,motion,rig\n" + "".join(f"{characters}/{row}\n" for row in rows))
+    reports = [succeeds(tool("evaluate", labels, "--skip-unreadable", "--threads", n, "--json", "-")).json()
+               for n in ("1", "2")]
+    for report in reports:
+        report.pop("seconds")
+    assert reports[0] == reports[1]
+    assert len(reports[0]["inputs"]) == 11 and len(reports[0]["skipped"]) == 2
+    assert "No_such_clip_A" in reports[0]["skipped"][0] and "No_such_clip_B" in reports[0]["skipped"][1]
+    run = tool("evaluate", labels, "--threads", "2")
+    assert run.status != 0 and "No_such_clip_A" in run.err and "No_such_clip_B" not in run.err, run.describe()

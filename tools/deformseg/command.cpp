@@ -1,6 +1,5 @@
 #include "command.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

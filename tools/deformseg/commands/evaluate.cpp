@@ -8,6 +8,7 @@
 #include <deformseg/color/strain_colors.h>
 #include <deformseg/evaluation/motion_labels.h>
 #include <deformseg/evaluation/retrieval_evaluation.h>
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/similarity/motion_similarity.h>
@@ -19,7 +20,9 @@
 #include <iostream>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <tuple>
+#include <vector>
 
 namespace deformseg::tool {
 namespace {
@@ -49,11 +52,13 @@ struct Read_clips {
 };
 
 // Reads the clips of `rows` that come from `file` on one body (rows[i] for i in `of_file`, their
-// `body_file`, else --body), parsing it once; a row without a clip takes --clip's.
+// `body_file`, else --body), parsing it once; a row without a clip takes --clip's. The clips are
+// read on --threads threads, one a thread (a file of one clip reads its frames on them), and kept
+// or skipped in their order.
 void read_file_clips(const std::filesystem::path& file, const std::vector<std::size_t>& of_file,
                      const std::vector<evaluation::Labelled_clip>& rows, const Evaluate_options& o, Read_clips& out) {
   const auto skip_or_throw = [&](const std::vector<std::size_t>& lost, const invalid_input& e) {
-    if (!o.skip_unreadable) throw;
+    if (!o.skip_unreadable) throw e;
     for (const std::size_t i : lost)
       out.skipped.push_back(file.string() + " clip '" + rows[i].item.clip + "': " + e.what());
   };
@@ -76,17 +81,27 @@ void read_file_clips(const std::filesystem::path& file, const std::vector<std::s
   } catch (const invalid_input& e) {
     return skip_or_throw(of_file, e);
   }
-  for (const std::size_t i : of_file) {
+  std::vector<std::optional<mesh::Surface_mesh_animation>> read(of_file.size());
+  std::vector<std::optional<invalid_input>> failed(of_file.size());
+  deformseg::internal::parallel_for(of_file.size(), o.read.threads, [&](std::size_t k) {
+    const std::size_t i = of_file[k];
     try {
       const std::string clip = rows[i].item.clip.empty() ? o.read.clip : rows[i].item.clip;
       io::require_clip_choice(*gltf, clip);  // an empty clip names a file's only one
-      out.animations.push_back(gltf->read({.clip = clip, .fps = o.read.fps,
-                                           .repair = frontend::repair_options(file.string(), o.read),
-                                           .threads = o.read.threads}));
-      out.clips.push_back(rows[i]);
+      read[k] = gltf->read({.clip = clip, .fps = o.read.fps,
+                            .repair = frontend::repair_options(file.string(), o.read),
+                            .threads = o.read.threads});
     } catch (const invalid_input& e) {
-      skip_or_throw({i}, e);
+      failed[k] = e;
     }
+  });
+  for (std::size_t k = 0; k < of_file.size(); ++k) {
+    if (failed[k]) {
+      skip_or_throw({of_file[k]}, *failed[k]);
+      continue;
+    }
+    out.animations.push_back(std::move(*read[k]));
+    out.clips.push_back(rows[of_file[k]]);
   }
 }
 
