@@ -1,5 +1,6 @@
-// The value of a DTW alignment without its path, by deformseg::alignment::Dtw::mean_cost: the
-// same cost and path length as align, in memory linear in one length; then early abandoning,
+// The value of a DTW alignment without its path, by deformseg::alignment::Dtw::mean_cost (and
+// score_and_length, what a similarity's normalisation reads): the same cost and path length as
+// align, in memory linear in one length; then early abandoning,
 // when only whether the mean cost is below a threshold matters (a nearest-neighbour search).
 #include <deformseg/alignment/dtw.h>
 
@@ -15,6 +16,7 @@ int main() {
 
   const al::Alignment path = al::Dtw{}.align(x.size(), y.size(), cost);
   const al::Dtw_mean_cost value = al::Dtw{}.mean_cost(x.size(), y.size(), cost);
+  const al::Score_and_length score = al::Dtw{}.score_and_length(x.size(), y.size(), cost);
   std::cout << "align: cost " << path.score << " over " << path.pairs.size() << " pairs\n"
             << "mean_cost: cost " << value.score << " over " << value.length << " cells, mean " << value.mean()
             << '\n';
@@ -32,6 +34,7 @@ int main() {
             << stopped.rows_done << " of " << x.size() << " rows\n";
   // [abandon]
 
-  const bool same = value.score == path.score && value.length == path.pairs.size();
+  const bool same = value.score == path.score && value.length == path.pairs.size() && score.score == path.score &&
+                    score.length == path.pairs.size();
   return same && stopped.abandoned && stopped.rows_done == 4 ? 0 : 1;
 }

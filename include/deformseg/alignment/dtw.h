@@ -309,6 +309,8 @@ struct Dtw {
   /// @param n, m, d as `align`.
   /// @throws invalid_input as `score`.
   /// @par Complexity as `mean_cost`: O(n m) time (less with a window), O(m) memory.
+  /// @par Example
+  /// @include dtw_mean_cost.cpp
   template <Dissimilarity D>
   Score_and_length score_and_length(std::size_t n, std::size_t m, const D& d) const {
     const Dtw_mean_cost value = mean_cost(n, m, d);
