@@ -1,11 +1,13 @@
 // Reads a glTF 2.0 character: what the file holds (gltf_contents), one clip as an animation
-// (read_gltf), every clip of it parsed once (Gltf_file), and the clips of an animation-only file
-// (no mesh, as a motion library exports them) played on its body.
+// (read_gltf), every clip of it parsed once (Gltf_file) and its connectivity repaired once for
+// them all (read whole, a frame at a time, or the repair's vertices sampled), and the clips of an
+// animation-only file (no mesh, as a motion library exports them) played on its body.
 //
 // With no argument it first writes a small skinned character itself, bend.gltf: a strip of
 // 2 x 4 squares on a two-bone skeleton whose second bone bends by 90 degrees in one second
 // (clip "bend"), and swings back and forth (clip "swing").
 // Usage: read_gltf [FILE.gltf|FILE.glb [CLIP]]
+#include <deformseg/io/frame_stream.h>
 #include <deformseg/io/gltf.h>
 
 #include <tiny_gltf.h>
@@ -17,6 +19,7 @@
 #include <exception>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -187,6 +190,30 @@ int main(int argc, char** argv) {
       std::cout << "sampled clip '" << clip << "': " << sampled.report.frames << " frames of "
                 << sampled.num_vertices << " vertices, in the file's order\n";
     }
+
+    // [once]
+    // The clips share the file's connectivity, repaired once: read whole, or a frame at a time
+    // (a Gltf_frame_source, as the motion signatures stream it), or the repair's vertices sampled.
+    const deformseg::io::Repaired_triangles repaired = file.repair();
+    const auto connectivity = std::make_shared<const deformseg::io::Gltf_connectivity>(file);
+    for (const std::string& clip : file.clip_names()) {
+      const auto whole = file.read(repaired, {.clip = clip});
+      deformseg::io::Gltf_frame_source frames(connectivity, {.clip = clip});
+      std::vector<double> frame(3 * frames.num_vertices());
+      bool same = frames.clip_name() == clip && whole.all_positions().size() == frames.num_frames() * frame.size();
+      for (std::size_t t = 0; same && t < frames.num_frames(); ++t) {
+        frames.read_frame(frame);
+        same = std::ranges::equal(frame, whole.frame_positions(t));
+      }
+      deformseg::io::Gltf_frame_sampler kept = file.frame_sampler({.clip = clip}, repaired.source_vertex);
+      kept.sample_frame(0, frame);
+      same = same && std::ranges::equal(frame, whole.frame_positions(0));
+      std::cout << "clip '" << clip << "' read with the repair made once: " << whole.num_vertices()
+                << " vertices of the file's " << file.num_vertices() << "; frame by frame, "
+                << (same ? "the same frames" : "other frames") << "\n";
+      if (!same) return 1;
+    }
+    // [once]
 
     // [bind]
     // The clips of an animation-only file played on the body: matched by the nodes' names.

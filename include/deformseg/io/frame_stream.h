@@ -339,6 +339,11 @@ public:
   double frames_per_second() const noexcept { return fps_; }
   /// @brief The repaired triangles, as `Gltf_file::read` numbers them.
   std::span<const std::array<std::uint32_t, 3>> triangles() const noexcept { return connectivity_->triangles(); }
+  /// @brief The clip's name as in the file (maybe empty), as `Gltf_read_report::clip`.
+  std::string clip_name() const { return sampler_.clip_name(); }
+  /// @brief The connectivity the source shares: the file's repair (`repaired().report` says what
+  /// it changed) and its triangles.
+  const Gltf_connectivity& connectivity() const noexcept { return *connectivity_; }
 
   /// @brief Samples the next frame's `3V` coordinates into `out`: those of the vertices the
   /// repair keeps, each posed once.

@@ -440,6 +440,9 @@ public:
   std::size_t num_vertices() const noexcept {
     return selection_ ? selection_->input.size() : rig_->geometry.vertices;
   }
+  /// @brief The clip's name as in the file (maybe empty), as `Gltf_read_report::clip`; empty
+  /// for a file without animation.
+  std::string clip_name() const { return clip_ ? clip_->name : std::string(); }
   /// @brief Writes frame `t`'s `3V` coordinates to `out`.
   /// @pre `out` holds `3V` values and `t < num_frames()`; otherwise throws `invalid_input`.
   /// @throws invalid_input naming the file, the frame and the smallest vertex (numbered as in
@@ -668,7 +671,23 @@ public:
   template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
   mesh::Deforming_mesh<Graph, Coordinate> read(const Gltf_read_options& options = {},
                                          Gltf_read_report* report = nullptr) const {
-    const Repaired_triangles repaired = repair(options.repair);
+    return read<Graph, Coordinate>(repair(options.repair), options, report);
+  }
+
+  /// @brief Reads one clip as `read(options, report)` does, with the file's connectivity repaired
+  /// beforehand: the clips of one file share it, so that reading several repairs once.
+  /// @param repaired `repair(options.repair)` of this file.
+  /// @param options `clip` (default: the first), `fps` (30), `threads` (0: all); `repair` is not
+  /// used (`repaired` is).
+  /// @param report as `read`'s, its `repair` the counts of `repaired`; when not null.
+  /// @pre as `read`; `repaired` is this file's repair (another file's would give its triangles
+  /// over these vertices; a source vertex outside this scene is refused).
+  /// @throws invalid_input naming the file, as `sample`.
+  /// @par Complexity that of `sample` for the V' source vertices alone, plus O(V' + F) to build
+  /// the animation's connectivity.
+  template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
+  mesh::Deforming_mesh<Graph, Coordinate> read(const Repaired_triangles& repaired, const Gltf_read_options& options,
+                                         Gltf_read_report* report = nullptr) const {
     Sampled_gltf sampled;
     try {
       sampled = internal::gltf::sample(file_, options, &repaired.source_vertex);
