@@ -1,6 +1,7 @@
 // The similarity matrix of four animations: two schedules, each on two tubes. Each animation is
-// described once; the pairs run in parallel. Then a pose of one frame among them, which the
-// matrix refuses, naming it.
+// described once; the pairs run in parallel. The same matrix of descriptions made beforehand
+// (described_similarity_matrix). Then a pose of one frame among them, which the matrix refuses,
+// naming it.
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/mesh/synthetic.h>
 
@@ -29,6 +30,16 @@ int main() {
   // [matrix]
   std::cout << "one bend (thin, thick), two bends (thin, thick):\n" << m << '\n';
 
+  // [described]
+  // Animations described as they come (read one at a time, say, and freed), compared afterwards:
+  // the same matrix.
+  const similarity::Default_similarity policy;
+  std::vector<similarity::Motion_signature_description> descriptions;
+  for (const auto& animation : animations) descriptions.push_back(policy.describe(animation));
+  const bool same = similarity::described_similarity_matrix(descriptions, policy) == m;
+  // [described]
+  std::cout << "from the descriptions: " << (same ? "the same matrix" : "another matrix") << '\n';
+
   // [pose]
   // A pose of one frame has no motion to describe: the matrix names it, so that it can be left out.
   const auto first = animations[0].frame_positions(0);
@@ -39,5 +50,5 @@ int main() {
     std::cout << "animation " << e.index() << " not described: " << e.reason() << '\n';
   }
   // [pose]
-  return 0;
+  return same ? 0 : 1;
 }

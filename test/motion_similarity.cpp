@@ -330,6 +330,37 @@ TEST_CASE("similarity matrix: symmetric, ones on the diagonal, equal to the pair
   CHECK(similarity::similarity_matrix(std::vector<mesh::Surface_mesh_animation>{}).size() == 0);
 }
 
+TEST_CASE("described similarity matrix: the matrix of the animations, bit for bit, on 1 or 2 threads, its steps",
+          "[similarity]") {
+  const std::vector<mesh::Surface_mesh_animation> animations{
+      tube(bend_hold_unbend), tube(bend_hold_unbend, other_tube), tube(other_timing), tube(other_timing, other_tube)};
+  const auto check = [&](const auto& policy) {
+    using Description = typename std::remove_cvref_t<decltype(policy)>::Description;
+    std::vector<Description> descriptions;
+    for (const auto& animation : animations) descriptions.push_back(policy.describe(animation));
+    const Eigen::MatrixXd whole = similarity::similarity_matrix(animations, policy, {}, 1);
+    for (const int threads : {1, 2}) {
+      std::size_t last_done = 0, last_total = 0;
+      const Progress steps = [&](std::size_t done, std::size_t total) {
+        CHECK(done > last_done);
+        last_done = done, last_total = total;
+        return true;
+      };
+      const Eigen::MatrixXd m = similarity::described_similarity_matrix(descriptions, policy, steps, threads);
+      CHECK(m == whole);
+      CHECK((last_done == 10 && last_total == 10));  // 4 (4 + 1) / 2 pairs
+    }
+  };
+  check(similarity::Motion_signature_similarity<>{});
+  check(similarity::Strain_distribution_similarity<>{});
+  check(similarity::Self_similarity_matching<>{});
+  CHECK(similarity::described_similarity_matrix(std::vector<similarity::Motion_signature_description>{},
+                                                similarity::Default_similarity{}).size() == 0);
+  CHECK_THROWS_AS(similarity::described_similarity_matrix(std::vector<similarity::Motion_signature_description>{},
+                                                          similarity::Default_similarity{}, {}, -1),
+                  invalid_input);
+}
+
 TEST_CASE("evolving graph similarity: the same descriptions and similarity on 1, 2 or all threads", "[similarity]") {
   const auto a = tube(bend_hold_unbend), b = tube(other_timing, other_tube);
   const auto check = [&](auto policy, const char* name) {

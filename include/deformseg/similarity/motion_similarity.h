@@ -1,6 +1,7 @@
 /// @file similarity/motion_similarity.h
 /// @brief The similarity of two animations (`motion_similarity`) and of every pair of a set
-/// (`similarity_matrix`), by a similarity policy.
+/// (`similarity_matrix`; `described_similarity_matrix` of descriptions made beforehand), by a
+/// similarity policy.
 #pragma once
 
 #include <deformseg/exceptions.h>
@@ -19,6 +20,7 @@
 #include <functional>
 #include <optional>
 #include <ranges>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -97,7 +99,54 @@ std::vector<typename Policy::Description> describe_all(const Animations& animati
   return descriptions;
 }
 
+// Entry (i, j) of the all-pairs matrix of `descriptions`, each pair i <= j compared once on
+// `threads` threads, reported as steps from `first_step`.
+template <class Policy>
+Eigen::MatrixXd compare_all_pairs(std::span<const typename Policy::Description> descriptions, const Policy& policy,
+                                  std::size_t first_step, std::size_t total_steps, const Progress& progress,
+                                  int threads) {
+  const std::size_t n = descriptions.size();
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i; j < n; ++j) pairs.emplace_back(i, j);
+  const auto size = static_cast<Eigen::Index>(n);
+  Eigen::MatrixXd values(size, size);
+  deformseg::internal::parallel_for_reporting(pairs.size(), threads, progress, first_step, total_steps,
+                                              [&](std::size_t p) {
+                                                const auto [i, j] = pairs[p];
+                                                const double v = policy.compare(descriptions[i], descriptions[j]).value;
+                                                values(Eigen::Index(i), Eigen::Index(j)) = v;
+                                                values(Eigen::Index(j), Eigen::Index(i)) = v;
+                                              });
+  return values;
+}
+
 }  // namespace internal
+
+/// @brief The similarity of every pair of animations already described (`policy.describe`), as
+/// the all-pairs `similarity_matrix` of the animations gives it: for a caller that describes each
+/// animation as soon as it is read, and frees it, so that the animations are never all held.
+/// @tparam Policy a similarity policy (`SimilarityPolicy` for the animations described).
+/// @param descriptions the N descriptions, each made by `policy.describe` (or a policy with the
+/// same description options).
+/// @param policy the policy that compares them.
+/// @param progress called on the calling thread after each parallel batch of pairs (see
+/// `Progress`): N (N + 1) / 2 steps; default none.
+/// @param threads the threads, as `similarity_matrix`'s (default 0).
+/// @return the symmetric N x N matrix: entry (i, j) and (j, i) are
+/// `policy.compare(descriptions[i], descriptions[j]).value` for i <= j.
+/// @throws invalid_input when `threads` is negative or above `max_threads`, before any work; as
+/// the policy does for the first failing pair.
+/// @throws cancelled as `similarity_matrix`.
+/// @par Complexity N (N + 1) / 2 compares on `threads` threads; the result does not depend on their
+/// number.
+template <class Policy>
+Eigen::MatrixXd described_similarity_matrix(std::span<const typename Policy::Description> descriptions,
+                                            const Policy& policy, const Progress& progress = {}, int threads = 0) {
+  thread_count(threads, "described_similarity_matrix");
+  const std::size_t n = descriptions.size();
+  return internal::compare_all_pairs(descriptions, policy, 0, n * (n + 1) / 2, progress, threads);
+}
 
 /// @brief The similarity of every pair of `animations`: each animation described once
 /// (`policy.describe`, its evolving graph or histograms), then each pair i < j compared,
@@ -129,19 +178,10 @@ Eigen::MatrixXd similarity_matrix(const Animations& animations, const Policy& po
                                   const Progress& progress = {}, int threads = 0) {
   thread_count(threads, "similarity_matrix");
   const std::size_t n = std::size_t(std::ranges::size(animations));
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i; j < n; ++j) pairs.emplace_back(i, j);
-  const std::size_t total = n + pairs.size();
+  const std::size_t total = n + n * (n + 1) / 2;
   const auto descriptions = internal::describe_all(animations, policy, 0, total, progress, threads);
-  const auto size = Eigen::Index(n);
-  Eigen::MatrixXd values(size, size);
-  deformseg::internal::parallel_for_reporting(pairs.size(), threads, progress, n, total, [&](std::size_t p) {
-    const auto [i, j] = pairs[p];
-    const double v = policy.compare(descriptions[i], descriptions[j]).value;
-    values(Eigen::Index(i), Eigen::Index(j)) = values(Eigen::Index(j), Eigen::Index(i)) = v;
-  });
-  return values;
+  return internal::compare_all_pairs(std::span<const typename Policy::Description>(descriptions), policy, n, total,
+                                     progress, threads);
 }
 
 /// @brief The similarity of each of `queries` against each animation of `database`: every
