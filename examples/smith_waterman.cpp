@@ -1,6 +1,6 @@
 // The best local alignment of two label sequences by deformseg::alignment::Smith_waterman, with the
 // thesis' scores (match +1, mismatch -1, gap -1) and with affine gaps; then with a continuous
-// dissimilarity, here the distance between two sequences of numbers.
+// dissimilarity, here the distance between two sequences of numbers, with and without the path.
 #include <deformseg/alignment/smith_waterman.h>
 
 #include <cmath>
@@ -26,10 +26,12 @@ int main() {
   const auto distance = [&](std::size_t i, std::size_t j) { return std::min(1.0, std::abs(x[i] - y[j])); };
   const al::Alignment close = al::Smith_waterman{}.align(4, 5, distance);
   std::cout << "numbers: score " << close.score << " over " << close.pairs.size() << " pairs\n";
-  // score() gives the same score in memory linear in the shorter sequence.
-  return linear.score == 4 && close.pairs.size() == 3 &&
-                 al::Smith_waterman{}.score(4, 5, distance) == close.score
+  // score() gives the same score in memory linear in the shorter sequence; score_and_length() the
+  // score and the path's length (what a similarity's normalisation reads), without the path.
+  const al::Score_and_length without_path = al::Smith_waterman{}.score_and_length(4, 5, distance);
+  std::cout << "without the path: score " << without_path.score << " over " << without_path.length << " pairs\n";
+  return linear.score == 4 && close.pairs.size() == 3 && al::Smith_waterman{}.score(4, 5, distance) == close.score &&
+                 without_path.score == close.score && without_path.length == close.pairs.size()
              ? 0
              : 1;
-  return 0;
 }
