@@ -1,13 +1,18 @@
 #include "similarity.h"
 
+#include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/frame_stream.h>
+#include <deformseg/io/gltf.h>
 #include <deformseg/similarity/significance.h>
 
 #include <algorithm>
+#include <optional>
 #include <random>
 #include <ranges>
+#include <span>
 #include <stdexcept>
 #include <type_traits>
+#include <vector>
 
 namespace deformseg::frontend {
 
@@ -146,6 +151,46 @@ Eigen::MatrixXd similarity_matrix(Animation_addresses queries, Animation_address
   });
 }
 
+Read_matrix similarity_matrix(const Animation_source& source, const Policy_choice& choice, const Progress& progress,
+                              int threads) {
+  thread_count(threads, "similarity_matrix");
+  return similarity::visit_policy(make_policy(choice), [&](const auto& policy) {
+    using Description = typename std::remove_cvref_t<decltype(policy)>::Description;
+    const std::size_t n = source.count;
+    std::vector<std::optional<Description>> made(n);
+    std::vector<std::optional<Left_out>> lost(n);
+    deformseg::internal::parallel_for_reporting(n, threads, progress, 0, n + n * (n + 1) / 2, [&](std::size_t i) {
+      std::optional<mesh::Surface_mesh_animation> animation;
+      try {
+        animation.emplace(source.read(i));
+      } catch (const invalid_input& e) {
+        lost[i].emplace(Left_out{i, true, e});
+        return;
+      }
+      try {
+        made[i].emplace(policy.describe(*animation));
+      } catch (const invalid_input& e) {
+        lost[i].emplace(Left_out{i, false, e});
+      }
+    });
+    Read_matrix out;
+    std::vector<Description> descriptions;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!made[i]) {
+        out.left_out.push_back(std::move(*lost[i]));
+        continue;
+      }
+      descriptions.push_back(std::move(*made[i]));
+      out.kept.push_back(i);
+    }
+    Progress pairs;  // the steps after the descriptions
+    if (progress) pairs = [&](std::size_t done, std::size_t total) { return progress(n + done, n + total); };
+    out.similarity = similarity::described_similarity_matrix(std::span<const Description>(descriptions), policy,
+                                                             pairs, threads);
+    return out;
+  });
+}
+
 std::optional<Compared> compare_streamed(const std::array<std::string, 2>& inputs, const Input_options& options,
                                          const Policy_choice& choice,
                                          const Significance_request& significance, Front front,
@@ -155,7 +200,7 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
   if (!similarity::visit_policy(any, streams)) return std::nullopt;
   const std::array<Input_name, 2> names{input_name(inputs[0], options, front), input_name(inputs[1], options, front)};
   for (const Input_name& name : names)
-    if (io::is_character_file(name.file) || !reads_frame_by_frame(name.file, options)) return std::nullopt;
+    if (!io::is_character_file(name.file) && !reads_frame_by_frame(name.file, options)) return std::nullopt;
   return similarity::visit_policy(any, [&](const auto& policy) -> std::optional<Compared> {
     using Policy = std::remove_cvref_t<decltype(policy)>;
     if constexpr (!describes_streams<Policy>) {
@@ -164,13 +209,24 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
       using Description = typename Policy::Description;
       std::array<std::optional<Description>, 2> described;
       for (std::size_t k = 0; k < 2; ++k) {
-        const io::Animation_read_options read = animation_read_options(names[k].file, options);
-        described[k] = io::with_frame_source(names[k].file, read, [&](auto& source) -> std::optional<Description> {
+        const auto describe = [&](auto& source) -> std::optional<Description> {
           streamed[k].frames = source.num_frames();
           if (streamed[k].frames < 2) return std::nullopt;  // refused by the reader of whole animations, in its words
           Outlier_checked_source checked(source, names[k].file, options.refuse_defects, front, streamed[k].outliers);
           return policy.describe_stream(checked);
-        });
+        };
+        if (io::is_character_file(names[k].file)) {
+          // As read_input reads it: parsed on its body, the clip chosen, the connectivity repaired.
+          const io::Gltf_file gltf = character_file(names[k].file, options);
+          io::require_clip_choice(gltf, names[k].clip);
+          io::Gltf_frame_source source(
+              gltf, {.clip = names[k].clip, .fps = options.fps, .repair = repair_options(names[k].file, options)});
+          streamed[k].clip = source.clip_name();
+          streamed[k].repair = source.connectivity().repaired().report;
+          described[k] = describe(source);
+        } else {
+          described[k] = io::with_frame_source(names[k].file, animation_read_options(names[k].file, options), describe);
+        }
         if (!described[k]) return std::nullopt;
       }
       return compare_descriptions(policy, *described[0], *described[1], shuffled_copies(choice, significance),

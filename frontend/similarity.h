@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -23,6 +24,7 @@
 #include <tuple>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 namespace deformseg::frontend {
 
@@ -236,20 +238,62 @@ Eigen::MatrixXd similarity_matrix(std::span<const mesh::Surface_mesh_animation> 
 Eigen::MatrixXd similarity_matrix(Animation_addresses queries, Animation_addresses database,
                                   const Policy_choice& choice, const Progress& progress = {}, int threads = 0);
 
+/// The animations of a similarity matrix read one at a time (`similarity_matrix` of a source), so
+/// that they need not all be held at once.
+struct Animation_source {
+  std::size_t count = 0;  ///< N, the animations
+  /// The animation of index i (below `count`): called once for each, from any thread; the
+  /// `invalid_input` it throws says why that animation cannot be read.
+  std::function<mesh::Surface_mesh_animation(std::size_t)> read;
+};
+
+/// An animation that a `Read_matrix` leaves out, and why.
+struct Left_out {
+  std::size_t index;    ///< its index in the source
+  bool reading;         ///< whether reading it failed (else describing it)
+  invalid_input error;  ///< the reader's or the policy's error
+};
+
+/// A similarity matrix of the animations of a source that could be read and described.
+struct Read_matrix {
+  Eigen::MatrixXd similarity;       ///< K x K, of the animations kept, in the source's order
+  std::vector<std::size_t> kept;    ///< their K indices in the source, increasing
+  std::vector<Left_out> left_out;   ///< the others, by index
+};
+
+/// `similarity::similarity_matrix` under `choice` of the animations `source` reads: each read and
+/// described at once on `threads` threads, then freed (memory for the descriptions and an
+/// animation a thread, not for every animation), then the pairs of those described compared; an
+/// animation that cannot be read or described is left out, with its error. The matrix of the
+/// animations kept equals `similarity_matrix` of them, whatever the threads.
+/// @pre `check(choice, front)` passed; `source.read` is set unless `source.count` is 0.
+/// @param progress as the library's: N + K (K + 1) / 2 steps, one a description (total
+/// N + N (N + 1) / 2 while they are made) then one a pair.
+/// @throws invalid_input for a thread count outside [0, max_threads], before any work.
+/// @throws cancelled as `similarity::similarity_matrix`.
+/// @par Complexity N reads and descriptions, K (K + 1) / 2 comparisons of the policy.
+Read_matrix similarity_matrix(const Animation_source& source, const Policy_choice& choice,
+                              const Progress& progress = {}, int threads = 0);
+
 /// What reading an input frame by frame found.
 struct Streamed_input {
   std::size_t frames = 0;  ///< its frames
   Outliers outliers{};     ///< its outlying vertices (`check_outliers`)
+  /// A character file's clip, its name as in the file (as `io::Gltf_read_report::clip`).
+  std::optional<std::string> clip{};
+  io::Repair_report repair{};  ///< what a character file's repair changed
 };
 
 /// `compare` of the animations that `inputs` name, each read frame by frame: the motion-signature
 /// policy describes a stream holding the frames its longest lag spans, not the whole animation
-/// (a point cache with its topology, a frame sequence; neither welded, since welding compares every
+/// (a clip of a character file, its connectivity welded and repaired from what the file fixes; a
+/// point cache with its topology; a frame sequence, not welded, since welding it compares every
 /// frame), with the same result as `compare` of the animations read whole. `streamed` gets their
-/// frame counts and outlying vertices (refused with `options.refuse_defects`). The shuffled copies
-/// are scored on `options.threads` threads.
+/// frame counts, outlying vertices (refused with `options.refuse_defects`), clips and repairs.
+/// The shuffled copies are scored on `options.threads` threads.
 /// @return nullopt, having described nothing, when an input must be read whole: another policy, a
-/// glTF file, a welded input, a point cache without topology, an animation of fewer than 2 frames.
+/// welded point cache or frame sequence, a point cache without topology, an animation of fewer
+/// than 2 frames.
 /// @throws invalid_input naming the file or the frame that cannot be read.
 std::optional<Compared> compare_streamed(const std::array<std::string, 2>& inputs, const Input_options& options,
                                          const Policy_choice& choice,

@@ -203,6 +203,23 @@ def test_similarity_clip_for_every_input(tool, fox):
     assert [s["clip"] for s in mixed["sources"]] == ["Walk", "Run"] and mixed["similarity"] < 1
 
 
+# The motion signatures describe a character's clip frame by frame (the clip named by index here),
+# its connectivity repaired from what the file fixes, as the matrix of the clips read whole gives
+# it, to the last bit; another policy reads the clips whole.
+def test_similarity_streams_character_clips(tool, fox, characters):
+    knight = characters / "Knight.glb"
+    inputs = [f"{fox}#2", f"{knight}#Running_A"]
+    run = succeeds(tool("similarity", *inputs, "--significance", "4", "--json", "-"))
+    matches_all(run.err, r"Fox.glb#2: clip \"Run\", 36 frames at 30\.0 fps", r"repaired: 1438 vertices welded",
+                r"each described frame by frame")
+    streamed = run.json()
+    assert [s["clip"] for s in streamed["sources"]] == ["Run", "Running_A"]
+    whole = succeeds(tool("matrix", *inputs, "--json", "-")).json()
+    assert streamed["similarity"] == whole["similarity"][0][1] and streamed["z_score"] is not None
+    histogram = succeeds(tool("similarity", *inputs, "--policy", "histogram", "--significance", "0"))
+    assert "frame by frame" not in histogram.err
+
+
 def test_find_clip_by_index(tool, fox):
     found = tool("find", f"{fox}#1", f"{fox}#Walk", "--json", "-").json()
     assert [s["clip"] for s in found["sources"]] == ["Walk", "Walk"]

@@ -12,6 +12,7 @@
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/threads.h>
 
 #include <algorithm>
 #include <chrono>
@@ -19,6 +20,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <mutex>
 #include <numeric>
 #include <optional>
 #include <tuple>
@@ -44,87 +46,140 @@ std::string fixed(double value, int decimals = 3) {
   return text;
 }
 
-// The animations read, and the labelled clips they are (without those skipped).
-struct Read_clips {
-  std::vector<mesh::Surface_mesh_animation> animations;
+// The labelled clips compared (without those skipped), and those skipped.
+struct Compared_clips {
   std::vector<evaluation::Labelled_clip> clips;
   std::vector<std::string> skipped;  // "FILE clip NAME: MESSAGE"
 };
 
-// Reads the clips of `rows` that come from `file` on one body (rows[i] for i in `of_file`, their
-// `body_file`, else --body), parsing it once; a row without a clip takes --clip's. The clips are
-// read on --threads threads, one a thread (a file of one clip reads its frames on them), and kept
-// or skipped in their order.
-void read_file_clips(const std::filesystem::path& file, const std::vector<std::size_t>& of_file,
-                     const std::vector<evaluation::Labelled_clip>& rows, const Evaluate_options& o, Read_clips& out) {
-  const auto skip_or_throw = [&](const std::vector<std::size_t>& lost, const invalid_input& e) {
-    if (!o.skip_unreadable) throw e;
-    for (const std::size_t i : lost)
-      out.skipped.push_back(file.string() + " clip '" + rows[i].item.clip + "': " + e.what());
-  };
-  if (!io::is_character_file(file)) {
-    try {
-      Input_options frames = o.read;
-      frames.clip.clear();  // --clip is for the glTF rows
-      out.animations.push_back(frontend::read_input(file.string(), frames, frontend::Front::command_line).animation);
-      out.clips.push_back(rows[of_file.front()]);
-    } catch (const invalid_input& e) {
-      skip_or_throw(of_file, e);
-    }
-    return;
-  }
+// A character file opened for its clips: parsed on its body and repaired once, or why not (then
+// each of its clips fails so, as reading it alone would).
+struct Opened_file {
   std::optional<io::Gltf_file> gltf;
+  std::optional<io::Repaired_triangles> repaired;
+  std::optional<invalid_input> parse_failed, repair_failed;
+};
+
+Opened_file open_character_file(const std::filesystem::path& file, const std::filesystem::path& body,
+                                const Evaluate_options& o) {
+  Opened_file opened;
   try {
-    Input_options read = o.read;  // the rows of one file and one body
-    if (const auto& body = rows[of_file.front()].body_file; !body.empty()) read.body = body.string();
-    gltf.emplace(frontend::character_file(file.string(), read));
+    Input_options read = o.read;
+    if (!body.empty()) read.body = body.string();
+    opened.gltf.emplace(frontend::character_file(file.string(), read));
   } catch (const invalid_input& e) {
-    return skip_or_throw(of_file, e);
+    opened.parse_failed = e;
+    return opened;
   }
-  std::vector<std::optional<mesh::Surface_mesh_animation>> read(of_file.size());
-  std::vector<std::optional<invalid_input>> failed(of_file.size());
-  deformseg::internal::parallel_for(of_file.size(), o.read.threads, [&](std::size_t k) {
-    const std::size_t i = of_file[k];
-    try {
-      const std::string clip = rows[i].item.clip.empty() ? o.read.clip : rows[i].item.clip;
-      io::require_clip_choice(*gltf, clip);  // an empty clip names a file's only one
-      read[k] = gltf->read({.clip = clip, .fps = o.read.fps,
-                            .repair = frontend::repair_options(file.string(), o.read),
-                            .threads = o.read.threads});
-    } catch (const invalid_input& e) {
-      failed[k] = e;
-    }
-  });
-  for (std::size_t k = 0; k < of_file.size(); ++k) {
-    if (failed[k]) {
-      skip_or_throw({of_file[k]}, *failed[k]);
-      continue;
-    }
-    out.animations.push_back(std::move(*read[k]));
-    out.clips.push_back(rows[of_file[k]]);
+  try {
+    opened.repaired = opened.gltf->repair(frontend::repair_options(file.string(), o.read));
+  } catch (const invalid_input& e) {
+    opened.repair_failed = e;
   }
+  return opened;
 }
 
-Read_clips read_clips(const std::vector<evaluation::Labelled_clip>& rows, const Evaluate_options& o) {
-  using File_on_body = std::pair<std::filesystem::path, std::filesystem::path>;
-  std::vector<File_on_body> files;  // in the order of first appearance
-  for (const auto& row : rows)
-    if (std::ranges::find(files, File_on_body{row.file, row.body_file}) == files.end())
-      files.emplace_back(row.file, row.body_file);
-  Read_clips out;
-  for (const auto& [file, body] : files) {
-    std::vector<std::size_t> of_file;
-    for (std::size_t i = 0; i < rows.size(); ++i)
-      if (rows[i].file == file && rows[i].body_file == body) of_file.push_back(i);
-    if (!io::is_character_file(file) && of_file.size() > 1)
-      throw invalid_input("lists " + std::to_string(of_file.size()) + " clips of " + file.string() +
-                          ", which is not a character file (glTF, FBX, Collada) and holds one animation", {.file = o.labels});
-    progress("reading " + std::to_string(of_file.size()) + " clip(s) of " + file.string());
-    read_file_clips(file, of_file, rows, o, out);
+// The rows of the labels that name one file on one body, in their order.
+struct File_rows {
+  std::filesystem::path file, body;
+  std::vector<std::size_t> rows;
+};
+
+// The rows by file and body, in the order of their first rows.
+std::vector<File_rows> rows_by_file(const std::vector<evaluation::Labelled_clip>& rows, const Evaluate_options& o) {
+  std::vector<File_rows> files;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto same = [&](const File_rows& f) { return f.file == rows[i].file && f.body == rows[i].body_file; };
+    auto at = std::ranges::find_if(files, same);
+    if (at == files.end()) at = files.insert(files.end(), {rows[i].file, rows[i].body_file, {}});
+    at->rows.push_back(i);
   }
-  for (const auto& line : out.skipped) progress("skipped " + line);
-  return out;
+  for (const File_rows& f : files)
+    if (!io::is_character_file(f.file) && f.rows.size() > 1)
+      throw invalid_input("lists " + std::to_string(f.rows.size()) + " clips of " + f.file.string() +
+                              ", which is not a character file (glTF, FBX, Collada) and holds one animation",
+                          {.file = o.labels});
+  return files;
 }
+
+// The labelled clips in the order they are compared (a file's rows together, the files in the
+// order of their first rows), read one at a time from any thread: a character file is opened by
+// the first of its clips to be read and freed after the last, so that few are held at once; a
+// row without a clip takes --clip's.
+class Clip_reader {
+public:
+  Clip_reader(std::vector<evaluation::Labelled_clip> rows, const Evaluate_options& o) : rows_(std::move(rows)), o_(o) {
+    for (File_rows& of : rows_by_file(rows_, o)) {
+      for (const std::size_t row : of.rows) order_.push_back({files_.size(), row});
+      files_.push_back(std::make_unique<File>(std::move(of)));
+    }
+  }
+
+  std::size_t size() const { return order_.size(); }
+  const evaluation::Labelled_clip& clip(std::size_t k) const { return rows_[order_[k].row]; }
+  // "FILE clip 'NAME'", as a skipped clip is named.
+  std::string name(std::size_t k) const { return clip(k).file.string() + " clip '" + clip(k).item.clip + "'"; }
+
+  // The animation of clip k, as `frontend::read_input` reads it.
+  // @throws invalid_input as the reader (the file's, for every clip of a file that cannot be opened).
+  mesh::Surface_mesh_animation read(std::size_t k) {
+    File& file = *files_[order_[k].file];
+    const std::shared_ptr<const Opened_file> opened = acquire(file);
+    struct Release {
+      Clip_reader& reader;
+      File& file;
+      ~Release() { reader.release(file); }
+    } release{*this, file};
+    const std::string path = file.of.file.string();
+    if (!opened) {
+      Input_options frames = o_.read;
+      frames.clip.clear();  // --clip is for the glTF rows
+      return frontend::read_input(path, frames, frontend::Front::command_line).animation;
+    }
+    if (opened->parse_failed) throw *opened->parse_failed;
+    const std::string clip = rows_[order_[k].row].item.clip.empty() ? o_.read.clip : rows_[order_[k].row].item.clip;
+    io::require_clip_choice(*opened->gltf, clip);  // an empty clip names a file's only one
+    if (opened->repair_failed) throw *opened->repair_failed;
+    return opened->gltf->read(*opened->repaired, {.clip = clip, .fps = o_.read.fps, .threads = o_.read.threads});
+  }
+
+private:
+  struct File {
+    explicit File(File_rows rows) : of(std::move(rows)), left(of.rows.size()) {}
+    File_rows of;
+    std::mutex mutex;
+    bool announced = false;
+    std::shared_ptr<const Opened_file> opened;  // while clips of a character file are left
+    std::size_t left;
+  };
+  struct Clip_at {
+    std::size_t file, row;
+  };
+
+  // The file opened (null for a file of another format), said once.
+  std::shared_ptr<const Opened_file> acquire(File& file) {
+    const std::lock_guard lock(file.mutex);
+    if (!file.announced) {
+      const std::lock_guard say(say_mutex_);
+      progress("reading " + std::to_string(file.of.rows.size()) + " clip(s) of " + file.of.file.string());
+      file.announced = true;
+      if (io::is_character_file(file.of.file))
+        file.opened = std::make_shared<const Opened_file>(open_character_file(file.of.file, file.of.body, o_));
+    }
+    return file.opened;
+  }
+
+  void release(File& file) {
+    const std::lock_guard lock(file.mutex);
+    if (--file.left == 0) file.opened.reset();
+  }
+
+  const std::vector<evaluation::Labelled_clip> rows_;
+  const Evaluate_options& o_;
+  std::vector<std::unique_ptr<File>> files_;
+  std::vector<Clip_at> order_;
+  std::mutex say_mutex_;
+};
 
 // The items' order in the figure: by motion (distractors last), then body, then clip.
 std::vector<std::size_t> order_by_label(const std::vector<evaluation::Labelled_clip>& clips) {
@@ -249,32 +304,37 @@ void print_scores(const evaluation::Retrieval_scores& s, std::size_t items) {
   print_confusion(s);
 }
 
-// The matrix of the clips read. A clip the policy cannot describe (a pose of one frame, say) stops
-// the command, named; with --skip-unreadable it is left out and the matrix made again without it.
-Eigen::MatrixXd matrix_of_clips(Read_clips& read, const Evaluate_options& o, Matrix_progress& report) {
-  while (true) {
-    try {
-      report = Matrix_progress{.descriptions = read.animations.size()};
-      return frontend::similarity_matrix(read.animations, o.policy, std::ref(report), o.read.threads);
-    } catch (const similarity::animation_not_described& e) {
-      const auto at = std::ptrdiff_t(e.index());
-      const evaluation::Labelled_clip& clip = read.clips[e.index()];
+// The matrix of the labelled clips, each read and described at once. A clip that cannot be read
+// or described (a pose of one frame, say) stops the command, named (those that cannot be read
+// first); with --skip-unreadable it is left out.
+Eigen::MatrixXd matrix_of_clips(Compared_clips& compared, const Evaluate_options& o, Matrix_progress& report) {
+  Clip_reader reader(evaluation::read_motion_labels(o.labels), o);
+  report = Matrix_progress{.descriptions = reader.size()};
+  const frontend::Read_matrix matrix = frontend::similarity_matrix(
+      {reader.size(), [&](std::size_t k) { return reader.read(k); }}, o.policy, std::ref(report), o.read.threads);
+  for (const bool reading : {true, false})
+    for (const frontend::Left_out& lost : matrix.left_out) {
+      if (lost.reading != reading) continue;
+      const evaluation::Labelled_clip& clip = reader.clip(lost.index);
       const std::string clip_text = clip.item.clip.empty() ? "" : " clip '" + clip.item.clip + "'";
-      const std::string what = clip.file.string() + clip_text + ": " + e.reason();
-      if (!o.skip_unreadable) throw invalid_input(what + " (--skip-unreadable leaves it out)");
+      const std::string what = reading ? reader.name(lost.index) + ": " + lost.error.what()
+                                       : clip.file.string() + clip_text + ": " + lost.error.what();
+      if (!o.skip_unreadable) {
+        if (reading) throw lost.error;
+        throw invalid_input(what + " (--skip-unreadable leaves it out)");
+      }
       progress("skipped " + what);
-      read.skipped.push_back(what);
-      read.animations.erase(read.animations.begin() + at);
-      read.clips.erase(read.clips.begin() + at);
+      compared.skipped.push_back(what);
     }
-  }
+  for (const std::size_t k : matrix.kept) compared.clips.push_back(reader.clip(k));
+  return matrix.similarity;
 }
 
-// The matrix of the labelled clips as the store holds them, the rows as `read.clips`.
-Eigen::MatrixXd matrix_of_store(Read_clips& read, const Evaluate_options& o, Matrix_progress& report) {
+// The matrix of the labelled clips as the store holds them, the rows as `compared.clips`.
+Eigen::MatrixXd matrix_of_store(Compared_clips& compared, const Evaluate_options& o, Matrix_progress& report) {
   const frontend::Store_search library(o.store);
   library.check_policy(o.policy, frontend::Front::command_line);
-  // The rows grouped by file, in the order of first appearance, as read_clips reads them.
+  // The rows grouped by file, in the order of first appearance, as Clip_reader orders them.
   const std::vector<evaluation::Labelled_clip> rows = evaluation::read_motion_labels(o.labels);
   const std::vector<std::size_t> at = library.labelled(o.labels, o.read, frontend::Front::command_line);
   std::vector<std::size_t> selected;
@@ -284,7 +344,7 @@ Eigen::MatrixXd matrix_of_store(Read_clips& read, const Evaluate_options& o, Mat
     for (std::size_t i = first; i < rows.size(); ++i)
       if (rows[i].file == rows[first].file) {
         taken[i] = true;
-        read.clips.push_back(rows[i]);
+        compared.clips.push_back(rows[i]);
         selected.push_back(at[i]);
       }
   }
@@ -296,13 +356,7 @@ Eigen::MatrixXd matrix_of_store(Read_clips& read, const Evaluate_options& o, Mat
 void run_evaluate(const Evaluate_options& o) {
   frontend::check(o.policy, frontend::Front::command_line);
   frontend::check(o.read, frontend::Front::command_line);
-  const auto start = std::chrono::steady_clock::now();
-  Read_clips read;
-  if (o.store.empty()) {
-    read = read_clips(evaluation::read_motion_labels(o.labels), o);
-    progress("read " + std::to_string(read.animations.size()) + " clips in " + fixed(seconds_since(start), 1) + " s");
-  }
-  const double read_seconds = seconds_since(start);
+  Compared_clips read;
   Matrix_progress report;
   const Eigen::MatrixXd m = o.store.empty() ? matrix_of_clips(read, o, report) : matrix_of_store(read, o, report);
   const double matrix_seconds = seconds_since(report.start);
@@ -311,8 +365,8 @@ void run_evaluate(const Evaluate_options& o) {
   const evaluation::Retrieval_scores scores = evaluation::evaluate_retrieval(m, items);
   const std::vector<std::size_t> order = order_by_label(read.clips);
   if (!o.png.empty()) write_grouped_heat_map(m, read.clips, order, o, o.png);
-  progress("times: reading " + fixed(read_seconds, 1) + " s, describing " + fixed(report.describe_seconds, 1) +
-           " s, comparing " + fixed(matrix_seconds - report.describe_seconds, 1) + " s");
+  progress("times: reading and describing " + fixed(report.describe_seconds, 1) + " s, comparing " +
+           fixed(matrix_seconds - report.describe_seconds, 1) + " s");
   nlohmann::json document;
   if (!o.json.empty()) {  // the whole matrix, only when asked for
     nlohmann::json inputs = nlohmann::json::array(), rows = nlohmann::json::array();
@@ -333,8 +387,7 @@ void run_evaluate(const Evaluate_options& o) {
                 {"figure_order", order},
                 {"similarity", rows},
                 {"seconds",
-                 {{"reading", read_seconds},
-                  {"describing", report.describe_seconds},
+                 {{"reading_and_describing", report.describe_seconds},
                   {"comparing", matrix_seconds - report.describe_seconds}}}};
   }
   write_outputs(document, o.json, [&] {

@@ -69,8 +69,9 @@ void report_similarity(const Similarity_command_options& o, const frontend::Comp
   });
 }
 
-// Point caches and frame sequences are described frame by frame where the policy allows it (a
-// long take then needs memory for its signatures, not its frames); the others are read whole.
+// Character files' clips, point caches and frame sequences are described frame by frame where the
+// policy allows it (a long take then needs memory for its signatures, not its frames); the others
+// are read whole.
 void run_similarity(const Similarity_command_options& o) {
   frontend::check(o.policy, frontend::Front::command_line);
   frontend::check(o.significance, o.policy, frontend::Front::command_line);
@@ -79,15 +80,21 @@ void run_similarity(const Similarity_command_options& o) {
   std::array<frontend::Streamed_input, 2> streamed{};
   if (const auto compared = frontend::compare_streamed({o.inputs[0], o.inputs[1]}, o.read, o.policy, o.significance,
                                                         frontend::Front::command_line, streamed)) {
-    for (std::size_t k = 0; k < 2; ++k)
-      if (const std::string warning = streamed[k].outliers.warning(frontend::Front::command_line); !warning.empty())
+    nlohmann::json records = nlohmann::json::array();
+    for (std::size_t k = 0; k < 2; ++k) {
+      const frontend::Streamed_input& input = streamed[k];
+      if (input.clip)
+        progress(o.inputs[k] + ": clip \"" + *input.clip + "\", " + std::to_string(input.frames) + " frames at " +
+                 nlohmann::json(o.read.fps).dump() + " fps");
+      if (input.repair.changed()) progress(o.inputs[k] + ": repaired: " + frontend::describe(input.repair));
+      if (const std::string warning = input.outliers.warning(frontend::Front::command_line); !warning.empty())
         progress("warning: " + o.inputs[k] + ": " + warning);
+      records.push_back(frontend::input_record(
+          frontend::input_name(o.inputs[k], o.read, frontend::Front::command_line).file, o.read.fps));
+      if (input.clip) records.back()["clip"] = *input.clip;
+    }
     progress("compared " + std::to_string(streamed[0].frames) + " and " + std::to_string(streamed[1].frames) +
              " frames, each described frame by frame");
-    nlohmann::json records = nlohmann::json::array();
-    for (const std::string& input : o.inputs)
-      records.push_back(
-          frontend::input_record(frontend::input_name(input, o.read, frontend::Front::command_line).file, o.read.fps));
     return report_similarity(o, *compared, records, streamed[0].frames, streamed[1].frames);
   }
   const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
