@@ -1,5 +1,5 @@
-// deformseg evaluate LABELS.csv: reads every labelled clip, computes the similarity matrix and
-// says how well it retrieves the same motion on other bodies (evaluate_retrieval).
+// deformseg evaluate LABELS.csv: reads and describes every labelled clip, computes the similarity
+// matrix and says how well it retrieves the same motion on other bodies (evaluate_retrieval).
 #include "command.h"
 #include "policy_options.h"
 
@@ -8,21 +8,19 @@
 #include <deformseg/color/strain_colors.h>
 #include <deformseg/evaluation/motion_labels.h>
 #include <deformseg/evaluation/retrieval_evaluation.h>
-#include <deformseg/internal/parallel_for.h>
+#include <deformseg/io/character_files.h>
 #include <deformseg/io/gltf.h>
-#include <deformseg/io/read_animation.h>
-#include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/threads.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <mutex>
 #include <numeric>
 #include <optional>
+#include <string>
 #include <tuple>
 #include <vector>
 
