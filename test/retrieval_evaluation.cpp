@@ -1,6 +1,6 @@
 // Tests of retrieval_evaluation.h, evaluation/motion_labels.h and the query x database similarity_matrix
 // (with its progress callback): figures computed by hand, the exclusion rules, ties, queries
-// without a relevant candidate, and a brute-force check of ROC-AUC.
+// without a relevant candidate, a brute-force check of ROC-AUC, and some items alone as queries.
 #include "similarity_tubes.h"
 #include "test_support.h"
 
@@ -196,6 +196,52 @@ TEST_CASE("evaluate_retrieval: ROC-AUC equals the count over all (same, differen
     if (same.empty() || different.empty()) CHECK_FALSE(r.roc_auc);
     else CHECK(*r.roc_auc == Approx(wins / (double(same.size()) * double(different.size()))));
   }
+}
+
+TEST_CASE("evaluate_retrieval: some items as queries are the whole evaluation's queries, against every candidate",
+          "[evaluation]") {
+  std::mt19937 random(11);
+  const std::vector<std::string> motions{"a", "b", "c", "-"}, bodies{"P", "Q", "R"};
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::size_t n = 6 + std::size_t(trial);
+    std::vector<evaluation::Labelled_item> items;
+    for (std::size_t i = 0; i < n; ++i) items.push_back(item(motions[random() % 4], bodies[random() % 3]));
+    Eigen::MatrixXd s = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
+    for (Eigen::Index i = 0; i < s.rows(); ++i)
+      for (Eigen::Index j = 0; j < s.cols(); ++j) s(i, j) = double(random() % 5) / 4;  // many ties
+    std::vector<std::size_t> group;  // body P's items, as a group left out
+    for (std::size_t i = 0; i < n; ++i)
+      if (items[i].body == "P") group.push_back(i);
+    const evaluation::Retrieval_scores whole = evaluation::evaluate_retrieval(s, items);
+    const evaluation::Retrieval_scores part = evaluation::evaluate_retrieval(s, items, group);
+    std::vector<evaluation::Query_retrieval> expected;
+    for (const auto& q : whole.per_query)
+      if (items[q.query].body == "P") expected.push_back(q);
+    REQUIRE(part.per_query.size() == expected.size());
+    CHECK(part.queries == expected.size());
+    double correct = 0;
+    std::vector<double> same, different;
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      CHECK(part.per_query[k].query == expected[k].query);
+      CHECK(part.per_query[k].nearest == expected[k].nearest);
+      CHECK(part.per_query[k].first_relevant_rank == expected[k].first_relevant_rank);
+      CHECK(part.per_query[k].average_precision == expected[k].average_precision);
+      const std::size_t q = expected[k].query;
+      correct += items[expected[k].nearest].motion == items[q].motion;
+      for (std::size_t c = 0; c < n; ++c)
+        if (items[c].body != "P")  // every candidate of a query of P
+          (items[c].motion == items[q].motion ? same : different).push_back(s(Eigen::Index(q), Eigen::Index(c)));
+    }
+    if (expected.empty()) CHECK_FALSE(part.nn_accuracy);
+    else CHECK(*part.nn_accuracy == Approx(correct / double(expected.size())));
+    CHECK((part.same_pairs == same.size() && part.different_pairs == different.size()));
+    CHECK(part.labels == whole.labels);
+  }
+  const std::vector<evaluation::Labelled_item> two{item("a", "P"), item("a", "Q")};
+  const Eigen::MatrixXd s = Eigen::MatrixXd::Ones(2, 2);
+  CHECK(evaluation::evaluate_retrieval(s, two, std::vector<std::size_t>{1}).queries == 1);
+  CHECK_THROWS_AS(evaluation::evaluate_retrieval(s, two, std::vector<std::size_t>{2}), invalid_input);
+  CHECK_THROWS_AS(evaluation::evaluate_retrieval(s, two, std::vector<std::size_t>{1, 0}), invalid_input);
 }
 
 TEST_CASE("evaluate_retrieval: a matrix of the wrong shape or with NaN is refused", "[evaluation]") {

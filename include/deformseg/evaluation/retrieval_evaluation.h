@@ -175,35 +175,33 @@ inline std::vector<Motion_retrieval> per_motion(const Retrieval_scores& scores) 
 
 }  // namespace internal::retrieval
 
-/// @brief How well `similarity` retrieves, for each labelled animation, the animations of the
-/// same motion on other bodies.
-///
-/// Each item whose motion is not `distractor_label` is a query. Its candidates are every other
-/// item of another body, except those with the query's clip name on the query's rig (when the rig
-/// is not empty: a clip shared by a rig is the same data). Distractors are candidates, never
-/// queries. A candidate is relevant when it has the query's motion. Ranking the candidates by
-/// decreasing similarity (ties: the lower index first), the query's nearest neighbour is the first
-/// candidate and its average precision the mean, over its relevant candidates, of the fraction of
-/// relevant ones among those ranked up to it. ROC-AUC and the medians are over all (query,
-/// candidate) pairs of all queries: same-motion pairs against different-motion pairs (a pair of
-/// two queries counts once in each direction).
-/// @param similarity the N x N matrix, row = query, column = candidate; higher is more alike
-/// (need not be symmetric: only row q is read for query q).
+/// @brief `evaluate_retrieval` with only some items as queries, each against its candidates among
+/// all the items: the figures of a group of clips (a pack, a rig) in a whole library, the group's
+/// clips as queries, every clip of another body as a candidate. Distractors among `queries` are
+/// not queried, as in `evaluate_retrieval`; `labels` and `confusion` list every item's motion.
+/// @param similarity the N x N matrix, as `evaluate_retrieval`'s (only the queries' rows are read).
 /// @param items the N items, in the order of the matrix's rows and columns.
-/// @return the figures (see `Retrieval_scores`); per query, its nearest neighbour and the rank of
-/// its first relevant candidate in `per_query`.
-/// @pre `similarity` is N x N with finite entries, N = `items.size()`.
-/// @throws invalid_input naming the shapes or the first non-finite entry otherwise.
-/// @par Complexity O(N^2 log N): per query a sort of its candidates; then a sort of the pairs.
-inline Retrieval_scores evaluate_retrieval(const Eigen::MatrixXd& similarity, std::span<const Labelled_item> items) {
+/// @param queries the indices of the items that may be queries, increasing.
+/// @return the figures over those queries (see `Retrieval_scores`).
+/// @pre as `evaluate_retrieval`.
+/// @throws invalid_input as `evaluate_retrieval`, or for an index of `queries` beyond the items or
+/// not above the one before.
+/// @par Complexity O(Q N log N) for Q queries: a sort of each query's candidates; then a sort of
+/// the pairs.
+inline Retrieval_scores evaluate_retrieval(const Eigen::MatrixXd& similarity, std::span<const Labelled_item> items,
+                                           std::span<const std::size_t> queries) {
   namespace r = internal::retrieval;
   r::check_input(similarity, items);
+  for (std::size_t k = 0; k < queries.size(); ++k)
+    if (queries[k] >= items.size() || (k > 0 && queries[k] <= queries[k - 1]))
+      throw invalid_input("evaluate_retrieval: query " + std::to_string(k) + " is item " + std::to_string(queries[k]) +
+                          ", not an increasing index below the " + std::to_string(items.size()) + " items");
   Retrieval_scores scores;
   scores.labels = r::sorted_labels(items);
   scores.confusion.assign(scores.labels.size(), std::vector<std::size_t>(scores.labels.size(), 0));
   std::vector<double> same, different;
   double precision_sum = 0, correct = 0;
-  for (std::size_t q = 0; q < items.size(); ++q) {
+  for (const std::size_t q : queries) {
     const Labelled_item& query = items[q];
     if (query.motion == distractor_label) continue;
     std::vector<std::size_t> candidates;
@@ -244,6 +242,32 @@ inline Retrieval_scores evaluate_retrieval(const Eigen::MatrixXd& similarity, st
   scores.roc_auc = r::roc_auc(std::move(same), std::move(different));
   scores.per_motion = r::per_motion(scores);
   return scores;
+}
+
+/// @brief How well `similarity` retrieves, for each labelled animation, the animations of the
+/// same motion on other bodies.
+///
+/// Each item whose motion is not `distractor_label` is a query. Its candidates are every other
+/// item of another body, except those with the query's clip name on the query's rig (when the rig
+/// is not empty: a clip shared by a rig is the same data). Distractors are candidates, never
+/// queries. A candidate is relevant when it has the query's motion. Ranking the candidates by
+/// decreasing similarity (ties: the lower index first), the query's nearest neighbour is the first
+/// candidate and its average precision the mean, over its relevant candidates, of the fraction of
+/// relevant ones among those ranked up to it. ROC-AUC and the medians are over all (query,
+/// candidate) pairs of all queries: same-motion pairs against different-motion pairs (a pair of
+/// two queries counts once in each direction).
+/// @param similarity the N x N matrix, row = query, column = candidate; higher is more alike
+/// (need not be symmetric: only row q is read for query q).
+/// @param items the N items, in the order of the matrix's rows and columns.
+/// @return the figures (see `Retrieval_scores`); per query, its nearest neighbour and the rank of
+/// its first relevant candidate in `per_query`.
+/// @pre `similarity` is N x N with finite entries, N = `items.size()`.
+/// @throws invalid_input naming the shapes or the first non-finite entry otherwise.
+/// @par Complexity O(N^2 log N): per query a sort of its candidates; then a sort of the pairs.
+inline Retrieval_scores evaluate_retrieval(const Eigen::MatrixXd& similarity, std::span<const Labelled_item> items) {
+  std::vector<std::size_t> all(items.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  return evaluate_retrieval(similarity, items, all);
 }
 
 }  // namespace deformseg::evaluation
