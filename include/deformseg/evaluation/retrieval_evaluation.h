@@ -188,6 +188,8 @@ inline std::vector<Motion_retrieval> per_motion(const Retrieval_scores& scores) 
 /// not above the one before.
 /// @par Complexity O(Q N log N) for Q queries: a sort of each query's candidates; then a sort of
 /// the pairs.
+/// @par Example
+/// @include evaluate_retrieval.cpp
 inline Retrieval_scores evaluate_retrieval(const Eigen::MatrixXd& similarity, std::span<const Labelled_item> items,
                                            std::span<const std::size_t> queries) {
   namespace r = internal::retrieval;

@@ -685,6 +685,8 @@ public:
   /// @throws invalid_input naming the file, as `sample`.
   /// @par Complexity that of `sample` for the V' source vertices alone, plus O(V' + F) to build
   /// the animation's connectivity.
+  /// @par Example
+  /// @include read_gltf.cpp
   template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
   mesh::Deforming_mesh<Graph, Coordinate> read(const Repaired_triangles& repaired, const Gltf_read_options& options,
                                          Gltf_read_report* report = nullptr) const {

@@ -140,6 +140,8 @@ Eigen::MatrixXd compare_all_pairs(std::span<const typename Policy::Description> 
 /// @throws cancelled as `similarity_matrix`.
 /// @par Complexity N (N + 1) / 2 compares on `threads` threads; the result does not depend on their
 /// number.
+/// @par Example
+/// @include similarity_matrix.cpp
 template <class Policy>
 Eigen::MatrixXd described_similarity_matrix(std::span<const typename Policy::Description> descriptions,
                                             const Policy& policy, const Progress& progress = {}, int threads = 0) {
