@@ -1,0 +1,408 @@
+// Retrieval figures that no choice was tuned on: each group of bodies left out in turn (a pack of the motion
+// library, a rig of the shared characters), a choice is made among candidate policies on the other groups
+// alone, and the left-out group's clips are queried under it. Not a Google Benchmark:
+//
+//   build-bench/test/bench/retrieval_groups [--threads 2] [--grid default|signatures|all]
+//
+// (default: --threads 2 --grid signatures).
+//
+// Sets and groups: the shared characters (characters/motions.csv, a group per rig: kaykit, robotexpressive,
+// fox), the library without its cute fish (library/labels.csv, a group per pack, the first folder of a row's
+// file) and the cute fish pack alone (one animation set on 35 shapes, which would otherwise be most of the
+// library's queries). Each clip is read as `deformseg evaluate` reads it (30 fps, welded and repaired) and
+// described once; a clip that cannot be read is left out, as --skip-unreadable does.
+//
+// Candidates (--grid): `default` is today's default policy alone (`Default_similarity`), whose figures are
+// then those of `deformseg evaluate` on each set; `signatures` adds motion signatures with other weights of
+// their channels (the vertical rates, each lag's speeds and vertical rates), applied to the descriptions as the
+// store would, speeds relative to their clip's, other scales and other alignments; `all` adds the
+// self-similarity policy and blends of both values.
+//
+// For each group g: the candidate whose mean figure (the mean of NN accuracy, mAP and ROC-AUC) over the other
+// groups is best, each other group's clips queried within its set without g's; then g's queries against every
+// clip of its set under that candidate. Printed: each candidate's figures per group (every group's queries
+// against its whole set), the choice of each fold and its figures beside today's default, and the figures of
+// each set pooled over its folds' queries.
+#include <deformseg/alignment/smith_waterman.h>
+#include <deformseg/alignment/subsequence_dtw.h>
+#include <deformseg/evaluation/motion_labels.h>
+#include <deformseg/evaluation/retrieval_evaluation.h>
+#include <deformseg/internal/parallel_for.h>
+#include <deformseg/io/gltf.h>
+#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/similarity/self_similarity_matching.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace ds = deformseg;
+using ds::evaluation::Retrieval_scores;
+
+constexpr double fps = 30;
+constexpr std::size_t lag_count = 4;  // the default signatures' lags
+constexpr double default_vertical_weight = 0.2;
+
+fs::path data_dir() {
+  const char* dir = std::getenv("DEFORMSEG_DATA_DIR");
+  return fs::path(dir && *dir ? dir : DEFORMSEG_DATA_DIR);
+}
+
+// One labelled clip, described by the signatures and (with --grid all) the self-similarity.
+struct Clip {
+  ds::evaluation::Labelled_clip row;
+  std::string group;
+  ds::similarity::Motion_signature_description signatures;
+  std::optional<ds::similarity::Self_similarity_matching<>::Description> self;
+};
+
+// A set of clips evaluated together: queries and candidates are its clips alone.
+struct Evaluation_set {
+  std::string name;
+  std::vector<Clip> clips;
+  std::vector<ds::evaluation::Labelled_item> items() const {
+    std::vector<ds::evaluation::Labelled_item> items;
+    for (const Clip& c : clips) items.push_back(c.row.item);
+    return items;
+  }
+};
+
+// Speeds made relative to the clip's: each column less its mean over the rows, or each lag's speeds less
+// their mean (a body's pace taken out, the shape of its distribution kept).
+enum class Centre { none, columns, lags };
+
+// A candidate policy: signature channel weights (per lag, the speeds' and the vertical rates'), speeds
+// centred or not, the signatures' scale and alignment, and the share of the self-similarity's value in a
+// fusion of both.
+struct Candidate {
+  std::string name;
+  std::array<double, lag_count> speed_weights{1, 1, 1, 1};
+  std::array<double, lag_count> vertical_weights{0.2, 0.2, 0.2, 0.2};
+  double scale = ds::similarity::Default_similarity{}.scale;
+  double self_share = 0;
+  std::string alignment = "dtw";  // or "subsequence-dtw", "smith-waterman"
+  Centre centre = Centre::none;
+};
+
+// The rows of `csv` whose group `group_of` names, read and described; `keep` chooses the groups.
+template <class GroupOf, class Keep>
+Evaluation_set read_set(const std::string& name, const fs::path& csv, const GroupOf& group_of, const Keep& keep,
+                        bool with_self, int threads) {
+  Evaluation_set set{name, {}};
+  for (ds::evaluation::Labelled_clip& row : ds::evaluation::read_motion_labels(csv)) {
+    const std::string group = group_of(row);
+    if (keep(group)) set.clips.push_back({std::move(row), group, {}, std::nullopt});
+  }
+  std::map<fs::path, std::vector<std::size_t>> by_file;
+  for (std::size_t k = 0; k < set.clips.size(); ++k) by_file[set.clips[k].row.file].push_back(k);
+  std::vector<std::vector<std::size_t>> files;
+  for (auto& [file, rows] : by_file) files.push_back(rows);
+  std::vector<char> readable(set.clips.size(), 0);
+  const ds::similarity::Default_similarity signatures{};
+  const ds::similarity::Self_similarity_matching<> self{};
+  ds::internal::parallel_for(files.size(), threads, [&](std::size_t f) {
+    try {
+      const ds::io::Gltf_file file(set.clips[files[f][0]].row.file);
+      const ds::io::Repaired_triangles repaired = file.repair({.weld = true});
+      for (const std::size_t k : files[f]) {
+        Clip& clip = set.clips[k];
+        try {
+          const auto animation = file.read(repaired, {.clip = clip.row.item.clip, .fps = fps, .threads = 1});
+          clip.signatures = signatures.describe(animation);
+          if (with_self) clip.self = self.describe(animation);
+          readable[k] = 1;
+        } catch (const ds::invalid_input&) {
+        }
+      }
+    } catch (const ds::invalid_input&) {
+    }
+  });
+  std::vector<Clip> kept;
+  for (std::size_t k = 0; k < set.clips.size(); ++k)
+    if (readable[k]) kept.push_back(std::move(set.clips[k]));
+  std::printf("%s: %zu of %zu clips read\n", name.c_str(), kept.size(), set.clips.size());
+  set.clips = std::move(kept);
+  return set;
+}
+
+// The signatures of `d` with the channel weights of `c` in place of the defaults.
+ds::similarity::Motion_signature_description weighted(const ds::similarity::Motion_signature_description& d,
+                                                      const Candidate& c) {
+  ds::similarity::Motion_signature_description out = d;
+  const Eigen::Index k = d.signatures.cols() / Eigen::Index(2 * lag_count);
+  for (std::size_t l = 0; l < lag_count; ++l) {
+    const float speed = float(std::sqrt(c.speed_weights[l]));
+    const float vertical = float(std::sqrt(c.vertical_weights[l] / default_vertical_weight));
+    if (speed != 1) out.signatures.middleCols(Eigen::Index(l) * k, k) *= speed;
+    if (vertical != 1) out.signatures.middleCols(Eigen::Index(lag_count + l) * k, k) *= vertical;
+    auto speeds = out.signatures.middleCols(Eigen::Index(l) * k, k);
+    if (c.centre == Centre::columns) speeds.rowwise() -= speeds.colwise().mean();
+    if (c.centre == Centre::lags) speeds.array() -= speeds.mean();
+  }
+  return out;
+}
+
+// The similarity matrix of `set` under `c`; `self_matrix` is the set's self-similarity matrix (computed once,
+// when a candidate first needs it).
+Eigen::MatrixXd candidate_matrix(const Evaluation_set& set, const Candidate& c,
+                                 std::optional<Eigen::MatrixXd>& self_matrix, int threads) {
+  std::vector<ds::similarity::Motion_signature_description> descriptions;
+  for (const Clip& clip : set.clips) descriptions.push_back(weighted(clip.signatures, c));
+  const auto matrix = [&]<class Alignment>(Alignment) {
+    ds::similarity::Motion_signature_similarity<Alignment> policy{};
+    policy.scale = c.scale;
+    return ds::similarity::described_similarity_matrix<decltype(policy)>(descriptions, policy, {}, threads);
+  };
+  Eigen::MatrixXd m = c.alignment == "dtw"               ? matrix(ds::alignment::Dtw{})
+                      : c.alignment == "subsequence-dtw" ? matrix(ds::alignment::Subsequence_dtw{})
+                                                         : matrix(ds::alignment::Smith_waterman{});
+  if (c.self_share == 0) return m;
+  if (!self_matrix) {
+    std::vector<ds::similarity::Self_similarity_matching<>::Description> selves;
+    for (const Clip& clip : set.clips) selves.push_back(*clip.self);
+    self_matrix = ds::similarity::described_similarity_matrix<ds::similarity::Self_similarity_matching<>>(
+        selves, ds::similarity::Self_similarity_matching<>{}, {}, threads);
+  }
+  return (1 - c.self_share) * m + c.self_share * *self_matrix;
+}
+
+std::string number(double x) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%g", x);
+  return text;
+}
+
+// The candidates of `grid`: today's default first.
+std::vector<Candidate> candidates(const std::string& grid) {
+  std::vector<Candidate> out{{.name = "default"}};
+  if (grid == "default") return out;
+  for (const double v : {0.0, 0.1, 0.4, 0.8})
+    out.push_back({.name = "vertical weight " + number(v), .vertical_weights = {v, v, v, v}});
+  for (std::size_t l = 0; l < lag_count; ++l)
+    for (const double w : {0.0, 0.5, 2.0}) {
+      Candidate c{.name = "lag " + std::to_string(l + 1) + " weighed x" + number(w)};
+      c.speed_weights[l] *= w;
+      c.vertical_weights[l] *= w;
+      out.push_back(c);
+    }
+  for (const double s : {1.0, 1.3, 2.5, 3.5}) out.push_back({.name = "scale " + number(s), .scale = s});
+  out.push_back({.name = "speeds less their clip's mean", .centre = Centre::columns});
+  out.push_back({.name = "each lag less its clip's mean", .centre = Centre::lags});
+  out.push_back({.name = "subsequence DTW", .alignment = "subsequence-dtw"});
+  out.push_back({.name = "Smith-Waterman", .alignment = "smith-waterman"});
+  if (grid == "signatures") return out;
+  for (const double share : {0.1, 0.2, 0.3, 1.0})
+    out.push_back({.name = "self-similarity share " + number(share), .self_share = share});
+  return out;
+}
+
+// Indices of every clip of `set`.
+std::vector<std::size_t> all_clips(const Evaluation_set& set) {
+  std::vector<std::size_t> out(set.clips.size());
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] = k;
+  return out;
+}
+
+// Indices of the clips of `set` in group `g` (or not in it).
+std::vector<std::size_t> clips_of_group(const Evaluation_set& set, const std::string& g, bool in) {
+  std::vector<std::size_t> out;
+  for (std::size_t k = 0; k < set.clips.size(); ++k)
+    if ((set.clips[k].group == g) == in) out.push_back(k);
+  return out;
+}
+
+// The figures of group g's queries among the clips `kept` of the set (matrix m over the whole set).
+Retrieval_scores group_scores(const Evaluation_set& set, const Eigen::MatrixXd& m, const std::string& g,
+                              const std::vector<std::size_t>& kept) {
+  Eigen::MatrixXd sub(Eigen::Index(kept.size()), Eigen::Index(kept.size()));
+  std::vector<ds::evaluation::Labelled_item> items;
+  std::vector<std::size_t> queries;
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    items.push_back(set.clips[kept[i]].row.item);
+    if (set.clips[kept[i]].group == g) queries.push_back(i);
+    for (std::size_t j = 0; j < kept.size(); ++j)
+      sub(Eigen::Index(i), Eigen::Index(j)) = m(Eigen::Index(kept[i]), Eigen::Index(kept[j]));
+  }
+  return ds::evaluation::evaluate_retrieval(sub, items, queries);
+}
+
+// The mean of a group's NN accuracy, mAP and ROC-AUC (those it has); none without a query.
+std::optional<double> mean_figure(const Retrieval_scores& s) {
+  double sum = 0;
+  int n = 0;
+  for (const auto& f : {s.nn_accuracy, s.mean_average_precision, s.roc_auc})
+    if (f) sum += *f, ++n;
+  if (n == 0) return std::nullopt;
+  return sum / n;
+}
+
+std::string figure(const std::optional<double>& f) {
+  char text[16];
+  if (!f) return "   -  ";
+  std::snprintf(text, sizeof text, " %.3f", *f);
+  return text;
+}
+
+void print_row(const std::string& label, const Retrieval_scores& s) {
+  std::printf("  %-46s %4zu %s %s %s\n", label.c_str(), s.queries, figure(s.nn_accuracy).c_str(),
+              figure(s.mean_average_precision).c_str(), figure(s.roc_auc).c_str());
+}
+
+// Where `m` ranks each query's relevant candidates: per relevant candidate, the fraction of the query's
+// other-motion candidates ranked before it (0 at the top); the median of those of the query's group, and of
+// other groups.
+void print_relevant_ranks(const Evaluation_set& set, const Eigen::MatrixXd& m) {
+  const auto items = set.items();
+  std::array<std::vector<double>, 2> fractions;  // the query's group, the others
+  for (const auto& q : ds::evaluation::evaluate_retrieval(m, items).per_query) {
+    std::vector<std::size_t> ranked;
+    for (std::size_t c = 0; c < items.size(); ++c)
+      if (c != q.query && ds::evaluation::internal::retrieval::is_candidate(items[q.query], items[c]))
+        ranked.push_back(c);
+    std::stable_sort(ranked.begin(), ranked.end(), [&](std::size_t a, std::size_t b) {
+      return m(Eigen::Index(q.query), Eigen::Index(a)) > m(Eigen::Index(q.query), Eigen::Index(b));
+    });
+    const auto relevant = [&](std::size_t c) { return items[c].motion == items[q.query].motion; };
+    const double others =
+        double(std::count_if(ranked.begin(), ranked.end(), [&](std::size_t c) { return !relevant(c); }));
+    double before = 0;
+    for (const std::size_t c : ranked) {
+      if (!relevant(c))
+        ++before;
+      else if (others > 0)
+        fractions[set.clips[c].group == set.clips[q.query].group ? 0 : 1].push_back(before / others);
+    }
+  }
+  for (auto& f : fractions) std::sort(f.begin(), f.end());
+  const auto median = [](const std::vector<double>& f) { return f.empty() ? std::nan("") : f[f.size() / 2]; };
+  std::printf(
+      "  %s: the relevant candidates of the query's group come after "
+      "%.3f of the other motions (median of "
+      "%zu), those of other groups after %.3f (of %zu)\n",
+      set.name.c_str(), median(fractions[0]), fractions[0].size(), median(fractions[1]), fractions[1].size());
+}
+
+struct Group_ref {
+  std::size_t set;
+  std::string group;
+};
+
+// Each group left out in turn: the candidate of the best mean figure over the other groups (each queried
+// within its set less the group left out), then the group's figures under it. Gives each group's choice.
+std::vector<std::size_t> leave_each_group_out(const std::vector<Evaluation_set>& sets,
+                                              const std::vector<Group_ref>& groups,
+                                              const std::vector<Candidate>& grid_candidates,
+                                              const std::vector<std::vector<Eigen::MatrixXd>>& matrices) {
+  std::printf(
+      "\nleft out: the choice of the other groups, then this group's "
+      "figures (queries NN mAP ROC-AUC)\n");
+  std::vector<std::size_t> choices(groups.size());
+  for (std::size_t left = 0; left < groups.size(); ++left) {
+    const Group_ref& out = groups[left];
+    const std::vector<std::size_t> without = clips_of_group(sets[out.set], out.group, false);
+    double best = -1;
+    for (std::size_t c = 0; c < grid_candidates.size(); ++c) {
+      double sum = 0;
+      int n = 0;
+      for (std::size_t h = 0; h < groups.size(); ++h) {
+        if (h == left) continue;
+        const auto& set = sets[groups[h].set];
+        const std::vector<std::size_t> kept = groups[h].set == out.set ? without : all_clips(set);
+        if (const auto f = mean_figure(group_scores(set, matrices[c][groups[h].set], groups[h].group, kept)))
+          sum += *f, ++n;
+      }
+      if (n > 0 && sum / n > best) best = sum / n, choices[left] = c;
+    }
+    const std::vector<std::size_t> all = all_clips(sets[out.set]);
+    print_row(out.group + " <- " + grid_candidates[choices[left]].name,
+              group_scores(sets[out.set], matrices[choices[left]][out.set], out.group, all));
+    print_row(out.group + "    today", group_scores(sets[out.set], matrices[0][out.set], out.group, all));
+  }
+
+  return choices;
+}
+
+// Each set's figures, each query ranked under its own group's choice, beside today's default.
+void print_pooled(const std::vector<Evaluation_set>& sets, const std::vector<Group_ref>& groups,
+                  const std::vector<std::size_t>& choices, const std::vector<std::vector<Eigen::MatrixXd>>& matrices) {
+  std::printf("\nper set, every group left out in turn (queries NN mAP ROC-AUC)\n");
+  for (std::size_t s = 0; s < sets.size(); ++s) {
+    Eigen::MatrixXd pooled = matrices[0][s];
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      if (groups[g].set == s)
+        for (const std::size_t k : clips_of_group(sets[s], groups[g].group, true))
+          pooled.row(Eigen::Index(k)) = matrices[choices[g]][s].row(Eigen::Index(k));
+    const auto items = sets[s].items();
+    print_row(sets[s].name, ds::evaluation::evaluate_retrieval(pooled, items));
+    print_row(sets[s].name + ", today", ds::evaluation::evaluate_retrieval(matrices[0][s], items));
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int threads = 2;
+  std::string grid = "signatures";
+  for (int i = 1; i + 1 < argc; i += 2) {
+    const std::string flag = argv[i];
+    if (flag == "--threads")
+      threads = std::atoi(argv[i + 1]);
+    else if (flag == "--grid")
+      grid = argv[i + 1];
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const bool with_self = grid == "all";
+  const fs::path data = data_dir();
+  const auto rig_of = [](const ds::evaluation::Labelled_clip& row) { return row.item.rig; };
+  const auto pack_of = [](const ds::evaluation::Labelled_clip& row) {
+    return row.item.body.substr(0, row.item.body.find('/'));
+  };
+  const auto any = [](const std::string&) { return true; };
+  std::vector<Evaluation_set> sets;
+  sets.push_back(read_set("characters", data / "characters/motions.csv", rig_of, any, with_self, threads));
+  sets.push_back(read_set(
+      "library without the cute fish", data / "library/labels.csv", pack_of,
+      [](const std::string& g) { return g != "cute_fish_pack"; }, with_self, threads));
+  sets.push_back(read_set(
+      "the cute fish", data / "library/labels.csv", pack_of, [](const std::string& g) { return g == "cute_fish_pack"; },
+      with_self, threads));
+
+  std::vector<Group_ref> groups;
+  for (std::size_t s = 0; s < sets.size(); ++s) {
+    std::set<std::string> names;
+    for (const Clip& c : sets[s].clips) names.insert(c.group);
+    for (const std::string& g : names) groups.push_back({s, g});
+  }
+
+  // Every candidate's matrices, and each group's figures against its whole set.
+  const std::vector<Candidate> grid_candidates = candidates(grid);
+  std::vector<std::vector<Eigen::MatrixXd>> matrices(grid_candidates.size());
+  std::vector<std::optional<Eigen::MatrixXd>> self_matrices(sets.size());
+  for (std::size_t c = 0; c < grid_candidates.size(); ++c) {
+    std::printf("%s\n", grid_candidates[c].name.c_str());
+    for (std::size_t s = 0; s < sets.size(); ++s) {
+      matrices[c].push_back(candidate_matrix(sets[s], grid_candidates[c], self_matrices[s], threads));
+      const std::vector<std::size_t> all = all_clips(sets[s]);
+      for (const Group_ref& g : groups)
+        if (g.set == s) print_row(g.group, group_scores(sets[s], matrices[c][s], g.group, all));
+    }
+  }
+
+  const std::vector<std::size_t> choices = leave_each_group_out(sets, groups, grid_candidates, matrices);
+  print_pooled(sets, groups, choices, matrices);
+  std::printf("\nwhere today's default ranks the relevant clips\n");
+  for (std::size_t s = 0; s < sets.size(); ++s) print_relevant_ranks(sets[s], matrices[0][s]);
+  std::printf("\n%.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
