@@ -2,9 +2,9 @@
 // library, a rig of the shared characters), a choice is made among candidate policies on the other groups
 // alone, and the left-out group's clips are queried under it. Not a Google Benchmark:
 //
-//   build-bench/test/bench/retrieval_groups [--threads 2] [--grid default|signatures|all]
+//   build-bench/test/bench/retrieval_groups [--threads 2] [--grid default|signatures|all] [--learned P]...
 //
-// (default: --threads 2 --grid signatures).
+// (default: --threads 2 --grid signatures, nothing learned).
 //
 // Sets and groups: the shared characters (characters/motions.csv, a group per rig: kaykit, robotexpressive,
 // fox), the library without its cute fish (library/labels.csv, a group per pack, the first folder of a row's
@@ -22,7 +22,9 @@
 // groups is best, each other group's clips queried within its set without g's; then g's queries against every
 // clip of its set under that candidate. Printed: each candidate's figures per group (every group's queries
 // against its whole set), the choice of each fold and its figures beside today's default, and the figures of
-// each set pooled over its folds' queries.
+// each set pooled over its folds' queries. Each --learned P adds weights of the signature's 64 columns learned
+// on the other groups (Fisher's criterion of each column to the power P, `learned_weights`), each group
+// measured under the weights its fold learned.
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/alignment/subsequence_dtw.h>
 #include <deformseg/evaluation/motion_labels.h>
@@ -94,6 +96,7 @@ struct Candidate {
   double self_share = 0;
   std::string alignment = "dtw";  // or "subsequence-dtw", "smith-waterman"
   Centre centre = Centre::none;
+  Eigen::VectorXf column_factors{};  // when not empty, every column multiplied by its factor
 };
 
 // The rows of `csv` whose group `group_of` names, read and described; `keep` chooses the groups.
@@ -151,6 +154,7 @@ ds::similarity::Motion_signature_description weighted(const ds::similarity::Moti
     if (c.centre == Centre::columns) speeds.rowwise() -= speeds.colwise().mean();
     if (c.centre == Centre::lags) speeds.array() -= speeds.mean();
   }
+  if (c.column_factors.size() > 0) out.signatures.array().rowwise() *= c.column_factors.transpose().array();
   return out;
 }
 
@@ -350,17 +354,69 @@ void print_pooled(const std::vector<Evaluation_set>& sets, const std::vector<Gro
   }
 }
 
+// Per column of the signatures, Fisher's criterion over the labelled clips outside group `left` (each
+// clip its mean row): the spread of the motions' means over the spread within each motion; raised to
+// `power` and scaled to a mean of 1, as weights of the squared distance.
+Eigen::VectorXd learned_weights(const std::vector<Evaluation_set>& sets, const Group_ref& left, double power) {
+  std::map<std::string, std::pair<Eigen::VectorXd, std::vector<Eigen::VectorXd>>> motions;  // sum, clips
+  for (std::size_t s = 0; s < sets.size(); ++s)
+    for (const Clip& c : sets[s].clips) {
+      if (c.row.item.motion == ds::evaluation::distractor_label || (s == left.set && c.group == left.group)) continue;
+      const Eigen::VectorXd mean = c.signatures.signatures.cast<double>().colwise().mean().transpose();
+      auto& [sum, clips] = motions[c.row.item.motion];
+      sum = sum.size() == 0 ? mean : Eigen::VectorXd(sum + mean);
+      clips.push_back(mean);
+    }
+  const Eigen::Index width = motions.begin()->second.first.size();
+  Eigen::VectorXd total = Eigen::VectorXd::Zero(width), between = total, within = total;
+  double n = 0;
+  for (const auto& [motion, sum_clips] : motions) total += sum_clips.first, n += double(sum_clips.second.size());
+  total /= n;
+  for (const auto& [motion, sum_clips] : motions) {
+    const Eigen::VectorXd mean = sum_clips.first / double(sum_clips.second.size());
+    between += double(sum_clips.second.size()) * (mean - total).cwiseAbs2();
+    for (const Eigen::VectorXd& clip : sum_clips.second) within += (clip - mean).cwiseAbs2();
+  }
+  Eigen::VectorXd weights = (between.array() / within.array().max(1e-12)).pow(power).matrix();
+  return weights / weights.mean();
+}
+
+// Weights of the signature's columns learned on the other groups (`learned_weights`), each group left
+// out in turn: its figures under the weights its fold learned, and each set pooled over its folds.
+void leave_each_group_out_learned(const std::vector<Evaluation_set>& sets, const std::vector<Group_ref>& groups,
+                                  const std::vector<Eigen::MatrixXd>& today, double power, int threads) {
+  std::printf("\nleft out, the columns weighed by Fisher's criterion to the power %g learned on the other groups\n",
+              power);
+  std::vector<Eigen::MatrixXd> pooled = today;
+  for (const Group_ref& out : groups) {
+    const Candidate learned{.name = "learned",
+                            .column_factors = learned_weights(sets, out, power).cwiseSqrt().cast<float>()};
+    std::optional<Eigen::MatrixXd> unused;
+    const Eigen::MatrixXd m = candidate_matrix(sets[out.set], learned, unused, threads);
+    const std::vector<std::size_t> all = all_clips(sets[out.set]);
+    print_row(out.group + " <- learned", group_scores(sets[out.set], m, out.group, all));
+    print_row(out.group + "    today", group_scores(sets[out.set], today[out.set], out.group, all));
+    for (const std::size_t k : clips_of_group(sets[out.set], out.group, true))
+      pooled[out.set].row(Eigen::Index(k)) = m.row(Eigen::Index(k));
+  }
+  for (std::size_t s = 0; s < sets.size(); ++s)
+    print_row(sets[s].name + ", learned", ds::evaluation::evaluate_retrieval(pooled[s], sets[s].items()));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   int threads = 2;
   std::string grid = "signatures";
+  std::vector<double> learned_powers;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
     if (flag == "--threads")
       threads = std::atoi(argv[i + 1]);
     else if (flag == "--grid")
       grid = argv[i + 1];
+    else if (flag == "--learned")
+      learned_powers.push_back(std::atof(argv[i + 1]));
   }
   const auto start = std::chrono::steady_clock::now();
   const bool with_self = grid == "all";
@@ -402,6 +458,7 @@ int main(int argc, char** argv) {
 
   const std::vector<std::size_t> choices = leave_each_group_out(sets, groups, grid_candidates, matrices);
   print_pooled(sets, groups, choices, matrices);
+  for (const double power : learned_powers) leave_each_group_out_learned(sets, groups, matrices[0], power, threads);
   std::printf("\nwhere today's default ranks the relevant clips\n");
   for (std::size_t s = 0; s < sets.size(); ++s) print_relevant_ranks(sets[s], matrices[0][s]);
   std::printf("\n%.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
