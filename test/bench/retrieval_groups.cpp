@@ -14,9 +14,9 @@
 //
 // Candidates (--grid): `default` is today's default policy alone (`Default_similarity`), whose figures are
 // then those of `deformseg evaluate` on each set; `signatures` adds motion signatures with other weights of
-// their channels (the vertical rates, each lag's speeds and vertical rates), applied to the descriptions as the
-// store would, speeds relative to their clip's, other scales and other alignments; `all` adds the
-// self-similarity policy and blends of both values.
+// their channels (the vertical rates, each lag's speeds and vertical rates), applied to the descriptions as
+// the store would, speeds relative to their clip's or their body's, other scales and other alignments; `all`
+// adds the self-similarity policy and blends of both values.
 //
 // For each group g: the candidate whose mean figure (the mean of NN accuracy, mAP and ROC-AUC) over the other
 // groups is best, each other group's clips queried within its set without g's; then g's queries against every
@@ -82,8 +82,10 @@ struct Evaluation_set {
 };
 
 // Speeds made relative to the clip's: each column less its mean over the rows, or each lag's speeds less
-// their mean (a body's pace taken out, the shape of its distribution kept).
-enum class Centre { none, columns, lags };
+// their mean (a clip's pace taken out, the shape of its distribution kept); or relative to the body's, the
+// same means over every row of every clip of the body in the set (the body's pace taken out, the clip's
+// kept).
+enum class Centre { none, columns, lags, body_columns, body_lags };
 
 // A candidate policy: signature channel weights (per lag, the speeds' and the vertical rates'), speeds
 // centred or not, the signatures' scale and alignment, and the share of the self-similarity's value in a
@@ -158,12 +160,34 @@ ds::similarity::Motion_signature_description weighted(const ds::similarity::Moti
   return out;
 }
 
+// Each description's speeds less the mean of its body's (`Centre::body_columns`, `Centre::body_lags`).
+void less_body_means(const Evaluation_set& set, Centre centre,
+                     std::vector<ds::similarity::Motion_signature_description>& descriptions) {
+  const Eigen::Index speeds = descriptions.front().signatures.cols() / 2, k = speeds / Eigen::Index(lag_count);
+  std::map<std::string, std::pair<Eigen::RowVectorXd, double>> bodies;  // sum of rows, rows
+  for (std::size_t i = 0; i < descriptions.size(); ++i) {
+    auto& [sum, rows] = bodies[set.clips[i].row.item.body];
+    const Eigen::RowVectorXd clip = descriptions[i].signatures.leftCols(speeds).cast<double>().colwise().sum();
+    sum = sum.size() == 0 ? clip : Eigen::RowVectorXd(sum + clip);
+    rows += double(descriptions[i].signatures.rows());
+  }
+  for (std::size_t i = 0; i < descriptions.size(); ++i) {
+    const auto& [sum, rows] = bodies[set.clips[i].row.item.body];
+    Eigen::RowVectorXd mean = sum / rows;
+    if (centre == Centre::body_lags)
+      for (std::size_t l = 0; l < lag_count; ++l)
+        mean.segment(Eigen::Index(l) * k, k).setConstant(mean.segment(Eigen::Index(l) * k, k).mean());
+    descriptions[i].signatures.leftCols(speeds).rowwise() -= mean.cast<float>();
+  }
+}
+
 // The similarity matrix of `set` under `c`; `self_matrix` is the set's self-similarity matrix (computed once,
 // when a candidate first needs it).
 Eigen::MatrixXd candidate_matrix(const Evaluation_set& set, const Candidate& c,
                                  std::optional<Eigen::MatrixXd>& self_matrix, int threads) {
   std::vector<ds::similarity::Motion_signature_description> descriptions;
   for (const Clip& clip : set.clips) descriptions.push_back(weighted(clip.signatures, c));
+  if (c.centre == Centre::body_columns || c.centre == Centre::body_lags) less_body_means(set, c.centre, descriptions);
   const auto matrix = [&]<class Alignment>(Alignment) {
     ds::similarity::Motion_signature_similarity<Alignment> policy{};
     policy.scale = c.scale;
@@ -204,6 +228,8 @@ std::vector<Candidate> candidates(const std::string& grid) {
   for (const double s : {1.0, 1.3, 2.5, 3.5}) out.push_back({.name = "scale " + number(s), .scale = s});
   out.push_back({.name = "speeds less their clip's mean", .centre = Centre::columns});
   out.push_back({.name = "each lag less its clip's mean", .centre = Centre::lags});
+  out.push_back({.name = "speeds less their body's mean", .centre = Centre::body_columns});
+  out.push_back({.name = "each lag less its body's mean", .centre = Centre::body_lags});
   out.push_back({.name = "subsequence DTW", .alignment = "subsequence-dtw"});
   out.push_back({.name = "Smith-Waterman", .alignment = "smith-waterman"});
   if (grid == "signatures") return out;
