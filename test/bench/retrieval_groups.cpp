@@ -142,7 +142,8 @@ Evaluation_set read_set(const std::string& name, const fs::path& csv, const Grou
   return set;
 }
 
-// The signatures of `d` with the channel weights of `c` in place of the defaults.
+// The signatures of `d` as `c` has them: its channel weights in place of the defaults, its speeds centred on
+// the clip's (not the body's: `less_body_means`), its column factors.
 ds::similarity::Motion_signature_description weighted(const ds::similarity::Motion_signature_description& d,
                                                       const Candidate& c) {
   ds::similarity::Motion_signature_description out = d;
