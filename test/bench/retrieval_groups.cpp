@@ -319,9 +319,8 @@ void print_relevant_ranks(const Evaluation_set& set, const Eigen::MatrixXd& m) {
   for (auto& f : fractions) std::sort(f.begin(), f.end());
   const auto median = [](const std::vector<double>& f) { return f.empty() ? std::nan("") : f[f.size() / 2]; };
   std::printf(
-      "  %s: the relevant candidates of the query's group come after "
-      "%.3f of the other motions (median of "
-      "%zu), those of other groups after %.3f (of %zu)\n",
+      "  %s: the relevant candidates of the query's group come after %.3f of the other motions (median "
+      "of %zu), those of other groups after %.3f (of %zu)\n",
       set.name.c_str(), median(fractions[0]), fractions[0].size(), median(fractions[1]), fractions[1].size());
 }
 
@@ -331,14 +330,15 @@ struct Group_ref {
 };
 
 // Each group left out in turn: the candidate of the best mean figure over the other groups (each queried
-// within its set less the group left out), then the group's figures under it. Gives each group's choice.
+// within its set less the group left out), then the group's figures under it. `whole[c][h]` are group h's
+// figures against its whole set under candidate c, which a fold leaving out a group of another set reads
+// as they are. Gives each group's choice.
 std::vector<std::size_t> leave_each_group_out(const std::vector<Evaluation_set>& sets,
                                               const std::vector<Group_ref>& groups,
                                               const std::vector<Candidate>& grid_candidates,
-                                              const std::vector<std::vector<Eigen::MatrixXd>>& matrices) {
-  std::printf(
-      "\nleft out: the choice of the other groups, then this group's "
-      "figures (queries NN mAP ROC-AUC)\n");
+                                              const std::vector<std::vector<Eigen::MatrixXd>>& matrices,
+                                              const std::vector<std::vector<Retrieval_scores>>& whole) {
+  std::printf("\nleft out: the choice of the other groups, then this group's figures (queries NN mAP ROC-AUC)\n");
   std::vector<std::size_t> choices(groups.size());
   for (std::size_t left = 0; left < groups.size(); ++left) {
     const Group_ref& out = groups[left];
@@ -349,20 +349,23 @@ std::vector<std::size_t> leave_each_group_out(const std::vector<Evaluation_set>&
       int n = 0;
       for (std::size_t h = 0; h < groups.size(); ++h) {
         if (h == left) continue;
-        const auto& set = sets[groups[h].set];
-        const std::vector<std::size_t> kept = groups[h].set == out.set ? without : all_clips(set);
-        if (const auto f = mean_figure(group_scores(set, matrices[c][groups[h].set], groups[h].group, kept)))
-          sum += *f, ++n;
+        const Retrieval_scores scores =
+            groups[h].set == out.set ? group_scores(sets[out.set], matrices[c][out.set], groups[h].group, without)
+                                     : whole[c][h];
+        if (const auto f = mean_figure(scores)) sum += *f, ++n;
       }
       if (n > 0 && sum / n > best) best = sum / n, choices[left] = c;
     }
-    const std::vector<std::size_t> all = all_clips(sets[out.set]);
-    print_row(out.group + " <- " + grid_candidates[choices[left]].name,
-              group_scores(sets[out.set], matrices[choices[left]][out.set], out.group, all));
-    print_row(out.group + "    today", group_scores(sets[out.set], matrices[0][out.set], out.group, all));
+    print_row(out.group + " <- " + grid_candidates[choices[left]].name, whole[choices[left]][left]);
+    print_row(out.group + "    today", whole[0][left]);
   }
-
   return choices;
+}
+
+// `pooled` with the rows of group g's clips taken from `m` (their queries ranked as g's fold ranks them).
+void take_group_rows(const Evaluation_set& set, const std::string& g, const Eigen::MatrixXd& m,
+                     Eigen::MatrixXd& pooled) {
+  for (const std::size_t k : clips_of_group(set, g, true)) pooled.row(Eigen::Index(k)) = m.row(Eigen::Index(k));
 }
 
 // Each set's figures, each query ranked under its own group's choice, beside today's default.
@@ -372,9 +375,7 @@ void print_pooled(const std::vector<Evaluation_set>& sets, const std::vector<Gro
   for (std::size_t s = 0; s < sets.size(); ++s) {
     Eigen::MatrixXd pooled = matrices[0][s];
     for (std::size_t g = 0; g < groups.size(); ++g)
-      if (groups[g].set == s)
-        for (const std::size_t k : clips_of_group(sets[s], groups[g].group, true))
-          pooled.row(Eigen::Index(k)) = matrices[choices[g]][s].row(Eigen::Index(k));
+      if (groups[g].set == s) take_group_rows(sets[s], groups[g].group, matrices[choices[g]][s], pooled);
     const auto items = sets[s].items();
     print_row(sets[s].name, ds::evaluation::evaluate_retrieval(pooled, items));
     print_row(sets[s].name + ", today", ds::evaluation::evaluate_retrieval(matrices[0][s], items));
@@ -423,8 +424,7 @@ void leave_each_group_out_learned(const std::vector<Evaluation_set>& sets, const
     const std::vector<std::size_t> all = all_clips(sets[out.set]);
     print_row(out.group + " <- learned", group_scores(sets[out.set], m, out.group, all));
     print_row(out.group + "    today", group_scores(sets[out.set], today[out.set], out.group, all));
-    for (const std::size_t k : clips_of_group(sets[out.set], out.group, true))
-      pooled[out.set].row(Eigen::Index(k)) = m.row(Eigen::Index(k));
+    take_group_rows(sets[out.set], out.group, m, pooled[out.set]);
   }
   for (std::size_t s = 0; s < sets.size(); ++s)
     print_row(sets[s].name + ", learned", ds::evaluation::evaluate_retrieval(pooled[s], sets[s].items()));
@@ -472,18 +472,19 @@ int main(int argc, char** argv) {
   // Every candidate's matrices, and each group's figures against its whole set.
   const std::vector<Candidate> grid_candidates = candidates(grid);
   std::vector<std::vector<Eigen::MatrixXd>> matrices(grid_candidates.size());
+  std::vector<std::vector<Retrieval_scores>> whole(grid_candidates.size());
   std::vector<std::optional<Eigen::MatrixXd>> self_matrices(sets.size());
   for (std::size_t c = 0; c < grid_candidates.size(); ++c) {
     std::printf("%s\n", grid_candidates[c].name.c_str());
-    for (std::size_t s = 0; s < sets.size(); ++s) {
+    for (std::size_t s = 0; s < sets.size(); ++s)
       matrices[c].push_back(candidate_matrix(sets[s], grid_candidates[c], self_matrices[s], threads));
-      const std::vector<std::size_t> all = all_clips(sets[s]);
-      for (const Group_ref& g : groups)
-        if (g.set == s) print_row(g.group, group_scores(sets[s], matrices[c][s], g.group, all));
+    for (const Group_ref& g : groups) {
+      whole[c].push_back(group_scores(sets[g.set], matrices[c][g.set], g.group, all_clips(sets[g.set])));
+      print_row(g.group, whole[c].back());
     }
   }
 
-  const std::vector<std::size_t> choices = leave_each_group_out(sets, groups, grid_candidates, matrices);
+  const std::vector<std::size_t> choices = leave_each_group_out(sets, groups, grid_candidates, matrices, whole);
   print_pooled(sets, groups, choices, matrices);
   for (const double power : learned_powers) leave_each_group_out_learned(sets, groups, matrices[0], power, threads);
   std::printf("\nwhere today's default ranks the relevant clips\n");
