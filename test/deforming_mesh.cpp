@@ -7,6 +7,7 @@
 
 #include <CGAL/Polyhedron_3.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -74,6 +75,29 @@ TEMPLATE_TEST_CASE("Deforming_mesh: frames in, the same positions out", "[deform
       CHECK(animation.frame_matrix(2)(k, Eigen::Index(i)) == p[k]);
     }
   }
+}
+
+TEST_CASE("Deforming_mesh takes a Coordinate_buffer's storage and copies a std::vector's", "[deforming_mesh]") {
+  const auto graph = mesh::make_face_graph<mesh::Surface_mesh>(tetra_points, tetra_triangles);
+  const std::vector<double> xyz = translated_frames(3);
+  mesh::Coordinate_buffer<double> buffer(xyz.size());  // sized, not written: every number written below
+  std::copy(xyz.begin(), xyz.end(), buffer.begin());
+  const double* storage = buffer.data();
+
+  const mesh::Surface_mesh_animation taken(graph, std::move(buffer));
+  const mesh::Surface_mesh_animation copied(graph, xyz);
+  CHECK(taken.all_positions().data() == storage);
+  CHECK(copied.all_positions().data() != xyz.data());
+  CHECK(std::equal(taken.all_positions().begin(), taken.all_positions().end(), xyz.begin(), xyz.end()));
+  CHECK(std::equal(copied.all_positions().begin(), copied.all_positions().end(), xyz.begin(), xyz.end()));
+
+  mesh::Coordinate_buffer<double> short_buffer(xyz.begin(), xyz.begin() + 13);
+  CHECK_THROWS_WITH(mesh::Surface_mesh_animation(graph, std::move(short_buffer)),
+                    "expected a multiple of 3 x 4 coordinates, got 13");
+  mesh::Coordinate_buffer<double> with_nan(xyz.begin(), xyz.end());
+  with_nan[12 + 3 * 2] = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS_WITH(mesh::Surface_mesh_animation(graph, std::move(with_nan)),
+                    "frame 1: vertex 2 has a non-finite coordinate");
 }
 
 TEST_CASE("Deforming_mesh: frames added one by one, or from a point map", "[deforming_mesh]") {

@@ -74,7 +74,7 @@ void check_posed_alone(const deformseg::io::Gltf_file& file, const Gltf_read_opt
   }
   CHECK(differ == 0);
   const std::vector<std::uint32_t> kept = file.repair(options.repair).source_vertex;
-  const std::vector<double> welded = deformseg::io::internal::positions_of_sources<double>(
+  const auto welded = deformseg::io::internal::positions_of_sources<double>(
       std::span<const double>(all.positions), all.num_vertices, kept);
   const auto animation = file.read(options);
   REQUIRE(animation.num_vertices() == kept.size());

@@ -22,7 +22,7 @@ py::array as_array(const py::object& value, const char* name) {
   return a;
 }
 
-std::vector<double> positions_of(const py::array& frames) {
+mesh::Coordinate_buffer<double> positions_of(const py::array& frames) {
   if (frames.dtype().kind() != 'f' || (frames.itemsize() != 4 && frames.itemsize() != 8))
     throw py::type_error("frames: expected a float32 or float64 array of shape (T, V, 3), got dtype " +
                          dtype_of(frames));
@@ -33,15 +33,15 @@ std::vector<double> positions_of(const py::array& frames) {
   if (contiguous && frames.itemsize() == 8) {
     const auto* data = static_cast<const double*>(frames.data());
     Interruptible_call call;
-    return std::vector<double>(data, data + count);
+    return mesh::Coordinate_buffer<double>(data, data + count);
   }
   if (contiguous) {
     const auto* data = static_cast<const float*>(frames.data());
     Interruptible_call call;
-    return std::vector<double>(data, data + count);
+    return mesh::Coordinate_buffer<double>(data, data + count);
   }
   const auto converted = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(frames);
-  return std::vector<double>(converted.data(), converted.data() + count);
+  return mesh::Coordinate_buffer<double>(converted.data(), converted.data() + count);
 }
 
 std::vector<std::array<std::uint32_t, 3>> triangles_of(const py::array& faces, std::size_t vertices) {

@@ -2,6 +2,8 @@
 // Animation is made of, and arrays that show the library's results without a copy.
 #pragma once
 
+#include <deformseg/mesh/coordinate_buffer.h>
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -26,7 +28,7 @@ pybind11::array as_array(const pybind11::object& value, const char* name);
 
 // The (T, V, 3) coordinates of `frames` as the library stores them, doubles frame after frame:
 // one copy of a C-contiguous float64 or float32 array, a NumPy conversion first for any other.
-std::vector<double> positions_of(const pybind11::array& frames);
+mesh::Coordinate_buffer<double> positions_of(const pybind11::array& frames);
 
 // The triangles of `faces`, an (F, 3) array of integers, each checked to be in [0, vertices).
 std::vector<std::array<std::uint32_t, 3>> triangles_of(const pybind11::array& faces, std::size_t vertices);

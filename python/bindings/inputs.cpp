@@ -21,7 +21,7 @@ Animation animation_of_arrays(const py::object& faces_like, const py::object& fr
   mesh::check_frames_per_second(fps);
   const py::array frames = as_array(frames_like, "frames");
   const py::array faces = as_array(faces_like, "faces");
-  std::vector<double> positions = positions_of(frames);
+  mesh::Coordinate_buffer<double> positions = positions_of(frames);
   const auto vertices = std::size_t(frames.shape(1));
   const auto triangles = triangles_of(faces, vertices);
   Interruptible_call call;

@@ -298,7 +298,7 @@ mesh::Deforming_mesh<Graph, Coordinate> read_frame_sequence(const std::string& d
   // The first frame's positions are those just read, unless they come from elsewhere or are to
   // be rounded to another type, when reading them again rounds each number once.
   const std::size_t block = soup.points.size();
-  std::vector<Coordinate> positions(files.size() * block);
+  mesh::Coordinate_buffer<Coordinate> positions(files.size() * block);  // each number written once, by its frame
   std::size_t first_to_read = 0;
   if (!options.topology && std::same_as<Coordinate, double>) {
     std::copy(soup.points.begin(), soup.points.end(), positions.begin());

@@ -59,7 +59,7 @@ namespace deformseg::io::internal {
 /// the order of its face's halfedge cycle), built on the output vertices' `first_frame`.
 template <std::floating_point T>
 std::vector<std::array<std::uint32_t, 3>> animation_triangles(const io::Repaired_triangles& repaired,
-                                                              std::vector<T> first_frame) {
+                                                              mesh::Coordinate_buffer<T> first_frame) {
   const auto animation = animation_of<mesh::Surface_mesh, T>(repaired, std::move(first_frame), nullptr);
   const auto triangles = animation.triangles();
   return {triangles.begin(), triangles.end()};
@@ -123,7 +123,7 @@ public:
     const Repaired_triangles repaired = internal::stream_repair(soup, options.repair, location);
     sources_ = repaired.source_vertex;
     open();
-    std::vector<float> first(3 * sources_.size());
+    mesh::Coordinate_buffer<float> first(3 * sources_.size());
     read_frame(std::span<float>(first));
     triangles_ = internal::animation_triangles(repaired, std::move(first));
     open();
@@ -217,7 +217,7 @@ public:
     sources_ = repaired.source_vertex;
     // The first frame's positions as read_frame_sequence takes them: those of its mesh file.
     if (!options.topology) first_frame_ = std::move(soup.points);
-    std::vector<double> first(3 * sources_.size());
+    mesh::Coordinate_buffer<double> first(3 * sources_.size());
     read_frame(std::span<double>(first));
     triangles_ = internal::animation_triangles(repaired, std::move(first));
     next_ = 0;
@@ -288,7 +288,7 @@ public:
   explicit Gltf_connectivity(const Gltf_file& file, const Repair_options& repair = Gltf_read_options{}.repair)
       : file_(&file), repaired_(file.repair(repair)) {
     // The order of a Surface_mesh's triangles does not depend on where its vertices are.
-    std::vector<double> anywhere(3 * repaired_.source_vertex.size(), 0.0);
+    mesh::Coordinate_buffer<double> anywhere(3 * repaired_.source_vertex.size(), 0.0);
     triangles_ = internal::animation_triangles(repaired_, std::move(anywhere));
   }
 

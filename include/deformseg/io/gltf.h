@@ -95,8 +95,8 @@ struct Gltf_read_report {
 /// mesh instance, primitives in the order of the default scene's depth-first node traversal (a
 /// node before its children, children in order), each primitive's vertices in its own order.
 struct Sampled_gltf {
-  std::vector<double> positions{};  ///< `T x 3V` coordinates, frames one after the other
-  std::size_t num_vertices = 0;     ///< V
+  mesh::Coordinate_buffer<double> positions{};  ///< `T x 3V` coordinates, frames one after the other
+  std::size_t num_vertices = 0;                 ///< V
   std::vector<std::array<std::uint32_t, 3>> triangles{};  ///< vertex indices in `[0, V)`
   Gltf_read_report report{};        ///< the clip, its times and frames, what was skipped
 };
@@ -268,7 +268,7 @@ inline void pose_frame(const Rig& rig, const Clip* clip, double fps, std::size_t
 /// `selection` when not null, in parallel; throws the error of the lowest frame with a non-finite
 /// coordinate, whatever the number of threads.
 inline void sample_frames(const Rig& rig, const Clip* clip, double fps, std::size_t frames, int threads,
-                          const Vertex_selection* selection, std::vector<double>& positions) {
+                          const Vertex_selection* selection, std::span<double> positions) {
   const std::size_t block = 3 * (selection ? selection->input.size() : rig.geometry.vertices);
   const auto sample = [&](Pose_scratch& scratch, std::size_t t) {
     pose_frame(rig, clip, fps, frames, t, selection, scratch, positions.data() + t * block);
@@ -697,7 +697,7 @@ public:
       throw e.located({.file = path_.string()});
     }
     try {
-      std::vector<Coordinate> positions;
+      mesh::Coordinate_buffer<Coordinate> positions;
       if constexpr (std::is_same_v<Coordinate, double>) positions = std::move(sampled.positions);
       else positions.assign(sampled.positions.begin(), sampled.positions.end());
       mesh::Deforming_mesh<Graph, Coordinate> animation =

@@ -407,10 +407,10 @@ inline bool keeps_input_vertices(const io::Repaired_triangles& repaired, std::si
 
 /// The positions of every output vertex in every frame: those of its source vertex.
 template <std::floating_point Coordinate, std::floating_point T>
-std::vector<Coordinate> positions_of_sources(std::span<const T> positions, std::size_t num_vertices,
-                                             std::span<const std::uint32_t> source) {
+mesh::Coordinate_buffer<Coordinate> positions_of_sources(std::span<const T> positions, std::size_t num_vertices,
+                                                         std::span<const std::uint32_t> source) {
   const std::size_t frames = num_vertices == 0 ? 0 : positions.size() / (3 * num_vertices);
-  std::vector<Coordinate> out(frames * 3 * source.size());
+  mesh::Coordinate_buffer<Coordinate> out(frames * 3 * source.size());
   Coordinate* next = out.data();
   for (std::size_t t = 0; t < frames; ++t) {
     const T* frame = positions.data() + t * 3 * num_vertices;
@@ -423,7 +423,8 @@ std::vector<Coordinate> positions_of_sources(std::span<const T> positions, std::
 /// The animation of repaired triangles whose positions are given per output vertex.
 template <mesh::FaceGraph Graph, std::floating_point Coordinate>
 mesh::Deforming_mesh<Graph, Coordinate> animation_of(const io::Repaired_triangles& repaired,
-                                                     std::vector<Coordinate> positions, io::Repair_report* report) {
+                                                     mesh::Coordinate_buffer<Coordinate> positions,
+                                                     io::Repair_report* report) {
   const std::size_t vertices = repaired.source_vertex.size();
   std::vector<std::array<double, 3>> first_frame(vertices, std::array<double, 3>{});
   for (std::size_t i = 0; i < vertices && !positions.empty(); ++i)
@@ -437,14 +438,14 @@ mesh::Deforming_mesh<Graph, Coordinate> animation_of(const io::Repaired_triangle
 /// `make_repaired_animation` for readers that own the positions: when the repair keeps every
 /// vertex they become the animation's without a copy.
 template <mesh::FaceGraph Graph, std::floating_point Coordinate>
-mesh::Deforming_mesh<Graph, Coordinate> repaired_animation(std::vector<Coordinate>&& positions,
+mesh::Deforming_mesh<Graph, Coordinate> repaired_animation(mesh::Coordinate_buffer<Coordinate>&& positions,
                                                            std::size_t num_vertices,
                                                            const io::Repaired_triangles& repaired,
                                                            io::Repair_report* report) {
   if (keeps_input_vertices(repaired, num_vertices))
     return animation_of<Graph, Coordinate>(repaired, std::move(positions), report);
-  std::vector<Coordinate> moved = positions_of_sources<Coordinate>(std::span<const Coordinate>(positions), num_vertices,
-                                                                   repaired.source_vertex);
+  mesh::Coordinate_buffer<Coordinate> moved =
+      positions_of_sources<Coordinate>(std::span<const Coordinate>(positions), num_vertices, repaired.source_vertex);
   positions = {};
   return animation_of<Graph, Coordinate>(repaired, std::move(moved), report);
 }

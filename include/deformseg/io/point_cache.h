@@ -229,13 +229,14 @@ mesh::Deforming_mesh<Graph, Coordinate> read_point_cache(const std::filesystem::
 /// The positions of every frame of a whole point cache of `format`, checked against a topology
 /// of `topology_vertices` vertices as `read_point_cache` does: `T x 3V` coordinates.
 template <io::Point_cache_format format, std::floating_point Coordinate>
-std::vector<Coordinate> read_point_cache_positions(const std::filesystem::path& path, std::size_t topology_vertices) {
+mesh::Coordinate_buffer<Coordinate> read_point_cache_positions(const std::filesystem::path& path,
+                                                               std::size_t topology_vertices) {
   const File_bytes bytes = read_file_bytes(path);
   const io::Point_cache_info info = parse_cache_header(format, bytes, path);
   check_vertex_count(info, topology_vertices, path);
   check_cache_size(info, bytes.file_size, path);
   constexpr auto order = format == io::Point_cache_format::pc2 ? std::endian::little : std::endian::big;
-  std::vector<Coordinate> xyz(3 * info.num_vertices * info.num_frames);
+  mesh::Coordinate_buffer<Coordinate> xyz(3 * info.num_vertices * info.num_frames);
   const char* next = bytes.begin() + header_size(info);
   for (std::size_t i = 0; i < xyz.size(); ++i, next += 4) {
     xyz[i] = static_cast<Coordinate>(load_word<order, float>(next));

@@ -185,7 +185,7 @@ mesh::Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input,
   if (!repair.weld)
     repaired = internal::repaired_topology(std::span<const Coordinate>(), vertices, triangles, repair,
                                            topology_location);
-  std::vector<Coordinate> positions =
+  mesh::Coordinate_buffer<Coordinate> positions =
       format == "pc2" ? internal::read_point_cache_positions<Point_cache_format::pc2, Coordinate>(input, vertices)
                       : internal::read_point_cache_positions<Point_cache_format::mdd, Coordinate>(input, vertices);
   if (repair.weld)

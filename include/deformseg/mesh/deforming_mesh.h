@@ -3,6 +3,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/mesh/coordinate_buffer.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -162,19 +163,23 @@ public:
       : topology_(std::make_shared<const Topology>(std::move(connectivity))) {}
 
   /// @brief An animation with the connectivity of `connectivity` and the frames in `positions`:
-  /// `3 V` coordinates per frame, frames one after the other.
+  /// `3 V` coordinates per frame, frames one after the other. They become the animation's, not
+  /// copied.
   /// @pre `positions.size()` is a multiple of `3 V`, and every coordinate is finite; otherwise
   /// throws `invalid_input` naming the frame and the vertex.
   /// @par Complexity O(V + F + T V).
-  Deforming_mesh(Graph connectivity, std::vector<Coordinate> positions)
+  Deforming_mesh(Graph connectivity, Coordinate_buffer<Coordinate> positions)
       : Deforming_mesh(std::move(connectivity)) {
-    const std::size_t block = 3 * num_vertices();
-    if (block == 0 ? !positions.empty() : positions.size() % block != 0)
-      throw invalid_input("expected a multiple of 3 x " + std::to_string(num_vertices()) +
-                          " coordinates, got " + std::to_string(positions.size()));
-    for (std::size_t t = 0; block != 0 && t < positions.size() / block; ++t)
-      check_finite(std::span<const Coordinate>(positions).subspan(t * block, block), t);
+    check_positions(positions);
     positions_ = std::move(positions);
+  }
+
+  /// @brief As the constructor from a `Coordinate_buffer`, the positions copied once into one.
+  /// @par Complexity O(V + F + T V).
+  Deforming_mesh(Graph connectivity, const std::vector<Coordinate>& positions)
+      : Deforming_mesh(std::move(connectivity)) {
+    check_positions(positions);
+    positions_.assign(positions.begin(), positions.end());
   }
 
   /// @brief Appends a frame: `3 V` coordinates, x, y, z of each vertex in index order.
@@ -353,6 +358,15 @@ private:
                             {.frame = frame});
   }
 
+  void check_positions(std::span<const Coordinate> positions) const {
+    const std::size_t block = 3 * num_vertices();
+    if (block == 0 ? !positions.empty() : positions.size() % block != 0)
+      throw invalid_input("expected a multiple of 3 x " + std::to_string(num_vertices()) +
+                          " coordinates, got " + std::to_string(positions.size()));
+    for (std::size_t t = 0; block != 0 && t < positions.size() / block; ++t)
+      check_finite(positions.subspan(t * block, block), t);
+  }
+
   void check_frame(std::size_t t) const {
     if (t >= num_frames())
       throw invalid_input("frame " + std::to_string(t) + " asked of an animation of " +
@@ -364,7 +378,7 @@ private:
       : topology_(std::move(topology)), frames_per_second_(fps) {}
 
   std::shared_ptr<const Topology> topology_;
-  std::vector<Coordinate> positions_;
+  Coordinate_buffer<Coordinate> positions_;
   double frames_per_second_ = default_frames_per_second;
 };
 

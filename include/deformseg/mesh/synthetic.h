@@ -237,7 +237,7 @@ Synthetic_animation<Graph> make_bending_tube(const Bending_tube& spec) {
 
   std::vector<std::array<std::size_t, 2>> phase_frames;
   auto angles = internal::schedule_angles(spec, phase_frames);
-  std::vector<double> positions;
+  Coordinate_buffer<double> positions;
   positions.reserve(angles.size() * rest.size() * 3);
   for (const auto& pose : angles)
     for (const auto& r : rest) {

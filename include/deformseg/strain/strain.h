@@ -100,7 +100,7 @@ public:
   /// @brief How the values are stored: a `std::vector` of `Value` whose allocator leaves new
   /// elements uninitialised (the kernel writes every one, and a large field is then first touched
   /// in parallel).
-  using Storage = std::vector<Value, internal::Default_init_allocator<Value>>;
+  using Storage = std::vector<Value, mesh::Uninitialized_allocator<Value>>;
   /// @brief The whole field as an `F x T` column-major Eigen matrix, without copy.
   using Matrix_map = Eigen::Map<const Eigen::Matrix<Value, Eigen::Dynamic, Eigen::Dynamic>>;
   /// @brief The principal directions of one frame as an `F x 3` Eigen matrix (row j: the unit

@@ -34,7 +34,6 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
-#include <new>
 #include <span>
 #include <type_traits>
 #include <utility>
@@ -43,29 +42,6 @@
 namespace deformseg::strain::internal {
 
 using Triangle_indices = std::array<std::uint32_t, 3>;
-
-// An allocator whose vectors leave new elements of trivial types uninitialised: the strain kernel
-// writes every value, so that the pages of a large field are first touched by the threads that
-// fill them, in parallel, rather than zeroed by one thread beforehand.
-template <class T>
-struct Default_init_allocator : std::allocator<T> {
-  using value_type = T;
-  template <class U>
-  struct rebind {
-    using other = Default_init_allocator<U>;
-  };
-  Default_init_allocator() = default;
-  template <class U>
-  Default_init_allocator(const Default_init_allocator<U>&) noexcept {}
-  template <class U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
 
 // The triangles, each rotated to start at its smallest vertex index: the strain does not depend on
 // where a face's halfedge cycle starts, and its rounding then does not either, so that graphs
