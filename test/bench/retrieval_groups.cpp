@@ -3,6 +3,7 @@
 // alone, and the left-out group's clips are queried under it. Not a Google Benchmark:
 //
 //   build-bench/test/bench/retrieval_groups [--threads 2] [--grid default|signatures|all] [--learned P]...
+//                                           [--whitened S]...
 //
 // (default: --threads 2 --grid signatures, nothing learned).
 //
@@ -24,7 +25,8 @@
 // against its whole set), the choice of each fold and its figures beside today's default, and the figures of
 // each set pooled over its folds' queries. Each --learned P adds weights of the signature's 64 columns learned
 // on the other groups (Fisher's criterion of each column to the power P, `learned_weights`), each group
-// measured under the weights its fold learned.
+// measured under the weights its fold learned; each --whitened S a linear map of the signature's rows learned
+// so (the spread of a motion's clips whitened, with shrinkage S: `whitening`).
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/alignment/subsequence_dtw.h>
 #include <deformseg/evaluation/motion_labels.h>
@@ -33,6 +35,8 @@
 #include <deformseg/io/gltf.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/self_similarity_matching.h>
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <array>
@@ -99,6 +103,7 @@ struct Candidate {
   std::string alignment = "dtw";  // or "subsequence-dtw", "smith-waterman"
   Centre centre = Centre::none;
   Eigen::VectorXf column_factors{};  // when not empty, every column multiplied by its factor
+  Eigen::MatrixXf projection{};      // when not empty, every row r made r * projection
 };
 
 // The rows of `csv` whose group `group_of` names, read and described; `keep` chooses the groups.
@@ -158,6 +163,7 @@ ds::similarity::Motion_signature_description weighted(const ds::similarity::Moti
     if (c.centre == Centre::lags) speeds.array() -= speeds.mean();
   }
   if (c.column_factors.size() > 0) out.signatures.array().rowwise() *= c.column_factors.transpose().array();
+  if (c.projection.size() > 0) out.signatures = out.signatures * c.projection;
   return out;
 }
 
@@ -382,45 +388,95 @@ void print_pooled(const std::vector<Evaluation_set>& sets, const std::vector<Gro
   }
 }
 
-// Per column of the signatures, Fisher's criterion over the labelled clips outside group `left` (each
-// clip its mean row): the spread of the motions' means over the spread within each motion; raised to
+// Each labelled clip outside group `left`, as its mean row of the signatures, by motion.
+std::map<std::string, std::vector<Eigen::VectorXd>> clip_means_by_motion(const std::vector<Evaluation_set>& sets,
+                                                                         const Group_ref& left) {
+  std::map<std::string, std::vector<Eigen::VectorXd>> motions;
+  for (std::size_t s = 0; s < sets.size(); ++s)
+    for (const Clip& c : sets[s].clips)
+      if (c.row.item.motion != ds::evaluation::distractor_label && !(s == left.set && c.group == left.group))
+        motions[c.row.item.motion].push_back(c.signatures.signatures.cast<double>().colwise().mean().transpose());
+  return motions;
+}
+
+// The scatter of the clips' means about their motion's mean (within), and about the mean of every clip
+// (total), each over the number of clips.
+std::pair<Eigen::MatrixXd, Eigen::MatrixXd> within_and_total_scatter(
+    const std::map<std::string, std::vector<Eigen::VectorXd>>& motions) {
+  const Eigen::Index width = motions.begin()->second.front().size();
+  Eigen::VectorXd all = Eigen::VectorXd::Zero(width);
+  double n = 0;
+  for (const auto& [motion, clips] : motions)
+    for (const Eigen::VectorXd& clip : clips) all += clip, ++n;
+  all /= n;
+  Eigen::MatrixXd within = Eigen::MatrixXd::Zero(width, width), total = within;
+  for (const auto& [motion, clips] : motions) {
+    Eigen::VectorXd mean = Eigen::VectorXd::Zero(width);
+    for (const Eigen::VectorXd& clip : clips) mean += clip;
+    mean /= double(clips.size());
+    for (const Eigen::VectorXd& clip : clips) {
+      within += (clip - mean) * (clip - mean).transpose();
+      total += (clip - all) * (clip - all).transpose();
+    }
+  }
+  return {within / n, total / n};
+}
+
+// Per column of the signatures, Fisher's criterion over the labelled clips outside group `left`: the spread
+// of the motions' means over the spread within each motion (the diagonals of the scatters); raised to
 // `power` and scaled to a mean of 1, as weights of the squared distance.
 Eigen::VectorXd learned_weights(const std::vector<Evaluation_set>& sets, const Group_ref& left, double power) {
-  std::map<std::string, std::pair<Eigen::VectorXd, std::vector<Eigen::VectorXd>>> motions;  // sum, clips
-  for (std::size_t s = 0; s < sets.size(); ++s)
-    for (const Clip& c : sets[s].clips) {
-      if (c.row.item.motion == ds::evaluation::distractor_label || (s == left.set && c.group == left.group)) continue;
-      const Eigen::VectorXd mean = c.signatures.signatures.cast<double>().colwise().mean().transpose();
-      auto& [sum, clips] = motions[c.row.item.motion];
-      sum = sum.size() == 0 ? mean : Eigen::VectorXd(sum + mean);
-      clips.push_back(mean);
-    }
-  const Eigen::Index width = motions.begin()->second.first.size();
-  Eigen::VectorXd total = Eigen::VectorXd::Zero(width), between = total, within = total;
-  double n = 0;
-  for (const auto& [motion, sum_clips] : motions) total += sum_clips.first, n += double(sum_clips.second.size());
-  total /= n;
-  for (const auto& [motion, sum_clips] : motions) {
-    const Eigen::VectorXd mean = sum_clips.first / double(sum_clips.second.size());
-    between += double(sum_clips.second.size()) * (mean - total).cwiseAbs2();
-    for (const Eigen::VectorXd& clip : sum_clips.second) within += (clip - mean).cwiseAbs2();
-  }
-  Eigen::VectorXd weights = (between.array() / within.array().max(1e-12)).pow(power).matrix();
+  const auto [within, total] = within_and_total_scatter(clip_means_by_motion(sets, left));
+  const Eigen::ArrayXd between = (total - within).diagonal().array().max(0.0);
+  Eigen::VectorXd weights = (between / within.diagonal().array().max(1e-12)).pow(power).matrix();
   return weights / weights.mean();
 }
 
-// Weights of the signature's columns learned on the other groups (`learned_weights`), each group left
-// out in turn: its figures under the weights its fold learned, and each set pooled over its folds.
+// (W + shrink mean(diag W) I)^(-1/2) for the within scatter W: its directions of large spread shrunk.
+Eigen::MatrixXd shrunk_inverse_square_root(const Eigen::MatrixXd& within, double shrink) {
+  const Eigen::Index width = within.rows();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
+      within + shrink * within.diagonal().mean() * Eigen::MatrixXd::Identity(width, width));
+  return eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().cwiseSqrt().asDiagonal() *
+         eigen.eigenvectors().transpose();
+}
+
+// `map` scaled so that the clips' total spread keeps its size: the similarity's scale then means what it did.
+Eigen::MatrixXd keeping_total_spread(const Eigen::MatrixXd& map, const Eigen::MatrixXd& total) {
+  return map * std::sqrt(total.trace() / (map.transpose() * total * map).trace());
+}
+
+// The rows' map that whitens the spread of clips within a motion, learned outside group `left` (shrinkage
+// `shrink`). Directions in which one motion varies from clip to clip (a studio's pace, a rig's proportions)
+// shrink; those that tell motions apart are kept.
+Eigen::MatrixXd whitening(const std::vector<Evaluation_set>& sets, const Group_ref& left, double shrink) {
+  const auto [within, total] = within_and_total_scatter(clip_means_by_motion(sets, left));
+  return keeping_total_spread(shrunk_inverse_square_root(within, shrink), total);
+}
+
+// The rows' map onto the motions' discriminant directions, learned outside group `left`: the within scatter
+// whitened as by `whitening`, then each direction of the motions' means weighed by the square root of its
+// spread there (its Fisher criterion, as `learned_weights` weighs columns, along the directions that separate
+// motions best rather than along the columns).
+Eigen::MatrixXd discriminant(const std::vector<Evaluation_set>& sets, const Group_ref& left, double shrink) {
+  const auto [within, total] = within_and_total_scatter(clip_means_by_motion(sets, left));
+  const Eigen::MatrixXd whiten = shrunk_inverse_square_root(within, shrink);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> directions(whiten.transpose() * (total - within) * whiten);
+  return keeping_total_spread(
+      whiten * directions.eigenvectors() * directions.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal(), total);
+}
+
+// A candidate learned on the other groups, each group left out in turn (`learn` makes it for a fold): the
+// group's figures under its fold's candidate, beside today's, and each set pooled over its folds.
+template <class Learn>
 void leave_each_group_out_learned(const std::vector<Evaluation_set>& sets, const std::vector<Group_ref>& groups,
-                                  const std::vector<Eigen::MatrixXd>& today, double power, int threads) {
-  std::printf("\nleft out, the columns weighed by Fisher's criterion to the power %g learned on the other groups\n",
-              power);
+                                  const std::vector<Eigen::MatrixXd>& today, const std::string& name,
+                                  const Learn& learn, int threads) {
+  std::printf("\nleft out, %s learned on the other groups\n", name.c_str());
   std::vector<Eigen::MatrixXd> pooled = today;
   for (const Group_ref& out : groups) {
-    const Candidate learned{.name = "learned",
-                            .column_factors = learned_weights(sets, out, power).cwiseSqrt().cast<float>()};
     std::optional<Eigen::MatrixXd> unused;
-    const Eigen::MatrixXd m = candidate_matrix(sets[out.set], learned, unused, threads);
+    const Eigen::MatrixXd m = candidate_matrix(sets[out.set], learn(out), unused, threads);
     const std::vector<std::size_t> all = all_clips(sets[out.set]);
     print_row(out.group + " <- learned", group_scores(sets[out.set], m, out.group, all));
     print_row(out.group + "    today", group_scores(sets[out.set], today[out.set], out.group, all));
@@ -435,7 +491,7 @@ void leave_each_group_out_learned(const std::vector<Evaluation_set>& sets, const
 int main(int argc, char** argv) {
   int threads = 2;
   std::string grid = "signatures";
-  std::vector<double> learned_powers;
+  std::vector<double> learned_powers, whitening_shrinks, discriminant_shrinks;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string flag = argv[i];
     if (flag == "--threads")
@@ -444,6 +500,10 @@ int main(int argc, char** argv) {
       grid = argv[i + 1];
     else if (flag == "--learned")
       learned_powers.push_back(std::atof(argv[i + 1]));
+    else if (flag == "--whitened")
+      whitening_shrinks.push_back(std::atof(argv[i + 1]));
+    else if (flag == "--discriminant")
+      discriminant_shrinks.push_back(std::atof(argv[i + 1]));
   }
   const auto start = std::chrono::steady_clock::now();
   const bool with_self = grid == "all";
@@ -486,7 +546,28 @@ int main(int argc, char** argv) {
 
   const std::vector<std::size_t> choices = leave_each_group_out(sets, groups, grid_candidates, matrices, whole);
   print_pooled(sets, groups, choices, matrices);
-  for (const double power : learned_powers) leave_each_group_out_learned(sets, groups, matrices[0], power, threads);
+  for (const double power : learned_powers)
+    leave_each_group_out_learned(
+        sets, groups, matrices[0], "the columns weighed by Fisher's criterion to the power " + number(power),
+        [&](const Group_ref& out) {
+          return Candidate{.name = "learned",
+                           .column_factors = learned_weights(sets, out, power).cwiseSqrt().cast<float>()};
+        },
+        threads);
+  for (const double shrink : whitening_shrinks)
+    leave_each_group_out_learned(
+        sets, groups, matrices[0], "the spread within motions whitened, shrinkage " + number(shrink),
+        [&](const Group_ref& out) {
+          return Candidate{.name = "whitened", .projection = whitening(sets, out, shrink).cast<float>()};
+        },
+        threads);
+  for (const double shrink : discriminant_shrinks)
+    leave_each_group_out_learned(
+        sets, groups, matrices[0], "the motions' discriminant directions, shrinkage " + number(shrink),
+        [&](const Group_ref& out) {
+          return Candidate{.name = "discriminant", .projection = discriminant(sets, out, shrink).cast<float>()};
+        },
+        threads);
   std::printf("\nwhere today's default ranks the relevant clips\n");
   for (std::size_t s = 0; s < sets.size(); ++s) print_relevant_ranks(sets[s], matrices[0][s]);
   std::printf("\n%.1f s\n", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
