@@ -2,7 +2,7 @@
 // library, a rig of the shared characters), a choice is made among candidate policies on the other groups
 // alone, and the left-out group's clips are queried under it. Not a Google Benchmark:
 //
-//   build-bench/test/bench/retrieval_groups [--threads 2] [--grid default|signatures|all] [--learned P]...
+//   build-bench/test/bench/retrieval_groups [--threads 2] [--grid default|signatures|all|expansion] [--learned P]...
 //                                           [--whitened S]...
 //
 // (default: --threads 2 --grid signatures, nothing learned).
@@ -17,7 +17,8 @@
 // then those of `deformseg evaluate` on each set; `signatures` adds motion signatures with other weights of
 // their channels (the vertical rates, each lag's speeds and vertical rates), applied to the descriptions as
 // the store would, speeds relative to their clip's or their body's, other scales and other alignments; `all`
-// adds the self-similarity policy and blends of both values.
+// adds the self-similarity policy and blends of both values; `expansion` is the default with each query's row
+// plus the mean row of its 1, 3 or 10 nearest candidates (query expansion, `expanded`).
 //
 // For each group g: the candidate whose mean figure (the mean of NN accuracy, mAP and ROC-AUC) over the other
 // groups is best, each other group's clips queried within its set without g's; then g's queries against every
@@ -104,6 +105,8 @@ struct Candidate {
   Centre centre = Centre::none;
   Eigen::VectorXf column_factors{};  // when not empty, every column multiplied by its factor
   Eigen::MatrixXf projection{};      // when not empty, every row r made r * projection
+  std::size_t expansion = 0;         // query expansion: the query's nearest candidates whose rows are added
+  double expansion_weight = 1;       // the share of their mean row
 };
 
 // The rows of `csv` whose group `group_of` names, read and described; `keep` chooses the groups.
@@ -188,6 +191,30 @@ void less_body_means(const Evaluation_set& set, Centre centre,
   }
 }
 
+// Query expansion: each row of `m` plus `weight` times the mean row of the query's `k` nearest candidates (no
+// label read: the same rule as the evaluation's for which clips are candidates, ties to the lower index), so
+// that what is near a query's nearest clips counts too.
+Eigen::MatrixXd expanded(const Evaluation_set& set, const Eigen::MatrixXd& m, std::size_t k, double weight) {
+  const auto items = set.items();
+  Eigen::MatrixXd out = m;
+  for (std::size_t q = 0; q < items.size(); ++q) {
+    std::vector<std::size_t> candidates;
+    for (std::size_t c = 0; c < items.size(); ++c)
+      if (c != q && ds::evaluation::internal::retrieval::is_candidate(items[q], items[c])) candidates.push_back(c);
+    const std::size_t n = std::min(k, candidates.size());
+    if (n == 0) continue;
+    std::partial_sort(candidates.begin(), candidates.begin() + std::ptrdiff_t(n), candidates.end(),
+                      [&](std::size_t a, std::size_t b) {
+                        const double x = m(Eigen::Index(q), Eigen::Index(a)), y = m(Eigen::Index(q), Eigen::Index(b));
+                        return x != y ? x > y : a < b;
+                      });
+    Eigen::RowVectorXd mean = Eigen::RowVectorXd::Zero(m.cols());
+    for (std::size_t i = 0; i < n; ++i) mean += m.row(Eigen::Index(candidates[i]));
+    out.row(Eigen::Index(q)) += weight * mean / double(n);
+  }
+  return out;
+}
+
 // The similarity matrix of `set` under `c`; `self_matrix` is the set's self-similarity matrix (computed once,
 // when a candidate first needs it).
 Eigen::MatrixXd candidate_matrix(const Evaluation_set& set, const Candidate& c,
@@ -203,6 +230,7 @@ Eigen::MatrixXd candidate_matrix(const Evaluation_set& set, const Candidate& c,
   Eigen::MatrixXd m = c.alignment == "dtw"               ? matrix(ds::alignment::Dtw{})
                       : c.alignment == "subsequence-dtw" ? matrix(ds::alignment::Subsequence_dtw{})
                                                          : matrix(ds::alignment::Smith_waterman{});
+  if (c.expansion > 0) m = expanded(set, m, c.expansion, c.expansion_weight);
   if (c.self_share == 0) return m;
   if (!self_matrix) {
     std::vector<ds::similarity::Self_similarity_matching<>::Description> selves;
@@ -223,6 +251,13 @@ std::string number(double x) {
 std::vector<Candidate> candidates(const std::string& grid) {
   std::vector<Candidate> out{{.name = "default"}};
   if (grid == "default") return out;
+  if (grid == "expansion") {
+    for (const std::size_t k : {1, 3, 10})
+      for (const double w : {0.5, 1.0})
+        out.push_back({.name = "query expanded by its " + std::to_string(k) + " nearest, share " + number(w),
+                       .expansion = k, .expansion_weight = w});
+    return out;
+  }
   for (const double v : {0.0, 0.1, 0.4, 0.8})
     out.push_back({.name = "vertical weight " + number(v), .vertical_weights = {v, v, v, v}});
   for (std::size_t l = 0; l < lag_count; ++l)
