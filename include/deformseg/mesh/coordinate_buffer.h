@@ -6,6 +6,7 @@
 #include <concepts>
 #include <memory>
 #include <new>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
