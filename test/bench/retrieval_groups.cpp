@@ -3,7 +3,7 @@
 // alone, and the left-out group's clips are queried under it. Not a Google Benchmark:
 //
 //   build-bench/test/bench/retrieval_groups [--threads 2] [--grid default|signatures|all|expansion] [--learned P]...
-//                                           [--whitened S]...
+//                                           [--whitened S]... [--discriminant S]...
 //
 // (default: --threads 2 --grid signatures, nothing learned).
 //
@@ -27,7 +27,8 @@
 // each set pooled over its folds' queries. Each --learned P adds weights of the signature's 64 columns learned
 // on the other groups (Fisher's criterion of each column to the power P, `learned_weights`), each group
 // measured under the weights its fold learned; each --whitened S a linear map of the signature's rows learned
-// so (the spread of a motion's clips whitened, with shrinkage S: `whitening`).
+// so (the spread of a motion's clips whitened, with shrinkage S: `whitening`), each --discriminant S another
+// (the motions' discriminant directions: `discriminant`).
 #include <deformseg/alignment/smith_waterman.h>
 #include <deformseg/alignment/subsequence_dtw.h>
 #include <deformseg/evaluation/motion_labels.h>
@@ -49,6 +50,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -191,25 +193,27 @@ void less_body_means(const Evaluation_set& set, Centre centre,
   }
 }
 
-// Query expansion: each row of `m` plus `weight` times the mean row of the query's `k` nearest candidates (no
-// label read: the same rule as the evaluation's for which clips are candidates, ties to the lower index), so
-// that what is near a query's nearest clips counts too.
+// The candidates of query `q` by decreasing similarity in `m`, ties to the lower index: the evaluation's rule
+// for which clips are candidates and its ranking.
+std::vector<std::size_t> ranked_candidates(std::span<const ds::evaluation::Labelled_item> items,
+                                           const Eigen::MatrixXd& m, std::size_t q) {
+  std::vector<std::size_t> candidates;
+  for (std::size_t c = 0; c < items.size(); ++c)
+    if (c != q && ds::evaluation::internal::retrieval::is_candidate(items[q], items[c])) candidates.push_back(c);
+  return ds::evaluation::internal::retrieval::ranked(m, q, std::move(candidates));
+}
+
+// Query expansion: each row of `m` plus `weight` times the mean row of the query's `k` nearest candidates
+// (`ranked_candidates`: no label read), so that what is near a query's nearest clips counts too.
 Eigen::MatrixXd expanded(const Evaluation_set& set, const Eigen::MatrixXd& m, std::size_t k, double weight) {
   const auto items = set.items();
   Eigen::MatrixXd out = m;
   for (std::size_t q = 0; q < items.size(); ++q) {
-    std::vector<std::size_t> candidates;
-    for (std::size_t c = 0; c < items.size(); ++c)
-      if (c != q && ds::evaluation::internal::retrieval::is_candidate(items[q], items[c])) candidates.push_back(c);
-    const std::size_t n = std::min(k, candidates.size());
+    const std::vector<std::size_t> nearest = ranked_candidates(items, m, q);
+    const std::size_t n = std::min(k, nearest.size());
     if (n == 0) continue;
-    std::partial_sort(candidates.begin(), candidates.begin() + std::ptrdiff_t(n), candidates.end(),
-                      [&](std::size_t a, std::size_t b) {
-                        const double x = m(Eigen::Index(q), Eigen::Index(a)), y = m(Eigen::Index(q), Eigen::Index(b));
-                        return x != y ? x > y : a < b;
-                      });
     Eigen::RowVectorXd mean = Eigen::RowVectorXd::Zero(m.cols());
-    for (std::size_t i = 0; i < n; ++i) mean += m.row(Eigen::Index(candidates[i]));
+    for (std::size_t i = 0; i < n; ++i) mean += m.row(Eigen::Index(nearest[i]));
     out.row(Eigen::Index(q)) += weight * mean / double(n);
   }
   return out;
@@ -339,13 +343,7 @@ void print_relevant_ranks(const Evaluation_set& set, const Eigen::MatrixXd& m) {
   const auto items = set.items();
   std::array<std::vector<double>, 2> fractions;  // the query's group, the others
   for (const auto& q : ds::evaluation::evaluate_retrieval(m, items).per_query) {
-    std::vector<std::size_t> ranked;
-    for (std::size_t c = 0; c < items.size(); ++c)
-      if (c != q.query && ds::evaluation::internal::retrieval::is_candidate(items[q.query], items[c]))
-        ranked.push_back(c);
-    std::stable_sort(ranked.begin(), ranked.end(), [&](std::size_t a, std::size_t b) {
-      return m(Eigen::Index(q.query), Eigen::Index(a)) > m(Eigen::Index(q.query), Eigen::Index(b));
-    });
+    const std::vector<std::size_t> ranked = ranked_candidates(items, m, q.query);
     const auto relevant = [&](std::size_t c) { return items[c].motion == items[q.query].motion; };
     const double others =
         double(std::count_if(ranked.begin(), ranked.end(), [&](std::size_t c) { return !relevant(c); }));
