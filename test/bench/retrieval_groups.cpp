@@ -2,8 +2,8 @@
 // library, a rig of the shared characters), a choice is made among candidate policies on the other groups
 // alone, and the left-out group's clips are queried under it. Not a Google Benchmark:
 //
-//   build-bench/test/bench/retrieval_groups [--threads 2] [--grid default|signatures|all|expansion] [--learned P]...
-//                                           [--whitened S]... [--discriminant S]...
+//   build-bench/test/bench/retrieval_groups [--threads 2] [--grid default|signatures|all|expansion|fusion]
+//                                           [--learned P]... [--whitened S]... [--discriminant S]...
 //
 // (default: --threads 2 --grid signatures, nothing learned).
 //
@@ -18,7 +18,9 @@
 // their channels (the vertical rates, each lag's speeds and vertical rates), applied to the descriptions as
 // the store would, speeds relative to their clip's or their body's, other scales and other alignments; `all`
 // adds the self-similarity policy and blends of both values; `expansion` is the default with each query's row
-// plus the mean row of its 1, 3 or 10 nearest candidates (query expansion, `expanded`).
+// plus the mean row of its 1, 3 or 10 nearest candidates (query expansion, `expanded`); `fusion` blends the
+// two policies' ranks instead of their values (`rank_scores`): each query's candidates scored by the fraction
+// of them ranked after, or by reciprocal rank fusion.
 //
 // For each group g: the candidate whose mean figure (the mean of NN accuracy, mAP and ROC-AUC) over the other
 // groups is best, each other group's clips queried within its set without g's; then g's queries against every
@@ -94,6 +96,11 @@ struct Evaluation_set {
 // kept).
 enum class Centre { none, columns, lags, body_columns, body_lags };
 
+// How a candidate blends the self-similarity with the signatures: their values; each query's candidates'
+// ranks under each, as fractions of the candidates ranked after them; or reciprocal rank fusion, the sum of
+// 1 / (k + rank) over both.
+enum class Fusion { values, ranks, reciprocal_ranks };
+
 // A candidate policy: signature channel weights (per lag, the speeds' and the vertical rates'), speeds
 // centred or not, the signatures' scale and alignment, and the share of the self-similarity's value in a
 // fusion of both.
@@ -109,6 +116,8 @@ struct Candidate {
   Eigen::MatrixXf projection{};      // when not empty, every row r made r * projection
   std::size_t expansion = 0;         // query expansion: the query's nearest candidates whose rows are added
   double expansion_weight = 1;       // the share of their mean row
+  Fusion fusion = Fusion::values;    // how the self-similarity is blended in (at self_share)
+  double reciprocal_offset = 60;     // k of Fusion::reciprocal_ranks
 };
 
 // The rows of `csv` whose group `group_of` names, read and described; `keep` chooses the groups.
@@ -219,6 +228,38 @@ Eigen::MatrixXd expanded(const Evaluation_set& set, const Eigen::MatrixXd& m, st
   return out;
 }
 
+// Each query's candidates (`ranked_candidates`) scored by their rank r among its n under `m`: the fraction
+// (n - 1 - r) / (n - 1) of the candidates ranked after them, or 1 / (offset + r + 1) when `offset` is set.
+// Entries of no candidate are 0.
+Eigen::MatrixXd rank_scores(const Evaluation_set& set, const Eigen::MatrixXd& m, std::optional<double> offset) {
+  const auto items = set.items();
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(m.rows(), m.cols());
+  for (std::size_t q = 0; q < items.size(); ++q) {
+    const std::vector<std::size_t> ranked = ranked_candidates(items, m, q);
+    const double after = double(std::max<std::size_t>(ranked.size(), 2) - 1);
+    for (std::size_t r = 0; r < ranked.size(); ++r)
+      out(Eigen::Index(q), Eigen::Index(ranked[r])) =
+          offset ? 1 / (*offset + double(r) + 1) : double(ranked.size() - 1 - r) / after;
+  }
+  return out;
+}
+
+// The signatures' matrix `m` and the self-similarity's blended as `c` says.
+Eigen::MatrixXd fused(const Evaluation_set& set, const Candidate& c, const Eigen::MatrixXd& m,
+                      const Eigen::MatrixXd& self) {
+  switch (c.fusion) {
+    case Fusion::values:
+      return (1 - c.self_share) * m + c.self_share * self;
+    case Fusion::ranks:
+      return (1 - c.self_share) * rank_scores(set, m, std::nullopt) +
+             c.self_share * rank_scores(set, self, std::nullopt);
+    case Fusion::reciprocal_ranks:
+      return (1 - c.self_share) * rank_scores(set, m, c.reciprocal_offset) +
+             c.self_share * rank_scores(set, self, c.reciprocal_offset);
+  }
+  return m;
+}
+
 // The similarity matrix of `set` under `c`; `self_matrix` is the set's self-similarity matrix (computed once,
 // when a candidate first needs it).
 Eigen::MatrixXd candidate_matrix(const Evaluation_set& set, const Candidate& c,
@@ -235,14 +276,14 @@ Eigen::MatrixXd candidate_matrix(const Evaluation_set& set, const Candidate& c,
                       : c.alignment == "subsequence-dtw" ? matrix(ds::alignment::Subsequence_dtw{})
                                                          : matrix(ds::alignment::Smith_waterman{});
   if (c.expansion > 0) m = expanded(set, m, c.expansion, c.expansion_weight);
-  if (c.self_share == 0) return m;
+  if (c.self_share == 0) return c.fusion == Fusion::values ? m : fused(set, c, m, m);
   if (!self_matrix) {
     std::vector<ds::similarity::Self_similarity_matching<>::Description> selves;
     for (const Clip& clip : set.clips) selves.push_back(*clip.self);
     self_matrix = ds::similarity::described_similarity_matrix<ds::similarity::Self_similarity_matching<>>(
         selves, ds::similarity::Self_similarity_matching<>{}, {}, threads);
   }
-  return (1 - c.self_share) * m + c.self_share * *self_matrix;
+  return fused(set, c, m, *self_matrix);
 }
 
 std::string number(double x) {
@@ -259,7 +300,21 @@ std::vector<Candidate> candidates(const std::string& grid) {
     for (const std::size_t k : {1, 3, 10})
       for (const double w : {0.5, 1.0})
         out.push_back({.name = "query expanded by its " + std::to_string(k) + " nearest, share " + number(w),
-                       .expansion = k, .expansion_weight = w});
+                       .expansion = k,
+                       .expansion_weight = w});
+    return out;
+  }
+  if (grid == "fusion") {
+    out.push_back({.name = "the signatures' ranks alone", .fusion = Fusion::ranks});
+    for (const double share : {0.1, 0.2, 0.3, 0.5})
+      out.push_back({.name = "ranks fused, self-similarity share " + number(share),
+                     .self_share = share,
+                     .fusion = Fusion::ranks});
+    for (const double k : {10.0, 60.0})
+      out.push_back({.name = "reciprocal rank fusion, k " + number(k),
+                     .self_share = 0.5,
+                     .fusion = Fusion::reciprocal_ranks,
+                     .reciprocal_offset = k});
     return out;
   }
   for (const double v : {0.0, 0.1, 0.4, 0.8})
@@ -468,8 +523,8 @@ Eigen::VectorXd learned_weights(const std::vector<Evaluation_set>& sets, const G
 // (W + shrink mean(diag W) I)^(-1/2) for the within scatter W: its directions of large spread shrunk.
 Eigen::MatrixXd shrunk_inverse_square_root(const Eigen::MatrixXd& within, double shrink) {
   const Eigen::Index width = within.rows();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(
-      within + shrink * within.diagonal().mean() * Eigen::MatrixXd::Identity(width, width));
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(within + shrink * within.diagonal().mean() *
+                                                                          Eigen::MatrixXd::Identity(width, width));
   return eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().cwiseSqrt().asDiagonal() *
          eigen.eigenvectors().transpose();
 }
@@ -539,7 +594,7 @@ int main(int argc, char** argv) {
       discriminant_shrinks.push_back(std::atof(argv[i + 1]));
   }
   const auto start = std::chrono::steady_clock::now();
-  const bool with_self = grid == "all";
+  const bool with_self = grid == "all" || grid == "fusion";
   const fs::path data = data_dir();
   const auto rig_of = [](const ds::evaluation::Labelled_clip& row) { return row.item.rig; };
   const auto pack_of = [](const ds::evaluation::Labelled_clip& row) {
