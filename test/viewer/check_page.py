@@ -32,7 +32,9 @@ def console_errors(stderr: str) -> list:
 
 def open_at(binary: str, page: Path, frame: int, screenshot: Path) -> np.ndarray:
     url = f"{page.resolve().as_uri()}?frame={frame}"
-    dom = chromium(binary, url, "--dump-dom")
+    screenshot.unlink(missing_ok=True)  # so that an old one is never taken for this one
+    # One launch does both: headless Chromium dumps the DOM and takes the screenshot of the same page.
+    dom = chromium(binary, url, "--dump-dom", f"--screenshot={screenshot}")
     status = re.search(r'<div id="status"[^>]*data-state="(\w+)"[^>]*>([^<]*)<', dom.stdout)
     if not status:
         raise AssertionError(f"{url}: no status line in the page (Chromium said: {dom.stderr[-2000:]})")
@@ -41,9 +43,8 @@ def open_at(binary: str, page: Path, frame: int, screenshot: Path) -> np.ndarray
     errors = console_errors(dom.stderr)
     if errors:
         raise AssertionError(f"{url}: errors on the console:\n" + "\n".join(errors))
-    shot = chromium(binary, url, f"--screenshot={screenshot}")
     if not screenshot.is_file():
-        raise AssertionError(f"{url}: no screenshot ({shot.stderr[-2000:]})")
+        raise AssertionError(f"{url}: no screenshot ({dom.stderr[-2000:]})")
     return mpimg.imread(screenshot)[..., :3]
 
 
