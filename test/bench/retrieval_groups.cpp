@@ -244,20 +244,17 @@ Eigen::MatrixXd rank_scores(const Evaluation_set& set, const Eigen::MatrixXd& m,
   return out;
 }
 
+// The offset of `c`'s rank scores (`rank_scores`): set for reciprocal rank fusion alone.
+std::optional<double> rank_offset(const Candidate& c) {
+  return c.fusion == Fusion::reciprocal_ranks ? std::optional(c.reciprocal_offset) : std::nullopt;
+}
+
 // The signatures' matrix `m` and the self-similarity's blended as `c` says.
 Eigen::MatrixXd fused(const Evaluation_set& set, const Candidate& c, const Eigen::MatrixXd& m,
                       const Eigen::MatrixXd& self) {
-  switch (c.fusion) {
-    case Fusion::values:
-      return (1 - c.self_share) * m + c.self_share * self;
-    case Fusion::ranks:
-      return (1 - c.self_share) * rank_scores(set, m, std::nullopt) +
-             c.self_share * rank_scores(set, self, std::nullopt);
-    case Fusion::reciprocal_ranks:
-      return (1 - c.self_share) * rank_scores(set, m, c.reciprocal_offset) +
-             c.self_share * rank_scores(set, self, c.reciprocal_offset);
-  }
-  return m;
+  if (c.fusion == Fusion::values) return (1 - c.self_share) * m + c.self_share * self;
+  return (1 - c.self_share) * rank_scores(set, m, rank_offset(c)) +
+         c.self_share * rank_scores(set, self, rank_offset(c));
 }
 
 // The similarity matrix of `set` under `c`; `self_matrix` is the set's self-similarity matrix (computed once,
@@ -276,7 +273,7 @@ Eigen::MatrixXd candidate_matrix(const Evaluation_set& set, const Candidate& c,
                       : c.alignment == "subsequence-dtw" ? matrix(ds::alignment::Subsequence_dtw{})
                                                          : matrix(ds::alignment::Smith_waterman{});
   if (c.expansion > 0) m = expanded(set, m, c.expansion, c.expansion_weight);
-  if (c.self_share == 0) return c.fusion == Fusion::values ? m : fused(set, c, m, m);
+  if (c.self_share == 0) return c.fusion == Fusion::values ? m : rank_scores(set, m, rank_offset(c));
   if (!self_matrix) {
     std::vector<ds::similarity::Self_similarity_matching<>::Description> selves;
     for (const Clip& clip : set.clips) selves.push_back(*clip.self);
