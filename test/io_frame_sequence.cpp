@@ -96,7 +96,7 @@ TEST_CASE("list_frame_files: nothing to read names the input", "[io][frame_seque
   const std::string pattern = (folder / "*.obj").string();
   CHECK_THROWS_MATCHES(list_frame_files(pattern), invalid_input, Message(pattern + ": no file matches the pattern"));
   const std::string missing = (folder / "missing").string();
-  CHECK_THROWS_MATCHES(list_frame_files(missing), invalid_input, Message(missing + ": no such folder or file"));
+  CHECK_THROWS_MATCHES(list_frame_files(missing), invalid_input, Message(missing + ": cannot open: no such folder or file"));
   const std::string missing_folder = (folder / "missing" / "*.obj").string();
   CHECK_THROWS_MATCHES(list_frame_files(missing_folder), invalid_input,
                        Message(missing_folder + ": no such folder: \"" + (folder / "missing").string() + "\""));

@@ -1177,11 +1177,31 @@ TEST_CASE("gltf: the Knight's clips on the Barbarian's body are the Barbarian's 
   CHECK(shared == 76);
 }
 
-TEST_CASE("gltf: clips that move no node of the body are refused, naming both files", "[gltf][data]") {
+TEST_CASE("gltf: clips that move nothing of the body are refused, naming both files and joints", "[gltf][data]") {
   const fs::path knight = characters() / "Knight.glb", fox = characters() / "Fox.glb";
   const deformseg::io::Gltf_file bound(knight, fox);
   CHECK(bound.clip_names() == deformseg::io::Gltf_file(fox).clip_names());
   CHECK_THROWS_WITH(bound.read({.clip = "Walk"}), Contains(knight.string()) && Contains(fox.string()) &&
-                                                       Contains("animates no node of the body"));
+                                                       Contains("moves nothing of the body") &&
+                                                       Contains("it animates 'b_") && Contains("more"));
+  // The other way round: the Knight's walk names a node or two of the fox, none of them a joint.
+  CHECK_THROWS_WITH(deformseg::io::Gltf_file(fox, knight).read({.clip = "Walking_A"}),
+                    Contains(knight.string()) && Contains("moves nothing of the body " + fox.string()) &&
+                        Contains("the body's joints are '_rootJoint', 'b_Root_00'"));
   CHECK_THROWS_WITH(deformseg::io::Gltf_file(knight, characters() / "missing.glb"), Contains("missing.glb"));
+}
+
+TEST_CASE("gltf: joints named with a namespace play on a body named without", "[gltf][data]") {
+  // FBX writes a rig's namespace before its joints' names ("mixamorig:Hips"); one body's joints
+  // match another's clips whatever the namespace, when one joint alone has the name without it.
+  const fs::path fox = characters() / "Fox.glb";
+  const fs::path clips = edited_copy(fox, "namespaced-fox.glb", [](tinygltf::Model& model) {
+    for (auto& node : model.nodes)
+      if (!node.name.empty()) node.name = "mixamorig:" + node.name;
+  });
+  const deformseg::io::Gltf_file own(fox), bound(fox, clips);
+  for (const std::string& clip : own.clip_names()) {
+    INFO(clip);
+    CHECK(std::ranges::equal(bound.sample({.clip = clip}).positions, own.sample({.clip = clip}).positions));
+  }
 }

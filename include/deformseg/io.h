@@ -10,6 +10,7 @@
 #include <deformseg/io/gltf.h>
 #endif
 #if DEFORMSEG_HAS_ASSIMP
+#include <deformseg/io/bvh.h>
 #include <deformseg/io/fbx_collada.h>
 #endif
 #include <deformseg/io/files.h>

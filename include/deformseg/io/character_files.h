@@ -1,6 +1,7 @@
 /// @file io/character_files.h
 /// @brief The names of character files, whose clips the glTF reader samples (`Gltf_file`):
-/// glTF (`is_gltf`), FBX and Collada (`is_fbx_or_collada`), any of them (`is_character_file`).
+/// glTF (`is_gltf`), FBX and Collada (`is_fbx_or_collada`), BVH motion capture (`is_bvh`), any of
+/// them (`is_character_file`).
 #pragma once
 
 #include <deformseg/io/internal/file_io.h>
@@ -27,10 +28,17 @@ inline bool is_fbx_or_collada(const std::filesystem::path& input) {
   return extension == ".fbx" || extension == ".dae";
 }
 
-/// @brief Whether `input` names a character file, with clips, a skin and a node tree: glTF, FBX
-/// or Collada (`is_gltf` or `is_fbx_or_collada`). Such a file is read clip by clip
-/// ("FILE.fbx#CLIP"), with `Gltf_file`.
+/// @brief Whether `input` names a BVH motion capture file, by its extension (`.bvh`, in any
+/// case): a skeleton and one clip, which `Gltf_file` reads through Assimp (see `bvh_model`).
 /// @par Complexity O(length of the name).
-inline bool is_character_file(const std::filesystem::path& input) { return is_gltf(input) || is_fbx_or_collada(input); }
+inline bool is_bvh(const std::filesystem::path& input) { return internal::lower_extension(input) == ".bvh"; }
+
+/// @brief Whether `input` names a character file, with clips and a node tree: glTF, FBX,
+/// Collada or BVH (`is_gltf`, `is_fbx_or_collada` or `is_bvh`). Such a file is read clip by clip
+/// ("FILE.fbx#CLIP"), with `Gltf_file`; one without a mesh on a body made from its skeleton.
+/// @par Complexity O(length of the name).
+inline bool is_character_file(const std::filesystem::path& input) {
+  return is_gltf(input) || is_fbx_or_collada(input) || is_bvh(input);
+}
 
 }  // namespace deformseg::io

@@ -133,7 +133,7 @@ inline std::vector<std::filesystem::path> files_matching(const std::filesystem::
     fail("wildcards (* and ?) are only read in the file name, not in the folders above it");
   std::error_code error;
   if (!has_wildcard(name_pattern)) {
-    if (!std::filesystem::is_regular_file(pattern, error)) fail("no such folder or file");
+    if (!std::filesystem::is_regular_file(pattern, error)) fail("cannot open: no such folder or file");
     return {pattern};
   }
   const std::filesystem::path listed = folder.empty() ? std::filesystem::path(".") : folder;

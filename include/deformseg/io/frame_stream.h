@@ -388,7 +388,7 @@ decltype(auto) with_frame_source(const std::string& input, const Animation_read_
     if (clip && !options.clip.empty())
       throw invalid_input("the clip is given twice: by the clip option and after '#'", {.file = input});
     if (options.topology)
-      throw invalid_input("a character file (glTF, FBX, Collada) has its own connectivity: no topology mesh applies",
+      throw invalid_input("a character file (glTF, FBX, Collada, BVH) has its own connectivity: no topology mesh applies",
                           {.file = input});
 #if DEFORMSEG_HAS_GLTF
     const Gltf_file gltf(file);
@@ -398,7 +398,7 @@ decltype(auto) with_frame_source(const std::string& input, const Animation_read_
         gltf, {.clip = name, .fps = options.fps, .repair = options.repair.value_or(Gltf_read_options{}.repair)});
     return f(source);
 #else
-    throw invalid_input("this deformseg was built without tinygltf, which reads glTF, FBX and Collada files", {.file = input});
+    throw invalid_input("this deformseg was built without tinygltf, which reads glTF, FBX, Collada and BVH files", {.file = input});
 #endif
   }
   const Frame_stream_options stream{.topology = options.topology,

@@ -24,13 +24,15 @@
 #include <deformseg/io/internal/gltf_decompression.h>
 #include <deformseg/io/internal/gltf_mesh.h>
 #include <deformseg/io/internal/gltf_welding.h>
+#include <deformseg/io/internal/skeleton_body.h>
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/threads.h>
 
-// FBX and Collada files are read when deformseg was configured with Assimp (its CMake target then
+// FBX, Collada and BVH files are read when deformseg was configured with Assimp (its CMake target then
 // defines DEFORMSEG_HAS_ASSIMP and links assimp::assimp).
 #if DEFORMSEG_HAS_ASSIMP
+#include <deformseg/io/bvh.h>
 #include <deformseg/io/fbx_collada.h>
 #endif
 
@@ -89,6 +91,8 @@ struct Gltf_read_report {
   Repair_report repair{};             ///< what the repair changed (`read_gltf` only)
   std::size_t joints = 0;             ///< the joints of the body's skins
   std::size_t animated_joints = 0;    ///< of them, those the clip moves (all of a file's own, usually)
+  /// @brief Whether the body was made from the skeleton, the file having no mesh (see `Gltf_file`).
+  bool skeleton_body = false;
 };
 
 /// @brief A clip sampled, before any repair: the vertices of every TRIANGLES primitive of every
@@ -141,6 +145,9 @@ struct Gltf_contents {
   std::size_t nodes = 0;                  ///< all nodes of the file
   std::size_t vertices = 0;   ///< over the scene's TRIANGLES primitive instances, as `sample_gltf` reads
   std::size_t triangles = 0;  ///< likewise
+  /// @brief Whether the body was made from the skeleton, the file having no mesh (see `Gltf_file`):
+  /// its mesh is then the made body, and the vertices and triangles are its.
+  bool skeleton_body = false;
 };
 
 }  // namespace deformseg::io
@@ -171,21 +178,18 @@ inline void check_extensions(const tinygltf::Model& model) {
 }
 
 /// Parses a .gltf or .glb file (told apart by the GLB magic, not the extension), its compressed
-/// geometry decoded first, or an FBX or Collada file (told by its extension) into the same
+/// geometry decoded first, or an FBX, Collada or BVH file (told by its extension) into the same
 /// structures.
 inline tinygltf::Model load_model(const std::filesystem::path& path) {
-  if (is_fbx_or_collada(path)) {
+  if (is_fbx_or_collada(path) || is_bvh(path)) {
 #if DEFORMSEG_HAS_ASSIMP
-    return fbx_collada_model(path);
+    return is_bvh(path) ? bvh_model(path) : fbx_collada_model(path);
 #else
-    throw invalid_input("this deformseg was built without Assimp, which reads FBX and Collada files (Debian: "
+    throw invalid_input("this deformseg was built without Assimp, which reads FBX, Collada and BVH files (Debian: "
                         "libassimp-dev; link assimp::assimp and define DEFORMSEG_HAS_ASSIMP=1)");
 #endif
   }
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error))
-    throw invalid_input("cannot open the glTF file: it does not exist or is not a file");
-  const File_bytes read = read_file_bytes(path);
+  const File_bytes read = read_file_bytes(path);  // a missing file or a folder refused as every reader does
   std::span<const unsigned char> file(reinterpret_cast<const unsigned char*>(read.begin()), read.size);
   const std::string base_dir = path.parent_path().string();
   Bytes decompressed;
@@ -304,12 +308,19 @@ inline std::optional<std::pair<std::size_t, Clip>> clip_of(const Loaded_file& fi
   }
 }
 
+/// What a file without a mesh is told: every command reads a clip on some body.
+inline constexpr const char* no_mesh_hint =
+    "no mesh: play it on a body with --body FILE (the default scene has no triangle, and no clip moves a "
+    "skeleton of bones to make a body from)";
+
+/// Reads the scene of a parsed file; a scene without triangle gets the body made from its
+/// skeleton (`add_skeleton_body`), or is refused with `no_mesh_hint`.
 inline Loaded_file load_file(tinygltf::Model model) {
   Loaded_file file{.model = std::move(model)};
   check_extensions(file.model);
   file.rig = read_rig(file.model);
-  if (file.rig.geometry.triangles.empty())
-    throw invalid_input("the default scene has no triangle (no TRIANGLES primitive with POSITION on a mesh node)");
+  if (file.rig.geometry.triangles.empty() && add_skeleton_body(file.model)) file.rig = read_rig(file.model);
+  if (file.rig.geometry.triangles.empty()) throw invalid_input(no_mesh_hint);
   return file;
 }
 
@@ -331,6 +342,7 @@ inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_opti
     report.end = clip->end;
     std::tie(report.animated_joints, report.joints) = animated_joints(file.model, *clip);
   }
+  report.skeleton_body = has_skeleton_body(file.model);
   report.skipped = rig.geometry.skipped;
   std::optional<Vertex_selection> selection;
   if (vertices) selection = select_vertices(rig.geometry, *vertices);
@@ -395,6 +407,7 @@ inline io::Gltf_contents contents(const tinygltf::Model& model, double fps) {
   check_extensions(model);
   io::Gltf_contents result;
   result.nodes = model.nodes.size();
+  result.skeleton_body = has_skeleton_body(model);
   for (std::size_t a = 0; a < model.animations.size(); ++a) {
     const Clip clip = read_clip(model, a);
     result.clips.push_back({.name = clip.name, .start = clip.start, .end = clip.end,
@@ -418,9 +431,14 @@ inline io::Gltf_contents contents(const tinygltf::Model& model, double fps) {
   return result;
 }
 
+/// What a file holds, a body made from its skeleton when it has no triangle (as `Gltf_file`
+/// reads it); a file of neither is listed as it is (its clips may play on another body).
 inline io::Gltf_contents contents(const std::filesystem::path& path, double fps) {
   check_options({.fps = fps});
-  return contents(load_model(path), fps);
+  tinygltf::Model model = load_model(path);
+  io::Gltf_contents result = contents(model, fps);
+  if (result.triangles == 0 && add_skeleton_body(model)) result = contents(model, fps);
+  return result;
 }
 
 }  // namespace deformseg::io::internal::gltf
@@ -498,20 +516,35 @@ private:
 /// a thousandth of a frame off that grid; start and end are the smallest and largest key time
 /// over the clip's channels (a clip of 0 s gives 1 frame). Samplers hold their first and last
 /// values outside their keys. A file without animation gives its rest pose, 1 frame.
+///
+/// A file whose scene has no triangle (a BVH clip, an animation-only export) is read on a body
+/// made from its skeleton, added to the model as a skinned mesh (`Gltf_read_report::skeleton_body`
+/// and `Gltf_contents::skeleton_body` say so): the skeleton is every node a clip moves, with the
+/// nodes below them; a closed tube of 8 sides runs along every bone (from a joint's rest origin to
+/// a child joint's), of radius an eighth of the bone's length, 58 vertices and 112 triangles per
+/// bone, in the order of the joints (parents first). The middle half of a tube moves rigidly with
+/// its joint; its rings within a quarter of the bone's length of either end blend linearly
+/// towards the joint at that end (the parent's joint at the start, the child joint at the end),
+/// by a share that would reach a half at the end itself (the rings end 5% short of it, at a share
+/// of 0.4; a cone closes the tube), as skin bends at a joint under linear blend skinning. The body
+/// comes from the rest pose alone, so that every clip of one skeleton plays on the same vertices.
+/// It is no skin: the tubes overlap at the joints, and nothing keeps their volume. A file of
+/// neither triangles nor bones is refused: "no mesh: play it on a body with --body FILE".
 class Gltf_file {
 public:
   /// @brief Parses `path` and reads the scene's geometry (not its clips).
   /// @param path a `.gltf` (JSON, with external or data-URI buffers) or `.glb` file, told apart
   /// by content; or, when deformseg was built with Assimp (`DEFORMSEG_HAS_ASSIMP`), an FBX or
-  /// Collada file (`.fbx`, `.dae`, told by the extension), read as `fbx_collada_model` writes it.
+  /// Collada file (`.fbx`, `.dae`, told by the extension), read as `fbx_collada_model` writes it,
+  /// or a BVH file (`.bvh`), read as `bvh_model` writes it.
   /// @throws invalid_input naming the file (and the mesh, accessor or node) for: a file that
   /// does not exist or that tinygltf cannot parse (its message); an FBX or Collada file that
   /// `fbx_collada_model` refuses, or without Assimp; compressed geometry that does not decode, or
   /// whose codec deformseg was built without (`DEFORMSEG_HAS_DRACO`, `DEFORMSEG_HAS_MESHOPT`);
   /// another required extension deformseg does not know (KHR_mesh_quantization is read); a
-  /// scene without triangle; an accessor or buffer view outside its buffer, a count that
-  /// disagrees, an index out of range; a node hierarchy that is not a forest; more than 2^26
-  /// vertices.
+  /// scene without triangle and without a bone to make a body of ("no mesh: play it on a body
+  /// with --body FILE"); an accessor or buffer view outside its buffer, a count that disagrees,
+  /// an index out of range; a node hierarchy that is not a forest; more than 2^26 vertices.
   /// @par Complexity O(file size).
   explicit Gltf_file(const std::filesystem::path& path) : path_(path), file_(load(path)) {}
 
@@ -532,7 +565,11 @@ public:
   /// @brief The clips of the file `clips` played on the body of the file `body`, as engines bind
   /// an animation to a model: each channel of a clip moves the body's node of the same name as
   /// the node it moves in `clips` (joints, and any node), channels of nodes the body has not are
-  /// left out. `clips` may hold no mesh (an animation-only export) or a body of its own (the same
+  /// left out; a name the body has not matches the body's one node of that name without its
+  /// namespace ("mixamorig:Hips" and "Hips"). A body node given by a matrix (FBX and Collada bodies
+  /// give one to every node their own clips leave still) is held as the translation, rotation and
+  /// scale the matrix decomposes into when a clip moves it, as engines do.
+  /// `clips` may hold no mesh (an animation-only export) or a body of its own (the same
   /// rig's clips on another character); both files glTF, FBX or Collada. The geometry, skins and
   /// rest pose are the body's; `clip_names` and the clips read are `clips`'s, and
   /// `Gltf_read_report::animated_joints` says how many of the body's joints a clip moves. The
@@ -542,7 +579,8 @@ public:
   /// other nodes above it); where both files share their frames, the values are kept to the bit.
   /// @throws invalid_input naming the file, as the constructor from a path for `body`, as
   /// tinygltf for `clips`; and, when a clip is read, naming `clips` (and mentioning `body`) for a
-  /// clip that does not exist, is malformed or moves no node of the body.
+  /// clip that does not exist or is malformed, or that moves no vertex of the body (it animates
+  /// another skeleton's nodes: the message names a few of them and of the body's joints).
   /// @par Complexity O(size of both files).
   /// @par Example
   /// @snippet read_gltf.cpp bind
@@ -552,6 +590,7 @@ public:
       internal::gltf::check_extensions(*model);
       auto body_node = internal::gltf::body_nodes_by_name(file_.model, *model);
       auto change = internal::gltf::frame_changes(file_.model, *model, body_node);
+      internal::gltf::make_animatable(file_.model, file_.rig.rest, *model, body_node);
       file_.clips = internal::gltf::Bound_clips{.model = model, .file = clips.string(), .body_file = body.string(),
                                                 .body_node = std::move(body_node), .change = std::move(change)};
     } catch (const invalid_input& e) {

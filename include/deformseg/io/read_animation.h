@@ -67,7 +67,7 @@ inline std::pair<std::string, std::optional<std::string>> split_clip_suffix(cons
   return {input.substr(0, hash), input.substr(hash + 1)};
 }
 
-/// @brief The format of an input, by its extension: "gltf", "glb", "fbx" or "dae" (with or without
+/// @brief The format of an input, by its extension: "gltf", "glb", "fbx", "dae" or "bvh" (with or without
 /// a "#CLIP" after it), "pc2" or "mdd" for a point cache, else that of its frame files ("obj", "off" or "ply").
 /// @throws invalid_input when the input is a frame sequence with no frame file.
 /// @par Complexity that of listing the folder, for a frame sequence.
@@ -82,14 +82,14 @@ inline std::string animation_format(const std::string& input) {
 
 namespace deformseg::io::internal {
 
-/// `read_animation` of a character file (glTF, FBX, Collada): `Gltf_file::read` with the options
+/// `read_animation` of a character file (glTF, FBX, Collada, BVH): `Gltf_file::read` with the options
 /// that apply to it.
 template <class Graph, class Coordinate>
 mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input,
                                                         const io::Animation_read_options& options,
                                                         io::Repair_report* report) {
   if (options.topology)
-    throw invalid_input("a character file (glTF, FBX, Collada) has its own connectivity: no topology mesh applies",
+    throw invalid_input("a character file (glTF, FBX, Collada, BVH) has its own connectivity: no topology mesh applies",
                         {.file = input});
 #if DEFORMSEG_HAS_GLTF
   const io::Gltf_file file(input);
@@ -103,7 +103,7 @@ mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input
   return animation;
 #else
   static_cast<void>(report);
-  throw invalid_input("this deformseg was built without tinygltf, which reads glTF, FBX and Collada files (Debian: "
+  throw invalid_input("this deformseg was built without tinygltf, which reads glTF, FBX, Collada and BVH files (Debian: "
                       "libtinygltf-dev and nlohmann-json3-dev; link TinyGLTF::TinyGLTF and nlohmann_json::nlohmann_json, "
                       "and define DEFORMSEG_HAS_GLTF=1)",
                       {.file = input});
@@ -115,7 +115,8 @@ mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input
 namespace deformseg::io {
 
 /// @brief Reads an animation: a clip of a character file (glTF `.gltf`, `.glb`, see `read_gltf`;
-/// FBX `.fbx` or Collada `.dae`, see `fbx_collada_model`; "FILE.glb#CLIP" names the clip, as
+/// FBX `.fbx` or Collada `.dae`, see `fbx_collada_model`; BVH `.bvh`, see `bvh_model`, on the body
+/// made from its skeleton; "FILE.glb#CLIP" names the clip, as
 /// `options.clip` does; a file of several clips needs one named), a point cache
 /// (`.pc2`, `.mdd`, with `options.topology`), or a sequence of frame files given as a folder or a
 /// glob pattern (see `read_frame_sequence`).
@@ -129,7 +130,7 @@ namespace deformseg::io {
 ///
 /// @tparam Graph the connectivity type, a `FaceGraph` (default `Surface_mesh`).
 /// @tparam Coordinate the stored coordinate type (default `double`).
-/// @param input a glTF, FBX or Collada file (maybe followed by "#CLIP"), a folder or glob of frame
+/// @param input a glTF, FBX, Collada or BVH file (maybe followed by "#CLIP"), a folder or glob of frame
 /// files, or a `.pc2` or `.mdd` file.
 /// @param options `topology` (default none), `triangulate` (default false), `threads` (default 0:
 /// all), `repair` (default: the format's; defects repaired, glTF welded), `clip` (default: the

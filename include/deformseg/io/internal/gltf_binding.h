@@ -44,15 +44,33 @@ struct Bound_clips {
   std::vector<Frame_change> change{};                   // per node of `model`: see `frame_changes`
 };
 
-/// The body's node of each node of `clips` whose name (not empty) a body node has: the first such.
+/// A node's name without its namespace: the part after the last ':' ("mixamorig:Hips" -> "Hips"),
+/// as FBX writes a rig's namespace before every joint's name.
+inline std::string without_namespace(const std::string& name) {
+  const std::size_t colon = name.rfind(':');
+  return colon == std::string::npos ? name : name.substr(colon + 1);
+}
+
+/// The body's node of each node of `clips` of the same name (not empty), the first such; else,
+/// for a name the body has not, the body's one node of the same name without namespace
+/// (`without_namespace`: "mixamorig:Hips" and "Hips" match), when one alone has it.
 inline std::vector<std::optional<std::size_t>> body_nodes_by_name(const tinygltf::Model& body,
                                                                   const tinygltf::Model& clips) {
   std::map<std::string, std::size_t> by_name;
-  for (std::size_t i = 0; i < body.nodes.size(); ++i)
-    if (!body.nodes[i].name.empty()) by_name.emplace(body.nodes[i].name, i);
+  std::map<std::string, std::vector<std::size_t>> by_base_name;
+  for (std::size_t i = 0; i < body.nodes.size(); ++i) {
+    if (body.nodes[i].name.empty()) continue;
+    by_name.emplace(body.nodes[i].name, i);
+    by_base_name[without_namespace(body.nodes[i].name)].push_back(i);
+  }
   std::vector<std::optional<std::size_t>> body_node(clips.nodes.size());
-  for (std::size_t i = 0; i < clips.nodes.size(); ++i)
-    if (const auto found = by_name.find(clips.nodes[i].name); found != by_name.end()) body_node[i] = found->second;
+  for (std::size_t i = 0; i < clips.nodes.size(); ++i) {
+    const std::string& name = clips.nodes[i].name;
+    if (const auto found = by_name.find(name); found != by_name.end()) body_node[i] = found->second;
+    else if (const auto base = by_base_name.find(without_namespace(name));
+             !name.empty() && base != by_base_name.end() && base->second.size() == 1)
+      body_node[i] = base->second.front();
+  }
   return body_node;
 }
 
@@ -78,10 +96,9 @@ inline Affine inverse(const Affine& a) {
 /// The size of a transform: the cube root of its linear part's determinant's magnitude.
 inline double size_of(const Affine& a) { return std::cbrt(std::abs(determinant(a))); }
 
-/// The rotation of a rotation matrix `r` (row-major 3x3, in the linear part of an Affine scaled by
-/// `size`) as a unit quaternion (x, y, z, w).
-inline std::array<double, 4> quaternion_of(const Affine& a, double size) {
-  const auto r = [&](int i, int j) { return a.m[4 * i + j] / size; };
+/// The unit quaternion (x, y, z, w) of a rotation matrix given by `r(i, j)`.
+template <class Entry>
+std::array<double, 4> quaternion_of_rotation(Entry r) {
   std::array<double, 4> q{};
   const double trace = r(0, 0) + r(1, 1) + r(2, 2);
   if (trace > 0) {
@@ -100,6 +117,31 @@ inline std::array<double, 4> quaternion_of(const Affine& a, double size) {
   const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
   for (double& c : q) c /= norm;
   return q;
+}
+
+/// The rotation of an affine transform whose linear part is a rotation scaled by `size`, as a
+/// unit quaternion (x, y, z, w).
+inline std::array<double, 4> quaternion_of(const Affine& a, double size) {
+  return quaternion_of_rotation([&](int i, int j) { return a.m[4 * i + j] / size; });
+}
+
+/// A node's fixed matrix as the translation, rotation and scale a clip's channels replace, as
+/// engines hold a node: the scale is the columns' lengths (the first negated for a mirror), the
+/// rotation the columns made unit, so T R S gives the matrix again when it has no shear (an FBX or
+/// Collada node's local transform has none), and its nearest such transform otherwise.
+/// Returns nullopt for a singular matrix, which no rotation and scale give.
+inline std::optional<Node_pose> animatable_pose(const Affine& matrix) {
+  const auto column = [&](int k) {
+    return std::hypot(matrix.m[k], matrix.m[4 + k], matrix.m[8 + k]);
+  };
+  const double mirror = determinant(matrix) < 0 ? -1 : 1;
+  const std::array<double, 3> scale{mirror * column(0), column(1), column(2)};
+  if (!(scale[0] != 0 && scale[1] != 0 && scale[2] != 0) || determinant(matrix) == 0) return std::nullopt;
+  Node_pose pose;
+  pose.translation = {matrix.m[3], matrix.m[7], matrix.m[11]};
+  pose.scale = scale;
+  pose.rotation = quaternion_of_rotation([&](int i, int j) { return matrix.m[4 * i + j] / scale[std::size_t(j)]; });
+  return pose;
 }
 
 /// Each node's rest transform in its file's world, and its parent.
@@ -150,6 +192,30 @@ inline std::vector<Frame_change> frame_changes(const tinygltf::Model& body, cons
   return changes;
 }
 
+/// Makes each matrix node of the body that a channel of `clips` moves by translation, rotation or
+/// scale (through `body_node`) a node of translation, rotation and scale (`animatable_pose`), in
+/// the body's model and in its rig's rest poses `rest`, so that the channel replaces one of them:
+/// an FBX or Collada body writes a matrix for every node its own clips leave still. A singular
+/// matrix is kept, and refused when a clip moves it (`bound_clip`).
+inline void make_animatable(tinygltf::Model& body, std::vector<Node_pose>& rest, const tinygltf::Model& clips,
+                            const std::vector<std::optional<std::size_t>>& body_node) {
+  for (const tinygltf::Animation& animation : clips.animations)
+    for (const tinygltf::AnimationChannel& channel : animation.channels) {
+      if (channel.target_node < 0 || std::size_t(channel.target_node) >= body_node.size()) continue;
+      if (channel.target_path == "weights" || !body_node[std::size_t(channel.target_node)]) continue;
+      const std::size_t node = *body_node[std::size_t(channel.target_node)];
+      if (!rest[node].has_matrix) continue;
+      const std::optional<Node_pose> pose = animatable_pose(rest[node].matrix);
+      if (!pose) continue;
+      rest[node] = *pose;
+      tinygltf::Node& written = body.nodes[node];
+      written.matrix.clear();
+      written.translation.assign(pose->translation.begin(), pose->translation.end());
+      written.rotation.assign(pose->rotation.begin(), pose->rotation.end());
+      written.scale.assign(pose->scale.begin(), pose->scale.end());
+    }
+}
+
 /// `q` rotated by the unit quaternion `by` (by * q), in place.
 inline void turn(const std::array<double, 4>& by, double* q) {
   const double x = q[0], y = q[1], z = q[2], w = q[3];
@@ -187,30 +253,76 @@ inline void change_frames(const Frame_change& change, Path path, Sampler& sample
   }
 }
 
+/// Per node of `body`: whether a clip that moves it moves the body, as engines bind clips: a
+/// skin's joint, or a node of an unskinned mesh or an ancestor of one (a rigid body's parts). The
+/// ancestors of the joints are not counted: a clip of another skeleton that shares the name of
+/// the body's top node alone moves the whole body rigidly, and nothing of it.
+inline std::vector<bool> moves_body(const tinygltf::Model& body) {
+  std::vector<bool> moves(body.nodes.size(), false);
+  for (std::size_t i = 0; i < body.nodes.size(); ++i)
+    if (body.nodes[i].mesh >= 0 && body.nodes[i].skin < 0) moves[i] = true;
+  const Node_forest forest = node_forest(body);
+  for (auto i = forest.parents_first.rbegin(); i != forest.parents_first.rend(); ++i)  // children first
+    if (moves[*i] && forest.parent[*i] >= 0) moves[std::size_t(forest.parent[*i])] = true;
+  for (const tinygltf::Skin& skin : body.skins)
+    for (const int joint : skin.joints)
+      if (joint >= 0 && std::size_t(joint) < moves.size()) moves[std::size_t(joint)] = true;
+  return moves;
+}
+
+/// A few names of the nodes a list of nodes holds ("'Hips', 'Spine', 'Head' and 21 more").
+inline std::string some_node_names(const tinygltf::Model& model, const std::set<std::size_t>& nodes) {
+  constexpr std::size_t shown = 3;
+  std::string names;
+  std::size_t count = 0;
+  for (const std::size_t node : nodes) {
+    if (count++ == shown) break;
+    names += (names.empty() ? "'" : ", '") + model.nodes[node].name + "'";
+  }
+  if (nodes.size() > shown) names += " and " + std::to_string(nodes.size() - shown) + " more";
+  return names.empty() ? "none" : names;
+}
+
+/// The refusal of a clip that moves nothing of the body (`moves_body`): its nodes are another
+/// skeleton's.
+inline invalid_input unfit_body(const Clip& clip, const tinygltf::Model& body, const Bound_clips& source) {
+  std::set<std::size_t> animated, joints;
+  for (const Channel& channel : clip.channels) animated.insert(channel.node);
+  for (const tinygltf::Skin& skin : body.skins)
+    for (const int joint : skin.joints)
+      if (joint >= 0) joints.insert(std::size_t(joint));
+  return invalid_input("clip '" + clip.name + "' moves nothing of the body " + source.body_file + ": it animates " +
+                       some_node_names(*source.model, animated) + ", the body's joints are " +
+                       some_node_names(body, joints) + " (a body of another skeleton?)");
+}
+
 /// `clip`, read from `source`'s model, as a clip of `body`: each channel moved to the body's node
 /// of its node's name; the channels of nodes the body has not, and those of morph weights whose
 /// count the body's mesh does not have, left out. Its start and end are those of the channels kept.
-/// @throws invalid_input when a channel would move a body node given by a matrix, or when no
-/// channel is left (the clip animates nothing of the body).
+/// @throws invalid_input when a channel would move a body node given by a singular matrix (see
+/// `make_animatable`), or when the channels kept move no joint, no morph weight and no rigid
+/// part of the body (`moves_body`: the clip is another skeleton's), naming a few of the clip's
+/// nodes and of the body's joints.
 inline Clip bound_clip(Clip clip, const tinygltf::Model& body, const Bound_clips& source) {
-  std::vector<Channel> kept;
-  for (Channel& channel : clip.channels) {
+  const std::vector<bool> moves = moves_body(body);
+  const auto kept = [&](const Channel& channel) {
     const std::optional<std::size_t> node = source.body_node[channel.node];
-    if (!node) continue;
-    if (channel.path == Path::weights) {
-      if (channel.sampler.width != morph_target_count(body, body.nodes[*node].mesh)) continue;
-    } else if (!body.nodes[*node].matrix.empty()) {
+    if (!node) return false;
+    if (channel.path == Path::weights) return channel.sampler.width == morph_target_count(body, body.nodes[*node].mesh);
+    if (!body.nodes[*node].matrix.empty())
       throw invalid_input("clip '" + clip.name + "' animates " + node_name(body, *node) + " of the body " +
-                          source.body_file + ", which has a matrix; glTF animates TRS nodes only");
-    }
+                          source.body_file + ", whose matrix is singular: no translation, rotation and scale give it");
+    return true;
+  };
+  const auto moves_something = [&](const Channel& channel) {
+    return kept(channel) && (channel.path == Path::weights || moves[*source.body_node[channel.node]]);
+  };
+  if (std::none_of(clip.channels.begin(), clip.channels.end(), moves_something)) throw unfit_body(clip, body, source);
+  std::erase_if(clip.channels, [&](const Channel& channel) { return !kept(channel); });
+  for (Channel& channel : clip.channels) {
     change_frames(source.change[channel.node], channel.path, channel.sampler);
-    channel.node = *node;
-    kept.push_back(std::move(channel));
+    channel.node = *source.body_node[channel.node];
   }
-  if (kept.empty())
-    throw invalid_input("clip '" + clip.name + "' animates no node of the body " + source.body_file +
-                        ": none of its nodes' names is the body's");
-  clip.channels = std::move(kept);
   clip.start = clip.channels.front().sampler.start(), clip.end = clip.channels.front().sampler.end();
   for (const Channel& channel : clip.channels)
     clip.start = std::min(clip.start, channel.sampler.start()), clip.end = std::max(clip.end, channel.sampler.end());
