@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <iterator>
 #include <map>
 #include <string>
@@ -192,7 +193,12 @@ TEST_CASE("fbx_collada: files Assimp cannot parse, or that are missing, are refu
   const std::string text = two_bone_collada();
   const fs::path truncated = write_file("collada/truncated.dae", text.substr(0, text.size() / 2));
   CHECK_THROWS_WITH(ds::io::Gltf_file(truncated), Contains("truncated.dae") && Contains("Collada"));
-  CHECK_THROWS_WITH(ds::io::Gltf_file("no/such/file.dae"), Contains("file.dae") && Contains("does not exist"));
+  // A missing file, and a folder, in the words every reader uses.
+  CHECK_THROWS_WITH(ds::io::Gltf_file("no/such/file.dae"), Contains("file.dae: cannot open: no such file"));
+  fs::create_directories(ds::test::scratch_dir() / "collada" / "folder.fbx");
+  CHECK_THROWS_WITH(ds::io::Gltf_file(ds::test::scratch_dir() / "collada" / "folder.fbx"),
+                    Contains("folder.fbx: cannot open: it is a folder, not a file"));
+  CHECK_THROWS_WITH(ds::io::Gltf_file("no/such/file.glb"), Contains("file.glb: cannot open: no such file"));
   CHECK_THROWS_WITH(ds::io::fbx_collada_model("scene.obj"), Contains("not an FBX or Collada file"));
 }
 
@@ -381,6 +387,127 @@ TEST_CASE("fbx_collada adapter: an FBX bind matrix is held as the FBX SDK holds 
   CHECK(near(assimp::fbx_sdk_offset(aiMatrix4x4(sheared).Inverse(), assimp::Matrix()), expected));
 }
 
+TEST_CASE("fbx_collada adapter: a channel names the node without meshes of its name, as a bone of a mesh's name",
+          "[fbx]") {
+  // Blender names a bone and the mesh object parented to it alike; here the mesh node "body"
+  // comes first and a bone "body" after it: the channel moves the bone, and the mesh stays.
+  Scene_builder built;
+  aiNode* bone = new aiNode("body");
+  bone->mParent = built.scene->mRootNode;
+  built.scene->mRootNode->addChildren(1, &bone);
+  built.add_clip("body", {{0, 0}, {10, 2}});
+  const tinygltf::Model model = ds::io::internal::assimp::model_of(*built.scene, 1);
+  const tinygltf::AnimationChannel& channel = model.animations.at(0).channels.at(0);
+  CHECK(model.nodes.at(std::size_t(channel.target_node)).mesh < 0);
+  const ds::io::Sampled_gltf sampled = sample_scene(*built.scene, 2);
+  REQUIRE(sampled.report.frames == 3);
+  CHECK(sampled.positions[9 + 3] == Approx(1.0));  // at 0.5 s the vertex (1, 0, 0) is where it was
+}
+
+// ---- FBX local transforms read from the file --------------------------------------------------
+
+// A record of a binary FBX file (version 7.4: 32-bit offsets), its properties encoded already.
+struct Fbx_record {
+  std::string name;
+  std::string properties{};
+  std::uint32_t count = 0;
+  std::vector<Fbx_record> children{};
+};
+
+std::string fbx_u32(std::uint32_t x) {
+  std::string bytes(4, '\0');
+  for (std::size_t k = 0; k < 4; ++k) bytes[k] = char(x >> (8 * k) & 0xff);  // little-endian
+  return bytes;
+}
+
+template <class T>
+std::string fbx_scalar(char type, T x) {
+  std::string bytes(1 + sizeof x, type);
+  std::memcpy(bytes.data() + 1, &x, sizeof x);
+  return bytes;
+}
+
+std::string fbx_string(const std::string& text) { return "S" + fbx_u32(std::uint32_t(text.size())) + text; }
+
+// The bytes of `record` at offset `at` of its file: its end offset, property count and length,
+// name, properties, nested records and the null record that ends them.
+std::string encode(const Fbx_record& record, std::size_t at) {
+  const std::size_t start = at + 13 + record.name.size() + record.properties.size();
+  std::string nested;
+  for (const Fbx_record& child : record.children) nested += encode(child, start + nested.size());
+  if (!record.children.empty()) nested += std::string(13, '\0');
+  return fbx_u32(std::uint32_t(start + nested.size())) + fbx_u32(record.count) +
+         fbx_u32(std::uint32_t(record.properties.size())) + char(record.name.size()) + record.name +
+         record.properties + nested;
+}
+
+// A binary FBX file of one Model "body" (id 7) at the root, of the P records `p70`.
+std::string fbx_file(const std::vector<Fbx_record>& p70) {
+  const Fbx_record model{"Model", fbx_scalar('L', std::int64_t(7)) + fbx_string(std::string("body\0\1Model", 11)) +
+                                      fbx_string("Mesh"),
+                         3, {{"Properties70", "", 0, p70}}};
+  const Fbx_record objects{"Objects", "", 0, {model}};
+  const std::string link = fbx_string("OO") + fbx_scalar('L', std::int64_t(7)) + fbx_scalar('L', std::int64_t(0));
+  const Fbx_record connections{"Connections", "", 0, {{"C", link, 3}}};
+  std::string bytes = std::string("Kaydara FBX Binary  \0\x1a\0", 23) + fbx_u32(7400);
+  bytes += encode(objects, bytes.size());
+  bytes += encode(connections, bytes.size());
+  return bytes + std::string(13, '\0');
+}
+
+// A P record of a vector property `name`.
+Fbx_record fbx_vector(const std::string& name, double x, double y, double z) {
+  return {"P",
+          fbx_string(name) + fbx_string(name) + fbx_string("") + fbx_string("A") + fbx_scalar('D', x) +
+              fbx_scalar('D', y) + fbx_scalar('D', z),
+          7};
+}
+
+TEST_CASE("fbx_collada adapter: an FBX node's small translation, which Assimp 5.2 drops, is read from the file",
+          "[fbx]") {
+  namespace assimp = ds::io::internal::assimp;
+  Scene_builder built;  // as Assimp reads the file: "body" at the origin
+  const aiNode& body = *built.scene->mRootNode->mChildren[0];
+  const std::string file = fbx_file({fbx_vector("Lcl Translation", 1e-4, 0, 0)});
+  const assimp::Local_transforms local = assimp::fbx::local_transforms(file, *built.scene);
+  REQUIRE(local.contains(&body));
+  CHECK(local.at(&body).a4 == 1e-4);
+  const ds::io::Sampled_gltf sampled =
+      ds::io::Gltf_file("scene", assimp::model_of(*built.scene, 1, assimp::Bind_rule::as_stored, local)).sample({});
+  CHECK(sampled.positions[0] == Approx(1e-4).epsilon(1e-6));
+  // A truncated file, a file whose Model is named otherwise than the node, and ASCII FBX: none.
+  CHECK(assimp::fbx::local_transforms(file.substr(0, file.size() / 2), *built.scene).empty());
+  built.scene->mRootNode->mChildren[0]->mName = "other";
+  CHECK(assimp::fbx::local_transforms(file, *built.scene).empty());
+  CHECK(assimp::fbx::local_transforms("; FBX 7.4.0 project file", *built.scene).empty());
+}
+
+TEST_CASE("fbx_collada adapter: an FBX node's rotation follows its RotationOrder; a pivot keeps Assimp's matrix",
+          "[fbx]") {
+  namespace assimp = ds::io::internal::assimp;
+  Scene_builder built;
+  const aiNode& body = *built.scene->mRootNode->mChildren[0];
+  const auto turned = [&](std::vector<Fbx_record> p70) {  // where the node turns the y axis
+    const assimp::Local_transforms local = assimp::fbx::local_transforms(fbx_file(p70), *built.scene);
+    REQUIRE(local.contains(&body));
+    const assimp::Matrix& m = local.at(&body);
+    return std::array<double, 3>{m.a2, m.b2, m.c2};
+  };
+  const auto near = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]) < 1e-12;
+  };
+  const Fbx_record rotation = fbx_vector("Lcl Rotation", 90, 90, 0);
+  // XYZ (0, the default): x first, taking y to z, then y, taking z to x.
+  CHECK(near(turned({rotation}), {1, 0, 0}));
+  // YXZ (3): y first, leaving y, then x, taking it to z.
+  const Fbx_record yxz{"P", fbx_string("RotationOrder") + fbx_string("enum") + fbx_string("") + fbx_string("") +
+                                fbx_scalar('I', std::int32_t(3)),
+                       5};
+  CHECK(near(turned({rotation, yxz}), {0, 0, 1}));
+  const std::string pivoted = fbx_file({rotation, fbx_vector("RotationPivot", 0, 1, 0)});
+  CHECK(assimp::fbx::local_transforms(pivoted, *built.scene).empty());
+}
+
 // ---- The shared characters (../shared/data/fbx-collada, SOURCE.md) ---------------------------
 
 fs::path character(const std::string& name) { return data_dir() / "fbx-collada" / name; }
@@ -466,6 +593,64 @@ TEST_CASE("fbx_collada: a clip the file lacks is refused, listing those it has",
                     Contains("quat_man.fbx") && Contains("no clip 'Dance'") && Contains("'Human Armature|Walk'"));
   CHECK_THROWS_WITH(ds::io::read_animation(character("quat_man.fbx").string()),
                     Contains("holds 9 clips: name the one to read"));
+}
+
+// ---- Clips bound to bodies whose still joints are matrices ---------------------------------
+
+// `model` written as scratch/fbx_collada/name.glb.
+fs::path written_glb(const tinygltf::Model& model, const std::string& name) {
+  const fs::path to = ds::test::scratch_dir() / "fbx_collada" / (name + ".glb");
+  fs::create_directories(to.parent_path());
+  REQUIRE(tinygltf::TinyGLTF().WriteGltfSceneToFile(&model, to.string(), false, true, false, true));
+  return to;
+}
+
+// The body of `model` as an FBX or Collada export without clips writes it: every node a matrix.
+tinygltf::Model still_body(tinygltf::Model model) {
+  namespace gltf = ds::io::internal::gltf;
+  const std::vector<gltf::Node_pose> rest = gltf::rest_poses(model);
+  for (std::size_t i = 0; i < model.nodes.size(); ++i) {
+    const gltf::Affine local = rest[i].local();
+    tinygltf::Node& node = model.nodes[i];
+    node.translation.clear(), node.rotation.clear(), node.scale.clear();
+    node.matrix.assign(16, 0.0);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) node.matrix[std::size_t(4 * c + r)] = local.m[std::size_t(4 * r + c)];
+    node.matrix[15] = 1;
+  }
+  model.animations.clear();
+  return model;
+}
+
+// The clips of `model` alone, as an animation-only export: its nodes and clips, no mesh.
+tinygltf::Model clips_alone(tinygltf::Model model) {
+  for (tinygltf::Node& node : model.nodes) node.mesh = node.skin = -1;
+  model.meshes.clear();
+  model.skins.clear();
+  return model;
+}
+
+TEST_CASE("fbx_collada: every clip plays on a body whose joints are matrices, giving its frames",
+          "[fbx][collada][data]") {
+  // Mixamo's bodies: an FBX body's own clip leaves joints still, which it writes as matrices; the
+  // clips of an animation-only file must move them all the same.
+  for (const std::string name : {"quat_man.fbx", "stormtrooper.dae", "astroboy_walk_maya.dae"}) {
+    INFO(name);
+    const tinygltf::Model model = ds::io::fbx_collada_model(character(name));
+    const fs::path body = written_glb(still_body(model), "still-" + name);
+    const fs::path clips = written_glb(clips_alone(model), "clips-" + name);
+    const ds::io::Gltf_file own(character(name)), bound(body, clips);
+    REQUIRE(bound.clip_names() == own.clip_names());
+    for (const std::string& clip : own.clip_names()) {
+      INFO(clip);
+      const ds::io::Sampled_gltf a = own.sample({.clip = clip}), b = bound.sample({.clip = clip});
+      REQUIRE(a.report.frames == b.report.frames);
+      CHECK(b.report.animated_joints == a.report.animated_joints);
+      double gap = 0;
+      for (std::size_t i = 0; i < a.positions.size(); ++i) gap = std::max(gap, std::abs(a.positions[i] - b.positions[i]));
+      CHECK(gap <= 1e-9 * diagonal(a));  // matrices and their decompositions agree to double rounding
+    }
+  }
 }
 
 // ---- The FBX SDK's reading, through FBX2glTF (test/fbx_sdk.cmake runs this) -----------------

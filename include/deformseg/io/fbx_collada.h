@@ -19,6 +19,7 @@
 #include <deformseg/io/internal/assimp_model_writer.h>
 #include <deformseg/io/internal/assimp_scene.h>
 #include <deformseg/io/internal/collada_checks.h>
+#include <deformseg/io/internal/fbx_local_transforms.h>
 #include <deformseg/io/internal/file_io.h>
 
 #include <assimp/Importer.hpp>
@@ -34,6 +35,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace deformseg::io::internal::assimp {
@@ -54,9 +56,10 @@ inline double metres_per_unit(const aiScene& scene) {
 }
 
 /// Writes an Assimp scene as a glTF model: a root node in metres (scaling by `metres`) above the
-/// scene's node tree, the meshes and skins (bone offsets taken by `rule`), the clips. See
-/// `fbx_collada_model`.
-inline tinygltf::Model model_of(const aiScene& scene, double metres, Bind_rule rule = Bind_rule::as_stored) {
+/// scene's node tree (its nodes in `local` placed so, in place of Assimp's transforms), the meshes
+/// and skins (bone offsets taken by `rule`), the clips. See `fbx_collada_model`.
+inline tinygltf::Model model_of(const aiScene& scene, double metres, Bind_rule rule = Bind_rule::as_stored,
+                                Local_transforms local = {}) {
   if (!scene.mRootNode) throw invalid_input("the scene has no root node");
   tinygltf::Model model;
   model.asset.version = "2.0";
@@ -66,7 +69,7 @@ inline tinygltf::Model model_of(const aiScene& scene, double metres, Bind_rule r
   units.name = "deformseg: metres";
   units.scale = {metres, metres, metres};
   model.nodes.push_back(units);
-  const Node_table nodes = write_nodes(*scene.mRootNode, animated_nodes(scene), model);
+  const Node_table nodes = write_nodes(*scene.mRootNode, animated_nodes(scene), model, std::move(local));
   model.nodes.front().children = {int(nodes.base)};
   const std::vector<int> node_of_mesh = write_meshes(scene, nodes, rule, writer, model);
   write_clips(scene, nodes, node_of_mesh, writer, model);
@@ -107,7 +110,8 @@ inline tinygltf::Model model_from_bytes(const std::string& bytes, const std::str
       throw invalid_input("the file has a Collada morph controller (<morph>) that Assimp does not import (a morph "
                           "under a skin): its targets would be lost");
   }
-  if (format == "fbx") return model_of(*scene, metres_per_unit(*scene), Bind_rule::fbx_sdk);
+  if (format == "fbx")
+    return model_of(*scene, metres_per_unit(*scene), fbx_bind_rule(*scene), fbx::local_transforms(bytes, *scene));
   return model_of(*scene, 1.0);
 }
 
@@ -127,17 +131,23 @@ inline constexpr std::size_t max_fbx_collada_bytes = std::size_t(1) << 31;
 ///   (`UnitScaleFactor`, centimetres per unit), Collada's `<unit>` and up axis are in Assimp's
 ///   root transform already;
 /// - every node becomes a glTF node (a node some clip moves as translation, rotation and scale,
-///   else as its matrix);
+///   else as its matrix); a binary FBX file's nodes placed by translation, rotation and scaling
+///   alone take them from the file, in double precision (Assimp 5.2 drops tiny ones, which a
+///   parent's scale makes large: `internal::assimp::fbx::local_transforms`);
+/// - a name that a bone and a mesh share (Blender names a mesh parented to a bone after it)
+///   stands for the node without meshes, for the bones and the clips' channels;
 /// - a node's meshes (Assimp splits a mesh per material) become one glTF mesh of one primitive
 ///   each, with one skin of their bones (bone offsets are inverse bind matrices; an FBX bone's
-///   as Autodesk's FBX SDK gives it, its bind matrix without shear), the 8 largest weights of
+///   as Autodesk's FBX SDK gives it, its bind matrix without shear, but for files of Blender 2.80
+///   and later, as stored: Blender deforms with them, shear included), the 8 largest weights of
 ///   each vertex kept (glTF's reader then divides them by their sum), morph targets as deltas;
 /// - every clip becomes a glTF animation of its name, key times in seconds (ticks per second, 25
 ///   when the file gives none), interpolated linearly.
 ///
 /// @param path a `.fbx` (binary or ASCII) or `.dae` file; the format is told by the extension.
 /// @return the model, whose buffers are held in memory.
-/// @throws invalid_input naming the file for: a file that does not exist, is larger than
+/// @throws invalid_input naming the file for: a file that does not exist or is a folder
+/// ("cannot open: no such file", as every reader says), is larger than
 /// `max_fbx_collada_bytes`, or that Assimp cannot parse (its message); a clip channel aimed at a
 /// node the scene does not have (an FBX pivot helper, a missing target), naming the clip and the
 /// node; a Collada `<channel>` whose target no element of the file has, or a Collada morph under
@@ -148,9 +158,9 @@ inline tinygltf::Model fbx_collada_model(const std::filesystem::path& path) {
   try {
     if (!is_fbx_or_collada(path))
       throw invalid_input("not an FBX or Collada file name: the extension is not .fbx or .dae");
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error))
-      throw invalid_input("cannot open the file: it does not exist or is not a file");
+    std::error_code error;  // a missing file or a folder in the words of every reader (read_file_bytes)
+    if (!std::filesystem::exists(path, error)) throw invalid_input("cannot open: no such file");
+    if (!std::filesystem::is_regular_file(path, error)) throw invalid_input("cannot open: it is a folder, not a file");
     const std::uintmax_t size = std::filesystem::file_size(path, error);
     if (error) throw invalid_input("cannot read the file: " + error.message());
     if (size > max_fbx_collada_bytes)

@@ -112,9 +112,20 @@ inline void write_node_channel(const aiScene& scene, std::size_t clip, const aiN
                 TINYGLTF_TYPE_VEC3, node, "scale", writer, animation);
 }
 
+/// A morph channel's name without the "*N" Assimp's FBX reader puts after the geometry's name
+/// ("Head*0"), which names no node or mesh.
+inline std::string without_morph_suffix(const std::string& name) {
+  const std::size_t star = name.rfind('*');
+  if (star == std::string::npos || star + 1 == name.size()) return name;
+  const bool digits = std::all_of(name.begin() + std::ptrdiff_t(star) + 1, name.end(),
+                                  [](char c) { return c >= '0' && c <= '9'; });
+  return digits ? name.substr(0, star) : name;
+}
+
 /// The glTF node that shows the morph targets a morph channel names: Assimp names it after the
-/// node, or the mesh, that holds them.
-inline int morph_node(const aiScene& scene, const std::string& name, const Node_table& nodes,
+/// node, or the mesh, that holds them (after the FBX geometry, with a "*N" after it: see
+/// `without_morph_suffix`).
+inline int morph_node(const aiScene& scene, const std::string& channel_name, const Node_table& nodes,
                       const std::vector<int>& node_of_mesh, const tinygltf::Model& model) {
   const auto has_targets = [&](int node) {
     const int mesh = model.nodes[std::size_t(node)].mesh;
@@ -123,12 +134,16 @@ inline int morph_node(const aiScene& scene, const std::string& name, const Node_
       if (!primitive.targets.empty()) return true;
     return false;
   };
-  if (const auto found = nodes.by_name.find(name); found != nodes.by_name.end() && has_targets(int(found->second)))
-    return int(found->second);
-  for (unsigned m = 0; m < scene.mNumMeshes; ++m)
-    if (name_of(scene.mMeshes[m]->mName) == name && node_of_mesh[m] >= 0 && has_targets(node_of_mesh[m]))
-      return node_of_mesh[m];
-  return -1;
+  const auto named = [&](const std::string& name) {
+    if (const auto found = nodes.by_name.find(name); found != nodes.by_name.end() && has_targets(int(found->second)))
+      return int(found->second);
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m)
+      if (name_of(scene.mMeshes[m]->mName) == name && node_of_mesh[m] >= 0 && has_targets(node_of_mesh[m]))
+        return node_of_mesh[m];
+    return -1;
+  };
+  const int node = named(channel_name);
+  return node >= 0 ? node : named(without_morph_suffix(channel_name));
 }
 
 /// Writes a morph channel's keys as a weights sampler: each key gives the weights of the targets

@@ -1,18 +1,21 @@
 // An Assimp scene's node tree, meshes, skins and morph targets written as glTF nodes, meshes and
 // skins (io/fbx_collada.h): Assimp's bone offset is glTF's inverse bind matrix (an FBX bone's as
 // the FBX SDK holds it), its bones name the joint nodes, its morph targets are absolute positions
-// (glTF's are deltas).
+// (glTF's are deltas). The local transforms of a binary FBX file, small parts of which Assimp drops,
+// are read from the file (`fbx::local_transforms`).
 #pragma once
 
 #include <deformseg/exceptions.h>
 #include <deformseg/io/internal/assimp_model_writer.h>
 
+#include <assimp/commonMetaData.h>
 #include <assimp/scene.h>
 #include <tiny_gltf.h>
 
 #include <algorithm>
 #include <array>
 #include <cfloat>
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -36,38 +39,63 @@ inline std::string mesh_name(const aiScene& scene, std::size_t mesh) {
   return "mesh " + std::to_string(mesh) + (name.empty() ? "" : " '" + name + "'");
 }
 
-/// glTF's column-major layout of a row-major aiMatrix4x4.
-inline std::vector<double> column_major(const aiMatrix4x4& m) {
+using Matrix = aiMatrix4x4t<double>;
+
+/// glTF's column-major layout of a row-major matrix.
+template <class Real>
+std::vector<double> column_major(const aiMatrix4x4t<Real>& m) {
   return {m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4};
 }
 
-inline bool finite(const aiMatrix4x4& m) {
-  const ai_real* values = &m.a1;
-  return std::all_of(values, values + 16, [](ai_real x) { return std::isfinite(x); });
+template <class Real>
+bool finite(const aiMatrix4x4t<Real>& m) {
+  const Real* values = &m.a1;
+  return std::all_of(values, values + 16, [](Real x) { return std::isfinite(x); });
 }
+
+/// Local transforms that replace Assimp's for some nodes, in double precision (an FBX node's as
+/// its file gives it: see `fbx::local_transforms`).
+using Local_transforms = std::unordered_map<const aiNode*, Matrix>;
 
 /// The glTF nodes of the scene's nodes, depth first (a node before its children, in order).
 struct Node_table {
   std::size_t base = 0;                                    // the glTF index of source[0]
   std::vector<const aiNode*> source{};                     // glTF node base + i -> Assimp node
-  std::unordered_map<std::string, std::size_t> by_name{};  // the first glTF node of each name
+  std::unordered_map<std::string, std::size_t> by_name{};  // the node a name stands for: `name_holder`
+  Local_transforms local{};                                // replacements of Assimp's transforms
 };
+
+/// The local transform of `node`: its replacement in `nodes.local`, else Assimp's.
+inline Matrix local_transform(const Node_table& nodes, const aiNode& node) {
+  const auto found = nodes.local.find(&node);
+  return found != nodes.local.end() ? found->second : Matrix(node.mTransformation);
+}
+
+/// Records glTF node `at`, of Assimp node `node`, as the one its name stands for (for a bone, a
+/// channel) unless an earlier node of that name is a better one: a node without meshes before one
+/// with. Assimp's FBX reader keeps the names of the file's objects, and Blender names a bone and
+/// the mesh object parented to it alike (the robot's bone 'Torso' and, under bone 'Body', its
+/// mesh 'Torso'), a name only a bone (a node without meshes) is bound to or animated by.
+inline void name_holder(Node_table& table, const aiNode& node, std::size_t at) {
+  const auto [found, added] = table.by_name.emplace(name_of(node.mName), at);
+  if (!added && node.mNumMeshes == 0 && table.source[found->second - table.base]->mNumMeshes > 0) found->second = at;
+}
 
 /// The glTF node of `source`: translation, rotation and scale for an animated node, since a glTF
 /// channel replaces one of those; else its matrix, exactly.
-inline tinygltf::Node gltf_node(const aiNode& source, bool animated) {
+inline tinygltf::Node gltf_node(const aiNode& source, const Matrix& transform, bool animated) {
   tinygltf::Node node;
   node.name = name_of(source.mName);
   if (!animated) {
-    node.matrix = column_major(source.mTransformation);
+    node.matrix = column_major(transform);
     return node;
   }
-  aiVector3D scaling, position;
-  aiQuaternion rotation;
-  source.mTransformation.Decompose(scaling, rotation, position);
+  aiVector3t<double> scaling, position;
+  aiQuaterniont<double> rotation;
+  transform.Decompose(scaling, rotation, position);
   const bool finite_rotation = std::isfinite(rotation.w) && std::isfinite(rotation.x) && std::isfinite(rotation.y) &&
                                std::isfinite(rotation.z);
-  if (!finite_rotation) rotation = aiQuaternion();  // a scale of 0 leaves the rotation free
+  if (!finite_rotation) rotation = aiQuaterniont<double>();  // a scale of 0 leaves the rotation free
   node.translation = {position.x, position.y, position.z};
   node.rotation = {rotation.x, rotation.y, rotation.z, rotation.w};
   node.scale = {scaling.x, scaling.y, scaling.z};
@@ -75,12 +103,13 @@ inline tinygltf::Node gltf_node(const aiNode& source, bool animated) {
 }
 
 /// Writes the node tree under `root` as glTF nodes from index `model.nodes.size()`; `animated`
-/// holds the names of the nodes a clip moves.
+/// holds the names of the nodes a clip moves, `local` the nodes whose transform replaces Assimp's.
 /// @throws invalid_input for a non-finite transform, a node reached twice, or a tree deeper than
 /// `max_depth`.
-inline Node_table write_nodes(const aiNode& root, const std::set<std::string>& animated, tinygltf::Model& model) {
+inline Node_table write_nodes(const aiNode& root, const std::set<std::string>& animated, tinygltf::Model& model,
+                              Local_transforms local = {}) {
   constexpr std::size_t max_depth = 10'000;  // bounds the work on a malformed tree
-  Node_table table{.base = model.nodes.size()};
+  Node_table table{.base = model.nodes.size(), .local = std::move(local)};
   std::set<const aiNode*> seen;
   struct Visit {
     const aiNode* node;
@@ -97,11 +126,12 @@ inline Node_table write_nodes(const aiNode& root, const std::set<std::string>& a
       throw invalid_input("node '" + name + "' is reached twice: the nodes are not a tree");
     if (visit.depth > max_depth)
       throw invalid_input("the node tree is deeper than " + std::to_string(max_depth) + " nodes");
-    if (!finite(node.mTransformation)) throw invalid_input("node '" + name + "' has a non-finite transform");
+    const Matrix transform = local_transform(table, node);
+    if (!finite(transform)) throw invalid_input("node '" + name + "' has a non-finite transform");
     const std::size_t at = model.nodes.size();
     table.source.push_back(&node);
-    table.by_name.emplace(name, at);
-    model.nodes.push_back(gltf_node(node, animated.contains(name)));
+    name_holder(table, node, at);
+    model.nodes.push_back(gltf_node(node, transform, animated.contains(name)));
     if (visit.parent >= 0) model.nodes[std::size_t(visit.parent)].children.push_back(int(at));
     for (unsigned c = node.mNumChildren; c-- > 0;)  // pushed last to first: visited in order
       if (node.mChildren && node.mChildren[c]) stack.push_back({node.mChildren[c], visit.depth + 1, int(at)});
@@ -111,11 +141,33 @@ inline Node_table write_nodes(const aiNode& root, const std::set<std::string>& a
 
 /// Where a bone's offset (glTF's inverse bind matrix) comes from.
 enum class Bind_rule {
-  as_stored,  ///< Assimp's offset, as the file stores it (Collada, scenes built in memory)
+  as_stored,  ///< Assimp's offset, as the file stores it (Collada, Blender 2.80's FBX on, scenes built in memory)
   fbx_sdk,    ///< as Autodesk's FBX SDK reads an FBX file's (`fbx_sdk_offset`)
 };
 
-using Matrix = aiMatrix4x4t<double>;
+/// The major version of the Blender FBX add-on that wrote `scene` (its FBX header's Creator,
+/// "Blender (stable FBX IO) - 3.4.1 - 4.37.1", gives 4), or 0 when another tool wrote it.
+inline int blender_fbx_io_version(const aiScene& scene) {
+  aiString creator;
+  if (!scene.mMetaData || !scene.mMetaData->Get(AI_METADATA_SOURCE_GENERATOR, creator)) return 0;
+  const std::string text = name_of(creator);
+  const std::size_t last = text.rfind(" - ");
+  if (!text.starts_with("Blender (") || last == std::string::npos) return 0;
+  int major = 0;
+  std::from_chars(text.data() + last + 3, text.data() + text.size(), major);
+  return major;
+}
+
+/// The bind rule of an FBX scene. Blender's exporter writes a cluster's Transform as the bone's
+/// rest matrix (TransformLink: the armature object's world matrix x the bone's rest matrix) inverted
+/// x the mesh object's world matrix: the inverse bind matrix its armature modifier deforms with,
+/// which Assimp reads as the bone's offset. From its FBX add-on 4 (Blender 2.80) it is taken as
+/// stored, shear included (an armature or parent scaled non-uniformly shears it), since Blender
+/// deforms with it; files of other tools, and of Blender 2.76, whose only reference is the SDK's
+/// reading, take the SDK's rule. Chapter 2 of the manual gives the figures.
+inline Bind_rule fbx_bind_rule(const aiScene& scene) {
+  return blender_fbx_io_version(scene) >= 4 ? Bind_rule::as_stored : Bind_rule::fbx_sdk;
+}
 
 /// `m` as a translation, XYZ Euler angles and a scale, as the FBX SDK holds an affine matrix
 /// (FbxAMatrix): the scale is the columns' lengths, the angles are read from entries of the
@@ -160,10 +212,10 @@ inline aiMatrix4x4 fbx_sdk_offset(const aiMatrix4x4& offset, const Matrix& mesh)
 }
 
 /// The global transform of `node` in its scene.
-inline Matrix global_transform(const aiNode& node) {
-  Matrix global = Matrix(node.mTransformation);
+inline Matrix global_transform(const Node_table& nodes, const aiNode& node) {
+  Matrix global = local_transform(nodes, node);
   for (const aiNode* parent = node.mParent; parent; parent = parent->mParent)
-    global = Matrix(parent->mTransformation) * global;
+    global = local_transform(nodes, *parent) * global;
   return global;
 }
 
@@ -216,7 +268,7 @@ inline std::vector<Mesh_group> group_meshes(const aiScene& scene, const aiNode& 
                                             Bind_rule rule) {
   std::vector<Mesh_group> groups;
   const std::optional<Matrix> mesh_global =
-      rule == Bind_rule::fbx_sdk && node.mNumMeshes > 0 ? std::optional(global_transform(node)) : std::nullopt;
+      rule == Bind_rule::fbx_sdk && node.mNumMeshes > 0 ? std::optional(global_transform(nodes, node)) : std::nullopt;
   for (unsigned k = 0; k < node.mNumMeshes; ++k) {
     const std::size_t mesh = node.mMeshes[k];
     if (mesh >= scene.mNumMeshes)
