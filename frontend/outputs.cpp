@@ -1,6 +1,7 @@
 #include "outputs.h"
 
 #include <deformseg/io/files.h>
+#include <deformseg/store/store_record.h>
 
 #include <iostream>
 #include <optional>
@@ -15,7 +16,39 @@ void write_text(std::string_view text, const std::string& path) {
   io::write_file(path, text);
 }
 
-void write_json(const nlohmann::json& document, const std::string& path) { write_text(document.dump(2) + '\n', path); }
+std::string utf8_text(std::string_view text) {
+  return store::is_utf8(text) ? std::string(text) : store::escaped_name(text);
+}
+
+namespace {
+
+// `value` with its strings and member names that are not UTF-8 as `utf8_text` gives them.
+nlohmann::json with_utf8_text(const nlohmann::json& value) {
+  if (value.is_string()) return utf8_text(value.get_ref<const std::string&>());
+  if (value.is_array()) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const nlohmann::json& item : value) out.push_back(with_utf8_text(item));
+    return out;
+  }
+  if (!value.is_object()) return value;
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [key, item] : value.items()) out[utf8_text(key)] = with_utf8_text(item);
+  return out;
+}
+
+}  // namespace
+
+std::string json_text(const nlohmann::json& document, int indent) {
+  try {
+    return document.dump(indent);
+  } catch (const nlohmann::json::type_error&) {  // a string that is not UTF-8: rare, so copied only then
+    return with_utf8_text(document).dump(indent);
+  }
+}
+
+void write_json(const nlohmann::json& document, const std::string& path) {
+  write_text(json_text(document, 2) + '\n', path);
+}
 
 namespace {
 

@@ -1,5 +1,7 @@
 #include "store.h"
 
+#include "outputs.h"
+
 #include <deformseg/evaluation/motion_labels.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/parallel_for.h>
@@ -26,6 +28,7 @@
 #include <set>
 #include <span>
 #include <system_error>
+#include <tuple>
 #include <utility>
 #include <variant>
 
@@ -62,10 +65,10 @@ struct Listed_parses {
 // The clips of a glTF file: `clip` when given, else every clip of the file of 2 frames or more at
 // `fps` (the others, poses, go to `poses`); a file without clips gives its one animation under "".
 // The file's parse is kept in `parses`, when given and within its budget.
-void add_gltf_clips(const std::string& file, const std::string& clip, double fps, std::vector<Clip_source>& out,
-                    std::vector<std::string>& poses, Listed_parses* parses) {
+void add_gltf_clips(const std::string& file, const std::string& clip, const std::string& body, double fps,
+                    std::vector<Clip_source>& out, std::vector<std::string>& poses, Listed_parses* parses) {
   if (!clip.empty()) {
-    out.push_back({canonical_path(file), clip});
+    out.push_back({canonical_path(file), clip, body});
     return;
   }
   std::shared_ptr<const io::Gltf_file> parsed;
@@ -78,14 +81,17 @@ void add_gltf_clips(const std::string& file, const std::string& clip, double fps
     }
   const io::Gltf_contents contents = parsed ? parsed->contents(fps) : io::gltf_contents(file, fps);
   if (parsed) parses->files[canonical_path(file)] = parsed, parses->bytes += size;
-  if (contents.clips.empty()) out.push_back({canonical_path(file), ""});
+  if (contents.clips.empty()) out.push_back({canonical_path(file), "", body});
   for (std::size_t k = 0; k < contents.clips.size(); ++k) {
     const Clip_source source{canonical_path(file),
-                             contents.clips[k].name.empty() ? std::to_string(k) : contents.clips[k].name};
+                             contents.clips[k].name.empty() ? std::to_string(k) : contents.clips[k].name, body};
     if (contents.clips[k].frames < 2) poses.push_back(source.name());
     else out.push_back(source);
   }
 }
+
+// A path given or not (a body, a topology), as a store records it: canonical, "" for none.
+std::string canonical_if_given(const std::string& path) { return path.empty() ? "" : canonical_path(path); }
 
 // `options` with `body` as its body, when it names one.
 Input_options with_body(const std::string& body, const Input_options& options) {
@@ -118,18 +124,18 @@ std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_o
     if (!io::is_character_file(row.file)) {
       if (rows_of_file[row.file] > 1)
         throw invalid_input("lists " + std::to_string(rows_of_file[row.file]) + " clips of " + file +
-                                ", which is not a character file (glTF, FBX, Collada) and holds one animation",
+                                ", which is not a character file (glTF, FBX, Collada, BVH) and holds one animation",
                             {.file = labels});
       out.push_back({canonical_path(file), ""});
       continue;
     }
-    const std::string body = row.body_file.empty() ? "" : canonical_path(row.body_file.string());
+    const std::string body = canonical_if_given(row.body_file.empty() ? options.body : row.body_file.string());
     std::string clip = row.item.clip.empty() ? options.clip : row.item.clip;
     if (clip.empty()) try {  // the file's only clip, as evaluate reads it
         clip = only_clip(row.file, with_body(body, options));
       } catch (const invalid_input& e) {
         if (!unreadable) throw;
-        unreadable->push_back(file + ": " + e.what());
+        unreadable->push_back(store::escaped_name(file) + ": " + utf8_text(e.what()));
         continue;
       }
     out.push_back({canonical_path(file), clip, body});
@@ -200,16 +206,17 @@ std::vector<Clip_source> list_clips(const std::vector<std::string>& inputs, cons
       continue;
     }
     try {
-      add_gltf_clips(name.file, name.clip, options.fps, all, poses, options.body.empty() ? parses : nullptr);
+      add_gltf_clips(name.file, name.clip, canonical_if_given(options.body), options.fps, all, poses,
+                     options.body.empty() ? parses : nullptr);
     } catch (const invalid_input& e) {
       if (!unreadable) throw;
-      unreadable->push_back(input + ": " + e.what());
+      unreadable->push_back(store::escaped_name(input) + ": " + utf8_text(e.what()));
     }
   }
-  std::vector<Clip_source> once;  // a clip named twice is described once
-  std::set<std::pair<std::string, std::string>> seen;
+  std::vector<Clip_source> once;  // a clip named twice on one body is described once
+  std::set<std::tuple<std::string, std::string, std::string>> seen;
   for (Clip_source& clip : all)
-    if (seen.insert({clip.file, clip.clip}).second) once.push_back(std::move(clip));
+    if (seen.insert({clip.file, clip.clip, clip.body}).second) once.push_back(std::move(clip));
   return once;
 }
 
@@ -266,11 +273,11 @@ Policy_choice stored_policy_choice(const store::Motion_store& store) {
 
 std::string input_options_text(const std::string& file, const Input_options& options) {
   nlohmann::json text = {{"fps", options.fps},
-                         {"topology", options.topology.empty() ? "" : canonical_path(options.topology)},
+                         {"topology", store::escaped_name(canonical_if_given(options.topology))},
                          {"triangulate", options.triangulate},
                          {"weld", repair_options(file, options).weld},
                          {"refuse_defects", options.refuse_defects}};
-  if (!options.body.empty()) text["body"] = canonical_path(options.body);  // absent: the records before bodies
+  if (!options.body.empty()) text["body"] = store::escaped_name(canonical_path(options.body));  // absent: before bodies
   return text.dump();
 }
 
@@ -279,11 +286,11 @@ Input_options recorded_input_options(const store::Store_record& record) {
   const nlohmann::json o = nlohmann::json::parse(record.input_options, nullptr, false);
   try {
     options.fps = o.at("fps").get<double>();
-    options.topology = o.at("topology").get<std::string>();
+    options.topology = store::unescaped_name(o.at("topology").get<std::string>());
     options.triangulate = o.at("triangulate").get<bool>();
     options.weld = o.at("weld").get<bool>();
     options.refuse_defects = o.at("refuse_defects").get<bool>();
-    options.body = o.value("body", std::string());
+    options.body = store::unescaped_name(o.value("body", std::string()));
   } catch (const nlohmann::json::exception&) {
     return {};
   }
@@ -292,9 +299,10 @@ Input_options recorded_input_options(const store::Store_record& record) {
 
 store::Store_record source_record(const Clip_source& clip, const Input_options& all_clips, bool hash) {
   const Input_options options = with_body(clip.body, all_clips);
-  store::Store_record record;
-  record.path = clip.file;
-  record.clip = clip.clip;
+  store::Store_record record;  // its names escaped, as the store keeps them
+  record.path = store::escaped_name(clip.file);
+  record.clip = store::escaped_name(clip.clip);
+  record.body = store::escaped_name(clip.body);
   record.input_options = input_options_text(clip.file, options);
   const std::vector<fs::path> files = source_files(clip.file);
   const File_stamp source = stamp(files);
@@ -304,8 +312,9 @@ store::Store_record source_record(const Clip_source& clip, const Input_options& 
   // The file the input is read with, recorded as the topology: a point cache's topology, or a
   // character's body (one or the other applies).
   if (const std::string& companion = options.topology.empty() ? options.body : options.topology; !companion.empty()) {
-    record.topology_path = canonical_path(companion);
-    const File_stamp topology = stamp(fs::path(record.topology_path));
+    const std::string topology_path = canonical_path(companion);
+    record.topology_path = store::escaped_name(topology_path);
+    const File_stamp topology = stamp(fs::path(topology_path));
     record.topology_size = topology.size;
     record.topology_mtime_ns = topology.mtime_ns;
   }
@@ -551,7 +560,7 @@ void append_clip(store::Store_append& append, const Clip_source& clip, const sto
                  const Described_clip& described, Describe_report& report) {
   const similarity::Motion_signature_view view = similarity::view(described.description);
   const std::vector<std::uint32_t> frames(described.description.frames.begin(), described.description.frames.end());
-  if (const std::optional<std::size_t> at = append.store().find(record.path, record.clip)) {
+  if (const std::optional<std::size_t> at = append.store().find(record.path, record.clip, record.body)) {
     append.replace(*at, record, view, frames, described.summary.floats);
     report.redescribed.push_back(clip.name());
   } else {
@@ -573,10 +582,10 @@ std::vector<std::size_t> clips_to_describe(const std::vector<Clip_source>& clips
       records[i] = source_record(clips[i], options, hash);
     } catch (const invalid_input& e) {
       if (!skip_unreadable) throw;
-      report.unreadable.push_back(clips[i].name() + ": " + e.what());
+      report.unreadable.push_back(clips[i].name() + ": " + utf8_text(e.what()));
       continue;
     }
-    const std::optional<std::size_t> at = store.find(clips[i].file, clips[i].clip);
+    const std::optional<std::size_t> at = find_clip(store, clips[i]);
     if (at && unchanged(store.record(*at), records[i], hash)) {
       report.skipped.push_back(clips[i].name());
       continue;
@@ -699,7 +708,7 @@ Describe_report describe_clips(const std::string& folder, const std::vector<Clip
                               errors[k]->where());
         }
         say("left out " + clip.name() + ": " + errors[k]->what());
-        report.unreadable.push_back(clip.name() + ": " + errors[k]->what());
+        report.unreadable.push_back(clip.name() + ": " + utf8_text(errors[k]->what()));
       } else {
         if (!described[k].warning.empty()) say("warning: " + clip.name() + ": " + described[k].warning);
         if (!append) append = start_append();
@@ -778,7 +787,7 @@ Describe_report merge_stores(const std::string& folder, const std::vector<std::s
       const store::Store_record record = part.record(i);
       const std::vector<std::uint32_t> frames(part.frames(i).begin(), part.frames(i).end());
       const std::string clip_name = stored_clip_name(part, i);
-      if (const std::optional<std::size_t> at = append.store().find(record.path, record.clip)) {
+      if (const std::optional<std::size_t> at = append.store().find(record.path, record.clip, record.body)) {
         append.replace(*at, record, part.view(i), frames, part.summary(i));
         report.redescribed.push_back(clip_name);
       } else {
@@ -792,9 +801,18 @@ Describe_report merge_stores(const std::string& folder, const std::vector<std::s
   return report;
 }
 
+std::string clip_name(const std::string& file, const std::string& clip, const std::string& body) {
+  const std::string name = clip.empty() ? file : file + "#" + clip;
+  return body.empty() ? name : name + " on " + body;
+}
+
 std::string stored_clip_name(const store::Motion_store& store, std::size_t i) {
   const store::Store_record record = store.record(i);
-  return record.clip.empty() ? record.path : record.path + "#" + record.clip;
+  return clip_name(record.path, record.clip, record.body);
+}
+
+std::optional<std::size_t> find_clip(const store::Motion_store& store, const Clip_source& clip) {
+  return store.find(store::escaped_name(clip.file), store::escaped_name(clip.clip), store::escaped_name(clip.body));
 }
 
 }  // namespace deformseg::frontend

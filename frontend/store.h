@@ -21,24 +21,34 @@ namespace deformseg::frontend {
 /// The summaries a store's clips get: `similarity::summarize(view, store_summary_chunks)`.
 inline constexpr std::size_t store_summary_chunks = 4;
 
-/// One clip an input names: its file, canonical and absolute, and its clip's name in a glTF file
-/// ("" for a file of one animation: frames, a point cache).
+/// "FILE", "FILE#CLIP" or "FILE#CLIP on BODY": a clip named for reports (`body` "": its own file's),
+/// of names as a store keeps them (`store::escaped_name`), which it joins as they are.
+std::string clip_name(const std::string& file, const std::string& clip, const std::string& body);
+
+/// One clip an input names: its file, canonical and absolute, its clip's name in a character file
+/// ("" for a file of one animation: frames, a point cache), and the body it plays on. One clip on
+/// two bodies is two clips, as a store holds them.
 struct Clip_source {
   std::string file;
   std::string clip;
-  /// The character file whose body the clip plays on (a labels row's `body_file`); empty: the
-  /// options' `body`.
+  /// The character file whose body the clip plays on, canonical and absolute (a labels row's
+  /// `body_file`, else the options' `body`); empty: its own file's body.
   std::string body{};
-  /// "FILE" or "FILE#CLIP", as reports name the clip.
-  std::string name() const { return clip.empty() ? file : file + "#" + clip; }
+  /// "FILE", "FILE#CLIP" or "FILE#CLIP on BODY", as reports name the clip: its names as a store
+  /// keeps them, UTF-8 whatever their bytes (`store::escaped_name`).
+  std::string name() const {
+    return clip_name(store::escaped_name(file), store::escaped_name(clip), store::escaped_name(body));
+  }
+  /// "FILE" or "FILE#CLIP": the clip as an input names it (its body given apart).
+  std::string input() const { return clip_name(file, clip, ""); }
 };
 
-/// The clips that `inputs` name, in their order, each once: an animation (frame files, a folder, a
+/// The clips that `inputs` name, in their order, each once (a clip on each of its bodies): an animation (frame files, a folder, a
 /// quoted glob, a point cache) is one clip; a glTF file with a clip (FILE.glb#CLIP or
 /// `options.clip`) that clip, without one every clip of the file of 2 frames or more at
 /// `options.fps` (the others, poses with no motion, named in `poses`); a labels CSV (`.csv`, the
 /// header of `evaluate`'s) the clip of each row (a glTF row without a clip takes `options.clip`,
-/// or the file's only clip).
+/// or the file's only clip; a row's `body_file`, else `options.body`, is its body).
 /// With `unreadable`, a character file that cannot be parsed is left out, noted there ("INPUT:
 /// the error"), instead of thrown.
 /// @throws invalid_input naming the input that does not exist, a glTF file that cannot be parsed,
@@ -47,7 +57,8 @@ std::vector<Clip_source> clip_sources(const std::vector<std::string>& inputs, co
                                       std::vector<std::string>& poses, std::vector<std::string>* unreadable = nullptr);
 
 /// The clip of each row of the labels CSV `labels` (`evaluate`'s), in the rows' order: a glTF row
-/// without a clip takes `options.clip`, or the file's only clip; a row's `body_file` is its body. With `unreadable`, a row whose
+/// without a clip takes `options.clip`, or the file's only clip; a row's `body_file`, else
+/// `options.body`, is its body. With `unreadable`, a row whose
 /// file cannot be parsed for its only clip is left out, noted there, instead of thrown.
 /// @throws invalid_input naming the labels file or the glTF file, as `clip_sources`.
 std::vector<Clip_source> labelled_clips(const std::string& labels, const Input_options& options,
@@ -74,27 +85,31 @@ std::string store_description(const similarity::Default_similarity& policy);
 Policy_choice stored_policy_choice(const store::Motion_store& store);
 
 /// The input options as a store records them: the options that change what is read (fps,
-/// topology, triangulate, weld as it applies to `file`, refuse_defects), as canonical JSON.
+/// topology, triangulate, weld as it applies to `file`, refuse_defects, body), as canonical JSON,
+/// the paths escaped (`store::escaped_name`).
 std::string input_options_text(const std::string& file, const Input_options& options);
 
-/// The input options a record holds (`input_options_text`), read back; the defaults when the text
-/// is not one this front end writes (the clip then reads as changed).
+/// The input options a record holds (`input_options_text`), read back, their paths unescaped
+/// (`store::unescaped_name`); the defaults when the text is not one this front end writes (the
+/// clip then reads as changed).
 Input_options recorded_input_options(const store::Store_record& record);
 
-/// The record of `clip` as its source is now (path, clip, options, size, modification time,
-/// topology; the file's hash with `hash`), without frame count and fps.
+/// The record of `clip` as its source is now (path, clip, body, options, size, modification time,
+/// topology or body file's stamp; the file's hash with `hash`), without frame count and fps. Its
+/// names (path, clip, body, topology, and the paths in its options) are escaped
+/// (`store::escaped_name`): a store keeps UTF-8, and a file name may be any bytes.
 /// @throws invalid_input naming the file when it cannot be read.
 store::Store_record source_record(const Clip_source& clip, const Input_options& options, bool hash);
 
 /// True when `stored` was described from the source `now` describes: the same input options,
-/// size and topology, and the same hash (`hash`, when `stored` has one) or modification time.
+/// size and topology (or body) file's path, size and time, and the same hash (`hash`, when `stored` has one) or modification time.
 bool unchanged(const store::Store_record& stored, const store::Store_record& now, bool hash);
 
 /// True when `stored` is the clip as its source is now: the same input options, size and topology,
 /// and the same modification time, or, when it differs, the same hash (if `stored` has one).
 bool up_to_date(const store::Store_record& stored, const Clip_source& clip, const Input_options& options);
 
-/// What `describe_into_store` did, each clip named ("FILE" or "FILE#CLIP").
+/// What `describe_into_store` did, each clip named ("FILE", "FILE#CLIP" or "FILE#CLIP on BODY").
 struct Describe_report {
   std::vector<std::string> described;    ///< new clips, added
   std::vector<std::string> redescribed;  ///< changed clips, replaced at their index
@@ -180,7 +195,10 @@ Description_plan plan_description(const std::string& folder, const std::vector<C
 Describe_report merge_stores(const std::string& folder, const std::vector<std::string>& parts,
                              const std::function<void(const std::string&)>& say);
 
-/// A store's clip `i` named for reports: "FILE" or "FILE#CLIP".
+/// A store's clip `i` named for reports: "FILE", "FILE#CLIP" or "FILE#CLIP on BODY".
 std::string stored_clip_name(const store::Motion_store& store, std::size_t i);
+
+/// The index of `clip` (its file, clip and body) in `store`, if it holds it.
+std::optional<std::size_t> find_clip(const store::Motion_store& store, const Clip_source& clip);
 
 }  // namespace deformseg::frontend

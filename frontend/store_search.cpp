@@ -111,7 +111,7 @@ std::vector<std::size_t> Store_search::labelled(const std::string& labels, const
   std::vector<std::size_t> indices;
   std::vector<std::string> missing, stale;
   for (const Clip_source& clip : labelled_clips(labels, read.value_or(Input_options{}))) {
-    const std::optional<std::size_t> at = store().find(clip.file, clip.clip);
+    const std::optional<std::size_t> at = find_clip(store(), clip);
     if (!at) {
       missing.push_back(clip.name());
       continue;

@@ -30,7 +30,7 @@ class Store_search {
   const store::Stored_motions& clips() const { return clips_; }
   const store::Motion_store& store() const { return clips_.store(); }
   const similarity::Default_similarity& policy() const { return policy_; }
-  /// Clip `i` named for reports: "FILE" or "FILE#CLIP".
+  /// Clip `i` named for reports: "FILE", "FILE#CLIP" or "FILE#CLIP on BODY".
   std::string name(std::size_t i) const;
 
   /// `query` described as the store's clips were, its rows on `threads` threads (0: all the
@@ -79,7 +79,8 @@ class Store_search {
   /// @throws invalid_input naming the option as `front` spells it (and the store, for `up`).
   void check_policy(const Policy_choice& asked, Front front) const;
   /// The store's index of the clip of each row of the labels CSV `labels`, in the rows' order (a
-  /// glTF row without a clip takes `read`'s, or the file's only one), each up to date with its
+  /// glTF row without a clip takes `read`'s, or the file's only one; the clip on the row's
+  /// `body_file`, else on `read`'s body), each up to date with its
   /// source (`up_to_date`) as read with `read` or, without, with the options it was described with.
   /// @throws invalid_input naming the store, listing the clips it lacks or holds as they were before
   /// their source changed, and saying how to describe them again as `front` does.

@@ -307,6 +307,20 @@ TEST_CASE("read_motion_labels: quoted fields as spreadsheets and R write them, a
   CHECK(rows[2].item.motion == "\"");
 }
 
+TEST_CASE("read_motion_labels: one clip on two bodies is two rows", "[evaluation]") {
+  // A library of animation-only clips lists each clip once per body it plays on.
+  const auto path = test::write_file("labels/bodies.csv",
+                                     "file,clip,motion,body_file\nclips/walk.fbx,,walk,x_bot.fbx\n"
+                                     "clips/walk.fbx,,walk,y_bot.fbx\nclips/walk.fbx,,walk,\n");
+  const std::vector<evaluation::Labelled_clip> rows = evaluation::read_motion_labels(path);
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[0].file == rows[1].file);
+  CHECK(rows[0].body_file == path.parent_path() / "x_bot.fbx");
+  CHECK(rows[1].body_file == path.parent_path() / "y_bot.fbx");
+  CHECK(rows[2].body_file.empty());
+  CHECK(rows[1].item.body == "y_bot.fbx");
+}
+
 TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]") {
   const auto fails = [](const std::string& name, const std::string& text, const std::string& message) {
     const auto path = test::write_file("labels/" + name, text);
@@ -321,6 +335,8 @@ TEST_CASE("read_motion_labels: errors name the file and the line", "[evaluation]
   fails("empty_motion.csv", "file,clip,motion\na.glb,x,\n", ":2: the motion field is empty (a distractor is '-')");
   fails("empty_file.csv", "file,clip,motion\n,x,walk\n", ":2: the file field is empty");
   fails("repeated.csv", "file,clip,motion\na.glb,x,walk\na.glb,x,run\n", ":3: clip 'x' of a.glb is listed twice");
+  fails("repeated_on_body.csv", "file,clip,motion,body_file\na.glb,x,walk,b.glb\na.glb,x,walk,\na.glb,x,run,b.glb\n",
+        ":4: clip 'x' of a.glb on b.glb is listed twice");
   fails("no_rows.csv", "file,clip,motion\n", ": the labels file lists no animation");
   fails("open_quote.csv", "file,clip,motion\na.glb,\"x,walk\n",
         ":2: field 2 opens a quote that the line does not close");

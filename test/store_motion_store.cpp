@@ -108,6 +108,7 @@ void store_test_check_clip(const store::Motion_store& store, std::size_t i, cons
   const store::Store_record r = store.record(i);
   CHECK(r.path == c.record.path);
   CHECK(r.clip == c.record.clip);
+  CHECK(r.body == c.record.body);
   CHECK(r.input_options == c.record.input_options);
   CHECK(r.source_size == c.record.source_size);
   CHECK(r.source_mtime_ns == c.record.source_mtime_ns);
@@ -236,6 +237,143 @@ TEST_CASE("motion store: clips are found by path and clip") {
   CHECK_FALSE(store.find("/data/set 0/clip\xc3\xa9.glb", "Take 3"));  // Take 3 is in set 1
   CHECK_FALSE(store.find("/nowhere", ""));
   CHECK_FALSE(store::Motion_store().find("/data", ""));
+}
+
+TEST_CASE("motion store: one clip on two bodies is two clips, each found by its body") {
+  const fs::path folder = test::fresh_dir("motion_store/bodies");
+  const auto on_body = [](std::size_t seed, const std::string& body) {
+    Store_test_clip c = store_test_clip(seed);
+    c.record.body = body;
+    c.record.topology_path = body;  // the body file's staleness stamp
+    return c;
+  };
+  const std::vector<std::string> bodies{"", "/data/x_bot.fbx", "/data/y b\xc3\xb6t.glb"};
+  {
+    store::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
+    for (const std::string& body : bodies) store_test_add(append, on_body(1, body));
+    CHECK_THROWS_WITH(store_test_add(append, on_body(1, bodies[1])),
+                      Catch::Contains("clip 3 (/data/set 0/clip\xc3\xa9.glb#Take 1 on /data/x_bot.fbx)") &&
+                          Catch::Contains("already holds this clip"));
+    append.commit();
+  }
+  const store::Motion_store store = store::Motion_store::open(folder, store::Verify::checksums);
+  REQUIRE(store.size() == 3);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    store_test_check_clip(store, i, on_body(1, bodies[i]));
+    CHECK(store.find("/data/set 0/clip\xc3\xa9.glb", "Take 1", bodies[i]) == i);
+  }
+  CHECK(store.find("/data/set 0/clip\xc3\xa9.glb", "Take 1") == 0);  // no body: the clip on its own
+  CHECK_FALSE(store.find("/data/set 0/clip\xc3\xa9.glb", "Take 1", "/data/z_bot.fbx"));
+
+  store::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
+  const Store_test_clip moved = on_body(1, bodies[2]);
+  CHECK_THROWS_WITH(append.replace(1, moved.record, moved.view(), moved.frames, moved.summary),
+                    Catch::Contains("clip 1 (/data/set 0/clip\xc3\xa9.glb#Take 1 on /data/x_bot.fbx): cannot be "
+                                    "replaced by clip 1 (/data/set 0/clip\xc3\xa9.glb#Take 1 on /data/y b\xc3\xb6t.glb)"));
+}
+
+namespace {
+
+// The store in `folder` (of one append) rewritten as version 1 of the format wrote it: 4 strings
+// per clip (path, clip, input options, topology path), no body.
+void store_test_as_version_1(const fs::path& folder) {
+  namespace si = store::internal;
+  const std::size_t clips = store::Motion_store::open(folder).size();
+  const std::string table_name = "clips-000001.npy", strings_name = "strings-000001.npy";
+  std::string table = store_test_bytes(folder / table_name);
+  const std::string strings = store_test_bytes(folder / strings_name);
+  const std::size_t table_header = table.size() - clips * si::clip_row_bytes;
+  std::uint64_t string_bytes = 0;
+  for (std::size_t i = 0; i < clips; ++i)
+    string_bytes += si::decode_clip_row(table.data() + table_header + i * si::clip_row_bytes).strings_length;
+  const std::size_t strings_header = strings.size() - string_bytes;
+  std::string old_strings;
+  for (std::size_t i = 0; i < clips; ++i) {
+    char* at = table.data() + table_header + i * si::clip_row_bytes;
+    si::Clip_row row = si::decode_clip_row(at);
+    std::string_view text(strings.data() + strings_header + row.strings, row.strings_length);
+    text.remove_suffix(text.size() - text.rfind('\0', text.size() - 2) - 1);  // the body and its NUL
+    row.strings = old_strings.size();
+    row.strings_length = static_cast<std::uint32_t>(text.size());
+    old_strings.append(text);
+    si::encode_clip_row(at, row);
+  }
+  const std::uint64_t shape[1] = {old_strings.size()};
+  const std::string header = si::npy_header("'|u1'", shape);
+  store_test_rewrite(folder, strings_name, header + old_strings, header.size());
+  store_test_rewrite(folder, table_name, table, table_header);
+  std::string manifest = store_test_bytes(folder / "store.json");
+  manifest.replace(manifest.find("\"version\": 2"), 12, "\"version\": 1");
+  const std::size_t checksum = manifest.rfind("\"checksum\"");
+  const std::string covered = manifest.substr(0, checksum);
+  store_test_put(folder / "store.json", covered + si::checksum_suffix(covered));
+}
+
+}  // namespace
+
+TEST_CASE("motion store: a store of version 1 is read, a character file's topology its body, appended as version 2") {
+  const fs::path folder = test::fresh_dir("motion_store/version_1");
+  const auto clip = [](std::size_t seed, const std::string& path, const std::string& topology, bool body) {
+    Store_test_clip c = store_test_clip(seed);
+    c.record.path = path;
+    c.record.topology_path = topology;
+    if (body) c.record.body = topology;
+    return c;
+  };
+  // Version 1 kept the body a character file's clip played on as its topology, the topology of a
+  // point cache alike.
+  const std::vector<Store_test_clip> clips{clip(1, "/data/walk.fbx", "/data/x_bot.fbx", true),
+                                           clip(2, "/data/Walk.GLB", "", false),
+                                           clip(3, "/data/tube.pc2", "/data/tube.obj", false)};
+  {
+    store::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
+    for (const Store_test_clip& c : clips) store_test_add(append, c);
+    append.commit();
+  }
+  store_test_as_version_1(folder);
+  const store::Motion_store old = store::Motion_store::open(folder, store::Verify::checksums);
+  CHECK(old.version() == 1);
+  REQUIRE(old.size() == 3);
+  for (std::size_t i = 0; i < clips.size(); ++i) store_test_check_clip(old, i, clips[i]);
+  CHECK(old.find("/data/walk.fbx", clips[0].record.clip, "/data/x_bot.fbx") == 0);
+
+  store_test_write(folder, 10, 2);  // appends to it, as version 2
+  const store::Motion_store upgraded = store::Motion_store::open(folder, store::Verify::checksums);
+  CHECK(upgraded.version() == 2);
+  REQUIRE(upgraded.size() == 5);
+  for (std::size_t i = 0; i < clips.size(); ++i) store_test_check_clip(upgraded, i, clips[i]);
+  store_test_check_clip(upgraded, 4, store_test_clip(11));
+}
+
+TEST_CASE("motion store: names of any bytes are kept escaped as UTF-8, and read back exactly") {
+  CHECK(store::escaped_name("/data/caf\xE9.glb") == "/data/caf\\xE9.glb");  // Latin-1: the byte E9
+  CHECK(store::escaped_name("/data/caf\xC3\xA9.glb") == "/data/caf\xC3\xA9.glb");  // UTF-8: kept
+  CHECK(store::escaped_name("a\\b\\xE9") == "a\\\\b\\\\xE9");
+  CHECK(store::escaped_name(std::string("\xC3\0\xFF", 3)) == std::string("\\xC3\0\\xFF", 9));
+  CHECK(store::unescaped_name("\\x4g\\q\\") == "\\x4g\\q\\");  // other backslashes kept
+  std::string bytes;
+  for (std::size_t seed = 0; seed < 2000; ++seed) {
+    bytes.push_back(static_cast<char>(store_test_mix(seed) % 7 == 0 ? '\\' : store_test_mix(seed) & 0xFF));
+    const std::string text = store::escaped_name(bytes);
+    CHECK(store::is_utf8(text));
+    CHECK(store::unescaped_name(text) == bytes);
+  }
+  // A store keeps a clip of a Latin-1 name escaped, and finds it by that.
+  const fs::path folder = test::fresh_dir("motion_store/names");
+  Store_test_clip c = store_test_clip(1);
+  c.record.path = store::escaped_name("/data/Kn\xE9ight.glb");
+  c.record.clip = store::escaped_name("Gr\xFC\xDF");
+  {
+    store::Store_append append(folder, store_test_options, 3, R"({"fields": ["lo", "hi", "mean"]})");
+    store_test_add(append, c);
+    Store_test_clip raw = store_test_clip(2);
+    raw.record.path = "/data/Kn\xE9ight.glb";
+    CHECK_THROWS_WITH(store_test_add(append, raw), Catch::Contains("a string that is not UTF-8"));
+    append.commit();
+  }
+  const store::Motion_store store = store::Motion_store::open(folder);
+  CHECK(store.find("/data/Kn\\xE9ight.glb", "Gr\\xFC\\xDF") == 0);
+  CHECK(store::unescaped_name(store.record(0).path) == "/data/Kn\xE9ight.glb");
 }
 
 TEST_CASE("motion store: an append with other options is refused, naming the option") {
@@ -390,10 +528,10 @@ TEST_CASE("motion store: a bad manifest, an unknown format and a newer version a
   CHECK(store_test_open_error(folder) ==
         manifest_path.string() + ": not a motion store: its manifest has no \"format\": \"deformseg-motion-store\"");
   std::string newer = manifest;
-  newer.replace(newer.find("\"version\": 1"), 12, "\"version\": 2");
+  newer.replace(newer.find("\"version\": 2"), 12, "\"version\": 3");
   store_test_put(manifest_path, with_checksum(newer));
   CHECK(store_test_open_error(folder) ==
-        manifest_path.string() + ": store version 2 is newer than this deformseg, which reads version 1");
+        manifest_path.string() + ": store version 3 is newer than this deformseg, which reads version 2");
   std::string lying = manifest;
   lying.replace(lying.find("\"clips\": 3"), 10, "\"clips\": 4");
   store_test_put(manifest_path, with_checksum(lying));
@@ -516,7 +654,7 @@ TEST_CASE("motion store: an out-of-range record is named with its clip") {
   CHECK_THAT(with_row([](store::internal::Clip_row& r) { r.strings += 1u << 20; }),
              Catch::Contains("clip 2: its strings at byte") && Catch::Contains("run past the end of"));
   CHECK_THAT(with_row([](store::internal::Clip_row& r) { r.strings_length -= 1; }),
-             Catch::Contains("clip 2: its strings are not 4 NUL-terminated strings"));
+             Catch::Contains("clip 2: its strings are not 5 NUL-terminated strings"));
   const store::internal::Clip_row clip0 = store::internal::decode_clip_row(original.data() + header);
   CHECK(with_row([&](store::internal::Clip_row& r) {  // clip 0's strings: the same clip twice
           r.strings = clip0.strings;

@@ -56,13 +56,19 @@ std::string verify_name(store::Verify verify) { return verify == store::Verify::
 
 std::string folder_of(const Opened_store& s) { return s.search.store().folder().string(); }
 
-// One path (str or os.PathLike) as text; `where` names the argument in the TypeError.
+// One path (str or os.PathLike) as its file name's bytes (os.fsencode: a name of bytes that are
+// not UTF-8, a Latin-1 name, comes as its own bytes); `where` names the argument in the TypeError.
 std::string path_text(const py::handle& item, const std::string& where) {
   if (!py::isinstance<py::str>(item) && !py::hasattr(item, "__fspath__"))
     throw py::type_error(where + ": expected a path (str or os.PathLike), got " + type_name(item));
   const py::object path = py::module_::import("os").attr("fspath")(item);
   if (!py::isinstance<py::str>(path)) throw py::type_error(where + ": expected a str path, got " + type_name(path));
-  return path.cast<std::string>();
+  return py::module_::import("os").attr("fsencode")(path).cast<std::string>();
+}
+
+// A file name's bytes as Python's str of it (os.fsdecode), which `path_text` reads back.
+py::str path_of_bytes(const std::string& bytes) {
+  return py::module_::import("os").attr("fsdecode")(py::bytes(bytes));
 }
 
 // describe_to_store's inputs: one path, or a sequence of them.
@@ -74,7 +80,7 @@ std::vector<std::string> input_paths(const py::object& inputs) {
   std::vector<std::string> paths;
   for (std::size_t i = 0; i < sequence.size(); ++i)
     paths.push_back(path_text(sequence[i], "inputs[" + std::to_string(i) + "]"));
-  if (paths.empty()) refuse("inputs: no input; name animations, character files (glTF, FBX, Collada) or labels CSVs");
+  if (paths.empty()) refuse("inputs: no input; name animations, character files (glTF, FBX, Collada, BVH) or labels CSVs");
   return paths;
 }
 
@@ -98,23 +104,34 @@ py::dict describe_to_store(const py::object& inputs, const std::filesystem::path
 }
 
 // What `describe` of deformseg.distributed hands out: the clips describe_to_store would describe, in
-// its order, named as inputs name them ('FILE' or 'FILE#CLIP'), and those it would skip.
+// its order, named as reports name them ('FILE', 'FILE#CLIP' or 'FILE#CLIP on BODY'), as inputs name
+// them with the body each plays on ('' for its own), and those it would skip.
 py::dict describe_plan(const py::object& inputs, const std::filesystem::path& store,
                        const frontend::Input_options& options, const frontend::Policy_choice& choice, bool hash) {
   const std::vector<std::string> paths = input_paths(inputs);
   const similarity::Default_similarity policy = frontend::store_policy(choice, frontend::Front::python);
   frontend::check(options, frontend::Front::python);
   frontend::check_clip_applies(paths, options, frontend::Front::python);
-  std::vector<std::string> poses, described;
+  std::vector<std::string> poses, described, inputs_of_clips, bodies;
   frontend::Description_plan plan;
   {
     Interruptible_call call;
     const std::vector<frontend::Clip_source> clips = frontend::clip_sources(paths, options, poses);
     plan = frontend::plan_description(store.string(), clips, options, policy, hash);
-    for (const std::size_t i : plan.order) described.push_back(clips[i].name());
+    for (const std::size_t i : plan.order) {
+      described.push_back(clips[i].name());
+      inputs_of_clips.push_back(clips[i].input());
+      bodies.push_back(clips[i].body);
+    }
+  }
+  py::list clip_inputs, clip_bodies;  // file names as Python gives them: back to describe_to_store as they are
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    clip_inputs.append(path_of_bytes(inputs_of_clips[k]));
+    clip_bodies.append(path_of_bytes(bodies[k]));
   }
   return py::dict("store"_a = store.string(), "clips"_a = plan.report.clips, "describe"_a = described,
-                  "skipped"_a = plan.report.skipped, "poses_left_out"_a = poses);
+                  "inputs"_a = clip_inputs, "bodies"_a = clip_bodies, "skipped"_a = plan.report.skipped,
+                  "poses_left_out"_a = poses);
 }
 
 py::dict merge_stores(const std::filesystem::path& store, const std::vector<std::filesystem::path>& parts) {
@@ -167,7 +184,7 @@ std::optional<similarity::Clip_range> clip_range(const py::object& range, const 
 py::dict record_dict(const Opened_store& s, std::size_t i) {
   const store::Store_record r = s.search.store().record(i);
   return py::dict("index"_a = i, "name"_a = s.search.name(i), "path"_a = r.path, "clip"_a = r.clip,
-                  "frames"_a = r.frame_count, "fps"_a = r.fps, "rows"_a = r.rows,
+                  "body"_a = r.body, "frames"_a = r.frame_count, "fps"_a = r.fps, "rows"_a = r.rows,
                   "input_options"_a = python_of(nlohmann::json::parse(r.input_options, nullptr, false)),
                   "source_size"_a = r.source_size, "source_mtime_ns"_a = r.source_mtime_ns,
                   "source_hash"_a = r.source_hash, "topology_path"_a = r.topology_path);
@@ -186,7 +203,8 @@ py::dict nearest_dict(const Opened_store& s, const similarity::Nearest_motions& 
     const similarity::Neighbour& n = found.neighbours[r];
     const store::Store_record record = s.search.store().record(n.index);
     neighbours.append(py::dict("rank"_a = r + 1, "index"_a = n.index, "name"_a = s.search.name(n.index),
-                               "path"_a = record.path, "clip"_a = record.clip, "value"_a = n.value));
+                               "path"_a = record.path, "clip"_a = record.clip, "body"_a = record.body,
+                               "value"_a = n.value));
   }
   return py::dict("neighbours"_a = neighbours, "pruning"_a = pruning_dict(found.pruning));
 }
@@ -264,7 +282,7 @@ py::list find_in_store(const Opened_store& s, const Animation& query, long long 
   for (const similarity::Clip_match& c : matches) {
     const store::Store_record record = s.search.store().record(c.clip);
     out.append(py::dict("index"_a = c.clip, "name"_a = s.search.name(c.clip), "path"_a = record.path,
-                        "clip"_a = record.clip, "first"_a = c.match.first, "last"_a = c.match.last,
+                        "clip"_a = record.clip, "body"_a = record.body, "first"_a = c.match.first, "last"_a = c.match.last,
                         "value"_a = c.match.value, "alignment"_a = c.match.alignment));
   }
   return out;
@@ -433,7 +451,8 @@ readable while another process appends to it; this object goes on showing what i
             for (std::size_t i = 0; i < s.search.size(); ++i) names.push_back(s.search.name(i));
             return names;
           },
-          "Each clip named as reports name it: 'FILE' or 'FILE#CLIP', FILE canonical and absolute.")
+          "Each clip named as reports name it: 'FILE', 'FILE#CLIP' or 'FILE#CLIP on BODY' (a clip played on "
+          "another file's body), FILE and BODY canonical and absolute.")
       .def_property_readonly(
           "records",
           [](const Opened_store& s) {
@@ -441,17 +460,19 @@ readable while another process appends to it; this object goes on showing what i
             for (std::size_t i = 0; i < s.search.size(); ++i) out.append(record_dict(s, i));
             return out;
           },
-          "Per clip, a dict of index, name, path, clip ('' for a file of one animation), frames (its frame "
+          "Per clip, a dict of index, name, path, clip ('' for a file of one animation), body (the character "
+          "file whose body the clip played on, '' for its own), frames (its frame "
           "count), fps, rows (described instants), input_options (a dict), source_size, source_mtime_ns, "
           "source_hash (0: none) and topology_path: the keys of the tool's `store info --json` clips, with "
           "name and topology_path.")
       .def("index_of",
-           [](const Opened_store& s, const std::filesystem::path& path, const std::string& clip) {
-             return s.search.store().find(path.string(), clip);
-           },
-           "path"_a, "clip"_a = "",
-           "The index of the clip of `path` (canonical and absolute, as records give it) and `clip` (default '': "
-           "a file of one animation), or None. Complexity O(log N).")
+           [](const Opened_store& s, const std::filesystem::path& path, const std::string& clip,
+              const std::filesystem::path& body) { return s.search.store().find(path.string(), clip, body.string()); },
+           "path"_a, "clip"_a = "", "body"_a = "",
+           "The index of the clip of `path` (canonical and absolute, as records give it: a name of bytes that are "
+           "not UTF-8 escaped, a Latin-1 byte E9 as \\xE9) and `clip` (default '': "
+           "a file of one animation) played on `body` (canonical and absolute; default '': its own file's body), "
+           "or None: one clip on two bodies is two clips. Complexity O(log N).")
       .def("signatures", &signatures, "i"_a,
            "Clip i's signatures: an (R, W) float32 array, one row per described instant, a read-only view "
            "of the store's mapping (no copy; strides (4, 4 R): the store keeps them dimension-major) that "
@@ -470,7 +491,8 @@ readable while another process appends to it; this object goes on showing what i
 `search`), or like a query described by `describe`: `query` described as the clips were, then
 searched exactly, with lower bounds and
 early abandoning (chapter 14). Returns a dict: neighbours, a list of dicts of rank (from 1), index,
-name, path, clip and value (similarity(query, clip).value under the store's policy, exactly as
+name, path, clip, body ('' for the clip's own) and value (similarity(query, clip).value under the
+store's policy, exactly as
 similarity_matrix gives it), best first, ties by index; and pruning, a dict of the counts
 candidates, pruned_by_summary, pruned_by_rows, abandoned, aligned, rows_aligned, rows_abandoned
 and pruned_share (the share of candidates never aligned whole). k (default 10): at most the
@@ -488,7 +510,7 @@ of the query, at worst N alignments. Releases the GIL.)doc")
       .def("find", &find_in_store, "query"_a, "count"_a = 3, py::kw_only(), "shortest"_a = 0.5, "threads"_a = 0,
            R"doc(Where the Animation `query` occurs in the store's clips (the tool's `find --store`):
 at most `count` (default 3) non-overlapping windows over all the clips, best first (ties by clip
-index), each a dict of index, name, path, clip, first and last (the window in the clip's stored
+index), each a dict of index, name, path, clip, body, first and last (the window in the clip's stored
 frames), value and alignment ((row of the query, frame of the clip) pairs). Each clip is searched
 as find_motion searches a long animation, but valued on the descriptions as stored: value is 1
 minus the mean dissimilarity along the warping path (1 for a window cut from the clip itself).
@@ -521,7 +543,8 @@ per clip of Tc rows. Releases the GIL.)doc")
                   frontend::Input_options, frontend::Policy_choice>(
       m, "_describe_plan",
       "The clips describe_to_store(inputs, store, ...) would describe, in its order, and those it would skip: "
-      "a dict of store, clips (the store's count now), describe and skipped (the clips' names), "
+      "a dict of store, clips (the store's count now), describe and skipped (the clips' names), inputs and "
+      "bodies (per clip to describe, its input 'FILE' or 'FILE#CLIP' and the body it plays on, '' for its own), "
       "poses_left_out. Raises InvalidInput as describe_to_store. Releases the GIL.",
       &describe_plan, std::tuple{py::arg("inputs"), py::arg("store"), py::kw_only()},
       std::tuple{py::arg_v("hash", false)});
@@ -555,11 +578,12 @@ animation as read_animation reads it (frame files, a folder, a glob, a point cac
 `topology`, FILE.glb#CLIP), a glTF, FBX or Collada file without a clip (every clip of 2 frames or more; its poses
 of one frame are left out and listed), or a labels CSV (evaluate's: the clip of each row). New
 clips are added, changed ones described again in place, unchanged ones skipped: a clip is
-unchanged when its path, clip, input options, size and modification time (with hash=True, the
-hash of its bytes instead of the time) are those recorded. Clips are committed 64 at a time and
+unchanged when its input options, size and modification time (with hash=True, the hash of its
+bytes instead of the time), and its body file's size and time, are those recorded. Clips are committed 64 at a time and
 at the end: an interrupted or failed run keeps what it committed, and a second run describes the
 rest. Returns a dict: store, clips (the store's count after the run), described, redescribed and
-skipped (the clips' names, 'FILE' or 'FILE#CLIP'), unreadable ('NAME: the error' for each input
+skipped (the clips' names, 'FILE', 'FILE#CLIP' or 'FILE#CLIP on BODY': a labels row's clip plays
+on its body_file, and one clip on two bodies is two clips), unreadable ('NAME: the error' for each input
 or clip left out by skip_unreadable), poses_left_out. up (default None: the policy's default,
 none): the signatures' up direction, recorded in the store; a store takes clips of one
 description only. hash (default False). skip_unreadable (default False): leave out the inputs

@@ -21,7 +21,8 @@ import zlib
 import numpy as np
 
 FORMAT = "deformseg-motion-store"
-VERSION = 1
+VERSION = 2  # version 2 keys a clip by its body too: five strings per clip, version 1's four
+_CHARACTER_EXTENSIONS = (".glb", ".gltf", ".fbx", ".dae", ".bvh")  # io::is_character_file
 BLOCK_ALIGNMENT_FLOATS = 16
 
 #: The clip table's dtype: one packed little-endian record per clip, in index order.
@@ -142,7 +143,8 @@ class Store:
         self.summary_width = manifest["summary_width"]
         self._strings = strings
         self._segments = segments  # generation -> (signatures, frames, summaries)
-        self._index = {}  # (path, clip) -> index, filled by read_store as it checks each clip
+        self._index = {}  # (path, clip, body) -> index, filled by read_store as it checks each clip
+        self._bodies = {}  # index -> body, filled alike
 
     def __len__(self):
         return len(self.clips)
@@ -162,15 +164,17 @@ class Store:
         return self._segments[int(record["segment"])][2][int(record["summary_row"])]
 
     def strings(self, i):
-        """Clip ``i``'s (path, clip, input options, topology path)."""
+        """Clip ``i``'s (path, clip, input options, topology path, body): its body "" for its own
+        file's (a store of version 1 kept a character file's body as its topology path)."""
         record = self.clips[i]
         start = int(record["strings"])
         text = bytes(self._strings[start:start + int(record["strings_length"])])
-        return tuple(part.decode("utf-8") for part in text.split(b"\0")[:4])
+        return tuple(part.decode("utf-8") for part in text.split(b"\0")[:4]) + (self._bodies[i],)
 
-    def find(self, path, clip=""):
-        """The index of the clip of ``path`` and ``clip`` ("" for a single-animation file), or None."""
-        return self._index.get((path, clip))
+    def find(self, path, clip="", body=""):
+        """The index of the clip of ``path`` and ``clip`` ("" for a single-animation file) played on
+        ``body`` ("" for its own file's), or None: one clip on two bodies is two clips."""
+        return self._index.get((path, clip, body))
 
 
 def _check_clip(store, i, verify, table_path):
@@ -179,14 +183,18 @@ def _check_clip(store, i, verify, table_path):
     if start + length > len(store._strings):
         _fail(table_path, f"clip {i}: its strings at byte {start} ({length} bytes) run past the end of the strings")
     parts = bytes(store._strings[start:start + length]).split(b"\0")
-    if len(parts) != 5 or parts[4] != b"" or not parts[0]:
-        _fail(table_path, f"clip {i}: its strings are not 4 NUL-terminated strings, the path not empty")
+    count = 5 if store.manifest["version"] >= 2 else 4
+    if len(parts) != count + 1 or parts[count] != b"" or not parts[0]:
+        _fail(table_path, f"clip {i}: its strings are not {count} NUL-terminated strings, the path not empty")
     try:
-        path, clip = parts[0].decode("utf-8"), parts[1].decode("utf-8")
-        parts[2].decode("utf-8"), parts[3].decode("utf-8")
+        path, clip, _, topology, *body = (part.decode("utf-8") for part in parts[:count])
     except UnicodeDecodeError:
         _fail(table_path, f"clip {i}: its strings are not valid UTF-8")
-    name = f"clip {i} ({path}{'#' + clip if clip else ''})"
+    if count == 4:  # version 1 kept a character file's body as its topology (it has no other)
+        body = [topology if path.lower().endswith(_CHARACTER_EXTENSIONS) else ""]
+    body = body[0]
+    store._bodies[i] = body
+    name = f"clip {i} ({path}{'#' + clip if clip else ''}{' on ' + body if body else ''})"
     generation = int(record["segment"])
     if generation not in store._segments:
         _fail(table_path, f"{name}: its generation {generation} is not among the store's segments")
@@ -214,7 +222,7 @@ def _check_clip(store, i, verify, table_path):
         if zlib.crc32(store.summary(i).tobytes(), crc) != int(record["block_crc32"]):
             _fail(table_path, f"{name}: its block's checksum does not match: its data in generation "
                               f"{generation} is corrupted")
-    return (path, clip)
+    return (path, clip, body)
 
 
 def read_store(path, verify=False):
@@ -258,7 +266,7 @@ def read_store(path, verify=False):
     for i in range(count):
         key = _check_clip(store, i, verify, folder / table_name)
         if key in keys:
-            _fail(folder / table_name, f"clip {i} ({key[0]}{'#' + key[1] if key[1] else ''}): "
-                                       f"the same clip as clip {keys[key]}")
+            _fail(folder / table_name, f"clip {i} ({key[0]}{'#' + key[1] if key[1] else ''}"
+                                       f"{' on ' + key[2] if key[2] else ''}): the same clip as clip {keys[key]}")
         keys[key] = i
     return store

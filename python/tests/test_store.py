@@ -8,6 +8,7 @@ import doctest
 import os
 import pickle
 import re
+import zlib
 
 import numpy as np
 import pytest
@@ -332,6 +333,85 @@ def test_labels_with_body_files_play_each_clip_on_its_body(characters, tmp_path)
     store = deformseg.open_store(tmp_path / "S")
     assert [record["input_options"].get("body") for record in store.records] == [str(barbarian.resolve()), None]
     assert np.array_equal(store.signatures(0), store.signatures(1))
+
+
+def test_one_clip_on_two_bodies_is_two_clips(characters, tmp_path):
+    # The Knight's Idle on the Barbarian's body and on its own: two clips of the store, each found
+    # by its body, named with it, and evaluated from the store.
+    knight, barbarian = characters / "Knight.glb", characters / "Barbarian.glb"
+    labels = tmp_path / "labels.csv"
+    labels.write_text(f"file,clip,motion,body_file\n{knight},Idle,idle,{barbarian}\n{knight},Idle,idle,{knight}\n"
+                      f"{barbarian},Idle,idle,\n")
+    report = deformseg.describe_to_store(labels, tmp_path / "S")
+    k, b = str(knight.resolve()), str(barbarian.resolve())
+    assert report["described"] == [f"{k}#Idle on {b}", f"{k}#Idle on {k}", f"{b}#Idle"]
+    store = deformseg.open_store(tmp_path / "S")
+    assert [(r["path"], r["clip"], r["body"]) for r in store.records] == [(k, "Idle", b), (k, "Idle", k), (b, "Idle", "")]
+    assert store.names == report["described"]
+    assert [store.index_of(k, "Idle", body) for body in (b, k, "")] == [0, 1, None]
+    assert store.index_of(barbarian.resolve(), "Idle") == 2
+    found = store.search(deformseg.read_animation(f"{barbarian}#Idle"), 3)["neighbours"]
+    assert {(n["index"], n["body"]) for n in found} == {(0, b), (1, k), (2, "")}
+    assert all(n["name"] == store.names[n["index"]] for n in found)
+    assert deformseg.evaluate(store, labels).queries == 3
+    assert [strings[4] for strings in map(store_format.read_store(tmp_path / "S").strings, range(3))] == [b, k, ""]
+    assert deformseg.describe_to_store(labels, tmp_path / "S")["skipped"] == report["described"]
+
+
+def test_a_latin1_file_name_is_stored_escaped(characters, tmp_path):
+    # A file name of Latin-1 bytes (os.fsdecode gives Python's str of it): kept as UTF-8, its byte E9
+    # as \xE9, named so in the report and the records, and found again (skipped) by a second call.
+    knight = tmp_path / os.fsdecode(b"Kn\xe9ight.glb")
+    knight.write_bytes((characters / "Knight.glb").read_bytes())
+    kept = str(tmp_path.resolve()) + "/Kn\\xE9ight.glb"
+    report = deformseg.describe_to_store(f"{knight}#Idle", tmp_path / "S")
+    assert report["described"] == [kept + "#Idle"]
+    store = deformseg.open_store(tmp_path / "S")
+    assert (store.records[0]["path"], store.index_of(kept, "Idle")) == (kept, 0)
+    assert deformseg.describe_to_store(f"{knight}#Idle", tmp_path / "S")["skipped"] == [kept + "#Idle"]
+
+
+def as_version_1(folder):
+    """The store in `folder` (of one append) rewritten as version 1 of the format wrote it: 4 strings
+    per clip (path, clip, input options, topology path), no body."""
+    table_path, strings_path = (folder / store_format.file_name(kind, 1) for kind in ("clips", "strings"))
+    table_bytes = table_path.read_bytes()
+    table = np.load(table_path).copy()
+    header = len(table_bytes) - table.nbytes
+    strings, old = np.load(strings_path).tobytes(), bytearray()
+    for row in table:
+        start, length = int(row["strings"]), int(row["strings_length"])
+        four = b"\0".join(strings[start:start + length].split(b"\0")[:4]) + b"\0"
+        row["strings"], row["strings_length"] = len(old), len(four)
+        old += four
+    np.save(strings_path, np.frombuffer(bytes(old), dtype=np.uint8))
+    table_path.write_bytes(table_bytes[:header] + table.tobytes())
+    text = (folder / "store.json").read_text().replace('"version": 2', '"version": 1')
+    for path in (table_path, strings_path):
+        data = path.read_bytes()
+        crc = zlib.crc32(data[len(data) - (table.nbytes if path == table_path else len(old)):])
+        text = re.sub(rf'("name": "{path.name}",\s*"bytes": )\d+(,\s*"data_crc32": )\d+',
+                      rf"\g<1>{len(data)}\g<2>{crc}", text)
+    covered = text[:text.rindex('"checksum"')].encode()
+    (folder / "store.json").write_bytes(covered + f'"checksum": "crc32:{zlib.crc32(covered):08x}"}}\n'.encode())
+
+
+def test_a_store_of_version_1_is_read_its_bodies_from_the_topology(characters, tmp_path):
+    # Version 1 kept the body a character file's clip played on as its topology path: both readers
+    # read it as the clip's body, and the next describe finds the clips unchanged.
+    knight, barbarian = characters / "Knight.glb", characters / "Barbarian.glb"
+    labels = tmp_path / "labels.csv"
+    labels.write_text(f"file,clip,motion,body_file\n{knight},Idle,idle,{barbarian}\n{knight},Walking_A,walk,\n")
+    deformseg.describe_to_store(labels, tmp_path / "S")
+    as_version_1(tmp_path / "S")
+    b = str(barbarian.resolve())
+    for verify in (False, True):
+        old = store_format.read_store(tmp_path / "S", verify=verify)
+        assert old.manifest["version"] == 1 and [old.strings(i)[4] for i in range(2)] == [b, ""]
+    store = deformseg.open_store(tmp_path / "S", verify="checksums")
+    assert [r["body"] for r in store.records] == [b, ""]
+    deformseg.evaluate(store, labels)  # every labelled clip found on its body
+    assert len(deformseg.describe_to_store(labels, tmp_path / "S")["skipped"]) == 2
 
 
 # ---- a store that is not one ----------------------------------------------------------------------

@@ -48,7 +48,7 @@ def test_reads_what_the_cpp_writer_wrote_bit_for_bit(store, verify):
         assert signatures.tobytes() == values.tobytes()
         assert clip_frames.tobytes() == frames.tobytes()
         assert s.summary(c).tobytes() == summary.tobytes()
-        assert s.strings(c) == (f"/motions/set{c // 4}.glb", f"Take{c % 4}", "weld=1", "")
+        assert s.strings(c) == (f"/motions/set{c // 4}.glb", f"Take{c % 4}", "weld=1", "", "")
         assert s.find(f"/motions/set{c // 4}.glb", f"Take{c % 4}") == c
         record = s.clips[c]
         assert (record["source_size"], record["source_mtime_ns"], record["fps"]) == \

@@ -75,7 +75,8 @@ void read_whole(const fs::path& folder) {
     for (const std::uint32_t frame : store.frames(i)) sum += static_cast<float>(frame);
     for (const float value : store.summary(i)) sum += value;
     const store::Store_record record = store.record(i);
-    if (store.find(record.path, record.clip) != i) fuzz::finding("find", "a clip not found by its own path and name");
+    if (store.find(record.path, record.clip, record.body) != i)
+      fuzz::finding("find", "a clip not found by its own path, name and body");
   }
   volatile float keep = sum;  // every float read
   (void)keep;

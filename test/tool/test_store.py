@@ -159,6 +159,20 @@ def test_unreadable_clip_leaves_the_store(tool, scratch, store, clips):
     assert (store / "store.json").read_bytes() == manifest
 
 
+def test_a_run_that_produces_nothing_fails(tool, scratch, clips):
+    # Every input unreadable: the run says so on one line and exits 1, whatever --skip-unreadable.
+    broken = [broken_copy(scratch, clips[k], f"nothing-{k}") for k in range(2)]
+    folder = scratch / "store-nothing"
+    run = fails(tool("describe", *broken, "--store", folder, "--skip-unreadable"),
+                "deformseg: error: ", "nothing described: every input was unreadable (2)")
+    assert "unreadable   2" in run.out
+    # A store of no clip has no graph to give, as it has no neighbour to search.
+    fails(tool("knn-graph", "--store", folder, "-k", "1"), "the store holds no clip")
+    # Unchanged clips skipped are a store that holds them: not a failure.
+    succeeds(tool("describe", clips[0], "--store", scratch / "store-again"))
+    succeeds(tool("describe", clips[0], "--store", scratch / "store-again"))
+
+
 def copies_of(scratch, clips, name, count):
     """`count` copies of the four tubes' folders, in turn: as many clips to describe."""
     folders = []
@@ -430,7 +444,53 @@ def test_describe_labels_with_body_files(tool, scratch, characters):
     for query, clip in [(f"{barbarian}#Idle", "Idle"), (f"{rogue}#Walking_A", "Walking_A")]:
         found = tool("search", query, "--store", folder, "-k", "1", "--json", "-").json()["queries"][0]["neighbours"][0]
         assert found["value"] == 1.0 and found["clip"] == clip
-    assert describe(tool, folder, labels)["skipped"] == [f"{knight.resolve()}#Idle", f"{knight.resolve()}#Walking_A"]
+    assert describe(tool, folder, labels)["skipped"] == [f"{knight.resolve()}#Idle on {barbarian.resolve()}",
+                                                         f"{knight.resolve()}#Walking_A on {rogue.resolve()}"]
+
+
+def test_one_clip_on_two_bodies_is_two_clips(tool, scratch, characters):
+    # The Knight's clips played on the Barbarian's body and on its own, a row per body, as a library
+    # of animation-only clips lists them: each clip once per body in the store, found, searched,
+    # evaluated and reported with its body.
+    knight, barbarian = characters / "Knight.glb", scratch / "two-bodies-Barbarian.glb"
+    shutil.copyfile(characters / "Barbarian.glb", barbarian)
+    rows = [(knight, "Idle", "idle", barbarian), (knight, "Idle", "idle", knight),
+            (knight, "Walking_A", "walk", barbarian), (knight, "Walking_A", "walk", knight),
+            (characters / "Barbarian.glb", "Idle", "idle", "")]
+    labels = scratch / "labels-two-bodies.csv"
+    labels.write_text("file,clip,motion,body_file\n" + "".join(f"{f},{c},{m},{b}\n" for f, c, m, b in rows))
+    folder = scratch / "store-two-bodies"
+    on = {body: f" on {body.resolve()}" for body in (knight, barbarian)}
+    described = describe(tool, folder, labels)["described"]
+    assert described == [f"{knight.resolve()}#{clip}{on[body]}" for _, clip, _, body in rows[:4]] + \
+        [f"{(characters / 'Barbarian.glb').resolve()}#Idle"]
+    clips = store_info(tool, folder)["clips"]
+    assert [(c["clip"], c["body"]) for c in clips] == [(clip, str(body.resolve()) if body else "")
+                                                       for _, clip, _, body in rows]
+    # The Barbarian's Idle is the Knight's Idle on the Barbarian's body: found first, at 1, named with it.
+    found = tool("search", f"{characters / 'Barbarian.glb'}#Idle", "--store", folder, "-k", "5", "--json", "-")
+    neighbours = found.json()["queries"][0]["neighbours"]
+    assert len(neighbours) == 5
+    assert {(n["clip"], n["body"]) for n in neighbours} == {(c["clip"], c["body"]) for c in clips}
+    best = [n for n in neighbours if n["value"] == 1.0]
+    assert {(n["path"], n["clip"], n["body"]) for n in best} >= {(str(knight.resolve()), "Idle", str(barbarian.resolve()))}
+    text = succeeds(tool("search", f"{characters / 'Barbarian.glb'}#Idle", "--store", folder, "-k", "5")).output
+    assert f"{knight.resolve()}#Idle{on[barbarian]}" in text and f"{knight.resolve()}#Idle{on[knight]}" in text
+    # evaluate --store compares the five, as evaluate of the files does.
+    from_files = evaluate_figures(tool("evaluate", labels, "--json", "-"))
+    from_store = evaluate_figures(tool("evaluate", labels, "--store", folder, "--json", "-"))
+    assert from_store == from_files
+    graph = tool("knn-graph", "--store", folder, "-k", "1", "--json", "-").json()
+    assert [c["body"] for c in graph["clips"]] == [c["body"] for c in clips]
+    assert {e["source_body"] for e in graph["edges"]} == {c["body"] for c in clips}
+    edges = succeeds(tool("knn-graph", "--store", folder, "-k", "1", "--csv", "-")).output
+    assert f"{knight.resolve()}#Walking_A{on[barbarian]}" in edges
+    # Unchanged, skipped; the Barbarian's body touched, only the clips played on it described again.
+    assert len(describe(tool, folder, labels)["skipped"]) == 5
+    os.utime(barbarian, ns=(time.time_ns(), time.time_ns() + 10**9))
+    assert describe(tool, folder, labels)["redescribed"] == [f"{knight.resolve()}#{clip}{on[barbarian]}"
+                                                             for clip in ("Idle", "Walking_A")]
+    succeeds(tool("evaluate", labels, "--store", folder))
 
 
 def test_describe_with_a_body(tool, scratch, characters):
@@ -445,6 +505,8 @@ def test_describe_with_a_body(tool, scratch, characters):
     assert record["input_options"]["body"] == str(body.resolve())
     found = tool("search", f"{characters / 'Barbarian.glb'}#Idle", "--store", folder, "-k", "1", "--json", "-")
     assert found.json()["queries"][0]["neighbours"][0]["value"] == 1.0
-    assert describe(tool, folder, clip, extra=["--body", body])["skipped"] == [record["path"] + "#Idle"]
+    assert record["body"] == str(body.resolve())
+    named = f"{record['path']}#Idle on {body.resolve()}"
+    assert describe(tool, folder, clip, extra=["--body", body])["skipped"] == [named]
     os.utime(body, ns=(time.time_ns(), time.time_ns() + 10**9))
-    assert describe(tool, folder, clip, extra=["--body", body])["redescribed"] == [record["path"] + "#Idle"]
+    assert describe(tool, folder, clip, extra=["--body", body])["redescribed"] == [named]

@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -31,6 +32,9 @@ struct Labelled_clip {
   /// @brief The character file whose body the clip plays on (the `body_file` column, relative to
   /// the labels file's folder), as the tool's `--body`; empty when the row names none.
   std::filesystem::path body_file{};
+  /// @brief The 1-based line of the labels file that gives the row, so that an error in reading
+  /// its clip can name it; 0 for a row not read from a file.
+  std::size_t line = 0;
 };
 
 }  // namespace deformseg::evaluation
@@ -148,11 +152,12 @@ namespace deformseg::evaluation {
 /// (`Labelled_clip::body_file`); `body` defaults to the `body_file` field as written, else the
 /// `file` field, and `rig` to empty. Empty lines and lines starting with `#` are skipped.
 /// @param path the CSV file.
-/// @return the rows in the file's order, `file` relative to the CSV's folder.
+/// @return the rows in the file's order, `file` relative to the CSV's folder, each with its line.
 /// @throws invalid_input naming the file (and the 1-based line) when it cannot be read, when the
 /// header names an unknown or repeated column or lacks a required one, when a row has another
 /// number of fields than the header, an empty file or motion field, a quote its line does not
-/// close or text after a closing quote, or repeats a (file, clip) pair; or when it has no row.
+/// close or text after a closing quote, or repeats a (file, clip, body_file) triple (one clip on
+/// two bodies is two rows: a clip per body); or when it has no row.
 /// @par Complexity O(size of the file + R log R) for R rows.
 /// @par Example
 /// @include read_motion_labels.cpp
@@ -164,7 +169,7 @@ inline std::vector<Labelled_clip> read_motion_labels(const std::filesystem::path
   const std::filesystem::path folder = path.parent_path();
   std::optional<l::Columns> columns;
   std::vector<Labelled_clip> rows;
-  std::set<std::pair<std::string, std::string>> seen;
+  std::set<std::tuple<std::string, std::string, std::string>> seen;  // (file, clip, body_file): a clip per body
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -176,8 +181,11 @@ inline std::vector<Labelled_clip> read_motion_labels(const std::filesystem::path
       continue;
     }
     Labelled_clip row = l::read_row(line, *columns, folder, where);
-    if (!seen.emplace(row.file.string(), row.item.clip).second)
-      throw invalid_input("clip '" + row.item.clip + "' of " + row.file.filename().string() + " is listed twice",
+    row.line = number;
+    if (!seen.emplace(row.file.string(), row.item.clip, row.body_file.string()).second)
+      throw invalid_input("clip '" + row.item.clip + "' of " + row.file.filename().string() +
+                              (row.body_file.empty() ? "" : " on " + row.body_file.filename().string()) +
+                              " is listed twice",
                           where);
     rows.push_back(std::move(row));
   }

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/io/character_files.h>
 #include <deformseg/similarity/motion_signature_view.h>
 #include <deformseg/store/internal/file_io.h>
 #include <deformseg/store/internal/manifest.h>
@@ -30,14 +31,22 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 namespace deformseg::store {
 
 /// @brief A motion store opened for reading: the descriptions of its clips, memory-mapped, their
-/// records, and a lookup by (path, clip). Clip `i` is the `i`-th of the clip table; a clip keeps
-/// its index across appends (a replaced one too), new clips come at the end.
+/// records, and a lookup by (path, clip, body): one clip played on N bodies is N clips of the
+/// store. Clip `i` is the `i`-th of the clip table; a clip keeps its index across appends (a
+/// replaced one too), new clips come at the end.
+///
+/// Stores of version 1 (before bodies were part of the key) are read: a record of a character file
+/// (`io::is_character_file`: glTF, FBX, Collada, BVH) whose `topology_path` names a file is read with
+/// that file as its body (version 1 kept the body there; a character file has no other topology),
+/// any other record body-less. The next append that adds or replaces a clip writes the store as
+/// version 2.
 ///
 /// The files of a store are never modified once written (an append writes new ones and a new
 /// manifest), so an open store stays valid while others append; a mapping keeps a file readable
@@ -75,6 +84,9 @@ public:
   const std::filesystem::path& folder() const noexcept { return folder_; }
   /// @brief The number of appends committed (0 for an empty store of no folder).
   std::uint64_t generation() const noexcept { return generation_; }
+  /// @brief The format's version the store was written in: 1 (clips keyed by path and clip) or 2
+  /// (by path, clip and body); an empty store of no folder gives the version appends write.
+  std::uint64_t version() const noexcept { return version_; }
   /// @brief The number of clips.
   std::size_t size() const noexcept { return entries_.size(); }
   /// @brief The values per signature, the same for every clip (0 while the store holds none).
@@ -116,19 +128,20 @@ public:
     Store_record r = e.record;
     r.path = e.path;
     r.clip = e.clip;
+    r.body = e.body;
     r.input_options = e.input_options;
     r.topology_path = e.topology_path;
     return r;
   }
 
-  /// @brief The index of the clip of `path` and `clip` ("" for a single-animation file), if any.
+  /// @brief The index of the clip of `path` and `clip` ("" for a single-animation file) played on
+  /// `body` (default "": its own file's body), if any: the key of `Store_record`.
   /// @par Complexity O(log size()).
-  std::optional<std::size_t> find(std::string_view path, std::string_view clip) const {
-    const auto key = std::pair{path, clip};
-    const auto at = std::lower_bound(by_key_.begin(), by_key_.end(), key, [&](std::size_t i, const auto& k) {
-      return std::pair{entries_[i].path, entries_[i].clip} < k;
-    });
-    if (at == by_key_.end() || std::pair{entries_[*at].path, entries_[*at].clip} != key) return std::nullopt;
+  std::optional<std::size_t> find(std::string_view path, std::string_view clip, std::string_view body = {}) const {
+    const Key key{path, clip, body};
+    const auto at = std::lower_bound(by_key_.begin(), by_key_.end(), key,
+                                     [&](std::size_t i, const Key& k) { return key_of(i) < k; });
+    if (at == by_key_.end() || key_of(*at) != key) return std::nullopt;
     return *at;
   }
 
@@ -138,7 +151,7 @@ private:
   struct Entry {
     Store_record record;  // numbers only; the strings are the views below
     std::size_t segment = 0;
-    std::string_view path, clip, input_options, topology_path;
+    std::string_view path, clip, input_options, topology_path, body;
   };
   struct Segment {
     std::uint64_t generation = 0;
@@ -149,7 +162,7 @@ private:
     std::uint64_t floats = 0, frame_count = 0, summary_rows = 0;
   };
   struct Manifest {
-    std::uint64_t generation = 0, width = 0, summary_width = 0, clips = 0;
+    std::uint64_t version = 0, generation = 0, width = 0, summary_width = 0, clips = 0;
     std::vector<std::uint64_t> segments;
     std::map<std::string, internal::Store_file> files;
     std::string description, summary_layout;
@@ -157,10 +170,15 @@ private:
 
   std::string path_of(std::string_view name) const { return (folder_ / name).string(); }
 
+  // A clip's key, which no two clips share: (path, clip, body).
+  using Key = std::tuple<std::string_view, std::string_view, std::string_view>;
+  Key key_of(std::size_t i) const { return {entries_[i].path, entries_[i].clip, entries_[i].body}; }
+
   static Motion_store open_once(const std::filesystem::path& folder, Verify verify) {
     Motion_store store;
     store.folder_ = folder;
     const Manifest manifest = store.read_manifest();
+    store.version_ = manifest.version;
     store.generation_ = manifest.generation;
     store.width_ = manifest.width;
     store.summary_width_ = manifest.summary_width;
@@ -260,6 +278,7 @@ private:
     using V = internal::Json::value_t;
     check_format_and_checksum(json, text, file);
     Manifest m;
+    m.version = json.at("version").get<std::uint64_t>();
     m.generation = count_member(json, "generation", file, 999'999'999);
     m.width = count_member(json, "width", file, internal::max_width);
     m.summary_width = count_member(json, "summary_width", file, internal::max_width);
@@ -365,24 +384,27 @@ private:
                                 std::to_string(length), " bytes) run past the end of ",
                                 path_of(internal::store_file_name("strings", generation_))));
     std::string_view text(base + offset, length);
-    std::string_view* parts[] = {&e.path, &e.clip, &e.input_options, &e.topology_path};
-    for (std::string_view* part : parts) {
+    const std::size_t count = internal::clip_string_count(version_);
+    const std::string expected = internal::join(std::to_string(count), " NUL-terminated strings");
+    std::string_view* parts[] = {&e.path, &e.clip, &e.input_options, &e.topology_path, &e.body};
+    for (std::string_view* part : std::span(parts).first(count)) {
       const std::size_t end = text.find('\0');
       if (end == std::string_view::npos)
-        clip_error(internal::join("clip ", std::to_string(i), ": its strings are not 4 NUL-terminated strings"));
+        clip_error(internal::join("clip ", std::to_string(i), ": its strings are not ", expected));
       *part = text.substr(0, end);
       if (!internal::valid_utf8(*part))
         clip_error(internal::join("clip ", std::to_string(i), ": its strings are not valid UTF-8"));
       text.remove_prefix(end + 1);
     }
     if (!text.empty() || e.path.empty())
-      clip_error(internal::join("clip ", std::to_string(i),
-                                ": its strings are not 4 NUL-terminated strings, the path not empty"));
+      clip_error(
+          internal::join("clip ", std::to_string(i), ": its strings are not ", expected, ", the path not empty"));
+    if (version_ < 2 && io::is_character_file(e.path)) e.body = e.topology_path;  // where version 1 kept the body
   }
 
   void check_entry(std::size_t i, const Entry& e, Verify verify) const {
     const Store_record& r = e.record;
-    const std::string name = internal::clip_name(i, e.path, e.clip);
+    const std::string name = internal::clip_name(i, e.path, e.clip, e.body);
     const Segment& s = segments_[e.segment];
     const auto past = [&](std::string_view kind, std::string_view what) {
       clip_error(internal::join(name, ": ", what, " run past the end of ",
@@ -425,23 +447,24 @@ private:
       const auto segment = std::lower_bound(segments_.begin(), segments_.end(), row.numbers.block.generation,
                                             [](const Segment& s, std::uint64_t g) { return s.generation < g; });
       if (segment == segments_.end() || segment->generation != row.numbers.block.generation)
-        clip_error(internal::join(internal::clip_name(i, e.path, e.clip), ": its generation ",
+        clip_error(internal::join(internal::clip_name(i, e.path, e.clip, e.body), ": its generation ",
                                   std::to_string(row.numbers.block.generation), " is not among the store's segments"));
       e.segment = static_cast<std::size_t>(segment - segments_.begin());
       check_entry(i, e, verify);
     }
     by_key_.resize(rows);
     for (std::size_t i = 0; i < rows; ++i) by_key_[i] = i;
-    const auto key = [&](std::size_t i) { return std::pair{entries_[i].path, entries_[i].clip}; };
-    std::sort(by_key_.begin(), by_key_.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+    std::sort(by_key_.begin(), by_key_.end(), [&](std::size_t a, std::size_t b) { return key_of(a) < key_of(b); });
     for (std::size_t k = 1; k < rows; ++k)
-      if (key(by_key_[k - 1]) == key(by_key_[k]))
-        clip_error(internal::join(internal::clip_name(by_key_[k], entries_[by_key_[k]].path, entries_[by_key_[k]].clip),
-                                  ": the same clip as clip ", std::to_string(by_key_[k - 1])));
+      if (key_of(by_key_[k - 1]) == key_of(by_key_[k])) {
+        const Entry& e = entries_[by_key_[k]];
+        clip_error(internal::join(internal::clip_name(by_key_[k], e.path, e.clip, e.body), ": the same clip as clip ",
+                                  std::to_string(by_key_[k - 1])));
+      }
   }
 
   std::filesystem::path folder_;
-  std::uint64_t generation_ = 0;
+  std::uint64_t version_ = internal::store_version, generation_ = 0;
   std::size_t width_ = 0, summary_width_ = 0;
   std::string description_ = "{}", summary_layout_ = "{}";
   std::map<std::string, internal::Store_file> files_;

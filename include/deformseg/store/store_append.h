@@ -27,6 +27,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -101,26 +102,27 @@ public:
   /// @pre `view.rows >= 1`, `view.width` equal to the store's (any, for the first clip of a new
   /// store), `frames.size() == view.rows`, `summary.size() == summary_width`; `record.path` not
   /// empty; the strings valid UTF-8 without NUL; `record.fps` positive and finite; no clip of the
-  /// same (path, clip) in the store or in this append (replace it instead).
+  /// same (path, clip, body) in the store or in this append (replace it instead): the same clip on
+  /// another body is another clip.
   /// @returns its index. @throws invalid_input naming the clip when a precondition fails.
   /// @par Complexity O(its floats) (written to the new data file).
   std::size_t add(Store_record record, similarity::Motion_signature_view view, std::span<const std::uint32_t> frames,
                   std::span<const float> summary) {
     const std::size_t index = size();
     check_clip(index, record, view, frames, summary);
-    if (base_.find(record.path, record.clip) || added_keys_.count({record.path, record.clip}))
-      throw invalid_input(internal::join(internal::clip_name(index, record.path, record.clip),
+    if (base_.find(record.path, record.clip, record.body) || added_keys_.count(key_of(record)))
+      throw invalid_input(internal::join(internal::clip_name(index, record.path, record.clip, record.body),
                                          ": the store already holds this clip; replace it rather than add it"),
                           {.file = folder_.string()});
     write_block(record, view, frames, summary);
-    added_keys_[{record.path, record.clip}] = index;
+    added_keys_[key_of(record)] = index;
     added_.push_back(std::move(record));
     return index;
   }
 
   /// @brief Replaces clip `index` (of the store or of this append) by a new description of the same
-  /// (path, clip), keeping its index: as `add` otherwise.
-  /// @pre `index < size()`, and the record names the same path and clip as the one it replaces.
+  /// (path, clip, body), keeping its index: as `add` otherwise.
+  /// @pre `index < size()`, and the record names the same path, clip and body as the one it replaces.
   /// @throws invalid_input naming the clip when a precondition fails.
   /// @par Complexity O(its floats).
   void replace(std::size_t index, Store_record record, similarity::Motion_signature_view view,
@@ -131,9 +133,11 @@ public:
                           {.file = folder_.string()});
     check_clip(index, record, view, frames, summary);
     const Store_record old = index < base_.size() ? base_.record(index) : added_[index - base_.size()];
-    if (old.path != record.path || old.clip != record.clip)
-      throw invalid_input(internal::join(internal::clip_name(index, old.path, old.clip), ": cannot be replaced by ",
-                                         internal::clip_name(index, record.path, record.clip), ", another clip"),
+    if (key_of(old) != key_of(record))
+      throw invalid_input(internal::join(internal::clip_name(index, old.path, old.clip, old.body),
+                                         ": cannot be replaced by ",
+                                         internal::clip_name(index, record.path, record.clip, record.body),
+                                         ", another clip"),
                           {.file = folder_.string()});
     write_block(record, view, frames, summary);
     if (index < base_.size()) replaced_[index] = std::move(record);
@@ -175,7 +179,9 @@ public:
   }
 
 private:
-  using Key = std::pair<std::string, std::string>;
+  using Key = std::tuple<std::string, std::string, std::string>;
+
+  static Key key_of(const Store_record& r) { return {r.path, r.clip, r.body}; }
 
   internal::Json parse_object(std::string_view json, std::string_view what) const {
     internal::Json value = internal::parse_json(json, folder_.string(), internal::max_json_depth - 1);
@@ -230,13 +236,13 @@ private:
 
   void check_clip(std::size_t index, const Store_record& r, const similarity::Motion_signature_view& view,
                   std::span<const std::uint32_t> frames, std::span<const float> summary) {
-    const std::string name = internal::clip_name(index, r.path, r.clip);
+    const std::string name = internal::clip_name(index, r.path, r.clip, r.body);
     const auto fail = [&](const std::string& what) {
       throw invalid_input(internal::join(name, ": ", what), {.file = folder_.string()});
     };
     if (committed_) fail("the append is already committed");
     if (r.path.empty()) fail("its path is empty");
-    for (const std::string* text : {&r.path, &r.clip, &r.input_options, &r.topology_path})
+    for (const std::string* text : {&r.path, &r.clip, &r.input_options, &r.topology_path, &r.body})
       if (text->find('\0') != std::string::npos || !internal::valid_utf8(*text))
         fail("a string that is not UTF-8 without NUL");
     if (!(r.fps > 0) || !std::isfinite(r.fps)) fail("its fps is not positive and finite");
@@ -297,7 +303,7 @@ private:
                              : replaced != replaced_.end() ? replaced->second
                                                            : base_.record(i);
       internal::Clip_row row{r, strings.size(), 0};
-      for (const std::string* text : {&r.path, &r.clip, &r.input_options, &r.topology_path})
+      for (const std::string* text : {&r.path, &r.clip, &r.input_options, &r.topology_path, &r.body})
         strings.append(*text).push_back('\0');
       row.strings_length = static_cast<std::uint32_t>(strings.size() - row.strings);
       internal::encode_clip_row(table.data() + i * internal::clip_row_bytes, row);

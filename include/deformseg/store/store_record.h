@@ -1,11 +1,13 @@
 /// @file store/store_record.h
-/// @brief What a motion store keeps of a clip: its record (`Store_record`: source file, clip, read
-/// options, staleness keys, frames) and where its data is (`Store_block`); how far opening a store
-/// verifies it (`Verify`); and `hash_file`, the hash of a source file a record keeps.
+/// @brief What a motion store keeps of a clip: its record (`Store_record`: source file, clip, body,
+/// read options, staleness keys, frames) and where its data is (`Store_block`); how far opening a store
+/// verifies it (`Verify`); `hash_file`, the hash of a source file a record keeps; and
+/// `escaped_name`, the UTF-8 text of a name of any bytes, which its record keeps.
 #pragma once
 
 #include <deformseg/exceptions.h>
 #include <deformseg/store/internal/file_io.h>
+#include <deformseg/store/internal/utf8.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -13,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -33,14 +36,20 @@ struct Store_block {
   std::uint32_t crc32 = 0;
 };
 
-/// @brief What a motion store records of one clip besides its description: where it came from,
-/// so that a later append can tell an unchanged clip from a changed one, and where its data is.
-/// The store keeps the values as given; it interprets none of them but `rows` and `block`.
+/// @brief What a motion store records of one clip besides its description: which clip it is
+/// (`path`, `clip` and `body`, its key in the store), where it came from, so that a later append can
+/// tell an unchanged clip from a changed one, and where its data is. The store keeps the values as
+/// given; it interprets none of them but the key, `rows` and `block`. Its strings are UTF-8 without
+/// NUL: a name of other bytes (a POSIX file name may be any) is given as `escaped_name` writes it.
 struct Store_record {
   /// @brief The source file's path, canonical and absolute as the caller gives it; not empty.
   std::string path;
   /// @brief The clip's name in the file; "" for a file of a single animation.
   std::string clip;
+  /// @brief The character file whose body the clip played on, canonical and absolute as the caller
+  /// gives it; "" for none (the clip's own file's body, or a file that is not a character file).
+  /// A store holds a clip once per body: (path, clip, body) is its key.
+  std::string body;
   /// @brief The options the clip was read with, as the caller spells them canonically.
   std::string input_options;
   /// @brief The source file's size in bytes.
@@ -50,7 +59,8 @@ struct Store_record {
   /// @brief A hash of the source file's bytes (`hash_file`), or 0 for none.
   std::uint64_t source_hash = 0;
   /// @brief The path of the file the clip was read with besides its source, "" for none: the
-  /// topology (mesh) of a point cache, or the body a character file's clip played on.
+  /// topology (mesh) of a point cache, or the body a character file's clip played on (then equal to
+  /// `body`: its size and time below are the body file's staleness stamp).
   std::string topology_path;
   /// @brief The topology file's size in bytes (0 without one).
   std::uint64_t topology_size = 0;
@@ -74,6 +84,64 @@ enum class Verify {
   /// @brief Also the CRC-32 of every data file and every clip's block: reads every byte.
   checksums
 };
+
+/// @brief Whether `text` is valid UTF-8 (no overlong form, no surrogate, at most U+10FFFF), as a
+/// store's strings must be.
+/// @par Complexity O(size of `text`).
+inline bool is_utf8(std::string_view text) noexcept { return internal::valid_utf8(text); }
+
+/// @brief `name` (a file's path, a clip's name) as UTF-8 text, which a store's strings must be,
+/// whatever its bytes (a POSIX file name is any bytes but '/' and NUL: a Latin-1 name, say): its
+/// bytes as they are, but a backslash written `\\` and each byte that is not part of a valid UTF-8
+/// sequence written `\xHH` (two upper-case hexadecimal digits); `unescaped_name` reads it back.
+/// A name of valid UTF-8 without a backslash is kept as it is.
+/// @par Example
+/// The Latin-1 file name café.glb, whose é is the one byte E9 (not UTF-8), is kept as `caf\xE9.glb`;
+/// in UTF-8 (é the bytes C3 A9) as `café.glb`; the name `a\b` as `a\\b`.
+/// @par Complexity O(size of `name`).
+inline std::string escaped_name(std::string_view name) {
+  constexpr char hex[] = "0123456789ABCDEF";
+  std::string text;
+  text.reserve(name.size());
+  for (std::size_t i = 0; i < name.size();) {
+    const std::size_t length = internal::utf8_sequence_length(name, i);
+    if (length == 0) {
+      const auto byte = static_cast<unsigned char>(name[i++]);
+      text.append("\\x").push_back(hex[byte >> 4]);
+      text.push_back(hex[byte & 0xFu]);
+      continue;
+    }
+    if (name[i] == '\\') text.push_back('\\');
+    text.append(name.substr(i, length));
+    i += length;
+  }
+  return text;
+}
+
+/// @brief The bytes of the name `escaped_name` wrote as `text`: `\\` a backslash, `\xHH` the byte
+/// HH; a backslash in any other sequence is kept as it is. `unescaped_name(escaped_name(s)) == s`
+/// for any bytes s.
+/// @par Complexity O(size of `text`).
+inline std::string unescaped_name(std::string_view text) {
+  const auto digit = [](char c) -> int {
+    return c >= '0' && c <= '9' ? c - '0' : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
+  };
+  std::string name;
+  name.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\\' && i + 1 < text.size() && text[i + 1] == '\\') {
+      name.push_back('\\');
+      ++i;
+    } else if (text[i] == '\\' && i + 3 < text.size() && text[i + 1] == 'x' && digit(text[i + 2]) >= 0 &&
+               digit(text[i + 3]) >= 0) {
+      name.push_back(static_cast<char>(digit(text[i + 2]) * 16 + digit(text[i + 3])));
+      i += 3;
+    } else {
+      name.push_back(text[i]);
+    }
+  }
+  return name;
+}
 
 /// @brief A 64-bit hash of the bytes of the file `path` (FNV-1a, never 0: 0 means "no hash" in a
 /// `Store_record`), for telling a changed source file from a touched one.

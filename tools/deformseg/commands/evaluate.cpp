@@ -95,7 +95,7 @@ std::vector<File_rows> rows_by_file(const std::vector<evaluation::Labelled_clip>
   for (const File_rows& f : files)
     if (!io::is_character_file(f.file) && f.rows.size() > 1)
       throw invalid_input("lists " + std::to_string(f.rows.size()) + " clips of " + f.file.string() +
-                              ", which is not a character file (glTF, FBX, Collada) and holds one animation",
+                              ", which is not a character file (glTF, FBX, Collada, BVH) and holds one animation",
                           {.file = o.labels});
   return files;
 }
@@ -115,8 +115,11 @@ public:
 
   std::size_t size() const { return order_.size(); }
   const evaluation::Labelled_clip& clip(std::size_t k) const { return rows_[order_[k].row]; }
-  // "FILE clip 'NAME'", as a skipped clip is named.
-  std::string name(std::size_t k) const { return clip(k).file.string() + " clip '" + clip(k).item.clip + "'"; }
+  // "FILE clip 'NAME'", with " on BODY" for a row's body_file, as a skipped clip is named.
+  std::string name(std::size_t k) const {
+    const std::filesystem::path& body = clip(k).body_file;
+    return clip(k).file.string() + " clip '" + clip(k).item.clip + "'" + (body.empty() ? "" : " on " + body.string());
+  }
 
   // The animation of clip k, as `frontend::read_input` reads it.
   // @throws invalid_input as the reader (the file's, for every clip of a file that cannot be opened).
@@ -251,10 +254,12 @@ nlohmann::json scores_json(const evaluation::Retrieval_scores& s) {
           {"per_motion", per_motion}, {"per_query", per_query}};
 }
 
-// A clip as the labels name it: its file's name, and #CLIP for a clip of a glTF file.
+// A clip as the labels name it: its file's name, #CLIP for a clip of a character file, " on BODY" for a
+// row's body_file.
 std::string clip_name(const evaluation::Labelled_clip& clip) {
   const std::string file = clip.file.filename().string();
-  return clip.item.clip.empty() ? file : file + "#" + clip.item.clip;
+  const std::string name = clip.item.clip.empty() ? file : file + "#" + clip.item.clip;
+  return clip.body_file.empty() ? name : name + " on " + clip.body_file.filename().string();
 }
 
 // One line per query: what it found nearest, and at which rank the first clip of its motion came.
@@ -317,11 +322,12 @@ Eigen::MatrixXd matrix_of_clips(Compared_clips& compared, const Evaluate_options
       const std::string clip_text = clip.item.clip.empty() ? "" : " clip '" + clip.item.clip + "'";
       const std::string what = reading ? reader.name(lost.index) + ": " + lost.error.what()
                                        : clip.file.string() + clip_text + ": " + lost.error.what();
+      const Input_location row{.file = o.labels, .line = clip.line};  // the labels file's row names it too
       if (!o.skip_unreadable) {
-        if (reading) throw lost.error;
-        throw invalid_input(what + " (--skip-unreadable leaves it out)");
+        if (reading) throw invalid_input(lost.error.what(), row);
+        throw invalid_input(what + " (--skip-unreadable leaves it out)", row);
       }
-      progress("skipped " + what);
+      progress(std::string("skipped ") + invalid_input(what, row).what());
       compared.skipped.push_back(what);
     }
   for (const std::size_t k : matrix.kept) compared.clips.push_back(reader.clip(k));
@@ -332,20 +338,15 @@ Eigen::MatrixXd matrix_of_clips(Compared_clips& compared, const Evaluate_options
 Eigen::MatrixXd matrix_of_store(Compared_clips& compared, const Evaluate_options& o, Matrix_progress& report) {
   const frontend::Store_search library(o.store);
   library.check_policy(o.policy, frontend::Front::command_line);
-  // The rows grouped by file, in the order of first appearance, as Clip_reader orders them.
+  // The rows grouped by file and body, in the order of first appearance, as Clip_reader orders them.
   const std::vector<evaluation::Labelled_clip> rows = evaluation::read_motion_labels(o.labels);
   const std::vector<std::size_t> at = library.labelled(o.labels, o.read, frontend::Front::command_line);
   std::vector<std::size_t> selected;
-  std::vector<bool> taken(rows.size(), false);
-  for (std::size_t first = 0; first < rows.size(); ++first) {
-    if (taken[first]) continue;
-    for (std::size_t i = first; i < rows.size(); ++i)
-      if (rows[i].file == rows[first].file) {
-        taken[i] = true;
-        compared.clips.push_back(rows[i]);
-        selected.push_back(at[i]);
-      }
-  }
+  for (const File_rows& of : rows_by_file(rows, o))
+    for (const std::size_t i : of.rows) {
+      compared.clips.push_back(rows[i]);
+      selected.push_back(at[i]);
+    }
   progress("comparing " + std::to_string(selected.size()) + " clips of " + o.store + " pair by pair");
   report = Matrix_progress{.descriptions = 0};
   return library.matrix(std::move(selected), std::ref(report), o.read.threads);
@@ -358,6 +359,9 @@ void run_evaluate(const Evaluate_options& o) {
   Matrix_progress report;
   const Eigen::MatrixXd m = o.store.empty() ? matrix_of_clips(read, o, report) : matrix_of_store(read, o, report);
   const double matrix_seconds = seconds_since(report.start);
+  if (read.clips.empty())
+    throw invalid_input("nothing evaluated: every row was unreadable (" + std::to_string(read.skipped.size()) + ")",
+                        {.file = o.labels});
   std::vector<evaluation::Labelled_item> items;
   for (const auto& clip : read.clips) items.push_back(clip.item);
   const evaluation::Retrieval_scores scores = evaluation::evaluate_retrieval(m, items);
@@ -370,7 +374,7 @@ void run_evaluate(const Evaluate_options& o) {
     nlohmann::json inputs = nlohmann::json::array(), rows = nlohmann::json::array();
     for (const auto& clip : read.clips)
       inputs.push_back({{"file", clip.file.string()}, {"clip", clip.item.clip}, {"motion", clip.item.motion},
-                        {"body", clip.item.body}, {"rig", clip.item.rig}});
+                        {"body", clip.item.body}, {"body_file", clip.body_file.string()}, {"rig", clip.item.rig}});
     for (Eigen::Index i = 0; i < m.rows(); ++i) {
       rows.push_back(nlohmann::json::array());
       for (Eigen::Index j = 0; j < m.cols(); ++j) rows.back().push_back(m(i, j));
@@ -392,6 +396,8 @@ void run_evaluate(const Evaluate_options& o) {
     print_scores(scores, items.size());
     if (o.per_query) print_per_query(scores, read.clips);
   });
+  if (scores.queries == 0)
+    throw invalid_input("nothing evaluated: no clip has a candidate of another body to rank", {.file = o.labels});
 }
 
 }  // namespace
@@ -410,7 +416,8 @@ void add_evaluate_command(CLI::App& app) {
   add_parameters(*command, frontend::input_parameters, o->read);
   command->add_option("--store", o->store,
                       "Compare the labelled clips as a motion store holds them (deformseg describe LABELS --store S), "
-                      "without reading or describing them; a clip missing or changed since is an error");
+                      "each on its row's body_file, without reading or describing them; a clip missing or changed "
+                      "since (its file or its body file) is an error");
   command->add_flag("--skip-unreadable", o->skip_unreadable,
                     "Leave out, with a line on standard error, the clips that cannot be read or described (a "
                     "pose of one frame), instead of stopping");

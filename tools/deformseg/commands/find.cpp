@@ -45,7 +45,7 @@ void run_find_in_store(const Find_command_options& o) {
   nlohmann::json found = nlohmann::json::array();
   for (const similarity::Clip_match& c : matches) {
     const store::Store_record record = library.store().record(c.clip);
-    found.push_back({{"clip_index", c.clip}, {"path", record.path}, {"clip", record.clip},
+    found.push_back({{"clip_index", c.clip}, {"path", record.path}, {"clip", record.clip}, {"body", record.body},
                      {"first", c.match.first}, {"last", c.match.last}, {"similarity", c.match.value},
                      {"alignment", alignment_json(c.match)}});
   }

@@ -154,7 +154,7 @@ Eigen::MatrixXd matrix_of(const Matrix_command_options& o, std::vector<std::stri
     const store::Store_record record = library.store().record(i);
     names.push_back(library.name(i));
     const nlohmann::json clip = record.clip.empty() ? nlohmann::json() : nlohmann::json(record.clip);
-    records.push_back({{"file", record.path}, {"clip", clip}, {"fps", record.fps}});
+    records.push_back({{"file", record.path}, {"clip", clip}, {"body", record.body}, {"fps", record.fps}});
   }
   progress("comparing the " + std::to_string(library.size()) + " clips of " + o.store + " pair by pair");
   Matrix_progress report{.descriptions = 0};

@@ -62,6 +62,12 @@ void run_describe(const Describe_options& o) {
     for (const auto& name : report.redescribed) std::cout << "  re-described " << name << '\n';
     for (const auto& line : report.unreadable) std::cout << "  unreadable   " << line << '\n';
   });
+  if (report.described.empty() && report.redescribed.empty() && report.skipped.empty())
+    throw invalid_input("nothing described: " +
+                            (report.unreadable.empty() ? std::string("the inputs hold no clip")
+                                                       : "every input was unreadable (" +
+                                                             std::to_string(report.unreadable.size()) + ")"),
+                        {.file = o.store});
 }
 
 // ---- deformseg search QUERY... --store S -----------------------------------------------------
@@ -87,6 +93,7 @@ nlohmann::json neighbours_json(const std::vector<similarity::Neighbour>& neighbo
   for (std::size_t r = 0; r < neighbours.size(); ++r) {
     const store::Store_record record = store.record(neighbours[r].index);
     found.push_back({{"rank", r + 1}, {"index", neighbours[r].index}, {"path", record.path}, {"clip", record.clip},
+                     {"body", record.body}, {"name", frontend::clip_name(record.path, record.clip, record.body)},
                      {"value", neighbours[r].value}});
   }
   return found;
@@ -124,11 +131,9 @@ void run_search(const Search_options& o) {
       const auto& p = q["pruning"];
       std::cout << "query " << q["query"].get<std::string>() << "  (" << p["candidates"] << " candidates, "
                 << p["aligned"] << " aligned whole)\n";
-      for (const auto& n : q["neighbours"]) {
-        const std::string clip = n["clip"].get<std::string>();
+      for (const auto& n : q["neighbours"])
         std::cout << "  " << n["rank"] << "  " << value_text(n["value"].get<double>()) << "  "
-                  << n["path"].get<std::string>() << (clip.empty() ? "" : "#" + clip) << '\n';
-      }
+                  << n["name"].get<std::string>() << '\n';
     }
   });
 }
@@ -176,6 +181,7 @@ void write_edges_csv(const std::vector<similarity::Nearest_motions>& graph, cons
 void run_knn_graph(const Knn_options& o) {
   const frontend::Store_search library(o.store);
   const store::Motion_store& store = library.store();
+  if (store.size() == 0) throw invalid_input("the store holds no clip", {.file = o.store});
   progress("searching the " + std::to_string(store.size()) + " clips' nearest " + std::to_string(o.k));
   const auto start = std::chrono::steady_clock::now();
   const std::vector<similarity::Nearest_motions> graph =
@@ -189,13 +195,14 @@ void run_knn_graph(const Knn_options& o) {
     nlohmann::json edges = nlohmann::json::array(), clips = nlohmann::json::array();
     for (std::size_t i = 0; i < store.size(); ++i) {
       const store::Store_record record = store.record(i);
-      clips.push_back({{"index", i}, {"name", library.name(i)}, {"path", record.path}, {"clip", record.clip}});
+      clips.push_back({{"index", i}, {"name", library.name(i)}, {"path", record.path}, {"clip", record.clip},
+                       {"body", record.body}});
       for (std::size_t r = 0; r < graph[i].neighbours.size(); ++r) {
         const similarity::Neighbour& n = graph[i].neighbours[r];
         const store::Store_record target = store.record(n.index);
         edges.push_back({{"source", i}, {"target", n.index}, {"rank", r + 1}, {"value", n.value},
-                         {"source_path", record.path}, {"source_clip", record.clip}, {"target_path", target.path},
-                         {"target_clip", target.clip}});
+                         {"source_path", record.path}, {"source_clip", record.clip}, {"source_body", record.body},
+                         {"target_path", target.path}, {"target_clip", target.clip}, {"target_body", target.body}});
       }
     }
     document = {{"store", o.store}, {"k", o.k},          {"clips", clips},
@@ -205,8 +212,8 @@ void run_knn_graph(const Knn_options& o) {
     std::size_t edges = 0;
     for (const auto& node : graph) edges += node.neighbours.size();
     std::cout << "clips       " << store.size() << "\nedges       " << edges << "\ncandidates  " << total.candidates
-              << "\naligned     " << total.aligned << " whole (" << exact(100 * total.pruned_share())
-              << " % pruned before a full alignment)\nseconds     " << exact(seconds) << '\n';
+              << "\naligned     " << total.aligned << " whole (" << percent_text(total.pruned_share())
+              << " % pruned before a full alignment)\nseconds     " << seconds_text(seconds) << '\n';
   }, o.csv == "-");
 }
 
@@ -221,10 +228,11 @@ nlohmann::json clips_json(const store::Motion_store& store) {
   nlohmann::json clips = nlohmann::json::array();
   for (std::size_t i = 0; i < store.size(); ++i) {
     const store::Store_record r = store.record(i);
-    clips.push_back({{"index", i}, {"path", r.path}, {"clip", r.clip}, {"frames", r.frame_count}, {"fps", r.fps},
-                     {"rows", r.rows}, {"input_options", nlohmann::json::parse(r.input_options, nullptr, false)},
+    clips.push_back({{"index", i}, {"path", r.path}, {"clip", r.clip}, {"body", r.body}, {"frames", r.frame_count},
+                     {"fps", r.fps}, {"rows", r.rows},
+                     {"input_options", nlohmann::json::parse(r.input_options, nullptr, false)},
                      {"source_size", r.source_size}, {"source_mtime_ns", r.source_mtime_ns},
-                     {"source_hash", r.source_hash}});
+                     {"source_hash", r.source_hash}, {"topology_path", r.topology_path}});
   }
   return clips;
 }
@@ -233,6 +241,7 @@ void run_store_info(const Store_command_options& o) {
   const store::Motion_store store = store::Motion_store::open(o.store);
   const nlohmann::json document = {{"store", o.store},
                                    {"generation", store.generation()},
+                                   {"version", store.version()},
                                    {"clips", clips_json(store)},
                                    {"width", store.width()},
                                    {"summary_width", store.summary_width()},
@@ -261,9 +270,11 @@ void add_describe_command(CLI::App& app) {
   auto o = std::make_shared<Describe_options>();
   CLI::App* command = app.add_subcommand(
       "describe", "Describe clips once into a motion store: new clips are added, changed ones described again, "
-                  "unchanged ones skipped");
+                  "unchanged ones skipped; a clip is its file, its name and the body it plays on (one clip on two "
+                  "bodies is two clips of the store)");
   add_inputs(*command, "inputs", o->inputs, 1, -1, o->read,
-             "The clips: every clip of a glTF, FBX or Collada file that names none, or a labels CSV (evaluate's) for its rows; or");
+             "The clips: every clip of a glTF, FBX or Collada file that names none, or a labels CSV (evaluate's) "
+             "for its rows, each on its body_file (else --body's body, else its own); or");
   add_parameter(*command, std::get<3>(frontend::policy_parameters), o->policy.up);
   add_store_option(*command, o->store, "The store's folder (made when missing)");
   command->add_flag("--hash", o->hash,
@@ -289,7 +300,9 @@ void add_search_command(CLI::App& app) {
   command->add_option("-k", o->k, "How many clips to find per query (more than the store holds: all)")
       ->check(whole_numbers(frontend::result_counts))
       ->capture_default_str();
-  add_json_option(*command, o->json, "the neighbours of each query and how many candidates each bound pruned");
+  add_json_option(*command, o->json,
+                  "the neighbours of each query (path, clip, body: '' for the clip's own, name) and how many "
+                  "candidates each bound pruned");
   command->callback([o] { run_search(*o); });
 }
 
@@ -304,9 +317,10 @@ void add_knn_graph_command(CLI::App& app) {
       ->check(whole_numbers(frontend::thread_counts));
   command->add_option("--csv", o->csv,
                       "Write the edges as CSV to FILE ('-': standard output): source,target,rank,value,"
-                      "source_name,target_name")
+                      "source_name,target_name (a name FILE#CLIP, with ' on BODY' for a clip played on another "
+                      "file's body)")
       ->check(output_file());
-  add_json_option(*command, o->json, "the clips, the edges and the pruning counts");
+  add_json_option(*command, o->json, "the clips (path, clip, body), the edges and the pruning counts");
   command->callback([o] { run_knn_graph(*o); });
 }
 

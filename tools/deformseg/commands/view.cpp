@@ -68,7 +68,7 @@ void run(const View_command_options& o) {
   const std::filesystem::path out(o.out);
   io::create_folder(out);
   progress("writing the page into " + o.out);
-  io::write_file(out / "data.js", "window.DEFORMSEG_VIEW = " + document.dump() + ";\n");
+  io::write_file(out / "data.js", "window.DEFORMSEG_VIEW = " + frontend::json_text(document) + ";\n");
   io::write_file(out / "index.html", viewer_assets::index_html);
   io::write_file(out / "viewer.js", viewer_assets::viewer_js);
   io::write_file(out / "viewer_core.js", viewer_assets::viewer_core_js);

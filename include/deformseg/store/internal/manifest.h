@@ -20,7 +20,9 @@
 namespace deformseg::store::internal {
 
 inline constexpr std::string_view store_format_name = "deformseg-motion-store";
-inline constexpr std::uint64_t store_version = 1;
+// Version 2 keys a clip by its body too: its strings are five (path, clip, input options, topology
+// path, body), version 1's four. Version 1 stores are read, and become version 2 at their next append.
+inline constexpr std::uint64_t store_version = 2;
 inline constexpr std::uint64_t block_alignment_floats = 16;
 inline constexpr std::uint64_t max_manifest_bytes = 4u << 20;
 inline constexpr std::uint64_t max_width = 1u << 16;
@@ -103,10 +105,15 @@ struct Store_file {
   std::uint32_t data_crc32 = 0;
 };
 
-/// "clip 12 (/data/walk.glb#Walk)", as errors name a clip.
-inline std::string clip_name(std::size_t index, std::string_view path, std::string_view clip) {
+/// The strings of a clip in `strings-G.npy` of a store of `version`: path, clip, input options,
+/// topology path, and from version 2 on, body.
+inline constexpr std::size_t clip_string_count(std::uint64_t version) { return version >= 2 ? 5 : 4; }
+
+/// "clip 12 (/data/walk.glb#Walk on /data/body.glb)", as errors name a clip (" on BODY" when it has one).
+inline std::string clip_name(std::size_t index, std::string_view path, std::string_view clip, std::string_view body) {
   std::string name = join("clip ", std::to_string(index), " (", path);
   if (!clip.empty()) name.append("#").append(clip);
+  if (!body.empty()) name.append(" on ").append(body);
   return name.append(")");
 }
 

@@ -1,12 +1,12 @@
 // The POSIX files of a motion store (store/motion_store.h): read-only memory maps of its immutable
-// files, the writer's lock, a data file written in pieces whose .npy header is filled in last, and
-// the check that a record's strings are UTF-8.
+// files, the writer's lock, and a data file written in pieces whose .npy header is filled in last.
 #pragma once
 
 #include <deformseg/exceptions.h>
 #include <deformseg/store/internal/crc32.h>
 #include <deformseg/store/internal/file_io.h>
 #include <deformseg/store/internal/npy.h>
+#include <deformseg/store/internal/utf8.h>
 
 #include <cerrno>
 #include <cstddef>
@@ -26,31 +26,6 @@
 #include <unistd.h>
 
 namespace deformseg::store::internal {
-
-/// True when `text` is valid UTF-8 (no overlong form, no surrogate, at most U+10FFFF).
-inline bool valid_utf8(std::string_view text) noexcept {
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    std::size_t extra = 0;
-    std::uint32_t code = 0;
-    if (c < 0x80) { ++i; continue; }
-    if (c >= 0xC2 && c <= 0xDF) { extra = 1; code = c & 0x1Fu; }
-    else if (c >= 0xE0 && c <= 0xEF) { extra = 2; code = c & 0x0Fu; }
-    else if (c >= 0xF0 && c <= 0xF4) { extra = 3; code = c & 0x07u; }
-    else return false;
-    if (text.size() - i <= extra) return false;
-    for (std::size_t k = 1; k <= extra; ++k) {
-      const auto next = static_cast<unsigned char>(text[i + k]);
-      if ((next & 0xC0u) != 0x80u) return false;
-      code = (code << 6) | (next & 0x3Fu);
-    }
-    const std::uint32_t smallest[] = {0, 0x80, 0x800, 0x10000};
-    if (code < smallest[extra] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return false;
-    i += extra + 1;
-  }
-  return true;
-}
 
 /// Thrown (and caught by the store's `open`, which retries once) when a file the manifest lists
 /// is missing: an append may have committed and removed it after the manifest was read.
