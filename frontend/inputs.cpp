@@ -19,11 +19,15 @@ Input_name input_name(const std::string& input, const Input_options& options, Fr
   const auto refuse_for = [&](const std::string& message) { throw invalid_input(message, {.file = file}); };
   const bool character = io::is_character_file(file);
   if (!character && !options.clip.empty())
-    refuse_for(spelled("clip", front) + " applies to character files (glTF, FBX, Collada) only");
+    refuse_for(spelled("clip", front) + " applies to character files (glTF, FBX, Collada, BVH) only");
   if (!character && !options.body.empty())
-    refuse_for(spelled("body", front) + " applies to character files (glTF, FBX, Collada) only");
+    refuse_for(spelled("body", front) + " applies to character files (glTF, FBX, Collada, BVH) only");
+  const std::string extension = io::internal::lower_extension(file);
+  if (!character && options.topology.empty() && (extension == ".pc2" || extension == ".mdd"))
+    refuse_for("a " + extension + " point cache needs a topology mesh (.obj, .off or .ply): give it with " +
+               spelled("topology", front));
   if (character && !options.topology.empty())
-    refuse_for(spelled("topology", front) + " does not apply to a character file (glTF, FBX, Collada): it has its own");
+    refuse_for(spelled("topology", front) + " does not apply to a character file (glTF, FBX, Collada, BVH): it has its own");
   return {std::move(file), clip.value_or(options.clip)};
 }
 
@@ -113,6 +117,13 @@ void check_outliers(Read_input& read, bool refuse_defects, Front front) {
       read.outliers.note(*outlier, read.name.file, refuse_defects, front);
 }
 
+std::string body_fit_warning(const Read_input& read, const Input_options& options) {
+  if (options.body.empty() || !read.gltf || 2 * read.gltf->animated_joints >= read.gltf->joints) return "";
+  return "clip '" + read.gltf->clip + "' moves " + std::to_string(read.gltf->animated_joints) + " of the " +
+         std::to_string(read.gltf->joints) + " joints of the body " + options.body +
+         ": the others keep their rest pose (a body of another skeleton, or joints named otherwise?)";
+}
+
 void require_motion(const mesh::Surface_mesh_animation& animation, const std::string& input) {
   if (animation.num_frames() < 2)
     throw invalid_input("an animation of " + std::to_string(animation.num_frames()) +
@@ -143,7 +154,7 @@ nlohmann::json clips_record(const io::Gltf_contents& contents) {
 nlohmann::json clips_of(const std::string& path, double fps) {
   mesh::check_frames_per_second(fps, "fps", {.file = path});
   if (!io::is_character_file(path))
-    throw invalid_input("clips are listed for character files (.glb, .gltf, .fbx, .dae) only", {.file = path});
+    throw invalid_input("clips are listed for character files (.glb, .gltf, .fbx, .dae, .bvh) only", {.file = path});
   return clips_record(io::gltf_contents(path, fps));
 }
 

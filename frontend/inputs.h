@@ -23,7 +23,7 @@ namespace deformseg::frontend {
 
 /// How to read the inputs of a command or a function; one set for all its inputs.
 struct Input_options {
-  std::string clip{};         ///< glTF, FBX, Collada: a clip's name or index; empty: the input's own, or the only one
+  std::string clip{};         ///< glTF, FBX, Collada, BVH: a clip's name or index; empty: the input's own, or the only one
   double fps = 30;            ///< glTF's sampling rate; frame files' and point caches' playing rate
   std::string topology{};     ///< the connectivity of point caches; empty: none
   bool triangulate = false;   ///< fan-triangulate polygons instead of refusing them
@@ -37,11 +37,11 @@ struct Input_options {
 inline constexpr std::tuple input_parameters{
     Parameter<Input_options, std::string>{
         "clip", &Input_options::clip,
-        "glTF, FBX, Collada: the clip to read, by name or index, for every input that names none after '#' "
+        "glTF, FBX, Collada, BVH: the clip to read, by name or index, for every input that names none after '#' "
         "(FILE.glb#CLIP); required for a file of several clips",
         Parameter_kind::clip},
     numeric_parameter("fps", &Input_options::fps,
-                      "Frames per second: glTF, FBX and Collada clips are sampled at it; frame files and point "
+                      "Frames per second: glTF, FBX, Collada and BVH clips are sampled at it; frame files and point "
                       "caches play at it. Default: 30",
                       Range{.min = 0, .max = 1000, .min_open = true}),
     Parameter<Input_options, std::string>{"topology", &Input_options::topology,
@@ -51,7 +51,7 @@ inline constexpr std::tuple input_parameters{
                                    "Fan-triangulate polygons instead of refusing them"},
     Parameter<Input_options, std::optional<bool>>{
         "weld", &Input_options::weld,
-        "Weld the vertices that coincide in every frame. Default: glTF, FBX and Collada files welded (every clip of a file then has "
+        "Weld the vertices that coincide in every frame. Default: glTF, FBX, Collada and BVH files welded (every clip of a file then has "
         "one mesh), frame sequences and point caches not"},
     Parameter<Input_options, bool>{"refuse_defects", &Input_options::refuse_defects,
                                    "Fail on degenerate, duplicate or non-manifold triangles instead of repairing them"},
@@ -59,7 +59,7 @@ inline constexpr std::tuple input_parameters{
                       thread_counts),
     Parameter<Input_options, std::string>{
         "body", &Input_options::body,
-        "glTF, FBX, Collada: a character file whose body the inputs' clips play on, each channel moving the "
+        "glTF, FBX, Collada, BVH: a character file whose body the inputs' clips play on, each channel moving the "
         "body's node of the same name (the inputs then give clips: animation-only exports, or another body of "
         "the same rig)",
         Parameter_kind::file},
@@ -167,6 +167,11 @@ struct Read_input {
   Outliers outliers{};
 };
 
+/// A warning's words when `read`'s clip, played on the body `options.body`, moves fewer than half
+/// of the body's joints ("clip 'Walk' moves 3 of the 24 joints of the body B.glb: ..."); empty
+/// otherwise (no body given, a body without skin, or half its joints moved or more).
+std::string body_fit_warning(const Read_input& read, const Input_options& options);
+
 /// Looks for vertices absurdly far for the mesh's own scale (`io::Outlier_check`) in every frame
 /// of `read`'s animation, noting them in `read.outliers` (`Outliers::note`).
 /// @throws invalid_input naming the file, frame and vertex, with `refuse_defects`.
@@ -193,7 +198,7 @@ nlohmann::json input_record(const std::string& file, double fps);
 /// "channels"}], frames counted at the rate `contents` were listed at.
 nlohmann::json clips_record(const io::Gltf_contents& contents);
 
-/// The clips of the character file `path` (glTF, FBX, Collada; one without '#'), as `clips_record`.
+/// The clips of the character file `path` (glTF, FBX, Collada, BVH; one without '#'), as `clips_record`.
 /// @throws invalid_input naming the file, when it is not a character file or cannot be read.
 nlohmann::json clips_of(const std::string& path, double fps);
 

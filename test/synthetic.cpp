@@ -171,4 +171,10 @@ TEST_CASE("bending tube: invalid specifications are rejected", "[synthetic][erro
     spec.placement.scale = 0;
     CHECK_THROWS_WITH(mesh::make_bending_tube(spec), "placement scale must be > 0");
   }
+  SECTION("frames that would not fit in memory, refused before any is made") {
+    spec.shape.sectors = 10'000;
+    spec.shape.rings = 10'000;
+    CHECK_THROWS_WITH(mesh::make_bending_tube(spec),
+                      Catch::Contains("a tube of 100010002 vertices over") && Catch::Contains("fewer sectors"));
+  }
 }

@@ -134,8 +134,9 @@ Complexity O(T V + F).)doc")
 
   define_function<frontend::input_parameters, Types<const std::filesystem::path&>, Types<>, frontend::Input_options>(
       m, "read_animation",
-      R"doc(Reads an animation: a clip of a character file, glTF (.glb, .gltf), FBX (.fbx) or Collada
-(.dae) ("FILE.fbx#CLIP" or `clip`, by name or index:
+      R"doc(Reads an animation: a clip of a character file, glTF (.glb, .gltf), FBX (.fbx), Collada
+(.dae) or BVH motion capture (.bvh; a file without a mesh plays on a body made from its skeleton,
+or on `body`) ("FILE.fbx#CLIP" or `clip`, by name or index:
 needed when the file holds several, which are then listed in the error; a file of one clip gives
 it; `clips` lists them), a folder of frame files (.obj, .off, .ply, in natural order), a glob
 pattern, or a point cache (.pc2, .mdd) with `topology` (a mesh file). `fps` is the frame rate of
@@ -143,7 +144,8 @@ every format (`Animation.fps`). A character's vertices are welded by what the fi
 position, skin weights and morph deltas), so that every clip of a file has one mesh.
 `Animation.repair` says what the repair changed. A vertex absurdly far for the mesh's own scale
 (10^5 times its median radius: corrupt data) gives a UserWarning naming its frame, or is refused
-with refuse_defects. Raises InvalidInput naming the file, line and
+with refuse_defects. With `body`, a clip that moves fewer than half of the body's joints gives a
+UserWarning, and one that moves nothing of it is refused. Raises InvalidInput naming the file, line and
 frame of the first problem, or for an option that does not apply (clip for frames, topology for
 a character file), as the tool does: the rules are the front end's (frontend/inputs.h) that the tool follows.
 Complexity linear in the input's size. Releases the GIL.)doc",
@@ -154,8 +156,9 @@ Complexity linear in the input's size. Releases the GIL.)doc",
           Interruptible_call call;
           read = frontend::read_input(path.string(), options, frontend::Front::python);
         }
-        if (const std::string warning = read->outliers.warning(frontend::Front::python); !warning.empty())
-          if (PyErr_WarnEx(PyExc_UserWarning, (path.string() + ": " + warning).c_str(), 1) < 0)
+        for (const std::string& warning :
+             {read->outliers.warning(frontend::Front::python), frontend::body_fit_warning(*read, options)})
+          if (!warning.empty() && PyErr_WarnEx(PyExc_UserWarning, (path.string() + ": " + warning).c_str(), 1) < 0)
             throw py::error_already_set();
         return Animation{std::move(read->animation), read->repair};
       },
@@ -172,7 +175,7 @@ Complexity linear in the input's size. Releases the GIL.)doc",
         return python_of(clips);
       },
       "path"_a, "fps"_a = frontend::Input_options{}.fps,
-      R"doc(The clips of a character file (.glb, .gltf, .fbx, .dae), in the file's order: a list of dicts with name, index
+      R"doc(The clips of a character file (.glb, .gltf, .fbx, .dae, .bvh), in the file's order: a list of dicts with name, index
 (what `read_animation`'s `clip` takes, as does the name), start, end and duration (seconds),
 frames (sampled at `fps`, default 30) and channels. Raises InvalidInput naming the file when it is
 not a character file or cannot be read. Complexity linear in the file's size. Releases the GIL.)doc");

@@ -20,13 +20,16 @@ The task keys start with ``deformseg-describe``, ``deformseg-matrix``, ``deforms
 ``distributed.progress``. Chapter 15 of the manual gives the recipes for Slurm and Kubernetes and
 how to size the tasks.
 """
+import ast
 import contextlib
 import dataclasses
 import functools
+import itertools
 import json
 import math
 import os
 import shutil
+import sys
 import uuid
 
 import numpy as np
@@ -50,12 +53,56 @@ _STOP = "stop"  # in a describe run's folder of parts: the run failed, tasks not
 
 # ---- the cluster ---------------------------------------------------------------------------------
 
+def _guarded_lines(tree):
+    """The line ranges of the module-level ``if __name__ == "__main__":`` blocks of a parsed script."""
+    for statement in tree.body:
+        test = statement.test if isinstance(statement, ast.If) else None
+        if (isinstance(test, ast.Compare) and isinstance(test.left, ast.Name) and test.left.id == "__name__"
+                and len(test.comparators) == 1 and isinstance(test.comparators[0], ast.Constant)
+                and test.comparators[0].value == "__main__"):
+            yield statement.body[0].lineno, statement.end_lineno
+
+
+def _script_line():
+    """The script run as ``python SCRIPT`` and the line of its top level that led here, or None
+    (an interactive session, a notebook, ``python -c``)."""
+    main = sys.modules.get("__main__")
+    path = getattr(main, "__file__", None)
+    frame = sys._getframe(1)
+    while frame is not None and not (frame.f_globals is vars(main) and frame.f_code.co_name == "<module>"):
+        frame = frame.f_back
+    if frame is None or path is None or not os.path.isfile(path):
+        return None
+    return path, frame.f_lineno
+
+
+def _require_main_guard():
+    """Refuses to start worker processes from a script's top level outside of
+    ``if __name__ == "__main__":``. Dask starts its workers with 'spawn': each imports the script
+    again, which would start a cluster of its own, fail, and be restarted by its nanny without end."""
+    where = _script_line()
+    if where is None:
+        return
+    path, line = where
+    try:
+        with open(path, encoding="utf-8") as source:
+            tree = ast.parse(source.read(), path)
+    except (OSError, SyntaxError, UnicodeDecodeError):
+        return  # a script we cannot read: nothing to say of it
+    if not any(first <= line <= last for first, last in _guarded_lines(tree)):
+        raise RuntimeError(f"{path}:{line}: deformseg.distributed starts worker processes, and each imports this "
+                           "script again: put the script's work under 'if __name__ == \"__main__\":' (chapter 15 "
+                           "of the manual), or pass a client of a cluster started elsewhere")
+
+
 @contextlib.contextmanager
 def _client_of(client):
-    """`client`, or a LocalCluster of one single-threaded worker process per core for the call."""
+    """`client`, or a LocalCluster of one single-threaded worker process per core for the call,
+    refused from a script's top level without the ``__main__`` guard (`_require_main_guard`)."""
     if client is not None:
         yield client
         return
+    _require_main_guard()
     with _dask.LocalCluster(n_workers=os.cpu_count() or 1, threads_per_worker=1, processes=True,
                             dashboard_address=":0") as cluster, _dask.Client(cluster) as local:
         yield local
@@ -136,14 +183,23 @@ def _opened_on_client(store):
 
 # ---- describing ----------------------------------------------------------------------------------
 
-def _describe_batch(names, root, options, on_error):
-    """Task: describes clips `names` into a new part store below `root`; returns (its folder or None,
-    the clips that could not be described with their errors, when `on_error` is 'skip')."""
+def _describe_on_bodies(clips, part, options):
+    """Describes `clips`, (input, body) pairs, into the store `part` in their order: each run of
+    clips on one body by one describe_to_store (a body is an option of all its inputs)."""
+    for body, run in itertools.groupby(clips, key=lambda clip: clip[1]):
+        on_body = dict(options, body=body) if body else {k: v for k, v in options.items() if k != "body"}
+        _deformseg.describe_to_store([clip for clip, _ in run], part, threads=1, **on_body)
+
+
+def _describe_batch(clips, root, options, on_error):
+    """Task: describes clips `clips` (dicts of name, input and body) into a new part store below
+    `root`; returns (its folder or None, the clips that could not be described with their errors,
+    when `on_error` is 'skip')."""
     if os.path.exists(os.path.join(root, _STOP)):  # the run failed: nothing more to write
         return None, []
     part = os.path.join(root, uuid.uuid4().hex)
     try:
-        _deformseg.describe_to_store(names, part, threads=1, **options)
+        _describe_on_bodies([(c["input"], c["body"]) for c in clips], part, options)
         return part, []
     except InvalidInput:
         if on_error == "raise":
@@ -151,12 +207,12 @@ def _describe_batch(names, root, options, on_error):
             raise
     shutil.rmtree(part, ignore_errors=True)  # what it committed before the bad clip: made again below
     failed = []
-    for name in names:
+    for clip in clips:
         try:
-            _deformseg.describe_to_store([name], part, threads=1, **options)
+            _describe_on_bodies([(clip["input"], clip["body"])], part, options)
         except InvalidInput as error:
-            failed.append({"name": name, "error": str(error)})
-    return (part if len(failed) < len(names) else None), failed
+            failed.append({"name": clip["name"], "error": str(error)})
+    return (part if len(failed) < len(clips) else None), failed
 
 
 def _plan(inputs, folder, on_error, options):
@@ -186,9 +242,9 @@ def describe(inputs, store, client=None, *, clips_per_task=None, on_error="raise
     """Describes clips into the motion store in the folder `store` on the cluster, as
     describe_to_store(inputs, store, hash=hash, **options) does: the same store, byte for byte.
 
-    inputs, options (fps, topology, triangulate, weld, refuse_defects, clip, up) and hash are
+    inputs, options (fps, topology, triangulate, weld, refuse_defects, clip, body, up) and hash are
     describe_to_store's; the clips to describe are planned on the client (new and changed ones,
-    unchanged ones skipped), described in batches of `clips_per_task` (default: about four batches
+    unchanged ones skipped; a clip on each of its bodies, a labels row's on its body_file), described in batches of `clips_per_task` (default: about four batches
     per worker thread, at most 32 clips) each into a part store of its own below `parts` (default
     a hidden folder beside the store, removed after), then merged into the store by the client, the
     one writer, in one commit. on_error: 'raise' (default) stops at the first clip (or input) that
@@ -206,15 +262,16 @@ def describe(inputs, store, client=None, *, clips_per_task=None, on_error="raise
     plan, failed = _plan(inputs, folder, on_error, dict(options, hash=hash))
     worker_options = {name: value for name, value in options.items() if name != "clip"}
     worker_options["hash"] = hash
-    names = plan["describe"]
+    clips = [{"name": name, "input": clip, "body": body}  # a clip's body is apart from its input
+             for name, clip, body in zip(plan["describe"], plan["inputs"], plan["bodies"])]
     root = os.path.join(os.path.abspath(parts) if parts else os.path.dirname(folder),
                         f".{os.path.basename(folder)}.parts-{uuid.uuid4().hex[:12]}")
     merged = {"clips": plan["clips"], "described": [], "redescribed": []}
     try:
-        if names:
+        if clips:
             with _client_of(client) as c:
-                size = clips_per_task or max(1, min(32, math.ceil(len(names) / (4 * _threads(c)))))
-                batches = [names[b:b + size] for b in range(0, len(names), size)]
+                size = clips_per_task or max(1, min(32, math.ceil(len(clips) / (4 * _threads(c)))))
+                batches = [clips[b:b + size] for b in range(0, len(clips), size)]
                 keys = _keys("describe", len(batches))
                 os.makedirs(root)
                 futures = [c.submit(_describe_batch, batch, root, worker_options, on_error, key=key)

@@ -110,6 +110,19 @@ def test_describe_writes_the_store_describe_to_store_writes(client, inputs, refe
     assert again["skipped"] == store.names and again["described"] == [] and same_files(store.folder, tmp_path / "S")
 
 
+def test_describe_plays_each_clip_on_its_body(client, characters, tmp_path):
+    # A labels CSV of one clip on two bodies: the workers play each clip on its row's body, and the
+    # store is describe_to_store's, byte for byte.
+    knight, barbarian = characters / "Knight.glb", characters / "Barbarian.glb"
+    labels = tmp_path / "labels.csv"
+    labels.write_text(f"file,clip,motion,body_file\n{knight},Idle,idle,{barbarian}\n{knight},Idle,idle,\n"
+                      f"{knight},Walking_A,walk,{barbarian}\n")
+    expected = deformseg.describe_to_store(labels, tmp_path / "reference")
+    report = dd.describe(labels, tmp_path / "S", client, clips_per_task=2)
+    assert report["described"] == expected["described"] and report["failed"] == []
+    assert same_files(tmp_path / "reference", tmp_path / "S")
+
+
 @pytest.mark.parametrize("size", SIZES)
 def test_the_matrix_by_tiles_is_the_matrix(client, reference, tmp_path, size):
     store, expected, _ = reference
@@ -151,6 +164,20 @@ def test_searches_on_the_cluster_are_the_store_searches(client, reference, fox, 
 def test_without_a_client_a_local_cluster_is_started_for_the_call(reference):
     store, _, expected = reference
     assert graph_equals(dd.knn_graph(store, 4), expected)
+
+
+def test_a_script_without_the_main_guard_is_refused_at_once(reference, tmp_path):
+    # Saved as a script and run, its workers would import it again and start clusters of their own
+    # without end: the call refuses before starting any, naming the script's line.
+    store, _, _ = reference
+    script = tmp_path / "unguarded.py"
+    script.write_text(f"from deformseg import distributed\n\ndistributed.knn_graph({str(store.folder)!r}, 4)\n")
+    started = time.monotonic()
+    done = subprocess.run([sys.executable, script], capture_output=True, text=True, timeout=300)
+    assert done.returncode != 0 and time.monotonic() - started < 60, done.stderr[-2000:]
+    assert f"{script}:3: deformseg.distributed starts worker processes" in done.stderr, done.stderr[-2000:]
+    assert "if __name__ == \"__main__\":" in done.stderr and "Traceback" in done.stderr
+    assert "nanny" not in done.stderr.lower(), done.stderr[-2000:]  # no worker was started
 
 
 def test_progress_shows_dask_s_bar(client, reference, capsys):

@@ -1,7 +1,9 @@
 """What each function accepts is what its stub and docstring say: evaluate's labels (motion names,
 dicts, objects; bodies optional), paths as str or os.PathLike, sequences as lists or tuples, glTF
 clips by name or index (and `clips`, which lists them), reference meshes with their rules."""
+import json
 import pathlib
+import struct
 from types import SimpleNamespace
 
 import numpy as np
@@ -138,7 +140,7 @@ def test_clips_lists_a_gltf_files_clips(fox, tmp_path):
     # The frames at another rate: those read at it.
     at_12 = deformseg.clips(pathlib.Path(fox), fps=12)
     assert at_12[2]["frames"] == deformseg.read_animation(fox, clip="Run", fps=12).num_frames < clips[2]["frames"]
-    with pytest.raises(deformseg.InvalidInput, match=r"character files \(.glb, .gltf, .fbx, .dae\) only") as error:
+    with pytest.raises(deformseg.InvalidInput, match=r"character files \(.glb, .gltf, .fbx, .dae, .bvh\) only") as error:
         deformseg.clips(tmp_path)
     assert error.value.file == str(tmp_path)
     with pytest.raises(deformseg.InvalidInput, match="fps"):
@@ -189,5 +191,23 @@ def test_clips_played_on_another_body(characters):
     bound = deformseg.read_animation(knight, clip="Idle", body=barbarian)
     own = deformseg.read_animation(barbarian, clip="Idle")
     assert np.array_equal(np.asarray(bound.frames), np.asarray(own.frames))
-    with pytest.raises(deformseg.InvalidInput, match="animates no node of the body"):
+    with pytest.raises(deformseg.InvalidInput, match="moves nothing of the body"):
         deformseg.read_animation(characters / "Fox.glb", clip="Walk", body=knight)
+
+
+def test_a_clip_that_moves_few_joints_of_its_body_warns(characters, tmp_path):
+    # The fox's walk reduced to its head's channel: on the fox, it moves 1 of its 24 joints.
+    fox = characters / "Fox.glb"
+    data = fox.read_bytes()
+    length = struct.unpack_from("<I", data, 12)[0]
+    document = json.loads(data[20:20 + length])
+    names = [node.get("name", "") for node in document["nodes"]]
+    for clip in document["animations"]:
+        clip["channels"] = [c for c in clip["channels"] if names[c["target"]["node"]] == "b_Head_05"]
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    chunks = struct.pack("<I4s", len(text), b"JSON") + text + data[20 + length:]
+    head = tmp_path / "fox-head.glb"
+    head.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks)
+    with pytest.warns(UserWarning, match="moves 1 of the 24 joints of the body"):
+        deformseg.read_animation(head, clip="Walk", body=fox)

@@ -219,7 +219,7 @@ def test_options_are_checked_as_the_tool_checks_them(grid, tmp_path):
         (lambda: deformseg.ged(deformseg.KeyFrame(0, 0), deformseg.KeyFrame(0, 0), max_expanded=-1),
          r"max_expanded must be a whole number in \[0, "),
         (lambda: deformseg.read_animation(tmp_path, clip="Walk"),
-         r"clip applies to character files \(glTF, FBX, Collada\) only"),
+         r"clip applies to character files \(glTF, FBX, Collada, BVH\) only"),
         (lambda: deformseg.ged(deformseg.KeyFrame(0, 0), deformseg.KeyFrame(0, 0), method="fast"), "method must be"),
     ]
     for call, message in cases:

@@ -93,7 +93,7 @@ def test_weld_excludes_no_weld(tool):
 
 # Options that do not apply to the input are refused before anything is read.
 def test_clip_without_gltf(tool, synth_obj):
-    fails(tool("info", synth_obj[0], "--clip", "Walk"), "--clip applies to character files (glTF, FBX, Collada) only")
+    fails(tool("info", synth_obj[0], "--clip", "Walk"), "--clip applies to character files (glTF, FBX, Collada, BVH) only")
 
 
 # A refusal as the command line is read ends with the status 1, as every other error: "cannot

@@ -123,15 +123,31 @@ def test_evaluate_graph(tool, tubes):
 
 
 def test_evaluate_missing_clip(tool, tubes):
+    # The error names the labels file's row, then the input it could not read.
     run = fails(tool("evaluate", tubes[0] / "missing.csv"))
-    assert re.search(r"deformseg: error: [^\n]*no-such-tube", run.err), run.describe()
+    assert re.search(r"deformseg: error: [^\n]*missing.csv:3: [^\n]*no-such-tube", run.err), run.describe()
 
 
 def test_evaluate_skip_unreadable(tool, tubes):
-    run = succeeds(tool("evaluate", tubes[0] / "missing.csv", "--skip-unreadable"))
-    assert re.search(r"skipped [^\n]*no-such-tube", run.output), run.describe()
+    # One clip left: the scores are printed, all "none", and the run fails, saying why.
+    run = fails(tool("evaluate", tubes[0] / "missing.csv", "--skip-unreadable"),
+                "nothing evaluated: no clip has a candidate of another body to rank")
+    assert re.search(r"skipped [^\n]*missing.csv:3: [^\n]*no-such-tube", run.output), run.describe()
     for pattern in (r"items +1\n", r"queries +0\n", r"NN accuracy +none"):
         assert re.search(pattern, run.out), f"{pattern}\n{run.describe()}"
+
+
+def test_evaluate_every_row_unreadable(tool, tubes):
+    labels = tubes[0] / "unreadable.csv"
+    labels.write_text("file,clip,motion\nno-such-tube,,bend\nnor-this-one,,twice\n")
+    fails(tool("evaluate", labels, "--skip-unreadable"), "nothing evaluated: every row was unreadable (2)")
+
+
+def test_evaluate_names_the_row_of_a_missing_clip(tool, tubes, characters):
+    # A clip the file lacks: the labels file's row first, then the file's own words.
+    labels = tubes[0] / "badclip.csv"
+    labels.write_text(f"file,clip,motion\n{characters / 'Fox.glb'},Wlak,walk\n{characters / 'Fox.glb'},Run,run\n")
+    fails(tool("evaluate", labels), f"{labels}:2: {characters / 'Fox.glb'}: no clip 'Wlak'")
 
 
 def test_evaluate_bad_labels(tool, tubes):

@@ -2,7 +2,9 @@
 (FILE.glb#CLIP, for every command that reads an animation); the file's clips, skins and meshes;
 what the repair did; a file of several clips with none named is refused, naming them."""
 
+import json
 import re
+import struct
 
 import pytest
 
@@ -243,7 +245,36 @@ def test_clips_played_on_another_body(tool, scratch, characters):
     assert info["gltf"]["body"] == str(barbarian)
     assert 0 < info["gltf"]["animated_joints"] <= info["gltf"]["joints"]
     # Clips that move nothing of the body, and a body for frames, are refused, named.
-    fails(tool("info", f"{characters / 'Fox.glb'}#Walk", "--body", knight), "animates no node of the body",
-          str(knight), "Fox.glb")
+    fails(tool("info", f"{characters / 'Fox.glb'}#Walk", "--body", knight), "moves nothing of the body",
+          str(knight), "Fox.glb", "it animates 'b_Hip_01'")
+    fails(tool("info", f"{knight}#Walking_A", "--body", characters / "Fox.glb"), "moves nothing of the body",
+          "the body's joints are '_rootJoint'")
     succeeds(tool("synth", scratch / "body-frames"))
     fails(tool("info", scratch / "body-frames", "--body", knight), "--body applies to character files")
+
+
+def glb_with(source, target, edit):
+    """Writes the glTF binary `source` to `target` with its JSON document changed by `edit`."""
+    data = source.read_bytes()
+    length = struct.unpack_from("<I", data, 12)[0]
+    document = json.loads(data[20:20 + length])
+    edit(document)
+    text = json.dumps(document).encode()
+    text += b" " * (-len(text) % 4)
+    rest = data[20 + length:]
+    body = struct.pack("<I4s", len(text), b"JSON") + text + rest
+    target.write_bytes(struct.pack("<4sII", b"glTF", 2, 12 + len(body)) + body)
+    return target
+
+
+def test_a_clip_that_moves_few_joints_of_its_body_is_warned_of(tool, scratch, fox):
+    # The fox's walk reduced to its head and neck: played on the fox, it moves 2 of its 24 joints.
+    def head_and_neck(document):
+        names = [node.get("name", "") for node in document["nodes"]]
+        for clip in document["animations"]:
+            clip["channels"] = [c for c in clip["channels"] if names[c["target"]["node"]] in ("b_Neck_04", "b_Head_05")]
+    clips = glb_with(fox, scratch / "fox-head-and-neck.glb", head_and_neck)
+    warned = succeeds(tool("info", f"{clips}#Walk", "--body", fox))
+    assert f"clip 'Walk' moves 2 of the 24 joints of the body {fox}" in warned.err, warned.describe()
+    whole = succeeds(tool("info", f"{fox}#Walk", "--body", fox))
+    assert "joints of the body" not in whole.err, whole.describe()

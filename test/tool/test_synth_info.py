@@ -70,7 +70,18 @@ def test_info_missing(tool, scratch):
 
 
 def test_info_cache_without_topology(tool, tubes):
-    fails(tool("info", tubes["pc2"][0] / "tube.pc2"), "needs a topology mesh")
+    fails(tool("info", tubes["pc2"][0] / "tube.pc2"), "needs a topology mesh (.obj, .off or .ply): give it with --topology")
+
+
+def test_synth_too_big_for_memory(tool, scratch):
+    run = fails(tool("synth", scratch / "synth-huge", "--sectors", "10000", "--rings", "10000"),
+                "deformseg: error: a tube of 100010002 vertices", "fewer sectors, rings or frames")
+    assert "bad_alloc" not in run.err
+
+
+def test_version(tool):
+    run = succeeds(tool("--version"))
+    assert re.fullmatch(r"deformseg \d+\.\d+\.\d+\n", run.out), run.describe()
 
 
 # The one rule of what a command prints: the summary on standard output, with --json FILE as well.

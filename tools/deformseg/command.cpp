@@ -11,8 +11,9 @@ namespace deformseg::tool {
 namespace {
 
 const char* const input_help =
-    "a character file (glTF .glb, .gltf; FBX .fbx; Collada .dae; a clip as FILE.glb#CLIP or by --clip), a folder of frames (.obj, .off, .ply; natural "
-    "order), a quoted glob pattern, or a point cache (.pc2, .mdd) with --topology";
+    "a character file (glTF .glb, .gltf; FBX .fbx; Collada .dae; BVH motion capture .bvh, on a body made from its "
+    "skeleton unless --body gives one; a clip as FILE.glb#CLIP or by --clip), a folder of frames (.obj, .off, .ply; "
+    "natural order), a quoted glob pattern, or a point cache (.pc2, .mdd) with --topology";
 
 }  // namespace
 
@@ -38,6 +39,8 @@ frontend::Read_input read_one(const std::string& input, const Input_options& opt
              nlohmann::json(options.fps).dump() + " fps");
   if (read.repair.changed()) progress("repaired: " + frontend::describe(read.repair));
   if (const std::string warning = read.outliers.warning(frontend::Front::command_line); !warning.empty())
+    progress("warning: " + input + ": " + warning);
+  if (const std::string warning = frontend::body_fit_warning(read, options); !warning.empty())
     progress("warning: " + input + ": " + warning);
   return read;
 }
@@ -136,6 +139,14 @@ std::string value_text(double value) {
   std::snprintf(text, sizeof text, "%.3f", value);
   return text;
 }
+
+std::string percent_text(double share) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", 100 * share);
+  return text;
+}
+
+std::string seconds_text(double seconds) { return value_text(seconds); }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

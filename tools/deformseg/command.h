@@ -80,6 +80,13 @@ void progress(const std::string& line);
 /// every digit.
 std::string value_text(double value);
 
+/// A share as a summary prints it, in percent with one decimal ("93.3" for 0.9328); `--json` keeps
+/// every digit.
+std::string percent_text(double share);
+
+/// Seconds as a summary prints them, to the millisecond ("1.234").
+std::string seconds_text(double seconds);
+
 /// The seconds from `start` to now, on the steady clock.
 double seconds_since(std::chrono::steady_clock::time_point start);
 

@@ -6,10 +6,13 @@
 
 #include <exception>
 #include <iostream>
+#include <new>
+#include <string>
 
 int main(int argc, char** argv) {
   CLI::App app{"deformseg: segmentation and motion similarity of deforming meshes"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("deformseg ") + DEFORMSEG_VERSION_TEXT);
   deformseg::tool::add_info_command(app);
   deformseg::tool::add_convert_command(app);
   deformseg::tool::add_synth_command(app);
@@ -43,6 +46,10 @@ int main(int argc, char** argv) {
     if (dynamic_cast<const CLI::ExtrasError*>(&e))  // often a glob the shell expanded, a file an argument
       std::cerr << "deformseg: a glob must be quoted to name one animation, e.g. 'frames/*.obj'\n";
     return status;
+  } catch (const std::bad_alloc&) {  // says nothing of its own: the sizes asked are the user's to change
+    std::cerr << "deformseg: error: out of memory: the animation, or what the command makes of it, does not fit "
+                 "in this machine's memory (fewer frames, vertices or clips at a time?)\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "deformseg: error: " << e.what() << '\n';
     return 1;

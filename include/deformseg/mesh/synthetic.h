@@ -89,10 +89,26 @@ inline double smooth_step(double u) {
   return u * u * (3.0 - 2.0 * u);
 }
 
+/// The most coordinates a tube's frames may hold: 2^29 (4 GiB of doubles), the glTF reader's bound.
+inline constexpr double max_tube_coordinates = double(std::size_t(1) << 29);
+
+// Refuses a tube whose frames would not fit in memory, before any is made.
+inline void check_tube_size(const Bending_tube& spec) {
+  const auto& s = spec.shape;
+  double frames = 1;
+  for (const auto& phase : spec.schedule) frames += double(phase.frames);
+  const double vertices = (double(s.rings) + 1) * double(s.sectors) + 2;
+  if (3 * vertices * frames > max_tube_coordinates)
+    throw invalid_input("a tube of " + std::to_string(std::llround(vertices)) + " vertices over " +
+                        std::to_string(std::llround(frames)) + " frames holds more than the 2^29 coordinates "
+                        "deformseg makes: fewer sectors, rings or frames");
+}
+
 inline void check_bending_tube(const Bending_tube& spec) {
   const auto& s = spec.shape;
   if (!(s.radius > 0) || !(s.length > 0) || s.sectors < 3 || s.rings < 1)
     throw invalid_input("tube shape needs radius > 0, length > 0, sectors >= 3 and rings >= 1");
+  check_tube_size(spec);
   if (!(spec.placement.scale > 0)) throw invalid_input("placement scale must be > 0");
   double previous_top = 0.0;
   for (std::size_t j = 0; j < spec.joints.size(); ++j) {
@@ -220,7 +236,8 @@ inline Eigen::Vector3d skin(const Bending_tube& spec, const std::vector<double>&
 /// @tparam Graph the connectivity type, a `FaceGraph` (default `Surface_mesh`).
 /// @pre radius, length and scale > 0; sectors >= 3, rings >= 1; joint blend zones inside (0, 1),
 /// not overlapping, from the bottom up; every phase has at least one frame and either no angle
-/// or one per joint. Otherwise throws `invalid_input`.
+/// or one per joint; the frames hold at most 2^29 coordinates (3 V T). Otherwise throws
+/// `invalid_input`, before any frame is made.
 /// @return the animation, its per-triangle ground truth and its frame schedule.
 /// @par Complexity O(T V J) for T frames, V vertices, J joints.
 template <FaceGraph Graph = Surface_mesh>

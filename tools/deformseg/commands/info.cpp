@@ -1,4 +1,4 @@
-// deformseg info INPUT: what an animation is made of; for a character file (glTF, FBX, Collada)
+// deformseg info INPUT: what an animation is made of; for a character file (glTF, FBX, Collada, BVH)
 // also its clips, skins and meshes; and what repairing its mesh changed.
 #include "command.h"
 #include "motion_box.h"
@@ -33,8 +33,9 @@ nlohmann::json bounding_box(const mesh::Surface_mesh_animation& animation) {
   return {{"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}};
 }
 
-// The clips of a character file (an FBX or Collada file's as glTF holds them), the skins and
-// meshes of its body (its own, or `body`'s), and the clip read.
+// The clips of a character file (an FBX, Collada or BVH file's as glTF holds them), the skins and
+// meshes of its body (its own, made from its skeleton when it has no mesh, or `body`'s), and the
+// clip read.
 nlohmann::json gltf_json(const std::string& file, const std::string& body, double fps,
                          const io::Gltf_read_report& read) {
   const nlohmann::json clips = frontend::clips_record(io::gltf_contents(file, fps));
@@ -53,6 +54,7 @@ nlohmann::json gltf_json(const std::string& file, const std::string& body, doubl
   return {{"clip", {{"name", read.clip}, {"start", read.start}, {"end", read.end}, {"fps", fps}}},
           {"clips", clips},
           {"body", body.empty() ? nlohmann::json() : nlohmann::json(body)},
+          {"skeleton_body", contents.skeleton_body},
           {"joints", read.joints},
           {"animated_joints", read.animated_joints},
           {"skins", skins},
@@ -93,6 +95,8 @@ void print_gltf(const nlohmann::json& gltf) {
   if (!gltf["body"].is_null())
     std::cout << "body          " << gltf["body"].get<std::string>() << ", " << gltf["animated_joints"] << " of "
               << gltf["joints"] << " joints moved\n";
+  if (gltf["skeleton_body"].get<bool>())
+    std::cout << "body          made from the skeleton: a tube along each bone (the file has no mesh)\n";
   std::cout << "skins         " << gltf["skins"].size();
   for (const auto& s : gltf["skins"]) std::cout << " (" << s["joints"] << " joints)";
   std::cout << "\nmeshes        " << gltf["meshes"].size() << '\n';
@@ -132,8 +136,9 @@ void add_info_command(CLI::App& app) {
   auto options = std::make_shared<Info_options>();
   CLI::App* command = app.add_subcommand(
       "info", "Frames, vertices, triangles, bounding box over all frames, format, memory used and what "
-              "the repair of the mesh changed; for glTF, FBX and Collada also the clips, skins and meshes (of a file of several "
-              "clips with none named, the first clip is read, and named)");
+              "the repair of the mesh changed; for glTF, FBX, Collada and BVH also the clips, skins and meshes "
+              "(of a file of several clips with none named, the first clip is read, and named; of a file without "
+              "a mesh, the body made from its skeleton)");
   add_input(*command, options->input, options->read);
   command->add_flag("--files", options->files,
                     "List the frame files of a folder or glob in the order they are read, frame by frame");
