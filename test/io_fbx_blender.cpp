@@ -6,6 +6,8 @@
 
 #if DEFORMSEG_HAS_ASSIMP
 
+#include "point_sets.h"
+
 #include <deformseg/io/fbx_collada.h>
 #include <deformseg/io/gltf.h>
 
@@ -27,7 +29,9 @@ namespace fbx_blender_test {
 
 namespace ds = deformseg;
 namespace fs = std::filesystem;
-using Point = std::array<double, 3>;
+using deformseg::test::distinct_positions;
+using deformseg::test::farthest_from;
+using deformseg::test::Point;
 
 TEST_CASE("fbx_blender: FBX from Blender 2.80 on keeps its bind matrices, other files take the FBX SDK's rule",
           "[fbx]") {
@@ -71,37 +75,6 @@ const std::vector<Export> exports = {
     {"Fox", 24, {1.3, 0.8, 1}, "Fox-scaled.fbx"},
     {"Knight", 30, {1, 1, 1}, "Knight.fbx"},
     {"RobotExpressive", 24, {1, 1, 1}, "RobotExpressive.fbx", {"Idle", "No", "ThumbsUp", "Wave", "Yes"}}};
-
-// The distinct positions of frame `t`, sorted, each scaled by `scale`: the two readings split
-// vertices differently (Blender writes one per face corner) and order them differently.
-std::vector<Point> distinct_positions(const ds::io::Sampled_gltf& sampled, std::size_t t, const Point& scale) {
-  std::vector<Point> points;
-  for (std::size_t v = 0; v < sampled.num_vertices; ++v) {
-    const double* p = sampled.positions.data() + 3 * (t * sampled.num_vertices + v);
-    points.push_back({scale[0] * p[0], scale[1] * p[1], scale[2] * p[2]});
-  }
-  std::sort(points.begin(), points.end());
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  return points;
-}
-
-// The largest distance from a point of `from` to the nearest of `to` (sorted by x: the search
-// stops beyond the nearest).
-double farthest_from(const std::vector<Point>& from, const std::vector<Point>& to) {
-  const auto distance = [](const Point& p, const Point& q) {
-    return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
-  };
-  double gap = 0;
-  for (const Point& p : from) {
-    double nearest = INFINITY;
-    const auto at = std::lower_bound(to.begin(), to.end(), p);
-    for (auto q = at; q != to.end() && (*q)[0] - p[0] < nearest; ++q) nearest = std::min(nearest, distance(p, *q));
-    for (auto q = at; q != to.begin() && p[0] - (*std::prev(q))[0] < nearest;)
-      --q, nearest = std::min(nearest, distance(p, *q));
-    gap = std::max(gap, nearest);
-  }
-  return gap;
-}
 
 // The diagonal of the box of all frames' positions, scaled by `scale`.
 double diagonal(const ds::io::Sampled_gltf& sampled, const Point& scale) {

@@ -5,6 +5,8 @@
 
 #if DEFORMSEG_HAS_ASSIMP
 
+#include "point_sets.h"
+
 #include <deformseg/io/fbx_collada.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/read_animation.h>
@@ -28,6 +30,8 @@ namespace fbx_collada_test {
 namespace ds = deformseg;
 namespace fs = std::filesystem;
 using deformseg::test::data_dir;
+using deformseg::test::distinct_positions;
+using deformseg::test::farthest_from;
 using deformseg::test::write_file;
 using Catch::Matchers::Contains;
 
@@ -96,19 +100,6 @@ std::string two_bone_collada(const std::string& skin_source = "#strip", const st
  <scene><instance_visual_scene url="#scene"/></scene>
 </COLLADA>
 )";
-}
-
-// The distinct positions of frame `t`, sorted: what two readings of one clip share whatever
-// their vertex order and splitting.
-std::vector<std::array<double, 3>> distinct_positions(const ds::io::Sampled_gltf& sampled, std::size_t t) {
-  std::vector<std::array<double, 3>> points;
-  for (std::size_t v = 0; v < sampled.num_vertices; ++v) {
-    const double* p = sampled.positions.data() + 3 * (t * sampled.num_vertices + v);
-    points.push_back({p[0], p[1], p[2]});
-  }
-  std::sort(points.begin(), points.end());
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  return points;
 }
 
 // Whether `points` holds a point within `tolerance` of `expected`.
@@ -482,7 +473,7 @@ TEST_CASE("fbx_collada adapter: an FBX node's small translation, which Assimp 5.
   CHECK(assimp::fbx::local_transforms("; FBX 7.4.0 project file", *built.scene).empty());
 }
 
-TEST_CASE("fbx_collada adapter: an FBX node's rotation follows its RotationOrder; a pivot keeps Assimp's matrix",
+TEST_CASE("fbx_collada adapter: an FBX node's rotation follows its RotationOrder, and a pivot keeps Assimp's matrix",
           "[fbx]") {
   namespace assimp = ds::io::internal::assimp;
   Scene_builder built;
@@ -656,24 +647,12 @@ TEST_CASE("fbx_collada: every clip plays on a body whose joints are matrices, gi
 // ---- The FBX SDK's reading, through FBX2glTF (test/fbx_sdk.cmake runs this) -----------------
 
 // The largest distance, over the frames, from a distinct position of one reading to the nearest
-// of the other's, both ways (the positions are sorted by x: the search stops beyond the nearest).
+// of the other's, both ways.
 double largest_gap(const ds::io::Sampled_gltf& a, const ds::io::Sampled_gltf& b) {
   double gap = 0;
-  const auto distance = [](const auto& p, const auto& q) { return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]); };
   for (std::size_t t = 0; t < a.report.frames; ++t) {
     const auto pa = distinct_positions(a, t), pb = distinct_positions(b, t);
-    for (const auto* pair : {&pa, &pb}) {
-      const auto& from = *pair;
-      const auto& to = pair == &pa ? pb : pa;
-      for (const auto& p : from) {
-        double nearest = INFINITY;
-        const auto at = std::lower_bound(to.begin(), to.end(), p);
-        for (auto q = at; q != to.end() && (*q)[0] - p[0] < nearest; ++q) nearest = std::min(nearest, distance(p, *q));
-        for (auto q = at; q != to.begin() && p[0] - (*std::prev(q))[0] < nearest;)
-          --q, nearest = std::min(nearest, distance(p, *q));
-        gap = std::max(gap, nearest);
-      }
-    }
+    gap = std::max({gap, farthest_from(pa, pb), farthest_from(pb, pa)});
   }
   return gap;
 }
