@@ -117,6 +117,8 @@ inline constexpr std::size_t max_bvh_bytes = std::size_t(1) << 30;
 /// number or that claims more values than the file holds; a Frame Time that is not a positive
 /// number; a non-finite value.
 /// @par Complexity O(file size), plus Assimp's parsing.
+/// @par Example
+/// @include read_bvh.cpp
 inline tinygltf::Model bvh_model(const std::filesystem::path& path) {
   try {
     if (!is_bvh(path)) throw invalid_input("not a BVH file name: the extension is not .bvh");

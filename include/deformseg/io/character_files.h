@@ -31,6 +31,8 @@ inline bool is_fbx_or_collada(const std::filesystem::path& input) {
 /// @brief Whether `input` names a BVH motion capture file, by its extension (`.bvh`, in any
 /// case): a skeleton and one clip, which `Gltf_file` reads through Assimp (see `bvh_model`).
 /// @par Complexity O(length of the name).
+/// @par Example
+/// @include read_bvh.cpp
 inline bool is_bvh(const std::filesystem::path& input) { return internal::lower_extension(input) == ".bvh"; }
 
 /// @brief Whether `input` names a character file, with clips and a node tree: glTF, FBX,

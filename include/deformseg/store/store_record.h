@@ -88,6 +88,8 @@ enum class Verify {
 /// @brief Whether `text` is valid UTF-8 (no overlong form, no surrogate, at most U+10FFFF), as a
 /// store's strings must be.
 /// @par Complexity O(size of `text`).
+/// @par Example
+/// @include escaped_name.cpp
 inline bool is_utf8(std::string_view text) noexcept { return internal::valid_utf8(text); }
 
 /// @brief `name` (a file's path, a clip's name) as UTF-8 text, which a store's strings must be,
@@ -97,7 +99,8 @@ inline bool is_utf8(std::string_view text) noexcept { return internal::valid_utf
 /// A name of valid UTF-8 without a backslash is kept as it is.
 /// @par Example
 /// The Latin-1 file name café.glb, whose é is the one byte E9 (not UTF-8), is kept as `caf\xE9.glb`;
-/// in UTF-8 (é the bytes C3 A9) as `café.glb`; the name `a\b` as `a\\b`.
+/// in UTF-8 (é the bytes C3 A9) as `café.glb`; the name `a\b` as `a\\b`:
+/// @include escaped_name.cpp
 /// @par Complexity O(size of `name`).
 inline std::string escaped_name(std::string_view name) {
   constexpr char hex[] = "0123456789ABCDEF";
@@ -122,6 +125,8 @@ inline std::string escaped_name(std::string_view name) {
 /// HH; a backslash in any other sequence is kept as it is. `unescaped_name(escaped_name(s)) == s`
 /// for any bytes s.
 /// @par Complexity O(size of `text`).
+/// @par Example
+/// @include escaped_name.cpp
 inline std::string unescaped_name(std::string_view text) {
   const auto digit = [](char c) -> int {
     return c >= '0' && c <= '9' ? c - '0' : c >= 'A' && c <= 'F' ? c - 'A' + 10 : -1;
