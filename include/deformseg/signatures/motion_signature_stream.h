@@ -129,18 +129,23 @@ inline std::size_t ring_frames(std::span<const std::pair<std::size_t, std::size_
   return std::min(frames, widest + streamed_batch_frames);
 }
 
-/// The first pass: the first frame's area weights, and the RMS radius over every frame, each frame
-/// read into `frame_of(t)` (`3V` coordinates: the same place for every frame, or a place each).
+/// What the first pass reads: the first frame, its area weights, and the RMS radius over every frame.
+struct First_pass {
+  std::vector<double> first, weights;
+  double radius;
+};
+
+/// The first pass, each frame read into `frame_of(t)` (`3V` coordinates: the same place for every
+/// frame, or a place each).
 template <FrameSource Source, class FrameOf>
-std::pair<std::vector<double>, double> weights_and_radius(Source& source, std::size_t frames,
-                                                          const FrameOf& frame_of) {
+First_pass weights_and_radius(Source& source, std::size_t frames, const FrameOf& frame_of) {
   const std::size_t vertices = source.num_vertices();
   const auto read = [&](std::size_t t) {
     source.read_frame(std::span<typename Source::Coordinate>(frame_of(t), 3 * vertices));
     return frame_of(t);
   };
   const auto* frame = read(0);
-  const std::vector<double> first(frame, frame + 3 * vertices);
+  std::vector<double> first(frame, frame + 3 * vertices);
   std::vector<double> weights = vertex_area_weights(std::span<const double>(first), source.triangles(), vertices);
   double sum = 0;
   for (std::size_t t = 0;; ++t) {
@@ -148,7 +153,7 @@ std::pair<std::vector<double>, double> weights_and_radius(Source& source, std::s
     if (t + 1 == frames) break;
     frame = read(t + 1);
   }
-  return {std::move(weights), std::sqrt(sum / double(frames))};
+  return {std::move(first), std::move(weights), std::sqrt(sum / double(frames))};
 }
 
 /// Throws unless the source still has `frames` frames of `vertices` vertices after its rewind.
@@ -196,7 +201,7 @@ inline std::size_t streamed_ring_frames(const Motion_signature_options& options,
 /// @param instants the instants of the rows, finite and non-decreasing, e.g. `frame_instants`
 /// (one per frame) or those `Motion_signature_similarity` describes at; an instant outside
 /// [0, (T - 1) / fps] reads the nearest end frame.
-/// @return the `I x (lags x quantiles)` signatures, twice as wide with an up direction.
+/// @return the `I x (lags x bands x quantiles)` signatures, twice as wide with an up direction.
 /// @throws invalid_input as `motion_signatures` (fewer than two frames, bad options or frame rate,
 /// an animation without extent); for instants out of order or not finite; when the source has no
 /// vertex, or a different frame or vertex count after its second rewind (a file rewritten between
@@ -225,11 +230,13 @@ Eigen::MatrixXd motion_signatures_streamed(Source& source, const Motion_signatur
   // A ring that holds every frame is filled by the first pass, and the source read once.
   const bool once = capacity == frames;
   source.rewind();
-  const std::pair<std::vector<double>, double> first_pass =
+  const internal::First_pass first_pass =
       internal::weights_and_radius(source, frames, [&](std::size_t t) { return frame_of(once ? t : 0); });
-  const std::span<const double> weights(first_pass.first);
-  internal::check_radius(first_pass.second);
-  const internal::Signature_rows rows = internal::signature_rows(options, fps, frames, first_pass.second);
+  const std::span<const double> weights(first_pass.weights);
+  internal::check_radius(first_pass.radius);
+  internal::Signature_rows rows = internal::signature_rows(options, fps, frames, first_pass.radius);
+  if (options.bands > 1)
+    rows.bands = internal::surface_bands(first_pass.first.data(), weights, options.bands, *rows.up);
   if (!once) {
     source.rewind();
     internal::check_unchanged(source, frames, vertices);

@@ -71,11 +71,23 @@ struct Motion_signature_options {
   /// were chosen on the shared characters leaving each body out in turn (every body chose these,
   /// but the robot: its 8 queries preferred 9e-2 and 0.35).
   double vertical_weight = 0.2;
+  /// @brief The surface cut into this many bands of equal height along `up` in the first frame (the
+  /// pose the animation starts in), each band's area-weighted quantiles side by side: per lag (and
+  /// for the speeds, then the vertical rates), the lowest band's `quantiles` values, then the next
+  /// band's, so that a part covering much of the surface (a big head) no longer outweighs the legs.
+  /// A band without area takes the vertices of the nearest band that has some (the lower first).
+  /// Above 1 it needs `up`. Default 1: the whole surface, one distribution (chapter 7 of the manual
+  /// gives what 3 or 4 bands change on the shared characters and the motion library); 1 to
+  /// `max_bands`.
+  std::size_t bands = 1;
   /// @brief The threads of the rows, computed in parallel: 0 (default) for all the hardware's
   /// threads (`thread_count`), else 1 to `max_threads`. The signatures do not depend on it, nor
   /// does a `Motion_signature_similarity` holding these options.
   int threads = 0;
 };
+
+/// @brief The most height bands `Motion_signature_options::bands` takes.
+inline constexpr std::size_t max_bands = 64;
 
 namespace internal {
 
@@ -166,6 +178,12 @@ inline void check_signature_options(const Motion_signature_options& options, dou
     throw invalid_input("motion_signatures: the vertical unit must be positive");
   if (options.up && !(options.vertical_weight >= 0 && std::isfinite(options.vertical_weight)))
     throw invalid_input("motion_signatures: the vertical weight must be finite and not negative");
+  if (options.bands == 0 || options.bands > max_bands)
+    throw invalid_input("motion_signatures: " + std::to_string(options.bands) + " bands; 1 to " +
+                        std::to_string(max_bands));
+  if (options.bands > 1 && !options.up)
+    throw invalid_input("motion_signatures: " + std::to_string(options.bands) +
+                        " height bands need an up direction");
   thread_count(options.threads, "motion_signatures");
 }
 
@@ -181,6 +199,50 @@ inline void check_radius(double radius) {
     throw invalid_input("motion_signatures: the animation has no extent (RMS radius " + std::to_string(radius) + ")");
 }
 
+/// One height band of the surface (`Motion_signature_options::bands`): its vertices, and their
+/// weights scaled to sum to 1 over the band.
+struct Surface_band {
+  std::vector<std::size_t> vertices;
+  std::vector<double> weights;
+};
+
+/// The vertices of `frame` (`3V` coordinates, the first) cut into `count` bands of equal height
+/// along the unit direction `up`, each with its share of `weights`. A band without weight takes the
+/// vertices of the nearest band that has some (the lower first); at least one has, weights summing
+/// to 1.
+template <class Coordinate>
+std::vector<Surface_band> surface_bands(const Coordinate* frame, std::span<const double> weights, std::size_t count,
+                                        const Eigen::Vector3d& up) {
+  const std::size_t vertices = weights.size();
+  std::vector<double> height(vertices);
+  for (std::size_t v = 0; v < vertices; ++v) height[v] = point(frame, v).dot(up);
+  const auto [low, high] = std::ranges::minmax(height);
+  const double span = high - low;
+  std::vector<Surface_band> bands(count);
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const double u = span > 0 ? (height[v] - low) / span : 0.0;
+    Surface_band& band = bands[std::min(std::size_t(u * double(count)), count - 1)];
+    band.vertices.push_back(v);
+    band.weights.push_back(weights[v]);
+  }
+  std::vector<double> totals(count);
+  for (std::size_t b = 0; b < count; ++b)
+    for (const double w : bands[b].weights) totals[b] += w;
+  const auto has_weight = [&](std::size_t b) { return totals[b] > 0; };
+  std::vector<Surface_band> out(count);
+  for (std::size_t b = 0; b < count; ++b) {
+    std::size_t from = b;
+    for (std::size_t d = 1; !has_weight(from) && d < count; ++d)
+      if (b >= d && has_weight(b - d))
+        from = b - d;
+      else if (b + d < count && has_weight(b + d))
+        from = b + d;
+    out[b] = bands[from];
+    for (double& w : out[b].weights) w /= totals[from];
+  }
+  return out;
+}
+
 /// What every row of an animation's signatures shares: the options, the unit up direction, the
 /// RMS radius, the frame rate and count, and the row's width.
 struct Signature_rows {
@@ -190,14 +252,15 @@ struct Signature_rows {
   double frames_per_second;
   std::size_t frames;
   std::size_t columns;
+  std::vector<Surface_band> bands;  ///< empty for one band: the whole surface, every vertex's weight
 };
 
 /// The rows' shared values, once the options, the frame count and the radius are checked.
 inline Signature_rows signature_rows(const Motion_signature_options& options, double frames_per_second,
                                      std::size_t frames, double radius) {
   std::optional<Eigen::Vector3d> up = unit_up(options);
-  const std::size_t columns = (up ? 2 : 1) * options.lags.size() * options.quantiles;
-  return {options, up, radius, frames_per_second, frames, columns};
+  const std::size_t columns = (up ? 2 : 1) * options.lags.size() * options.bands * options.quantiles;
+  return {options, up, radius, frames_per_second, frames, columns, {}};
 }
 
 /// The first and last frames (inclusive) that the row at `instant` reads.
@@ -222,15 +285,16 @@ struct Lag_values {
 };
 
 /// The scratch of `signature_row`, kept from row to row by one thread: V keys each for the speeds
-/// and the vertical rates of a lag, the selection's, the span of the buckets of each lag's speeds
-/// and vertical rates, and each lag's last values.
+/// and the vertical rates of a lag, one band's keys, the selection's, the span of the buckets of
+/// each lag's (and band's) speeds and vertical rates, and each lag's last values.
 struct Row_scratch {
   explicit Row_scratch(std::size_t vertices)
       : speeds(vertices), rises(vertices), keyed(vertices), spare(vertices) {}
   std::vector<std::uint64_t> speeds, rises;
+  std::vector<std::uint64_t> band_keys;  // one band's keys, gathered (several bands alone)
   std::vector<Keyed_rate> keyed, spare;
   Bucket_quantiles selection;
-  std::vector<Bucket_quantiles::Bucket_span> spans;  // per lag: the speeds', the vertical rates'
+  std::vector<Bucket_quantiles::Bucket_span> spans;  // per lag and band: the speeds', the vertical rates'
   std::vector<Lag_values> last;                      // per lag
 };
 
@@ -264,6 +328,15 @@ std::pair<Key_range, Key_range> displacement_rates(const Frames_around<Coordinat
   return {speed, rise};
 }
 
+/// The keys of `keys` at a band's vertices, gathered into `out`, and their range.
+inline Key_range gathered_keys(const std::vector<std::uint64_t>& keys, const Surface_band& band,
+                               std::vector<std::uint64_t>& out) {
+  Key_range range;
+  out.resize(band.vertices.size());
+  for (std::size_t i = 0; i < band.vertices.size(); ++i) range.add(out[i] = keys[band.vertices[i]]);
+  return range;
+}
+
 /// The signature at `instant` into `row` (`rows.columns` values), the frames read through
 /// `frame_of(t)` (frame t's `3V` coordinates).
 template <class FrameOf>
@@ -271,24 +344,33 @@ void signature_row(const Signature_rows& rows, const FrameOf& frame_of, std::spa
                    double instant, double* row, Row_scratch& scratch) {
   const Motion_signature_options& options = rows.options;
   const std::size_t vertices = weights.size(), k = options.quantiles, lags = options.lags.size();
+  const std::size_t bands = std::max<std::size_t>(rows.bands.size(), 1), width = bands * k;
   const double vertical_factor = std::sqrt(options.vertical_weight);
-  scratch.spans.resize(2 * lags);
+  scratch.spans.resize(2 * lags * bands);
   scratch.last.resize(lags);
-  const auto quantiles = [&](std::size_t stream, const std::vector<std::uint64_t>& keys, Key_range range,
-                              double* out) {
-    scratch.selection.quantiles(keys, range.low, range.high, weights, k, out, scratch.spans[stream], scratch.keyed,
-                                scratch.spare);
+  // Quantiles of stream `stream` (a lag, band and kind of rate) of the keys of band b, or of every
+  // vertex when the surface is one band.
+  const auto quantiles = [&](std::size_t stream, std::size_t b, const std::vector<std::uint64_t>& keys,
+                             Key_range range, std::vector<std::uint64_t>& gathered, double* out) {
+    std::span<const std::uint64_t> chosen(keys);
+    std::span<const double> chosen_weights = weights;
+    if (!rows.bands.empty()) {
+      range = gathered_keys(keys, rows.bands[b], gathered);
+      chosen = gathered, chosen_weights = rows.bands[b].weights;
+    }
+    scratch.selection.quantiles(chosen, range.low, range.high, chosen_weights, k, out, scratch.spans[stream],
+                                scratch.keyed, scratch.spare);
   };
   for (std::size_t l = 0; l < lags; ++l) {
     const double lag = options.lags[l];
     const auto at_before = frame_at(instant - lag, rows.frames_per_second, rows.frames);
     const auto at_after = frame_at(instant + lag, rows.frames_per_second, rows.frames);
-    double* speed_quantiles = row + l * k;
-    double* vertical = speed_quantiles + lags * k;
+    double* speed_quantiles = row + l * width;
+    double* vertical = speed_quantiles + lags * width;
     Lag_values& last = scratch.last[l];
     if (last.before == at_before && last.after == at_after) {
-      std::copy_n(last.values.begin(), k, speed_quantiles);
-      if (rows.up) std::copy_n(last.values.begin() + std::ptrdiff_t(k), k, vertical);
+      std::copy_n(last.values.begin(), width, speed_quantiles);
+      if (rows.up) std::copy_n(last.values.begin() + std::ptrdiff_t(width), width, vertical);
       continue;
     }
     const auto before = frames_around(frame_of, at_before);
@@ -296,14 +378,16 @@ void signature_row(const Signature_rows& rows, const FrameOf& frame_of, std::spa
     const double unit = 1.0 / (2.0 * lag * rows.radius);
     const auto [speed, rise] =
         displacement_rates(before, after, vertices, unit, rows.up, scratch.speeds.data(), scratch.rises.data());
-    quantiles(2 * l, scratch.speeds, speed, speed_quantiles);
-    for (std::size_t q = 0; q < k; ++q) speed_quantiles[q] = std::log(std::max(speed_quantiles[q], options.floor));
-    last.values.assign(speed_quantiles, speed_quantiles + k);
+    for (std::size_t b = 0; b < bands; ++b)
+      quantiles(2 * (l * bands + b), b, scratch.speeds, speed, scratch.band_keys, speed_quantiles + b * k);
+    for (std::size_t q = 0; q < width; ++q) speed_quantiles[q] = std::log(std::max(speed_quantiles[q], options.floor));
+    last.values.assign(speed_quantiles, speed_quantiles + width);
     last.before = at_before, last.after = at_after;
     if (!rows.up) continue;
-    quantiles(2 * l + 1, scratch.rises, rise, vertical);
-    for (std::size_t q = 0; q < k; ++q) vertical[q] = vertical_factor * std::asinh(vertical[q] / options.vertical_unit);
-    last.values.insert(last.values.end(), vertical, vertical + k);
+    for (std::size_t b = 0; b < bands; ++b)
+      quantiles(2 * (l * bands + b) + 1, b, scratch.rises, rise, scratch.band_keys, vertical + b * k);
+    for (std::size_t q = 0; q < width; ++q) vertical[q] = vertical_factor * std::asinh(vertical[q] / options.vertical_unit);
+    last.values.insert(last.values.end(), vertical, vertical + width);
   }
 }
 
@@ -331,7 +415,8 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
   internal::check_signature_options(options, frames_per_second);
   const double radius = internal::rms_radius(positions, weights, frames);
   internal::check_radius(radius);
-  const internal::Signature_rows rows = internal::signature_rows(options, frames_per_second, frames, radius);
+  internal::Signature_rows rows = internal::signature_rows(options, frames_per_second, frames, radius);
+  if (options.bands > 1) rows.bands = internal::surface_bands(positions.data(), weights, options.bands, *rows.up);
 
   using Row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   Row_major out = Row_major(static_cast<Eigen::Index>(instants.size()), static_cast<Eigen::Index>(rows.columns));
@@ -379,8 +464,9 @@ decltype(auto) with_positions_and_weights(const Mesh& animation, F&& f) {
 /// @brief The motion signature of every frame of an animation given as raw positions, for data
 /// with no mesh built (a triangle soup, a sampled glTF clip).
 ///
-/// Row t holds, for each lag k of `options.lags` in turn, the `options.quantiles` area-weighted
-/// quantiles of the vertices' speeds at lag k (`Motion_signature_options::lags`) at frame t's
+/// Row t holds, for each lag k of `options.lags` in turn (and within it for each height band of
+/// `options.bands`, the lowest first), the `options.quantiles` area-weighted quantiles of the
+/// vertices' (the band's) speeds at lag k (`Motion_signature_options::lags`) at frame t's
 /// instant t / `frames_per_second`, in units of the animation's RMS radius (`rms_radius`) per
 /// second, as natural logarithms of at least `log(options.floor)`. With `options.up` set, the same
 /// number of columns follow, for each lag in turn: the quantiles of the vertices' signed rates
@@ -397,10 +483,12 @@ decltype(auto) with_positions_and_weights(const Mesh& animation, F&& f) {
 /// area, `vertex_area_weights`).
 /// @param options the lags, quantiles, floor and up direction (default `Motion_signature_options{}`).
 /// @param frames_per_second the frame rate the positions are sampled at. Default 30.
-/// @return the `T x (lags x quantiles)` signatures, `T x (2 x lags x quantiles)` with an up direction.
+/// @return the `T x (lags x bands x quantiles)` signatures, `T x (2 x lags x bands x quantiles)` with an up
+/// direction.
 /// @throws invalid_input when the sizes disagree, when there are fewer than two frames (a single
 /// pose has no motion), when a lag or the frame rate is not positive and finite, when `quantiles`
-/// is 0, when `floor` is not positive, when the up direction is zero or not finite, when
+/// is 0, when `floor` is not positive, when the up direction is zero or not finite, when `bands`
+/// is 0, above `max_bands`, or above 1 without an up direction, when
 /// `vertical_unit` is not positive or `vertical_weight` negative, or when the animation does not
 /// move its vertices apart from each other (zero radius).
 /// @par Complexity O(T V L log k) expected for T frames, V vertices, L lags and k quantiles (a
@@ -420,7 +508,7 @@ Eigen::MatrixXd motion_signatures(std::span<const Coordinate> positions, std::sp
 /// the first frame's area, at the animation's frame rate (`frames_per_second`: its own, else 30);
 /// see the overload on raw positions for what a signature is.
 /// @tparam Mesh a `DeformingMesh`.
-/// @return the `T x (lags x quantiles)` signatures (twice the columns with an up direction).
+/// @return the `T x (lags x bands x quantiles)` signatures (twice the columns with an up direction).
 /// @throws invalid_input as the overload on raw positions.
 /// @par Complexity O(T V L log k) expected, plus a copy of the positions for a mesh that is not a
 /// `Deforming_mesh`.

@@ -12,6 +12,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/signatures/motion_signature_stream.h>
 #include <deformseg/signatures/motion_signatures.h>
+#include <deformseg/similarity/motion_signature_explanation.h>
 #include <deformseg/similarity/motion_signature_kernel.h>
 #include <deformseg/similarity/motion_signature_view.h>
 #include <deformseg/similarity/significance.h>
@@ -34,7 +35,7 @@ namespace deformseg::similarity {
 /// (`motion_signatures`) at instants at most 1 / `signature_rate` seconds apart, each row with the
 /// frame nearest its instant.
 struct Motion_signature_description {
-  /// @brief One signature per row, at increasing instants: `R x (lags x quantiles)`, twice as wide
+  /// @brief One signature per row, at increasing instants: `R x (lags x bands x quantiles)`, twice as wide
   /// with an up direction. In float, rounded once from the double values `motion_signatures_at`
   /// computes, and column-major (each dimension's R values contiguous): the layout of
   /// `Motion_signature_view` (see `view`), which the comparison kernel reads.
@@ -304,12 +305,22 @@ struct Motion_signature_similarity {
   /// @throws invalid_input as `dissimilarity`.
   /// @par Complexity O(Ra Rb width) for the dissimilarities plus the alignment's O(Ra Rb).
   Similarity compare(const Description& a, const Description& b) const {
-    Similarity result = internal::aligned_similarity(alignment, normalization, frame_count(a), frame_count(b),
-                                                     dissimilarity(a, b),
-                                                     "area-weighted distributions of the vertices' speeds and "
-                                                     "vertical rates at several lags, frames aligned in time");
+    Similarity result = aligned_rows(a, b);
     result.alignment = internal::pairs_of_frames(result.alignment, a.frames, b.frames);
     return result;
+  }
+
+  /// @brief Where the signatures of `a` and `b` differ along the alignment `compare` finds
+  /// (`explain_signatures` of its pairs of rows): each channel's share of the differences and its
+  /// mean difference, so that a user can see which time scale, height band and half of the
+  /// surface made two motions alike or different.
+  /// @throws invalid_input as `dissimilarity`, or when the descriptions were not made with this
+  /// policy's `signatures` options (another width).
+  /// @par Complexity `compare`'s, plus O(P width) for the P aligned pairs.
+  /// @par Example
+  /// @include explain_similarity.cpp
+  Motion_signature_explanation explain(const Description& a, const Description& b) const {
+    return explain_signatures(a.signatures, b.signatures, aligned_rows(a, b).alignment, signatures);
   }
 
   /// @brief What `similarity_significance` scores the shuffled copies of `b` with (see
@@ -329,6 +340,14 @@ struct Motion_signature_similarity {
   internal::Reordering_comparison<Alignment, Normalization> reordering_comparison(const Description& a,
                                                                                   const Description& b) const {
     return {internal::dissimilarity_matrix<float, Eigen::RowMajor>(dissimilarity(a, b)), alignment, normalization};
+  }
+
+private:
+  // The similarity of the rows of a and b, its alignment pairs of rows.
+  Similarity aligned_rows(const Description& a, const Description& b) const {
+    return internal::aligned_similarity(alignment, normalization, frame_count(a), frame_count(b), dissimilarity(a, b),
+                                        "area-weighted distributions of the vertices' speeds and vertical rates at "
+                                        "several lags, frames aligned in time");
   }
 };
 
