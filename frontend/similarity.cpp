@@ -6,11 +6,15 @@
 #include <deformseg/similarity/significance.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
 #include <optional>
 #include <random>
 #include <ranges>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -76,9 +80,17 @@ void check(const Policy_choice& choice, Front front) {
     refuse(name("threshold") + " applies to the graph policies only, not to the " + choice.policy + " policy");
   if (!choice.up.empty() && !policy.up)
     refuse(name("up") + " applies to the motion-signature policy only, not to the " + choice.policy + " policy");
+  if (choice.bands && !policy.up)
+    refuse(name("bands") + " applies to the motion-signature policy only, not to the " + choice.policy + " policy");
+  if (choice.bands.value_or(1) > 1 && choice.up == "none")
+    refuse(name("bands") + " " + std::to_string(*choice.bands) + " needs an up direction, not " +
+           spelled("up", "none", front));
 }
 
-void check(const Significance_request& r, const Policy_choice& choice, Front front) {
+void check(const Comparison_request& r, const Policy_choice& choice, Front front) {
+  if (r.explain && policy_entry(choice).name != similarity_policies[0].name)
+    refuse(spelled("explain", front) + " applies to the motion-signature policy only, not to the " + choice.policy +
+           " policy");
   const std::string name = spelled("significance", front);
   if (r.significance == 1) refuse(name + " needs 0 (none) or at least 2 shuffled copies");
   if (r.significance.value_or(0) >= 2 && policy_entry(choice).key_frames)
@@ -87,8 +99,8 @@ void check(const Significance_request& r, const Policy_choice& choice, Front fro
 
 namespace {
 
-std::size_t shuffled_copies(const Policy_choice& choice, const Significance_request& significance) {
-  return significance.significance.value_or(policy_entry(choice).key_frames ? 0 : 20);
+std::size_t shuffled_copies(const Policy_choice& choice, const Comparison_request& request) {
+  return request.significance.value_or(policy_entry(choice).key_frames ? 0 : 20);
 }
 
 // Whether `Policy` describes a stream of frames, a few at a time (the motion signatures).
@@ -97,26 +109,27 @@ constexpr bool describes_streams =
     std::is_same_v<typename Policy::Description, similarity::Motion_signature_description>;
 
 template <class Policy, class Description>
-Compared compare_descriptions(const Policy& policy, const Description& da, const Description& db, std::size_t copies,
-                              unsigned seed, int threads) {
+Compared compare_descriptions(const Policy& policy, const Description& da, const Description& db,
+                              const Policy_choice& choice, const Comparison_request& request, int threads) {
   Compared out{policy.compare(da, db), std::nullopt, 0};
   if constexpr (similarity::ReorderableDescription<Description>) {
-    if (copies >= 2) {
-      std::mt19937 random(seed);
+    if (const std::size_t copies = shuffled_copies(choice, request); copies >= 2) {
+      std::mt19937 random(request.seed);
       out.z_score = similarity::similarity_significance(policy, da, db, copies, random, threads);
       out.shuffled_copies = copies;
     }
   }
+  if constexpr (describes_streams<Policy>)
+    if (request.explain) out.explanation = policy.explain(da, db);
   return out;
 }
 
 }  // namespace
 
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
-                 const Policy_choice& choice, const Significance_request& significance, int threads) {
+                 const Policy_choice& choice, const Comparison_request& request, int threads) {
   return similarity::visit_policy(make_policy(choice, threads), [&](const auto& policy) {
-    return compare_descriptions(policy, policy.describe(a), policy.describe(b), shuffled_copies(choice, significance),
-                                significance.seed, threads);
+    return compare_descriptions(policy, policy.describe(a), policy.describe(b), choice, request, threads);
   });
 }
 
@@ -193,7 +206,7 @@ Read_matrix similarity_matrix(const Animation_source& source, const Policy_choic
 
 std::optional<Compared> compare_streamed(const std::array<std::string, 2>& inputs, const Input_options& options,
                                          const Policy_choice& choice,
-                                         const Significance_request& significance, Front front,
+                                         const Comparison_request& request, Front front,
                                          std::array<Streamed_input, 2>& streamed) {
   const similarity::Any_policy any = make_policy(choice, options.threads);
   const auto streams = [](const auto& policy) { return describes_streams<std::remove_cvref_t<decltype(policy)>>; };
@@ -229,8 +242,7 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
         }
         if (!described[k]) return std::nullopt;
       }
-      return compare_descriptions(policy, *described[0], *described[1], shuffled_copies(choice, significance),
-                                  significance.seed, options.threads);
+      return compare_descriptions(policy, *described[0], *described[1], choice, request, options.threads);
     }
   });
 }
@@ -248,7 +260,47 @@ nlohmann::json similarity_record(const Compared& compared, const Policy_choice& 
           {"alignment", pairs},
           {"compared", s.compared},
           {"z_score", compared.z_score ? nlohmann::json(*compared.z_score) : nlohmann::json()},
-          {"shuffled_copies", compared.shuffled_copies}};
+          {"shuffled_copies", compared.shuffled_copies},
+          {"explanation", compared.explanation ? explanation_record(*compared.explanation) : nlohmann::json()}};
+}
+
+nlohmann::json explanation_record(const similarity::Motion_signature_explanation& explanation) {
+  nlohmann::json channels = nlohmann::json::array();
+  for (const similarity::Signature_channel& c : explanation.channels)
+    channels.push_back({{"kind", c.kind == similarity::Signature_channel::Kind::speed ? "speed" : "vertical_rate"},
+                        {"lag", c.lag},
+                        {"band", c.band},
+                        {"half", c.upper_half ? "upper" : "lower"},
+                        {"share", c.share},
+                        {"mean_difference", c.mean_difference}});
+  return {{"pairs", explanation.pairs}, {"channels", channels}};
+}
+
+std::vector<std::string> explanation_lines(const similarity::Motion_signature_explanation& explanation,
+                                           std::size_t bands, std::size_t most) {
+  std::vector<const similarity::Signature_channel*> order;
+  for (const similarity::Signature_channel& c : explanation.channels) order.push_back(&c);
+  std::ranges::stable_sort(order, std::greater{}, &similarity::Signature_channel::share);
+  std::vector<std::string> lines;
+  for (const similarity::Signature_channel* c : order | std::views::take(most)) {
+    const bool speed = c->kind == similarity::Signature_channel::Kind::speed;
+    char text[200];
+    const std::string where = bands > 1 ? "height band " + std::to_string(c->band + 1) + " of " +
+                                              std::to_string(bands) + ", counted from the ground"
+                                        : "the surface";
+    std::snprintf(text, sizeof text, "%5.1f%%  %s at lag %.3g s, the %s half of %s: ", 100 * c->share,
+                  speed ? "speeds" : "vertical rates", c->lag,
+                  speed ? (c->upper_half ? "faster" : "slower") : (c->upper_half ? "rising" : "falling"),
+                  where.c_str());
+    std::string line = text;
+    if (speed)
+      std::snprintf(text, sizeof text, "A %.2fx as fast as B", std::exp(c->mean_difference));
+    else
+      std::snprintf(text, sizeof text, "A %s B by %.2f (asinh units)", c->mean_difference >= 0 ? "above" : "below",
+                    std::abs(c->mean_difference));
+    lines.push_back(line + text);
+  }
+  return lines;
 }
 
 }  // namespace deformseg::frontend

@@ -29,13 +29,14 @@
 namespace deformseg::frontend {
 
 /// A similarity policy as a user chooses it: by name, with the options a user may set (the tool's
-/// --policy, --alignment, --threshold and --up; Python's keywords of the same names); every other
+/// --policy, --alignment, --threshold, --up and --bands; Python's keywords of the same names); every other
 /// parameter is the policy's default. An aggregate, for designated initializers.
 struct Policy_choice {
   std::string policy = "motion-signature";  ///< one of `similarity_policies`; default: the first
   std::string alignment{};                  ///< one of `similarity_alignments`; empty: the policy's own
   std::optional<double> threshold{};        ///< a graph policy's deformed threshold; none: the policy's own
   std::string up{};                         ///< one of `up_directions`; empty: +y
+  std::optional<std::size_t> bands{};       ///< the motion signatures' height bands; none: 1
 };
 
 /// A similarity policy the front end offers: its name and help, which options apply to it, its
@@ -89,7 +90,10 @@ inline constexpr std::array similarity_policies{
                  .up = true,
                  .make = [](const similarity::Any_alignment& alignment, const Policy_choice& choice) {
                    return aligned_policy<similarity::Motion_signature_similarity>(
-                       alignment, [&](auto& policy) { policy.signatures.up = up_direction(choice.up); });
+                       alignment, [&](auto& policy) {
+                         policy.signatures.up = up_direction(choice.up);
+                         policy.signatures.bands = choice.bands.value_or(1);
+                       });
                  }},
     Policy_entry{.name = "histogram",
                  .help = "per-frame histograms of the strain, no correspondence needed; its values crowd near 1 "
@@ -160,6 +164,12 @@ inline constexpr std::tuple policy_parameters{
                      "motion-signature: the animations' up axis, whose rises and falls the signatures tell apart. "
                      "Default: +y",
                      up_directions),
+    numeric_parameter("bands", &Policy_choice::bands,
+                      "motion-signature: the surface cut into this many bands of equal height in the first pose, "
+                      "each compared with the band at its height, so that a big head does not outweigh the legs "
+                      "(3 or 4 rank a library of many studios better, a rig's own motions a little worse: chapter 7 "
+                      "of the manual). Default: 1",
+                      positive_counts(double(signatures::max_bands))),
 };
 
 /// The entry of `similarity_policies` that `choice` names.
@@ -177,20 +187,26 @@ std::string alignment_name(const Policy_choice& choice);
 /// @pre as `policy_entry`; `threads` in [0, max_threads], else the policy refuses it when used.
 similarity::Any_policy make_policy(const Policy_choice& choice, int threads = 0);
 
-/// The significance of a similarity: its z-score against frame-shuffled copies of the second.
-struct Significance_request {
+/// What a comparison reports besides its value: the z-score against frame-shuffled copies of the
+/// second animation, and on request where the motion signatures differ.
+struct Comparison_request {
   std::optional<std::size_t> significance{};  ///< copies; none: 20, or 0 for the graph policies
   unsigned seed = 1;
+  bool explain = false;  ///< the motion signatures' channels along the alignment (`Compared::explanation`)
 };
 
-/// The significance request's table.
-inline constexpr std::tuple significance_parameters{
-    numeric_parameter("significance", &Significance_request::significance,
+/// The comparison request's table.
+inline constexpr std::tuple comparison_parameters{
+    numeric_parameter("significance", &Comparison_request::significance,
                       "The z-score of the value against this many copies of the second animation with frames "
                       "shuffled (0: none, 1 refused). Default: 20, none for the graph policies",
                       counts(10000)),
-    numeric_parameter("seed", &Significance_request::seed, "The seed of the shuffles. Default: 1",
+    numeric_parameter("seed", &Comparison_request::seed, "The seed of the shuffles. Default: 1",
                       counts(4294967295.0)),
+    Parameter<Comparison_request, bool>{
+        "explain", &Comparison_request::explain,
+        "motion-signature: say which time scales, height bands and halves of the surface made the two alike or "
+        "different, each channel's share of the difference along the alignment"},
 };
 
 /// Checks a policy choice's names and combinations before any input is read: the one check of the
@@ -199,22 +215,23 @@ inline constexpr std::tuple significance_parameters{
 /// @throws invalid_input naming the parameter as `front` spells it.
 void check(const Policy_choice& choice, Front front);
 
-/// Checks a significance request, for `choice`, before any input is read.
+/// Checks a comparison request, for `choice`, before any input is read.
 /// @throws invalid_input naming the parameter as `front` spells it.
-void check(const Significance_request& request, const Policy_choice& choice, Front front);
+void check(const Comparison_request& request, const Policy_choice& choice, Front front);
 
-/// A similarity and its significance.
+/// A similarity, its significance and, on request, where the motion signatures differ.
 struct Compared {
   similarity::Similarity similarity;
   std::optional<double> z_score;
   std::size_t shuffled_copies = 0;
+  std::optional<similarity::Motion_signature_explanation> explanation{};  ///< with `Comparison_request::explain`
 };
 
 /// How alike `a` and `b` move under `choice` and, for a policy whose frames can be shuffled,
 /// the z-score of the value against shuffled copies of `b` as `significance` asks: each described
 /// and the copies scored on `threads` threads (0: all; the result does not depend on it).
 Compared compare(const mesh::Surface_mesh_animation& a, const mesh::Surface_mesh_animation& b,
-                 const Policy_choice& choice, const Significance_request& significance, int threads = 0);
+                 const Policy_choice& choice, const Comparison_request& request, int threads = 0);
 
 /// Animations as the similarity matrices of the front end take them: by address, so that a caller's
 /// animations need not be gathered into one container (Python's list, the tool's clips).
@@ -297,11 +314,22 @@ struct Streamed_input {
 /// @throws invalid_input naming the file or the frame that cannot be read.
 std::optional<Compared> compare_streamed(const std::array<std::string, 2>& inputs, const Input_options& options,
                                          const Policy_choice& choice,
-                                         const Significance_request& significance, Front front,
+                                         const Comparison_request& request, Front front,
                                          std::array<Streamed_input, 2>& streamed);
 
 /// A similarity as a report: {"policy", "alignment_policy", "similarity", "score", "labels_a",
-/// "labels_b", "alignment": [[i, j], ...], "compared", "z_score" (or null), "shuffled_copies"}.
+/// "labels_b", "alignment": [[i, j], ...], "compared", "z_score" (or null), "shuffled_copies",
+/// "explanation" (`explanation_record`, or null)}.
 nlohmann::json similarity_record(const Compared& compared, const Policy_choice& choice);
+
+/// An explanation as a report: {"pairs", "channels": [{"kind": "speed" or "vertical_rate", "lag",
+/// "band", "half": "lower" or "upper", "share", "mean_difference"}, ...]}.
+nlohmann::json explanation_record(const similarity::Motion_signature_explanation& explanation);
+
+/// The `most` channels of the largest shares, in words, one a line: "41.2%  speeds at lag 0.533 s,
+/// the faster half of the surface: A 1.84x as fast as B" (or "... of height band 2 of 3, counted
+/// from the ground" when there are several bands).
+std::vector<std::string> explanation_lines(const similarity::Motion_signature_explanation& explanation,
+                                           std::size_t bands, std::size_t most);
 
 }  // namespace deformseg::frontend

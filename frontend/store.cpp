@@ -238,17 +238,18 @@ similarity::Default_similarity store_policy(const Policy_choice& choice, Front f
 
 std::size_t signature_width(const similarity::Default_similarity& policy) {
   const signatures::Motion_signature_options& s = policy.signatures;
-  return (s.up ? 2 : 1) * s.lags.size() * s.quantiles;
+  return (s.up ? 2 : 1) * s.lags.size() * s.bands * s.quantiles;
 }
 
 std::string store_description(const similarity::Default_similarity& policy) {
   const signatures::Motion_signature_options& s = policy.signatures;
   const std::size_t width = signature_width(policy);
-  const nlohmann::json description = {
+  nlohmann::json description = {
       {"policy", "motion-signature"}, {"alignment", "dtw"},         {"lags", s.lags},
       {"quantiles", s.quantiles},     {"floor", s.floor},           {"up", up_json(s.up)},
       {"vertical_unit", s.vertical_unit}, {"vertical_weight", s.vertical_weight},
       {"signature_rate", policy.signature_rate}, {"scale", policy.scale}, {"width", width}};
+  if (s.bands > 1) description["bands"] = s.bands;  // absent: one band, as every store before them
   return description.dump();
 }
 
@@ -261,6 +262,8 @@ Policy_choice stored_policy_choice(const store::Motion_store& store) {
   Policy_choice choice;
   for (const Choice& up : up_directions)
     if (up_json(up_direction(up.name)) == stored["up"]) choice.up = up.name;
+  if (const auto bands = stored.find("bands"); bands != stored.end() && bands->is_number_unsigned())
+    choice.bands = bands->get<std::size_t>();
   const nlohmann::json expected = nlohmann::json::parse(store_description(store_policy(choice, Front::command_line)));
   for (const auto& [key, value] : expected.items())
     if (!stored.contains(key) || stored[key] != value)

@@ -97,13 +97,20 @@ Eigen::MatrixXd Store_search::matrix(std::vector<std::size_t> indices, const Pro
 }
 
 void Store_search::check_policy(const Policy_choice& asked, Front front) const {
+  // What was asked must be the store's; what was not is.
   const similarity::Default_similarity wanted = store_policy(asked, front);  // motion signatures, DTW
-  if (asked.up.empty() || store_description(wanted) == store_description(policy_)) return;
   const std::string where = front == Front::python ? "MotionStore.description"
                                                    : "deformseg store info " + store().folder().string();
-  throw invalid_input(spelled("up", asked.up, front) + " differs from the store's up direction (" + where +
-                          " gives it)",
-                      {.file = store().folder().string()});
+  const auto& up = wanted.signatures.up;
+  const auto& stored_up = policy_.signatures.up;
+  if (!asked.up.empty() && !((!up && !stored_up) || (up && stored_up && *up == *stored_up)))
+    throw invalid_input(spelled("up", asked.up, front) + " differs from the store's up direction (" + where +
+                            " gives it)",
+                        {.file = store().folder().string()});
+  if (asked.bands && *asked.bands != policy_.signatures.bands)
+    throw invalid_input(spelled("bands", front) + " " + std::to_string(*asked.bands) + " differs from the store's " +
+                            std::to_string(policy_.signatures.bands) + " (" + where + " gives it)",
+                        {.file = store().folder().string()});
 }
 
 std::vector<std::size_t> Store_search::labelled(const std::string& labels, const std::optional<Input_options>& read,

@@ -27,10 +27,10 @@ namespace py = pybind11;
 namespace deformseg::python {
 namespace {
 
-constexpr auto similarity_table = std::tuple_cat(frontend::policy_parameters, frontend::significance_parameters);
+constexpr auto similarity_table = std::tuple_cat(frontend::policy_parameters, frontend::comparison_parameters);
 
 frontend::Compared similarity(const Animation& a, const Animation& b, const frontend::Policy_choice& choice,
-                              const frontend::Significance_request& significance, int threads) {
+                              const frontend::Comparison_request& significance, int threads) {
   frontend::check(choice, frontend::Front::python);
   frontend::check(significance, choice, frontend::Front::python);
   whole_argument("threads", threads, frontend::thread_counts);
@@ -129,19 +129,31 @@ void bind_similarity(py::module_& m) {
                              "The z-score of value against frame-shuffled copies of b, or None.")
       .def_property_readonly("shuffled_copies", [](const frontend::Compared& s) { return s.shuffled_copies; },
                              "How many shuffled copies the z-score was computed against (0: none).")
+      .def_property_readonly(
+          "explanation",
+          [](const frontend::Compared& s) -> py::object {
+            if (!s.explanation) return py::none();
+            return py::module_::import("json").attr("loads")(frontend::explanation_record(*s.explanation).dump());
+          },
+          "With explain=True (motion-signature): where the signatures differ along the alignment, a dict "
+          "{'pairs', 'channels': [{'kind': 'speed' or 'vertical_rate', 'lag' (s), 'band' (0 the lowest), 'half': "
+          "'lower' or 'upper', 'share' (of the squared differences, summing to 1), 'mean_difference' (a's less "
+          "b's; for speeds a log ratio)}, ...]}; else None.")
       .def("__repr__", [](const frontend::Compared& s) {
         return "<deformseg.Similarity value=" + std::to_string(s.similarity.value) + ", " +
                std::to_string(s.similarity.alignment.size()) + " aligned pairs>";
       });
 
   define_function<similarity_table, Types<const Animation&, const Animation&>, Types<int>, frontend::Policy_choice,
-                  frontend::Significance_request>(
+                  frontend::Comparison_request>(
       m, "similarity",
       R"doc(How alike two animations move (motion_similarity), as the tool's `similarity` command.
 
 The histogram policy's values crowd near 1 (chapter 7 of the manual gives figures): read the
 z-score or a rank, not the value. The z-score is
 computed against frame-shuffled copies of b, shuffled by a std::mt19937 seeded with `seed`.
+With explain=True (motion-signature), Similarity.explanation says which time scales, height bands
+(`bands`) and halves of the surface made the two alike or different.
 Returns a Similarity (value, score, alignment, z_score, ...). Complexity: the policy's describe of
 each, one compare, plus one compare per shuffled copy (motion-signature with DTW: O(T V) to
 describe, O(Ta Tb) to compare). Each is described and the copies scored on `threads` threads

@@ -149,6 +149,7 @@ def describe_to_store(
     threads: int = 0,
     body: Optional[_Path] = None,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
+    bands: Optional[int] = None,
     hash: bool = False,
     skip_unreadable: bool = False,
 ) -> dict[str, Any]: ...
@@ -216,6 +217,8 @@ class Similarity:
     def z_score(self) -> Optional[float]: ...
     @property
     def shuffled_copies(self) -> int: ...
+    @property
+    def explanation(self) -> Optional[dict[str, Any]]: ...  # with explain=True: pairs, channels
 
 def similarity(
     a: Animation,
@@ -225,8 +228,10 @@ def similarity(
     alignment: Optional[Literal["smith-waterman", "dtw", "subsequence-dtw"]] = None,
     threshold: Optional[float] = None,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
+    bands: Optional[int] = None,
     significance: Optional[int] = None,
     seed: int = 1,
+    explain: bool = False,
     threads: int = 0,
 ) -> Similarity: ...
 def similarity_matrix(
@@ -237,6 +242,7 @@ def similarity_matrix(
     alignment: Optional[Literal["smith-waterman", "dtw", "subsequence-dtw"]] = None,
     threshold: Optional[float] = None,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
+    bands: Optional[int] = None,
     progress: Optional[Callable[[int, int], Optional[bool]]] = None,
     threads: int = 0,
 ) -> npt.NDArray[np.float64]: ...  # (N, N), or (Q, D) with a database

@@ -106,6 +106,26 @@ def test_similarity_of_an_animation_with_itself_is_1(grid):
     assert m.shape == (2, 2) and np.allclose(m, 1.0)
 
 
+def test_explain_says_where_two_motions_differ_and_bands_describe_otherwise(grid):
+    faces, frames = grid(4, 6, 24)
+    a = deformseg.Animation(faces, frames)
+    b = deformseg.Animation(faces, frames * np.array([1.0, 1.0, 2.0]))  # the same wave, twice as high
+    s = deformseg.similarity(a, b, bands=2, up="+z", explain=True)
+    channels = s.explanation["channels"]
+    assert len(channels) == 2 * 4 * 2 * 2 and s.explanation["pairs"] == len(s.alignment)
+    assert sum(c["share"] for c in channels) == pytest.approx(1.0)
+    assert {c["band"] for c in channels} == {0, 1} and {c["kind"] for c in channels} == {"speed", "vertical_rate"}
+    assert deformseg.similarity(a, b).explanation is None
+    assert all(c["share"] == 0 for c in deformseg.similarity(a, a, explain=True).explanation["channels"])
+    banded = deformseg.similarity(a, b, bands=2, up="+z").value
+    assert banded == s.value and banded != deformseg.similarity(a, b, up="+z").value
+    assert deformseg.similarity_matrix([a, b], bands=2, up="+z")[0, 1] == banded
+    with pytest.raises(deformseg.InvalidInput, match="explain applies to the motion-signature policy only"):
+        deformseg.similarity(a, b, policy="histogram", explain=True)
+    with pytest.raises(deformseg.InvalidInput, match="bands 2 needs an up direction, not up='none'"):
+        deformseg.similarity(a, b, bands=2, up="none")
+
+
 def test_the_frame_rate_is_the_animations_and_the_same_motion_at_half_the_rate_is_the_same(grid):
     faces, frames = grid(4, 6, 61)
     a = deformseg.Animation(faces, frames)

@@ -285,6 +285,26 @@ def test_the_search_refuses_bad_arguments(described, grid):
         deformseg.similarity_matrix(3)
 
 
+def test_a_store_of_height_bands_records_them_and_searches_under_them(characters, tmp_path):
+    # Described with bands=3, the store's matrix is the banded policy's, its description says so,
+    # describing into it otherwise or asking for other bands is refused naming the store.
+    labels = write_labels(characters, tmp_path / "labels.csv")
+    deformseg.describe_to_store(labels, tmp_path / "S", bands=3)
+    store = deformseg.open_store(tmp_path / "S")
+    assert store.description["bands"] == 3 and store.description["width"] == 3 * 64
+    animations = [deformseg.read_animation(row["file"], clip=row["clip"])
+                  for row in deformseg.read_motion_labels(labels)]
+    m = deformseg.similarity_matrix(animations, bands=3)
+    assert np.array_equal(store.matrix(), m) and np.array_equal(deformseg.similarity_matrix(store, bands=3), m)
+    for q in (0, len(animations) // 2):  # the pruned search, its bounds on banded rows, ranks as the matrix
+        found = store.search(animations[q], k=5, threads=1)["neighbours"]
+        assert [(x["index"], x["value"]) for x in found] == ranked(m[q])[:5]
+    with pytest.raises(deformseg.InvalidInput, match="bands 1 differs from the store's 3"):
+        deformseg.similarity_matrix(store, bands=1)
+    with pytest.raises(deformseg.InvalidInput, match="other options"):
+        deformseg.describe_to_store(labels, tmp_path / "S")
+
+
 # ---- evaluate -------------------------------------------------------------------------------------
 
 def test_evaluate_on_a_store_equals_evaluate_on_the_matrix_of_the_animations(described):

@@ -101,6 +101,46 @@ def test_similarity_up_unknown(tool, scratch):
     reads_nothing(fails(tool("similarity", scratch / "no-such-a", scratch / "no-such-b", "--up", "w"), "--up"))
 
 
+# --explain: the channels' shares sum to 1 and the text lists the largest; a motion and itself
+# differ nowhere; refused for another policy before anything is read.
+def test_similarity_explain(tool, synth_obj, bend_once):
+    run = succeeds(tool("similarity", synth_obj[0], bend_once[0], "--explain", "--bands", "2", "--up", "+z",
+                        "--json", "-"))
+    explanation = run.json()["explanation"]
+    channels = explanation["channels"]
+    assert len(channels) == 2 * 4 * 2 * 2 and explanation["pairs"] > 0
+    assert abs(sum(c["share"] for c in channels) - 1) < 1e-9
+    assert {c["band"] for c in channels} == {0, 1} and {c["half"] for c in channels} == {"lower", "upper"}
+    text = succeeds(tool("similarity", synth_obj[0], bend_once[0], "--explain", "--bands", "2", "--up", "+z")).out
+    lines = [line for line in text.splitlines() if "% " in line]
+    assert len(lines) == 6 and re.search(r"height band [12] of 2, counted from the ground", lines[0]), text
+    itself = tool("similarity", synth_obj[0], synth_obj[0], "--explain", "--json", "-").json()["explanation"]
+    assert all(c["share"] == 0 and c["mean_difference"] == 0 for c in itself["channels"])
+    assert tool("similarity", synth_obj[0], bend_once[0], "--json", "-").json()["explanation"] is None
+
+
+def test_similarity_explain_not_signature(tool, scratch):
+    reads_nothing(fails(tool("similarity", scratch / "no-such-a", scratch / "no-such-b", "--policy", "histogram",
+                             "--explain"),
+                        "--explain applies to the motion-signature policy only, not to the histogram policy"))
+
+
+# --bands: another description (a value of its own), 1 the default; refused without an up direction,
+# for another policy, and out of its range, before anything is read.
+def test_similarity_bands(tool, scratch, synth_obj, bend_once):
+    value = lambda *options: tool("similarity", synth_obj[0], bend_once[0], *options, "--json", "-").json()["similarity"]
+    assert value("--bands", "1") == value()
+    assert value("--bands", "3", "--up", "+z") != value("--up", "+z")
+    assert tool("similarity", synth_obj[0], synth_obj[0], "--bands", "4", "--json", "-").json()["similarity"] == 1.0
+    missing = (scratch / "no-such-a", scratch / "no-such-b")
+    reads_nothing(fails(tool("similarity", *missing, "--bands", "2", "--up", "none"),
+                        "--bands 2 needs an up direction, not --up none"))
+    reads_nothing(fails(tool("similarity", *missing, "--bands", "2", "--policy", "graph"),
+                        "--bands applies to the motion-signature policy only, not to the graph policy"))
+    reads_nothing(fails(tool("similarity", *missing, "--bands", "0"), "--bands"))
+    reads_nothing(fails(tool("similarity", *missing, "--bands", "65"), "--bands"))
+
+
 def test_matrix_csv(tool, scratch, synth_obj, bend_once):
     run = succeeds(tool("matrix", synth_obj[0], bend_once[0], synth_obj[0], "--csv", scratch / "matrix.csv",
                         "--png", scratch / "matrix.png", "--json", "-"))

@@ -323,6 +323,23 @@ def test_store_info(tool, store):
     assert info["summary_layout"] == {"kind": "motion-summary", "chunks": 4}
 
 
+# A store described with --bands 3 says so, and searches, the matrix and evaluate use its bands:
+# the search equals the banded matrix of the files; other bands asked are refused naming the store.
+def test_store_of_height_bands(tool, scratch, clips):
+    folder = scratch / "store-bands"
+    assert len(describe(tool, folder, *clips, extra=("--bands", "3", "--up", "+z"))["described"]) == 4
+    info = store_info(tool, folder)
+    assert info["description"]["bands"] == 3 and info["width"] == 3 * 64
+    matrix = tool("matrix", clips[1], *clips, "--bands", "3", "--up", "+z", "--json", "-").json()["similarity"]
+    (query,) = tool("search", clips[1], "--store", folder, "-k", "10", "--json", "-").json()["queries"]
+    expected = ranked({j - 1: matrix[0][j] for j in range(1, 5)}, range(4))
+    assert [(n["index"], n["value"]) for n in query["neighbours"]] == expected
+    assert tool("matrix", "--store", folder, "--json", "-").json()["similarity"] == \
+        [row[1:] for row in matrix[1:]]
+    fails(tool("matrix", "--store", folder, "--bands", "1"), "--bands 1 differs from the store's 3")
+    fails(tool("describe", *clips, "--store", folder), "described with other options")
+
+
 def test_store_verify_names_the_damaged_file(tool, scratch, store):
     assert "ok: 4 clips" in succeeds(tool("store", "verify", store)).out
     damaged = scratch / "store-damaged"

@@ -25,7 +25,7 @@ struct Similarity_command_options {
   std::vector<std::string> inputs;  // A and B
   Input_options read;
   Policy_options policy;
-  frontend::Significance_request significance;
+  frontend::Comparison_request significance;
   std::string json;
   std::string png;
 };
@@ -66,6 +66,11 @@ void report_similarity(const Similarity_command_options& o, const frontend::Comp
     if (compared.z_score)
       std::cout << "z-score     " << *compared.z_score << " (against " << compared.shuffled_copies
                 << " frame-shuffled copies of B)\n";
+    if (compared.explanation) {
+      std::cout << "where the signatures differ, along the " << compared.explanation->pairs << " aligned rows:\n";
+      for (const std::string& line : frontend::explanation_lines(*compared.explanation, o.policy.bands.value_or(1), 6))
+        std::cout << "  " << line << '\n';
+    }
   });
 }
 
@@ -199,7 +204,7 @@ void add_similarity_command(CLI::App& app) {
                                                        "score and the frame-to-frame alignment");
   add_inputs(*command, "inputs", o->inputs, 2, 2, o->read, "The two animations, A and B");
   add_policy_options(*command, o->policy);
-  add_parameters(*command, frontend::significance_parameters, o->significance);
+  add_parameters(*command, frontend::comparison_parameters, o->significance);
   add_json_option(*command, o->json, "the result");
   command->add_option("--png", o->png, "Draw the alignment path over the frame grid (A down, B across) into FILE.png")
       ->check(output_file());

@@ -276,6 +276,7 @@ void add_describe_command(CLI::App& app) {
              "The clips: every clip of a glTF, FBX or Collada file that names none, or a labels CSV (evaluate's) "
              "for its rows, each on its body_file (else --body's body, else its own); or");
   add_parameter(*command, std::get<3>(frontend::policy_parameters), o->policy.up);
+  add_parameter(*command, std::get<4>(frontend::policy_parameters), o->policy.bands);
   add_store_option(*command, o->store, "The store's folder (made when missing)");
   command->add_flag("--hash", o->hash,
                     "Tell a changed source by its bytes' hash rather than its modification time (reads every file)");
