@@ -2,7 +2,8 @@
 // library, a rig of the shared characters), a choice is made among candidate policies on the other groups
 // alone, and the left-out group's clips are queried under it. Not a Google Benchmark:
 //
-//   build-bench/test/bench/retrieval_groups [--threads 2] [--grid default|signatures|all|expansion|fusion]
+//   build-bench/test/bench/retrieval_groups [--threads 2]
+//                                           [--grid default|signatures|all|expansion|fusion|descriptions]
 //                                           [--learned P]... [--whitened S]... [--discriminant S]...
 //
 // (default: --threads 2 --grid signatures, nothing learned).
@@ -20,7 +21,9 @@
 // adds the self-similarity policy and blends of both values; `expansion` is the default with each query's row
 // plus the mean row of its 1, 3 or 10 nearest candidates (query expansion, `expanded`); `fusion` blends the
 // two policies' ranks instead of their values (`rank_scores`): each query's candidates scored by the fraction
-// of them ranked after, or by reciprocal rank fusion.
+// of them ranked after, or by reciprocal rank fusion; `descriptions` describes every clip again with the
+// surface cut into 2, 3 or 4 height bands (`Motion_signature_options::bands`) and compares each at scales
+// 0.75, 1.2 and 1.77.
 //
 // For each group g: the candidate whose mean figure (the mean of NN accuracy, mAP and ROC-AUC) over the other
 // groups is best, each other group's clips queried within its set without g's; then g's queries against every
@@ -71,11 +74,12 @@ fs::path data_dir() {
   return fs::path(dir && *dir ? dir : DEFORMSEG_DATA_DIR);
 }
 
-// One labelled clip, described by the signatures and (with --grid all) the self-similarity.
+// One labelled clip, described by the signatures (today's, then each of the grid's other descriptions) and
+// (with --grid all) the self-similarity.
 struct Clip {
   ds::evaluation::Labelled_clip row;
   std::string group;
-  ds::similarity::Motion_signature_description signatures;
+  std::vector<ds::similarity::Motion_signature_description> signatures;
   std::optional<ds::similarity::Self_similarity_matching<>::Description> self;
 };
 
@@ -112,6 +116,7 @@ struct Candidate {
   double self_share = 0;
   std::string alignment = "dtw";  // or "subsequence-dtw", "smith-waterman"
   Centre centre = Centre::none;
+  std::size_t description = 0;       // which of the clips' descriptions (`description_options`): 0 today's
   Eigen::VectorXf column_factors{};  // when not empty, every column multiplied by its factor
   Eigen::MatrixXf projection{};      // when not empty, every row r made r * projection
   std::size_t expansion = 0;         // query expansion: the query's nearest candidates whose rows are added
@@ -123,7 +128,8 @@ struct Candidate {
 // The rows of `csv` whose group `group_of` names, read and described; `keep` chooses the groups.
 template <class GroupOf, class Keep>
 Evaluation_set read_set(const std::string& name, const fs::path& csv, const GroupOf& group_of, const Keep& keep,
-                        bool with_self, int threads) {
+                        std::span<const ds::signatures::Motion_signature_options> descriptions, bool with_self,
+                        int threads) {
   Evaluation_set set{name, {}};
   for (ds::evaluation::Labelled_clip& row : ds::evaluation::read_motion_labels(csv)) {
     const std::string group = group_of(row);
@@ -134,7 +140,6 @@ Evaluation_set read_set(const std::string& name, const fs::path& csv, const Grou
   std::vector<std::vector<std::size_t>> files;
   for (auto& [file, rows] : by_file) files.push_back(rows);
   std::vector<char> readable(set.clips.size(), 0);
-  const ds::similarity::Default_similarity signatures{};
   const ds::similarity::Self_similarity_matching<> self{};
   ds::internal::parallel_for(files.size(), threads, [&](std::size_t f) {
     try {
@@ -144,7 +149,11 @@ Evaluation_set read_set(const std::string& name, const fs::path& csv, const Grou
         Clip& clip = set.clips[k];
         try {
           const auto animation = file.read(repaired, {.clip = clip.row.item.clip, .fps = fps, .threads = 1});
-          clip.signatures = signatures.describe(animation);
+          for (const ds::signatures::Motion_signature_options& options : descriptions) {
+            ds::similarity::Default_similarity signatures{};
+            signatures.signatures = options;
+            clip.signatures.push_back(signatures.describe(animation));
+          }
           if (with_self) clip.self = self.describe(animation);
           readable[k] = 1;
         } catch (const ds::invalid_input&) {
@@ -262,7 +271,7 @@ Eigen::MatrixXd fused(const Evaluation_set& set, const Candidate& c, const Eigen
 Eigen::MatrixXd candidate_matrix(const Evaluation_set& set, const Candidate& c,
                                  std::optional<Eigen::MatrixXd>& self_matrix, int threads) {
   std::vector<ds::similarity::Motion_signature_description> descriptions;
-  for (const Clip& clip : set.clips) descriptions.push_back(weighted(clip.signatures, c));
+  for (const Clip& clip : set.clips) descriptions.push_back(weighted(clip.signatures[c.description], c));
   if (c.centre == Centre::body_columns || c.centre == Centre::body_lags) less_body_means(set, c.centre, descriptions);
   const auto matrix = [&]<class Alignment>(Alignment) {
     ds::similarity::Motion_signature_similarity<Alignment> policy{};
@@ -289,10 +298,31 @@ std::string number(double x) {
   return text;
 }
 
+// The descriptions of every clip for `grid`: today's first; with the `descriptions` grid, then the surface cut
+// into 2, 3 and 4 height bands (each band's 8 quantiles), and into 4 bands of 4 quantiles each.
+std::vector<ds::signatures::Motion_signature_options> description_options(const std::string& grid) {
+  std::vector<ds::signatures::Motion_signature_options> out(1);
+  if (grid != "descriptions") return out;
+  for (const std::size_t bands : {2, 3, 4}) out.push_back({.bands = bands});
+  out.push_back({.quantiles = 4, .bands = 4});
+  return out;
+}
+
 // The candidates of `grid`: today's default first.
 std::vector<Candidate> candidates(const std::string& grid) {
   std::vector<Candidate> out{{.name = "default"}};
   if (grid == "default") return out;
+  if (grid == "descriptions") {
+    const std::vector<ds::signatures::Motion_signature_options> options = description_options(grid);
+    for (std::size_t d = 0; d < options.size(); ++d) {
+      const std::string name = d == 0 ? "today's signatures"
+                                      : std::to_string(options[d].bands) + " height bands of " +
+                                            std::to_string(options[d].quantiles) + " quantiles";
+      for (const double s : {0.75, 1.2, 1.77})
+        if (d > 0 || s != out[0].scale) out.push_back({.name = name + ", scale " + number(s), .scale = s, .description = d});
+    }
+    return out;
+  }
   if (grid == "expansion") {
     for (const std::size_t k : {1, 3, 10})
       for (const double w : {0.5, 1.0})
@@ -480,7 +510,7 @@ std::map<std::string, std::vector<Eigen::VectorXd>> clip_means_by_motion(const s
   for (std::size_t s = 0; s < sets.size(); ++s)
     for (const Clip& c : sets[s].clips)
       if (c.row.item.motion != ds::evaluation::distractor_label && !(s == left.set && c.group == left.group))
-        motions[c.row.item.motion].push_back(c.signatures.signatures.cast<double>().colwise().mean().transpose());
+        motions[c.row.item.motion].push_back(c.signatures[0].signatures.cast<double>().colwise().mean().transpose());
   return motions;
 }
 
@@ -592,6 +622,7 @@ int main(int argc, char** argv) {
   }
   const auto start = std::chrono::steady_clock::now();
   const bool with_self = grid == "all" || grid == "fusion";
+  const std::vector<ds::signatures::Motion_signature_options> descriptions = description_options(grid);
   const fs::path data = data_dir();
   const auto rig_of = [](const ds::evaluation::Labelled_clip& row) { return row.item.rig; };
   const auto pack_of = [](const ds::evaluation::Labelled_clip& row) {
@@ -599,13 +630,15 @@ int main(int argc, char** argv) {
   };
   const auto any = [](const std::string&) { return true; };
   std::vector<Evaluation_set> sets;
-  sets.push_back(read_set("characters", data / "characters/motions.csv", rig_of, any, with_self, threads));
+  sets.push_back(read_set("characters", data / "characters/motions.csv", rig_of, any, descriptions, with_self,
+                         threads));
   sets.push_back(read_set(
       "library without the cute fish", data / "library/labels.csv", pack_of,
-      [](const std::string& g) { return g != "cute_fish_pack"; }, with_self, threads));
+      [](const std::string& g) { return g != "cute_fish_pack"; }, descriptions,
+      with_self, threads));
   sets.push_back(read_set(
       "the cute fish", data / "library/labels.csv", pack_of, [](const std::string& g) { return g == "cute_fish_pack"; },
-      with_self, threads));
+      descriptions, with_self, threads));
 
   std::vector<Group_ref> groups;
   for (std::size_t s = 0; s < sets.size(); ++s) {

@@ -1,0 +1,323 @@
+"""Descriptions of motion tried against the studio and the body (issue 57), run by hand:
+
+    cmake --build build-bench --target described_matrix
+    PYTHONPATH=build/python /usr/bin/python3 test/bench/retrieval_descriptions.py \\
+        [--matrix build-bench/test/bench/described_matrix] [--cache DIR] [NAME ...]
+
+Each labelled clip of the shared characters (characters/motions.csv, a group per rig) and of the
+motion library (library/labels.csv, a group per pack; the cute fish apart) is read as `deformseg
+evaluate` reads it (30 fps, welded, repaired) and kept in DIR (default: deformseg-descriptions in
+the system's temporary folder) for the next run. Each description NAME (default: all, in the order
+below) is computed here in NumPy, frame by frame, with the library's rules (lags of 1, 4, 16 and
+128 frames, cut at the clip's ends; the area-weighted quantiles at (q + 1/2) / k of the weight; the
+logarithms, floor, asinh and vertical weight of the default), then compared as the default policy
+compares motion signatures (its kernel, DTW and normalisation: `described_matrix`), and each group's
+queries scored against their whole set with the evaluation's rules. A fixed description chooses
+nothing, so each group's figures are those of a group left out. `default` reproduces the library's
+default (`deformseg evaluate`'s figures to the last digit); `bands-3` and `bands-4` the option
+`bands`. Two rows re-rank the default's matrix instead, reading no label: `body-centred` takes from
+each similarity the query's mean similarity to the candidate's body (the body's offset), `hubs`
+half the candidate's mean similarity to its 10 nearest clips of other bodies.
+"""
+import argparse
+import json
+import os
+import struct
+import subprocess
+import sys
+import tempfile
+from multiprocessing import Pool
+from pathlib import Path
+
+import numpy as np
+
+import deformseg
+
+LAGS = (1, 4, 16, 128)  # frames at 30 fps
+FPS = 30.0
+FLOOR, VERTICAL_UNIT, VERTICAL_WEIGHT = 3e-3, 9e-3, 0.2
+DATA = Path(os.environ.get("DEFORMSEG_DATA_DIR", Path(__file__).resolve().parents[3] / "shared" / "data"))
+
+
+# ---- the clips ---------------------------------------------------------------------------------
+
+def read_sets(cache):
+    """[(set name, [clip dict])]: the characters, the library without the cute fish, the cute fish.
+    Each clip: file, clip, motion, rig, body, group, and path (its positions and faces, cached)."""
+    sources = {"characters": (DATA / "characters" / "motions.csv", lambda r: r["rig"]),
+               "library": (DATA / "library" / "labels.csv", lambda r: r["body"].split("/")[0])}
+    clips = {}
+    for name, (csv, group_of) in sources.items():
+        folder = cache / name
+        folder.mkdir(parents=True, exist_ok=True)
+        clips[name] = []
+        for k, row in enumerate(deformseg.read_motion_labels(csv)):
+            path = folder / f"{k}.npz"
+            if not path.exists():
+                try:
+                    a = deformseg.read_animation(row["file"], clip=row["clip"], fps=FPS)
+                except deformseg.InvalidInput:
+                    continue  # as --skip-unreadable
+                np.savez(path, positions=np.asarray(a.frames, dtype=np.float32), faces=np.asarray(a.faces))
+            clips[name].append(dict(row, body=row["body"] or row["file"], group=group_of(row), path=str(path)))
+    fish = "cute_fish_pack"
+    return [("characters", clips["characters"]),
+            ("library without the cute fish", [c for c in clips["library"] if c["group"] != fish]),
+            ("the cute fish", [c for c in clips["library"] if c["group"] == fish])]
+
+
+# ---- the descriptions --------------------------------------------------------------------------
+
+def area_weights(first, faces):
+    e1, e2 = first[faces[:, 1]] - first[faces[:, 0]], first[faces[:, 2]] - first[faces[:, 0]]
+    area = 0.5 * np.linalg.norm(np.cross(e1, e2), axis=1)
+    w = np.zeros(len(first))
+    for j in range(3):
+        np.add.at(w, faces[:, j], area / 3)
+    return w / w.sum() if w.sum() > 0 else np.full(len(first), 1 / len(first))
+
+
+def rms_radius(p, w):
+    centroid = np.einsum("tvi,v->ti", p, w)
+    return np.sqrt(np.mean(((p - centroid[:, None]) ** 2).sum(-1) @ w))
+
+
+def quantiles(values, w, k):
+    """Per row of `values` (T, V): the smallest value whose cumulative weight reaches (q + 1/2) / k."""
+    order = np.argsort(values, axis=1, kind="stable")
+    cumulative = np.cumsum(w[order], axis=1)
+    cumulative /= cumulative[:, -1:]
+    at = np.stack([np.argmax(cumulative >= (q + 0.5) / k - 1e-12, axis=1) for q in range(k)], 1)
+    return np.take_along_axis(np.take_along_axis(values, order, 1), at, 1)
+
+
+def displacements(p, lag, unit):
+    t = np.arange(len(p))
+    return (p[np.minimum(t + lag, len(p) - 1)] - p[np.maximum(t - lag, 0)]) * unit / (2 * lag / FPS)
+
+
+def rows(p, regions, unit, k=8, transform=None):
+    """Per lag, each region's (a vertex weighting's) speed quantiles, then its vertical rates'."""
+    speeds, verticals = [], []
+    for lag in LAGS:
+        d = displacements(p, lag, unit)
+        if transform:
+            d = transform(d, lag)
+        for w in regions:
+            on = w > 0
+            speeds.append(np.log(np.maximum(quantiles(np.linalg.norm(d[:, on], axis=2), w[on], k), FLOOR)))
+            verticals.append(np.sqrt(VERTICAL_WEIGHT) * np.arcsinh(quantiles(d[:, on, 1], w[on], k) / VERTICAL_UNIT))
+    return np.hstack(speeds + verticals)
+
+
+def cut(values, count):
+    """Each value's band of `count` equal ones between the values' least and greatest."""
+    u = (values - values.min()) / max(values.max() - values.min(), 1e-300)
+    return np.minimum((u * count).astype(int), count - 1)
+
+
+def regions_of(labels, w, count):
+    """A weighting per label of `count`, each summing to 1; an empty label takes the whole surface's."""
+    out = []
+    for label in range(count):
+        part = np.where(labels == label, w, 0.0)
+        out.append(part / part.sum() if part.sum() > 0 else w)
+    return out
+
+
+def describe(name, p, faces):
+    w = area_weights(p[0], faces)
+    radius = rms_radius(p, w)
+    height, depth, side = p[0][:, 1], p[0][:, 2], p[0][:, 0]
+    if name == "default":
+        return rows(p, [w], 1 / radius)
+    if name == "bands-3x2-front-back":
+        return rows(p, regions_of(cut(height, 3) * 2 + cut(depth, 2), w, 6), 1 / radius)
+    if name == "bands-3-left-right":
+        return left_right_sorted(p, w, radius, side >= side @ w, cut(height, 3))
+    if name == "bands-3-equal-weights":
+        return rows(p, [sum(regions_of(cut(height, 3), w, 3)) / 3], 1 / radius)
+    if name == "vertex-weights":
+        return rows(p, [np.full(len(w), 1 / len(w))], 1 / radius)
+    if name == "height-unit":
+        return rows(p, [w], 1 / (height.max() - height.min()))
+    if name in ("local", "local-and-travel"):
+        return local(p, w, radius, name == "local-and-travel")
+    if name.startswith("amplitude-"):
+        return amplitude_relative(p, w, radius, cut(height, 3), float(name[10:]))
+    if name in ("bands-3-and-alternation", "bands-3-and-return"):
+        structure = alternation(p, w, height, side) if name.endswith("alternation") else homecoming(p, w, radius)
+        banded = rows(p, regions_of(cut(height, 3), w, 3), 1 / radius)
+        return np.hstack([banded, np.full((len(p), 1), (8.0 if name.endswith("alternation") else 4.0) * structure)])
+    if name.startswith("bands-"):
+        return rows(p, regions_of(cut(height, int(name[6:])), w, int(name[6:])), 1 / radius)
+    raise SystemExit(f"unknown description {name}")
+
+
+def local(p, w, radius, travel):
+    """Each displacement less the centroid's (the body's travel out); with `travel`, the centroid's
+    speed and vertical rate as one more region of one vertex."""
+    speeds, verticals = [], []
+    for lag in LAGS:
+        d = displacements(p, lag, 1 / radius)
+        centroid = np.einsum("tvi,v->ti", d, w)
+        d = d - centroid[:, None]
+        speeds.append(np.log(np.maximum(quantiles(np.linalg.norm(d, axis=2), w, 8), FLOOR)))
+        verticals.append(np.sqrt(VERTICAL_WEIGHT) * np.arcsinh(quantiles(d[:, :, 1], w, 8) / VERTICAL_UNIT))
+        if travel:
+            speeds.append(np.log(np.maximum(np.linalg.norm(centroid, axis=1), FLOOR))[:, None])
+            verticals.append(np.sqrt(VERTICAL_WEIGHT) * np.arcsinh(centroid[:, 1:2] / VERTICAL_UNIT))
+    return np.hstack(speeds + verticals)
+
+
+def amplitude_relative(p, w, radius, bands, keep):
+    """3 height bands, every rate of a lag divided by the clip's typical speed at that lag (the
+    exponential of its area-weighted mean log speed over the clip) to the power 1 - keep."""
+    levels = {lag: np.exp(np.mean(np.log(np.maximum(np.linalg.norm(displacements(p, lag, 1 / radius), axis=2),
+                                                      FLOOR)) @ w)) for lag in LAGS}
+    return rows(p, regions_of(bands, w, 3), 1 / radius, transform=lambda d, lag: d / levels[lag] ** (1 - keep))
+
+
+def left_right_sorted(p, w, radius, right, bands):
+    """3 height bands, each cut into its halves either side of the centroid across x; the half that
+    moves more over the clip first, so that a motion and its mirror image match."""
+    labels = bands * 2 + right.astype(int)
+    described = rows(p, regions_of(labels, w, 6), 1 / radius, k=4)
+    blocks = described.reshape(len(described), 2, len(LAGS), 3, 2, 4)
+    for band in range(3):
+        if blocks[:, 0, :, band, 1].mean() > blocks[:, 0, :, band, 0].mean():
+            blocks[:, :, :, band] = blocks[:, :, :, band, ::-1].copy()
+    return blocks.reshape(len(described), -1)
+
+
+def alternation(p, w, height, side):
+    """How the two lateral halves of the lower body rise and fall together over the clip: the
+    correlation of their vertical velocities (a walk's legs alternate: below 0)."""
+    low = cut(height, 2) == 0
+    halves = [low & (side < side @ w), low & (side >= side @ w)]
+    if any(w[h].sum() <= 0 for h in halves):
+        return 0.0
+    rises = [np.diff(p[:, h, 1], axis=0) @ (w[h] / w[h].sum()) for h in halves]
+    if min(r.std() for r in rises) < 1e-12:
+        return 0.0
+    return float(np.corrcoef(*rises)[0, 1])
+
+
+def homecoming(p, w, radius):
+    """How far the clip ends from its first pose, in RMS radii, as a logarithm (a loop comes back)."""
+    return float(np.log(max(np.sqrt(((p[-1] - p[0]) ** 2).sum(-1) @ w) / radius, 1e-3)))
+
+
+DESCRIPTIONS = ["default", "bands-3", "bands-4", "bands-3x2-front-back", "bands-3-left-right",
+                "bands-3-equal-weights", "vertex-weights", "height-unit", "local", "local-and-travel",
+                "amplitude-0", "amplitude-0.5", "bands-3-and-alternation", "bands-3-and-return"]
+RERANKINGS = ["body-centred", "hubs"]
+
+
+def described(job):
+    name, path = job
+    z = np.load(path)
+    return describe(name, z["positions"].astype(np.float64), z["faces"])
+
+
+# ---- the matrix and the figures ----------------------------------------------------------------
+
+def similarity_matrix(descriptions, program):
+    with tempfile.TemporaryDirectory() as folder:
+        rows_path, matrix_path = os.path.join(folder, "rows"), os.path.join(folder, "matrix")
+        with open(rows_path, "wb") as f:
+            f.write(struct.pack("<Q", len(descriptions)))
+            for d in descriptions:
+                d = np.ascontiguousarray(d, dtype=np.float32)
+                f.write(struct.pack("<QQ", *d.shape) + d.tobytes())
+        subprocess.run([program, rows_path, matrix_path], check=True)
+        n = len(descriptions)
+        return np.fromfile(matrix_path, dtype=np.float64).reshape(n, n, order="F")
+
+
+def is_candidate(query, other):
+    if other["body"] == query["body"]:
+        return False
+    return not (query["rig"] and other["rig"] == query["rig"] and other["clip"] == query["clip"])
+
+
+def scores(m, clips, queries):
+    """Queries, NN accuracy, mAP and ROC-AUC of `queries` (indices) against every clip, as
+    evaluate_retrieval scores them (candidates by decreasing similarity, ties to the lower index)."""
+    hits, precisions, same, different, n = 0, [], [], [], 0
+    for q in queries:
+        motion = clips[q]["motion"]
+        if motion == "-":
+            continue
+        candidates = [c for c in range(len(clips)) if c != q and is_candidate(clips[q], clips[c])]
+        if not candidates:
+            continue
+        n += 1
+        ranking = sorted(candidates, key=lambda c: (-m[q, c], c))
+        relevant = [clips[c]["motion"] == motion for c in ranking]
+        hits += relevant[0]
+        found = np.cumsum(relevant)
+        if found[-1]:
+            precisions.append(np.mean([found[r] / (r + 1) for r in range(len(ranking)) if relevant[r]]))
+        for c, is_relevant in zip(ranking, relevant):
+            (same if is_relevant else different).append(m[q, c])
+    same, different = np.sort(same), np.sort(different)
+    below = np.searchsorted(different, same, "left")
+    ties = np.searchsorted(different, same, "right") - below
+    auc = (below + 0.5 * ties).sum() / (len(same) * len(different)) if len(same) and len(different) else None
+    return n, hits / n if n else None, np.mean(precisions) if precisions else None, auc
+
+
+def text(s):
+    return f"{s[0]:4d} " + " ".join("  -  " if x is None else f"{x:.3f}" for x in s[1:])
+
+
+def body_centred(m, clips):
+    out = m.copy()
+    for body in {c["body"] for c in clips}:
+        of_body = [i for i, c in enumerate(clips) if c["body"] == body]
+        out[:, of_body] -= m[:, of_body].mean(axis=1, keepdims=True)
+    return out
+
+
+def hubs(m, clips):
+    nearest = np.array([np.sort([m[c, j] for j in range(len(clips)) if clips[j]["body"] != clips[c]["body"]])[-10:]
+                        .mean() for c in range(len(clips))])
+    return m - 0.5 * nearest[None, :]
+
+
+def report(name, sets, matrices):
+    print(f"{name}: queries NN mAP ROC-AUC")
+    for (set_name, clips), m in zip(sets, matrices):
+        print(f"  {set_name:40s} {text(scores(m, clips, range(len(clips))))}")
+        for group in sorted({c["group"] for c in clips}):
+            print(f"    {group:38s} {text(scores(m, clips, [i for i, c in enumerate(clips) if c['group'] == group]))}")
+    sys.stdout.flush()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("names", nargs="*", default=DESCRIPTIONS + RERANKINGS)
+    parser.add_argument("--matrix", default="build-bench/test/bench/described_matrix")
+    parser.add_argument("--cache", type=Path, default=Path(tempfile.gettempdir()) / "deformseg-descriptions")
+    args = parser.parse_args()
+    sets = read_sets(args.cache)
+    default_matrices = None
+    with Pool(2) as pool:
+        for name in args.names:
+            if name in RERANKINGS:
+                if default_matrices is None:
+                    default_matrices = [similarity_matrix(pool.map(described, [("default", c["path"]) for c in clips]),
+                                                          args.matrix) for _, clips in sets]
+                rerank = body_centred if name == "body-centred" else hubs
+                report(name, sets, [rerank(m, clips) for m, (_, clips) in zip(default_matrices, sets)])
+                continue
+            matrices = [similarity_matrix(pool.map(described, [(name, c["path"]) for c in clips], chunksize=4),
+                                          args.matrix) for _, clips in sets]
+            if name == "default":
+                default_matrices = matrices
+            report(name, sets, matrices)
+
+
+if __name__ == "__main__":
+    main()
