@@ -74,14 +74,18 @@ void check(const Policy_choice& choice, Front front) {
   check_choice("policy", choice.policy, policy_choices, front);
   if (!choice.alignment.empty()) check_choice("alignment", choice.alignment, alignment_choices, front);
   if (!choice.up.empty()) check_choice("up", choice.up, up_directions, front);
+  if (!choice.sides.empty()) check_choice("sides", choice.sides, side_directions, front);
   const Policy_entry& policy = policy_entry(choice);
   const auto name = [&](const char* parameter) { return spelled(parameter, front); };
   if (choice.threshold && !policy.threshold)
     refuse(name("threshold") + " applies to the graph policies only, not to the " + choice.policy + " policy");
   if (!choice.up.empty() && !policy.up)
     refuse(name("up") + " applies to the motion-signature policy only, not to the " + choice.policy + " policy");
-  if (choice.bands && !policy.up)
-    refuse(name("bands") + " applies to the motion-signature policy only, not to the " + choice.policy + " policy");
+  for (const auto& [parameter, given] : {std::pair{"bands", choice.bands.has_value()},
+                                         std::pair{"sides", !choice.sides.empty()}})
+    if (given && !policy.up)
+      refuse(name(parameter) + " applies to the motion-signature policy only, not to the " + choice.policy +
+             " policy");
   if (choice.bands.value_or(1) > 1 && choice.up == "none")
     refuse(name("bands") + " " + std::to_string(*choice.bands) + " needs an up direction, not " +
            spelled("up", "none", front));
@@ -270,6 +274,7 @@ nlohmann::json explanation_record(const similarity::Motion_signature_explanation
     channels.push_back({{"kind", c.kind == similarity::Signature_channel::Kind::speed ? "speed" : "vertical_rate"},
                         {"lag", c.lag},
                         {"band", c.band},
+                        {"side", c.side},
                         {"half", c.upper_half ? "upper" : "lower"},
                         {"share", c.share},
                         {"mean_difference", c.mean_difference}});
@@ -285,9 +290,10 @@ std::vector<std::string> explanation_lines(const similarity::Motion_signature_ex
   for (const similarity::Signature_channel* c : order | std::views::take(most)) {
     const bool speed = c->kind == similarity::Signature_channel::Kind::speed;
     char text[200];
-    const std::string where = bands > 1 ? "height band " + std::to_string(c->band + 1) + " of " +
-                                              std::to_string(bands) + ", counted from the ground"
-                                        : "the surface";
+    std::string where = bands > 1 ? "height band " + std::to_string(c->band + 1) + " of " +
+                                        std::to_string(bands) + ", counted from the ground"
+                                  : "the surface";
+    if (c->side != 0) where += c->side < 0 ? ", its negative side" : ", its positive side";
     std::snprintf(text, sizeof text, "%5.1f%%  %s at lag %.3g s, the %s half of %s: ", 100 * c->share,
                   speed ? "speeds" : "vertical rates", c->lag,
                   speed ? (c->upper_half ? "faster" : "slower") : (c->upper_half ? "rising" : "falling"),

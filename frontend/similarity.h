@@ -29,7 +29,7 @@
 namespace deformseg::frontend {
 
 /// A similarity policy as a user chooses it: by name, with the options a user may set (the tool's
-/// --policy, --alignment, --threshold, --up and --bands; Python's keywords of the same names); every other
+/// --policy, --alignment, --threshold, --up, --bands and --sides; Python's keywords of the same names); every other
 /// parameter is the policy's default. An aggregate, for designated initializers.
 struct Policy_choice {
   std::string policy = "motion-signature";  ///< one of `similarity_policies`; default: the first
@@ -37,6 +37,7 @@ struct Policy_choice {
   std::optional<double> threshold{};        ///< a graph policy's deformed threshold; none: the policy's own
   std::string up{};                         ///< one of `up_directions`; empty: +y
   std::optional<std::size_t> bands{};       ///< the motion signatures' height bands; none: 1
+  std::string sides{};                      ///< one of `side_directions`; empty: the whole width
 };
 
 /// A similarity policy the front end offers: its name and help, which options apply to it, its
@@ -47,7 +48,7 @@ struct Policy_entry {
   std::string_view alignment;  ///< the alignment's name when none is given
   /// The deformed threshold when none is given; none: the policy takes no threshold.
   std::optional<double> threshold = std::nullopt;
-  bool up = false;          ///< whether the policy takes an up direction
+  bool up = false;          ///< whether the policy takes the signatures' up direction, bands and sides
   bool key_frames = false;  ///< whether its frames are key-frame labels, which no shuffle may test
   /// The policy aligning by `alignment`, with the options of `choice` (its threshold given).
   similarity::Any_policy (*make)(const similarity::Any_alignment& alignment, const Policy_choice& choice) = nullptr;
@@ -56,6 +57,20 @@ struct Policy_entry {
 /// The up direction a name of `up_directions` gives (+y for an empty name), none for "none".
 /// @pre `name` is empty or one of `up_directions`.
 std::optional<Eigen::Vector3d> up_direction(std::string_view name);
+
+/// The directions across the body that keep its sides apart (`side_direction`); none given: the
+/// whole width, a motion and its mirror image alike.
+inline constexpr std::array side_directions{
+    Choice{"+x", "x across (glTF characters, facing +z)"}, Choice{"-x", "x across, the other way"},
+    Choice{"+y", "y across"}, Choice{"-y", "y across, the other way"},
+    Choice{"+z", "z across"}, Choice{"-z", "z across, the other way"},
+};
+
+/// The direction across the body a name of `side_directions` gives; none for an empty name.
+/// @pre `name` is empty or one of `side_directions`.
+inline std::optional<Eigen::Vector3d> side_direction(const std::string& name) {
+  return name.empty() ? std::nullopt : up_direction(name);
+}
 
 /// `Policy` aligning by `alignment`'s, its options set by `set(policy)`.
 template <template <alignment::AlignmentPolicy> class Policy, class Set>
@@ -93,6 +108,7 @@ inline constexpr std::array similarity_policies{
                        alignment, [&](auto& policy) {
                          policy.signatures.up = up_direction(choice.up);
                          policy.signatures.bands = choice.bands.value_or(1);
+                         policy.signatures.sides = side_direction(choice.sides);
                        });
                  }},
     Policy_entry{.name = "histogram",
@@ -170,6 +186,11 @@ inline constexpr std::tuple policy_parameters{
                       "(3 or 4 rank a library of many studios better, a rig's own motions a little worse: chapter 7 "
                       "of the manual). Default: 1",
                       positive_counts(double(signatures::max_bands))),
+    choice_parameter("sides", &Policy_choice::sides,
+                     "motion-signature: keep the two sides of the body apart, cut at its centre along this axis "
+                     "across it, so that a motion and its mirror image (a left and a right kick) differ. Default: "
+                     "none, the two alike",
+                     side_directions),
 };
 
 /// The entry of `similarity_policies` that `choice` names.
@@ -323,12 +344,12 @@ std::optional<Compared> compare_streamed(const std::array<std::string, 2>& input
 nlohmann::json similarity_record(const Compared& compared, const Policy_choice& choice);
 
 /// An explanation as a report: {"pairs", "channels": [{"kind": "speed" or "vertical_rate", "lag",
-/// "band", "half": "lower" or "upper", "share", "mean_difference"}, ...]}.
+/// "band", "side" (-1, 0 or 1), "half": "lower" or "upper", "share", "mean_difference"}, ...]}.
 nlohmann::json explanation_record(const similarity::Motion_signature_explanation& explanation);
 
 /// The `most` channels of the largest shares, in words, one a line: "41.2%  speeds at lag 0.533 s,
 /// the faster half of the surface: A 1.84x as fast as B" (or "... of height band 2 of 3, counted
-/// from the ground" when there are several bands).
+/// from the ground" when there are several bands, and ", its negative side" with sides).
 std::vector<std::string> explanation_lines(const similarity::Motion_signature_explanation& explanation,
                                            std::size_t bands, std::size_t most);
 

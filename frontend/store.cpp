@@ -238,7 +238,7 @@ similarity::Default_similarity store_policy(const Policy_choice& choice, Front f
 
 std::size_t signature_width(const similarity::Default_similarity& policy) {
   const signatures::Motion_signature_options& s = policy.signatures;
-  return (s.up ? 2 : 1) * s.lags.size() * s.bands * s.quantiles;
+  return (s.up ? 2 : 1) * s.lags.size() * s.bands * (s.sides ? 2 : 1) * s.quantiles;
 }
 
 std::string store_description(const similarity::Default_similarity& policy) {
@@ -250,6 +250,7 @@ std::string store_description(const similarity::Default_similarity& policy) {
       {"vertical_unit", s.vertical_unit}, {"vertical_weight", s.vertical_weight},
       {"signature_rate", policy.signature_rate}, {"scale", policy.scale}, {"width", width}};
   if (s.bands > 1) description["bands"] = s.bands;  // absent: one band, as every store before them
+  if (s.sides) description["sides"] = up_json(s.sides);  // absent: the whole width
   return description.dump();
 }
 
@@ -264,6 +265,9 @@ Policy_choice stored_policy_choice(const store::Motion_store& store) {
     if (up_json(up_direction(up.name)) == stored["up"]) choice.up = up.name;
   if (const auto bands = stored.find("bands"); bands != stored.end() && bands->is_number_unsigned())
     choice.bands = bands->get<std::size_t>();
+  for (const Choice& side : side_directions)
+    if (stored.contains("sides") && up_json(side_direction(std::string(side.name))) == stored["sides"])
+      choice.sides = side.name;
   const nlohmann::json expected = nlohmann::json::parse(store_description(store_policy(choice, Front::command_line)));
   for (const auto& [key, value] : expected.items())
     if (!stored.contains(key) || stored[key] != value)

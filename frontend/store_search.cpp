@@ -107,6 +107,12 @@ void Store_search::check_policy(const Policy_choice& asked, Front front) const {
     throw invalid_input(spelled("up", asked.up, front) + " differs from the store's up direction (" + where +
                             " gives it)",
                         {.file = store().folder().string()});
+  const auto& sides = wanted.signatures.sides;
+  const auto& stored_sides = policy_.signatures.sides;
+  if (!asked.sides.empty() && !(stored_sides && *sides == *stored_sides))
+    throw invalid_input(spelled("sides", asked.sides, front) + " differs from the store's sides (" + where +
+                            " gives them)",
+                        {.file = store().folder().string()});
   if (asked.bands && *asked.bands != policy_.signatures.bands)
     throw invalid_input(spelled("bands", front) + " " + std::to_string(*asked.bands) + " differs from the store's " +
                             std::to_string(policy_.signatures.bands) + " (" + where + " gives it)",

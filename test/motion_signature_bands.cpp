@@ -1,7 +1,8 @@
-// The motion signatures' height bands (Motion_signature_options::bands): each band's quantiles are
-// those of its vertices alone, found here by brute force (the bands cut by hand, the radix selection
-// of every row anew); the streamed description equals the in-memory one; a band without area takes
-// its nearest band's vertices; what is refused.
+// The motion signatures' regions: height bands (Motion_signature_options::bands) and the two sides
+// across the body (sides). Each region's quantiles are those of its vertices alone, found here by
+// brute force (the regions cut by hand, the radix selection of every row anew); the streamed
+// description equals the in-memory one; a band without area takes its nearest band's vertices; a
+// motion and its mirror image are alike without sides and apart with them; what is refused.
 #include "test_support.h"
 
 #include <deformseg/mesh/synthetic.h>
@@ -36,28 +37,35 @@ ds::signatures::Motion_signature_options banded(std::size_t bands) {
   return {.up = Eigen::Vector3d::UnitZ(), .bands = bands};
 }
 
-// Each vertex's band as the option says: equal heights along up in the first frame, the top one in
-// the last band.
-std::vector<std::size_t> bands_by_hand(std::span<const double> first, std::size_t count) {
+// Each vertex's region as the options say (up +z, sides +x): its band of equal heights in the first
+// frame, the top one in the last band, then its side of the weighted centroid's x (1 from it on).
+std::vector<std::size_t> regions_by_hand(std::span<const double> first, std::span<const double> weights,
+                                         std::size_t bands, bool sides) {
   const std::size_t vertices = first.size() / 3;
-  double low = INFINITY, high = -INFINITY;
-  for (std::size_t v = 0; v < vertices; ++v) low = std::min(low, first[3 * v + 2]), high = std::max(high, first[3 * v + 2]);
-  std::vector<std::size_t> band(vertices);
-  for (std::size_t v = 0; v < vertices; ++v)
-    band[v] = std::min(std::size_t((first[3 * v + 2] - low) / (high - low) * double(count)), count - 1);
-  return band;
+  double low = INFINITY, high = -INFINITY, middle = 0;
+  for (std::size_t v = 0; v < vertices; ++v) {
+    low = std::min(low, first[3 * v + 2]), high = std::max(high, first[3 * v + 2]);
+    middle += weights[v] * first[3 * v];
+  }
+  std::vector<std::size_t> region(vertices);
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const std::size_t band = std::min(std::size_t((first[3 * v + 2] - low) / (high - low) * double(bands)), bands - 1);
+    region[v] = sides ? 2 * band + (first[3 * v] >= middle ? 1 : 0) : band;
+  }
+  return region;
 }
 
-// The signatures of one band computed anew, row by row: its vertices' rates keyed, their weights
-// scaled to sum 1 over the band, the radix selection; the whole body's radius as the unit.
-Eigen::MatrixXd band_by_hand(std::span<const double> positions, std::span<const double> weights,
-                             const ds::signatures::Motion_signature_options& options, std::size_t band) {
+// The signatures of one region computed anew, row by row: its vertices' rates keyed, their weights
+// scaled to sum 1 over the region, the radix selection; the whole body's radius as the unit.
+Eigen::MatrixXd region_by_hand(std::span<const double> positions, std::span<const double> weights,
+                               const ds::signatures::Motion_signature_options& options, std::size_t region) {
   const std::size_t vertices = weights.size(), frames = positions.size() / (3 * vertices), k = options.quantiles;
-  const std::vector<std::size_t> bands = bands_by_hand(positions.first(3 * vertices), options.bands);
+  const std::vector<std::size_t> regions =
+      regions_by_hand(positions.first(3 * vertices), weights, options.bands, options.sides.has_value());
   std::vector<std::size_t> chosen;
   double total = 0;
   for (std::size_t v = 0; v < vertices; ++v)
-    if (bands[v] == band) chosen.push_back(v), total += weights[v];
+    if (regions[v] == region) chosen.push_back(v), total += weights[v];
   const double radius = si::rms_radius(positions, weights, frames);
   const std::size_t lags = options.lags.size();
   Eigen::MatrixXd out(Eigen::Index(frames), Eigen::Index(2 * lags * k));
@@ -86,13 +94,20 @@ Eigen::MatrixXd band_by_hand(std::span<const double> positions, std::span<const 
   return out;
 }
 
-// Band b's columns of banded signatures: per lag, then per kind, its k quantiles.
-Eigen::MatrixXd band_columns(const Eigen::MatrixXd& signatures, std::size_t bands, std::size_t b, std::size_t k) {
-  const auto blocks = std::size_t(signatures.cols()) / (bands * k);  // 2 x lags
+// Region r's columns of signatures of `regions` regions: per lag, then per kind, its k quantiles.
+Eigen::MatrixXd band_columns(const Eigen::MatrixXd& signatures, std::size_t regions, std::size_t r, std::size_t k) {
+  const auto blocks = std::size_t(signatures.cols()) / (regions * k);  // 2 x lags
   Eigen::MatrixXd out(signatures.rows(), Eigen::Index(blocks * k));
   for (std::size_t block = 0; block < blocks; ++block)
     out.middleCols(Eigen::Index(block * k), Eigen::Index(k)) =
-        signatures.middleCols(Eigen::Index((block * bands + b) * k), Eigen::Index(k));
+        signatures.middleCols(Eigen::Index((block * regions + r) * k), Eigen::Index(k));
+  return out;
+}
+
+// `animation`'s positions mirrored across x = 0 (its left and right swapped).
+std::vector<double> mirrored(const ds::mesh::Surface_mesh_animation& animation) {
+  std::vector<double> out(animation.all_positions().begin(), animation.all_positions().end());
+  for (std::size_t i = 0; i < out.size(); i += 3) out[i] = -out[i];
   return out;
 }
 
@@ -107,7 +122,7 @@ TEST_CASE("motion_signatures: each height band's quantiles are those of its vert
       const Eigen::MatrixXd signatures = ds::signatures::motion_signatures(positions, weights, options);
       REQUIRE(signatures.cols() == Eigen::Index(2 * options.lags.size() * bands * options.quantiles));
       for (std::size_t b = 0; b < bands; ++b) {
-        const Eigen::MatrixXd expected = band_by_hand(positions, weights, options, b);
+        const Eigen::MatrixXd expected = region_by_hand(positions, weights, options, b);
         const Eigen::MatrixXd got = band_columns(signatures, bands, b, options.quantiles);
         CHECK(std::memcmp(got.data(), expected.data(), sizeof(double) * std::size_t(got.size())) == 0);
       }
@@ -119,9 +134,49 @@ TEST_CASE("motion_signatures: each height band's quantiles are those of its vert
   }
 }
 
+TEST_CASE("motion_signatures: each side of each band is its vertices alone", "[signatures]") {
+  const auto tube = two_joint_tube();
+  for (const std::size_t bands : {1, 3}) {
+    INFO(bands << " bands");
+    auto options = banded(bands);
+    options.sides = Eigen::Vector3d(2, 0, 0);  // +x, of any length
+    ds::signatures::with_positions_and_weights(tube, [&](auto positions, std::span<const double> weights) {
+      const Eigen::MatrixXd signatures = ds::signatures::motion_signatures(positions, weights, options);
+      REQUIRE(signatures.cols() == Eigen::Index(2 * options.lags.size() * 2 * bands * options.quantiles));
+      for (std::size_t r = 0; r < 2 * bands; ++r) {
+        const Eigen::MatrixXd expected = region_by_hand(positions, weights, options, r);
+        const Eigen::MatrixXd got = band_columns(signatures, 2 * bands, r, options.quantiles);
+        CHECK(std::memcmp(got.data(), expected.data(), sizeof(double) * std::size_t(got.size())) == 0);
+      }
+    });
+  }
+}
+
+TEST_CASE("Motion_signature_similarity: a motion and its mirror image alike, apart with sides", "[signatures]") {
+  // The tube bends towards +x; its mirror image towards -x. The distributions over the whole surface
+  // are the same; those of each side are swapped.
+  const auto tube = two_joint_tube();
+  const std::vector<double> mirror = mirrored(tube);
+  ds::similarity::Motion_signature_similarity<> policy;
+  policy.signatures.up = Eigen::Vector3d::UnitZ();
+  const auto value = [&] {
+    return ds::signatures::with_positions_and_weights(tube, [&](auto positions, std::span<const double> weights) {
+      return policy.compare(policy.describe_positions(positions, weights),
+                            policy.describe_positions(std::span<const double>(mirror), weights))
+          .value;
+    });
+  };
+  CHECK(value() == 1.0);
+  policy.signatures.bands = 3;
+  CHECK(value() == 1.0);
+  policy.signatures.sides = Eigen::Vector3d::UnitX();
+  CHECK(value() < 0.9);
+}
+
 TEST_CASE("motion_signatures_streamed: height bands streamed give the in-memory bits", "[signatures]") {
   const auto tube = two_joint_tube();
-  const auto options = banded(3);
+  auto options = banded(3);
+  options.sides = Eigen::Vector3d::UnitX();
   ds::signatures::Positions_frame_source<double> source(tube.all_positions(), tube.num_vertices(), tube.triangles(),
                                                          30);
   const std::vector<double> instants = ds::signatures::frame_instants(tube.num_frames(), 30);
@@ -182,5 +237,6 @@ TEST_CASE("motion_signatures: the bands refused", "[signatures]") {
   refused(banded(0), "0 bands; 1 to 64");
   refused(banded(ds::signatures::max_bands + 1), "65 bands; 1 to 64");
   refused({.up = std::nullopt, .bands = 2}, "2 height bands need an up direction");
+  refused({.sides = Eigen::Vector3d::Zero()}, "the direction across the body (sides) must be finite and not zero");
   CHECK_NOTHROW(ds::signatures::motion_signatures(tube, {.up = std::nullopt, .bands = 1}));
 }

@@ -31,11 +31,13 @@ ds::mesh::Surface_mesh_animation bending(std::size_t frames) {
   return ds::mesh::make_bending_tube(spec).animation;
 }
 
-ds::similarity::Motion_signature_similarity<> policy_with(std::size_t bands, std::size_t quantiles) {
+ds::similarity::Motion_signature_similarity<> policy_with(std::size_t bands, std::size_t quantiles,
+                                                          bool sides = false) {
   ds::similarity::Motion_signature_similarity<> policy;
   policy.signatures.up = Eigen::Vector3d::UnitZ();
   policy.signatures.bands = bands;
   policy.signatures.quantiles = quantiles;
+  if (sides) policy.signatures.sides = Eigen::Vector3d::UnitX();
   return policy;
 }
 
@@ -43,23 +45,28 @@ ds::similarity::Motion_signature_similarity<> policy_with(std::size_t bands, std
 
 TEST_CASE("explain: each channel's share and mean difference summed by hand along compare's alignment",
           "[similarity]") {
-  for (const auto& [bands, quantiles] : {std::pair<std::size_t, std::size_t>{1, 8}, {3, 4}, {2, 3}}) {
-    INFO(bands << " bands of " << quantiles << " quantiles");
-    const auto policy = policy_with(bands, quantiles);
+  for (const auto& [bands, quantiles, sides] :
+       {std::tuple<std::size_t, std::size_t, bool>{1, 8, false}, {3, 4, false}, {2, 3, false}, {2, 4, true}}) {
+    INFO(bands << " bands of " << quantiles << " quantiles" << (sides ? ", sides" : ""));
+    const auto policy = policy_with(bands, quantiles, sides);
     const auto a = policy.describe(bending(8)), b = policy.describe(bending(20));
     const auto why = policy.explain(a, b);
     // At 30 fps a row is a frame: compare's pairs of frames are the rows aligned.
     const auto pairs = policy.compare(a, b).alignment;
     REQUIRE(why.pairs == pairs.size());
-    // By hand: column c is kind, lag, band by its block of `quantiles`, then its half by its quantile.
-    std::map<std::tuple<int, double, std::size_t, bool>, std::pair<double, double>> sums;  // squares, differences
-    std::map<std::tuple<int, double, std::size_t, bool>, double> columns;
+    // By hand: column c is kind, lag, band and side by its block of `quantiles`, then its half by its
+    // quantile.
+    using Key = std::tuple<int, double, std::size_t, int, bool>;
+    std::map<Key, std::pair<double, double>> sums;  // squares, differences
+    std::map<Key, double> columns;
     double total = 0;
-    const std::size_t lags = policy.signatures.lags.size();
+    const std::size_t lags = policy.signatures.lags.size(), halves = sides ? 2 : 1, regions = bands * halves;
     for (Eigen::Index c = 0; c < a.signatures.cols(); ++c) {
       const std::size_t block = std::size_t(c) / quantiles, q = std::size_t(c) % quantiles;
-      const auto key = std::tuple{int(block / (lags * bands)), policy.signatures.lags[block / bands % lags],
-                                  block % bands, 2 * q + 1 > quantiles};
+      const std::size_t region = block % regions;
+      const int side = sides ? (region % 2 == 0 ? -1 : 1) : 0;
+      const Key key{int(block / (lags * regions)), policy.signatures.lags[block / regions % lags], region / halves,
+                    side, 2 * q + 1 > quantiles};
       columns[key] += 1;
       for (const auto& [i, j] : pairs) {
         const double d = double(a.signatures(Eigen::Index(i), c)) - double(b.signatures(Eigen::Index(j), c));
@@ -71,8 +78,8 @@ TEST_CASE("explain: each channel's share and mean difference summed by hand alon
     REQUIRE(why.channels.size() == sums.size());
     double shares = 0;
     for (const Signature_channel& channel : why.channels) {
-      const auto key = std::tuple{channel.kind == Signature_channel::Kind::speed ? 0 : 1, channel.lag, channel.band,
-                                  channel.upper_half};
+      const Key key{channel.kind == Signature_channel::Kind::speed ? 0 : 1, channel.lag, channel.band, channel.side,
+                    channel.upper_half};
       REQUIRE(sums.count(key) == 1);
       CHECK(std::abs(channel.share - sums[key].first / total) < 1e-12);
       CHECK(std::abs(channel.mean_difference - sums[key].second / (double(pairs.size()) * columns[key])) < 1e-12);

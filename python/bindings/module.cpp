@@ -30,6 +30,7 @@ pybind11::dict choices() {
       {"reference", strain_references}, {"method", temporal_methods},
       {"metric", frame_metrics},        {"policy", policy_choices},
       {"alignment", alignment_choices},        {"up", up_directions},
+      {"sides", side_directions},
       {"segmentation_reference", segmentation_references},
       {"verify", deformseg::python::store_verifications}};
   pybind11::dict out;

@@ -42,12 +42,14 @@ const std::array<frontend::Choice, 2> store_verifications{
 
 namespace {
 
-// describe_to_store's keywords: the input options, then the signatures' up direction and height bands.
+// describe_to_store's keywords: the input options, then the signatures' up direction, bands and sides.
 constexpr auto describe_table =
     std::tuple_cat(frontend::input_parameters,
-                   std::tuple{std::get<3>(frontend::policy_parameters), std::get<4>(frontend::policy_parameters)});
+                   std::tuple{std::get<3>(frontend::policy_parameters), std::get<4>(frontend::policy_parameters),
+                              std::get<5>(frontend::policy_parameters)});
 static_assert(std::string_view(std::get<8>(describe_table).name) == "up");
 static_assert(std::string_view(std::get<9>(describe_table).name) == "bands");
+static_assert(std::string_view(std::get<10>(describe_table).name) == "sides");
 
 store::Verify verify_of(const std::string& name) {
   frontend::check_choice("verify", name, store_verifications, frontend::Front::python);

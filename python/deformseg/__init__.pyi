@@ -150,6 +150,7 @@ def describe_to_store(
     body: Optional[_Path] = None,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
     bands: Optional[int] = None,
+    sides: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z"]] = None,
     hash: bool = False,
     skip_unreadable: bool = False,
 ) -> dict[str, Any]: ...
@@ -229,6 +230,7 @@ def similarity(
     threshold: Optional[float] = None,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
     bands: Optional[int] = None,
+    sides: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z"]] = None,
     significance: Optional[int] = None,
     seed: int = 1,
     explain: bool = False,
@@ -243,6 +245,7 @@ def similarity_matrix(
     threshold: Optional[float] = None,
     up: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z", "none"]] = None,
     bands: Optional[int] = None,
+    sides: Optional[Literal["+x", "-x", "+y", "-y", "+z", "-z"]] = None,
     progress: Optional[Callable[[int, int], Optional[bool]]] = None,
     threads: int = 0,
 ) -> npt.NDArray[np.float64]: ...  # (N, N), or (Q, D) with a database

@@ -242,10 +242,11 @@ def describe(inputs, store, client=None, *, clips_per_task=None, on_error="raise
     """Describes clips into the motion store in the folder `store` on the cluster, as
     describe_to_store(inputs, store, hash=hash, **options) does: the same store, byte for byte.
 
-    inputs, options (fps, topology, triangulate, weld, refuse_defects, clip, body, up, bands) and hash are
-    describe_to_store's; the clips to describe are planned on the client (new and changed ones,
-    unchanged ones skipped; a clip on each of its bodies, a labels row's on its body_file), described in batches of `clips_per_task` (default: about four batches
-    per worker thread, at most 32 clips) each into a part store of its own below `parts` (default
+    inputs, options (fps, topology, triangulate, weld, refuse_defects, clip, body, up, bands,
+    sides) and hash are describe_to_store's; the clips to describe are planned on the client (new
+    and changed ones, unchanged ones skipped; a clip on each of its bodies, a labels row's on its
+    body_file), described in batches of `clips_per_task` (default: about four batches per worker
+    thread, at most 32 clips) each into a part store of its own below `parts` (default
     a hidden folder beside the store, removed after), then merged into the store by the client, the
     one writer, in one commit. on_error: 'raise' (default) stops at the first clip (or input) that
     cannot be read or described, raising InvalidInput naming its file, and leaves the store as it

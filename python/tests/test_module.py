@@ -126,6 +126,17 @@ def test_explain_says_where_two_motions_differ_and_bands_describe_otherwise(grid
         deformseg.similarity(a, b, bands=2, up="none")
 
 
+def test_a_mirror_image_is_alike_but_for_sides(grid):
+    faces, frames = grid(4, 6, 24)
+    a = deformseg.Animation(faces, frames)
+    mirror = deformseg.Animation(faces, frames * np.array([-1.0, 1.0, 1.0]))
+    assert deformseg.similarity(a, mirror).value == 1.0
+    apart = deformseg.similarity(a, mirror, sides="+x", explain=True)
+    assert apart.value < 1.0 and {c["side"] for c in apart.explanation["channels"]} == {-1, 1}
+    with pytest.raises(deformseg.InvalidInput, match="sides"):
+        deformseg.similarity(a, mirror, sides="left")
+
+
 def test_the_frame_rate_is_the_animations_and_the_same_motion_at_half_the_rate_is_the_same(grid):
     faces, frames = grid(4, 6, 61)
     a = deformseg.Animation(faces, frames)

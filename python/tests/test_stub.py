@@ -208,6 +208,9 @@ CHOICES = {
     ("similarity_matrix", "alignment"): "alignment",
     ("similarity_matrix", "up"): "up",
     ("describe_to_store", "up"): "up",
+    ("similarity", "sides"): "sides",
+    ("similarity_matrix", "sides"): "sides",
+    ("describe_to_store", "sides"): "sides",
     ("open_store", "verify"): "verify",
 }
 
@@ -253,6 +256,8 @@ def test_every_choice_is_taken_and_every_other_name_refused(grid):
         assert deformseg.temporal_segmentation(a, method=method)[0][0] == 0
     for up in tables["up"]:
         assert 0 <= deformseg.similarity(a, a, up=up, significance=0).value <= 1
+    for sides in tables["sides"]:
+        assert deformseg.similarity(a, a, sides=sides, significance=0).value == 1
     with pytest.raises(deformseg.InvalidInput, match="measure must be 'max-principal', 'green-lagrange', "
                                                      "'frobenius' or 'area-ratio', got 'max'"):
         deformseg.strain(a, measure="max")

@@ -128,7 +128,9 @@ def test_similarity_explain_not_signature(tool, scratch):
 # --bands: another description (a value of its own), 1 the default; refused without an up direction,
 # for another policy, and out of its range, before anything is read.
 def test_similarity_bands(tool, scratch, synth_obj, bend_once):
-    value = lambda *options: tool("similarity", synth_obj[0], bend_once[0], *options, "--json", "-").json()["similarity"]
+    def value(*options):
+        return tool("similarity", synth_obj[0], bend_once[0], *options, "--json", "-").json()["similarity"]
+
     assert value("--bands", "1") == value()
     assert value("--bands", "3", "--up", "+z") != value("--up", "+z")
     assert tool("similarity", synth_obj[0], synth_obj[0], "--bands", "4", "--json", "-").json()["similarity"] == 1.0
@@ -139,6 +141,37 @@ def test_similarity_bands(tool, scratch, synth_obj, bend_once):
                         "--bands applies to the motion-signature policy only, not to the graph policy"))
     reads_nothing(fails(tool("similarity", *missing, "--bands", "0"), "--bands"))
     reads_nothing(fails(tool("similarity", *missing, "--bands", "65"), "--bands"))
+
+
+# A motion and its mirror image: alike by default (distributions over the whole surface), apart with
+# --sides, which keeps the two sides of the body apart; --sides refused for another policy.
+def mirrored_frames(folder, to):
+    """The OBJ frames of `folder` mirrored across x = 0, into `to`."""
+    to.mkdir(exist_ok=True)
+    for frame in sorted(folder.glob("*.obj")):
+        lines = []
+        for line in frame.read_text().splitlines():
+            if line.startswith("v "):
+                _, x, y, z = line.split()
+                line = f"v {-float(x)!r} {y} {z}"
+            lines.append(line)
+        (to / frame.name).write_text("\n".join(lines) + "\n")
+
+
+def test_similarity_sides_tell_a_mirror_image(tool, scratch, synth_obj):
+    mirror = scratch / "synth-obj-mirrored"
+    mirrored_frames(synth_obj[0], mirror)
+    def value(*options):
+        return tool("similarity", synth_obj[0], mirror, *options, "--json", "-").json()["similarity"]
+
+    assert value() == 1.0 and value("--bands", "3") == 1.0
+    assert value("--sides", "+x") < 0.99  # 0.981: the tube bends towards +x, its mirror image towards -x
+    assert tool("similarity", synth_obj[0], synth_obj[0], "--sides", "+x", "--json", "-").json()["similarity"] == 1.0
+    reads_nothing(fails(tool("similarity", scratch / "no-such-a", scratch / "no-such-b", "--sides", "+x",
+                             "--policy", "self-similarity"),
+                        "--sides applies to the motion-signature policy only, not to the self-similarity policy"))
+    reads_nothing(fails(tool("similarity", scratch / "no-such-a", scratch / "no-such-b", "--sides", "left"),
+                        "--sides"))
 
 
 def test_matrix_csv(tool, scratch, synth_obj, bend_once):

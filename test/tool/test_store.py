@@ -340,6 +340,17 @@ def test_store_of_height_bands(tool, scratch, clips):
     fails(tool("describe", *clips, "--store", folder), "described with other options")
 
 
+# A store described with --sides records them; other sides asked are refused naming the store.
+def test_store_of_sides(tool, scratch, clips):
+    folder = scratch / "store-sides"
+    assert len(describe(tool, folder, *clips, extra=("--sides", "+x"))["described"]) == 4
+    info = store_info(tool, folder)
+    assert info["description"]["sides"] == [1.0, 0.0, 0.0] and info["width"] == 2 * 64
+    matrix = tool("matrix", *clips, "--sides", "+x", "--json", "-").json()["similarity"]
+    assert tool("matrix", "--store", folder, "--sides", "+x", "--json", "-").json()["similarity"] == matrix
+    fails(tool("matrix", "--store", folder, "--sides", "-x"), "--sides -x differs from the store's sides")
+
+
 def test_store_verify_names_the_damaged_file(tool, scratch, store):
     assert "ok: 4 clips" in succeeds(tool("store", "verify", store)).out
     damaged = scratch / "store-damaged"

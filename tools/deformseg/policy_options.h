@@ -12,7 +12,7 @@ namespace deformseg::tool {
 
 using Policy_options = frontend::Policy_choice;
 
-/// Adds --policy, --alignment, --threshold, --up and --bands.
+/// Adds --policy, --alignment, --threshold, --up, --bands and --sides.
 inline void add_policy_options(CLI::App& command, Policy_options& o) {
   add_parameters(command, frontend::policy_parameters, o);
 }

@@ -201,7 +201,7 @@ inline std::size_t streamed_ring_frames(const Motion_signature_options& options,
 /// @param instants the instants of the rows, finite and non-decreasing, e.g. `frame_instants`
 /// (one per frame) or those `Motion_signature_similarity` describes at; an instant outside
 /// [0, (T - 1) / fps] reads the nearest end frame.
-/// @return the `I x (lags x bands x quantiles)` signatures, twice as wide with an up direction.
+/// @return the `I x (lags x regions x quantiles)` signatures, twice as wide with an up direction.
 /// @throws invalid_input as `motion_signatures` (fewer than two frames, bad options or frame rate,
 /// an animation without extent); for instants out of order or not finite; when the source has no
 /// vertex, or a different frame or vertex count after its second rewind (a file rewritten between
@@ -235,8 +235,8 @@ Eigen::MatrixXd motion_signatures_streamed(Source& source, const Motion_signatur
   const std::span<const double> weights(first_pass.weights);
   internal::check_radius(first_pass.radius);
   internal::Signature_rows rows = internal::signature_rows(options, fps, frames, first_pass.radius);
-  if (options.bands > 1)
-    rows.bands = internal::surface_bands(first_pass.first.data(), weights, options.bands, *rows.up);
+  if (internal::region_count(options) > 1)
+    rows.regions = internal::surface_regions(first_pass.first.data(), weights, options, rows.up);
   if (!once) {
     source.rewind();
     internal::check_unchanged(source, frames, vertices);

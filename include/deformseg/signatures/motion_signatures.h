@@ -80,6 +80,14 @@ struct Motion_signature_options {
   /// gives what 3 or 4 bands change on the shared characters and the motion library); 1 to
   /// `max_bands`.
   std::size_t bands = 1;
+  /// @brief The direction across the body (any length but 0), or `std::nullopt` (default). When
+  /// set, each height band is cut in two at the first frame's area-weighted centroid along it, the
+  /// half on the negative side first, so that a motion and its mirror image across the body (a left
+  /// and a right kick) differ; without it they are alike, since a distribution over the surface is
+  /// the same for a mirror image. For glTF characters, which face +Z with +Y up, +X. A half without
+  /// area takes the vertices of the nearest band's half on its side that has some, else the other
+  /// half's.
+  std::optional<Eigen::Vector3d> sides = std::nullopt;
   /// @brief The threads of the rows, computed in parallel: 0 (default) for all the hardware's
   /// threads (`thread_count`), else 1 to `max_threads`. The signatures do not depend on it, nor
   /// does a `Motion_signature_similarity` holding these options.
@@ -184,6 +192,8 @@ inline void check_signature_options(const Motion_signature_options& options, dou
   if (options.bands > 1 && !options.up)
     throw invalid_input("motion_signatures: " + std::to_string(options.bands) +
                         " height bands need an up direction");
+  if (options.sides && !(options.sides->norm() > 0 && std::isfinite(options.sides->norm())))
+    throw invalid_input("motion_signatures: the direction across the body (sides) must be finite and not zero");
   thread_count(options.threads, "motion_signatures");
 }
 
@@ -199,46 +209,60 @@ inline void check_radius(double radius) {
     throw invalid_input("motion_signatures: the animation has no extent (RMS radius " + std::to_string(radius) + ")");
 }
 
-/// One height band of the surface (`Motion_signature_options::bands`): its vertices, and their
-/// weights scaled to sum to 1 over the band.
-struct Surface_band {
+/// One region of the surface: a height band (`Motion_signature_options::bands`), or one side of it
+/// (`Motion_signature_options::sides`); its vertices, and their weights scaled to sum to 1 over it.
+struct Surface_region {
   std::vector<std::size_t> vertices;
   std::vector<double> weights;
 };
 
-/// The vertices of `frame` (`3V` coordinates, the first) cut into `count` bands of equal height
-/// along the unit direction `up`, each with its share of `weights`. A band without weight takes the
-/// vertices of the nearest band that has some (the lower first); at least one has, weights summing
-/// to 1.
+/// The regions of the surface the options cut: per band, its halves when `sides` is set.
+inline std::size_t region_count(const Motion_signature_options& options) {
+  return options.bands * (options.sides ? 2 : 1);
+}
+
+/// The vertices of `frame` (`3V` coordinates, the first) cut into `options.bands` bands of equal
+/// height along the unit `up` (not read for one band), each in two at the weighted centroid along
+/// `options.sides` when it is set: region b * halves + s, s 0 on the negative side. A region without
+/// weight takes the vertices of the nearest band's region on its side that has some (the lower
+/// first), else the other side's; at least one has, weights summing to 1.
 template <class Coordinate>
-std::vector<Surface_band> surface_bands(const Coordinate* frame, std::span<const double> weights, std::size_t count,
-                                        const Eigen::Vector3d& up) {
-  const std::size_t vertices = weights.size();
-  std::vector<double> height(vertices);
-  for (std::size_t v = 0; v < vertices; ++v) height[v] = point(frame, v).dot(up);
+std::vector<Surface_region> surface_regions(const Coordinate* frame, std::span<const double> weights,
+                                            const Motion_signature_options& options,
+                                            const std::optional<Eigen::Vector3d>& up) {
+  const std::size_t vertices = weights.size(), bands = options.bands, halves = options.sides ? 2 : 1;
+  std::vector<double> height(vertices, 0.0), across(vertices, 0.0);
+  double middle = 0;
+  for (std::size_t v = 0; v < vertices; ++v) {
+    if (up) height[v] = point(frame, v).dot(*up);
+    if (options.sides) across[v] = point(frame, v).dot(*options.sides), middle += weights[v] * across[v];
+  }
   const auto [low, high] = std::ranges::minmax(height);
   const double span = high - low;
-  std::vector<Surface_band> bands(count);
+  std::vector<Surface_region> regions(bands * halves);
+  std::vector<double> totals(regions.size());
   for (std::size_t v = 0; v < vertices; ++v) {
     const double u = span > 0 ? (height[v] - low) / span : 0.0;
-    Surface_band& band = bands[std::min(std::size_t(u * double(count)), count - 1)];
-    band.vertices.push_back(v);
-    band.weights.push_back(weights[v]);
+    const std::size_t band = std::min(std::size_t(u * double(bands)), bands - 1);
+    const std::size_t r = band * halves + (halves == 2 && across[v] >= middle ? 1 : 0);
+    regions[r].vertices.push_back(v);
+    regions[r].weights.push_back(weights[v]);
+    totals[r] += weights[v];
   }
-  std::vector<double> totals(count);
-  for (std::size_t b = 0; b < count; ++b)
-    for (const double w : bands[b].weights) totals[b] += w;
-  const auto has_weight = [&](std::size_t b) { return totals[b] > 0; };
-  std::vector<Surface_band> out(count);
-  for (std::size_t b = 0; b < count; ++b) {
-    std::size_t from = b;
-    for (std::size_t d = 1; !has_weight(from) && d < count; ++d)
-      if (b >= d && has_weight(b - d))
-        from = b - d;
-      else if (b + d < count && has_weight(b + d))
-        from = b + d;
-    out[b] = bands[from];
-    for (double& w : out[b].weights) w /= totals[from];
+  // The nearest band's region with weight on side s, from band b; none when the side has none.
+  const auto nearest = [&](std::size_t b, std::size_t s) -> std::optional<std::size_t> {
+    for (std::size_t d = 0; d < bands; ++d) {
+      if (b >= d && totals[(b - d) * halves + s] > 0) return (b - d) * halves + s;
+      if (b + d < bands && totals[(b + d) * halves + s] > 0) return (b + d) * halves + s;
+    }
+    return std::nullopt;
+  };
+  std::vector<Surface_region> out(regions.size());
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    const std::size_t b = r / halves, s = r % halves;
+    const std::size_t from = nearest(b, s).value_or(nearest(b, halves - 1 - s).value_or(r));
+    out[r] = regions[from];
+    for (double& w : out[r].weights) w /= totals[from];
   }
   return out;
 }
@@ -252,14 +276,14 @@ struct Signature_rows {
   double frames_per_second;
   std::size_t frames;
   std::size_t columns;
-  std::vector<Surface_band> bands;  ///< empty for one band: the whole surface, every vertex's weight
+  std::vector<Surface_region> regions;  ///< empty for one region: the whole surface, every vertex's weight
 };
 
 /// The rows' shared values, once the options, the frame count and the radius are checked.
 inline Signature_rows signature_rows(const Motion_signature_options& options, double frames_per_second,
                                      std::size_t frames, double radius) {
   std::optional<Eigen::Vector3d> up = unit_up(options);
-  const std::size_t columns = (up ? 2 : 1) * options.lags.size() * options.bands * options.quantiles;
+  const std::size_t columns = (up ? 2 : 1) * options.lags.size() * region_count(options) * options.quantiles;
   return {options, up, radius, frames_per_second, frames, columns, {}};
 }
 
@@ -285,16 +309,16 @@ struct Lag_values {
 };
 
 /// The scratch of `signature_row`, kept from row to row by one thread: V keys each for the speeds
-/// and the vertical rates of a lag, one band's keys, the selection's, the span of the buckets of
-/// each lag's (and band's) speeds and vertical rates, and each lag's last values.
+/// and the vertical rates of a lag, one region's keys, the selection's, the span of the buckets of
+/// each lag's (and region's) speeds and vertical rates, and each lag's last values.
 struct Row_scratch {
   explicit Row_scratch(std::size_t vertices)
       : speeds(vertices), rises(vertices), keyed(vertices), spare(vertices) {}
   std::vector<std::uint64_t> speeds, rises;
-  std::vector<std::uint64_t> band_keys;  // one band's keys, gathered (several bands alone)
+  std::vector<std::uint64_t> region_keys;  // one region's keys, gathered (several regions alone)
   std::vector<Keyed_rate> keyed, spare;
   Bucket_quantiles selection;
-  std::vector<Bucket_quantiles::Bucket_span> spans;  // per lag and band: the speeds', the vertical rates'
+  std::vector<Bucket_quantiles::Bucket_span> spans;  // per lag and region: the speeds', the vertical rates'
   std::vector<Lag_values> last;                      // per lag
 };
 
@@ -328,12 +352,12 @@ std::pair<Key_range, Key_range> displacement_rates(const Frames_around<Coordinat
   return {speed, rise};
 }
 
-/// The keys of `keys` at a band's vertices, gathered into `out`, and their range.
-inline Key_range gathered_keys(const std::vector<std::uint64_t>& keys, const Surface_band& band,
+/// The keys of `keys` at a region's vertices, gathered into `out`, and their range.
+inline Key_range gathered_keys(const std::vector<std::uint64_t>& keys, const Surface_region& region,
                                std::vector<std::uint64_t>& out) {
   Key_range range;
-  out.resize(band.vertices.size());
-  for (std::size_t i = 0; i < band.vertices.size(); ++i) range.add(out[i] = keys[band.vertices[i]]);
+  out.resize(region.vertices.size());
+  for (std::size_t i = 0; i < region.vertices.size(); ++i) range.add(out[i] = keys[region.vertices[i]]);
   return range;
 }
 
@@ -344,19 +368,19 @@ void signature_row(const Signature_rows& rows, const FrameOf& frame_of, std::spa
                    double instant, double* row, Row_scratch& scratch) {
   const Motion_signature_options& options = rows.options;
   const std::size_t vertices = weights.size(), k = options.quantiles, lags = options.lags.size();
-  const std::size_t bands = std::max<std::size_t>(rows.bands.size(), 1), width = bands * k;
+  const std::size_t regions = std::max<std::size_t>(rows.regions.size(), 1), width = regions * k;
   const double vertical_factor = std::sqrt(options.vertical_weight);
-  scratch.spans.resize(2 * lags * bands);
+  scratch.spans.resize(2 * lags * regions);
   scratch.last.resize(lags);
-  // Quantiles of stream `stream` (a lag, band and kind of rate) of the keys of band b, or of every
-  // vertex when the surface is one band.
-  const auto quantiles = [&](std::size_t stream, std::size_t b, const std::vector<std::uint64_t>& keys,
+  // Quantiles of stream `stream` (a lag, region and kind of rate) of the keys of region r, or of
+  // every vertex when the surface is one region.
+  const auto quantiles = [&](std::size_t stream, std::size_t r, const std::vector<std::uint64_t>& keys,
                              Key_range range, std::vector<std::uint64_t>& gathered, double* out) {
     std::span<const std::uint64_t> chosen(keys);
     std::span<const double> chosen_weights = weights;
-    if (!rows.bands.empty()) {
-      range = gathered_keys(keys, rows.bands[b], gathered);
-      chosen = gathered, chosen_weights = rows.bands[b].weights;
+    if (!rows.regions.empty()) {
+      range = gathered_keys(keys, rows.regions[r], gathered);
+      chosen = gathered, chosen_weights = rows.regions[r].weights;
     }
     scratch.selection.quantiles(chosen, range.low, range.high, chosen_weights, k, out, scratch.spans[stream],
                                 scratch.keyed, scratch.spare);
@@ -378,15 +402,16 @@ void signature_row(const Signature_rows& rows, const FrameOf& frame_of, std::spa
     const double unit = 1.0 / (2.0 * lag * rows.radius);
     const auto [speed, rise] =
         displacement_rates(before, after, vertices, unit, rows.up, scratch.speeds.data(), scratch.rises.data());
-    for (std::size_t b = 0; b < bands; ++b)
-      quantiles(2 * (l * bands + b), b, scratch.speeds, speed, scratch.band_keys, speed_quantiles + b * k);
+    for (std::size_t r = 0; r < regions; ++r)
+      quantiles(2 * (l * regions + r), r, scratch.speeds, speed, scratch.region_keys, speed_quantiles + r * k);
     for (std::size_t q = 0; q < width; ++q) speed_quantiles[q] = std::log(std::max(speed_quantiles[q], options.floor));
     last.values.assign(speed_quantiles, speed_quantiles + width);
     last.before = at_before, last.after = at_after;
     if (!rows.up) continue;
-    for (std::size_t b = 0; b < bands; ++b)
-      quantiles(2 * (l * bands + b) + 1, b, scratch.rises, rise, scratch.band_keys, vertical + b * k);
-    for (std::size_t q = 0; q < width; ++q) vertical[q] = vertical_factor * std::asinh(vertical[q] / options.vertical_unit);
+    for (std::size_t r = 0; r < regions; ++r)
+      quantiles(2 * (l * regions + r) + 1, r, scratch.rises, rise, scratch.region_keys, vertical + r * k);
+    for (std::size_t q = 0; q < width; ++q)
+      vertical[q] = vertical_factor * std::asinh(vertical[q] / options.vertical_unit);
     last.values.insert(last.values.end(), vertical, vertical + width);
   }
 }
@@ -416,7 +441,8 @@ Eigen::MatrixXd motion_signatures_at(std::span<const Coordinate> positions, std:
   const double radius = internal::rms_radius(positions, weights, frames);
   internal::check_radius(radius);
   internal::Signature_rows rows = internal::signature_rows(options, frames_per_second, frames, radius);
-  if (options.bands > 1) rows.bands = internal::surface_bands(positions.data(), weights, options.bands, *rows.up);
+  if (internal::region_count(options) > 1)
+    rows.regions = internal::surface_regions(positions.data(), weights, options, rows.up);
 
   using Row_major = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   Row_major out = Row_major(static_cast<Eigen::Index>(instants.size()), static_cast<Eigen::Index>(rows.columns));
@@ -464,9 +490,10 @@ decltype(auto) with_positions_and_weights(const Mesh& animation, F&& f) {
 /// @brief The motion signature of every frame of an animation given as raw positions, for data
 /// with no mesh built (a triangle soup, a sampled glTF clip).
 ///
-/// Row t holds, for each lag k of `options.lags` in turn (and within it for each height band of
-/// `options.bands`, the lowest first), the `options.quantiles` area-weighted quantiles of the
-/// vertices' (the band's) speeds at lag k (`Motion_signature_options::lags`) at frame t's
+/// Row t holds, for each lag k of `options.lags` in turn (and within it for each region: each
+/// height band of `options.bands`, the lowest first, and within it each side of `options.sides`,
+/// the negative first), the `options.quantiles` area-weighted quantiles of the vertices' (the
+/// region's) speeds at lag k (`Motion_signature_options::lags`) at frame t's
 /// instant t / `frames_per_second`, in units of the animation's RMS radius (`rms_radius`) per
 /// second, as natural logarithms of at least `log(options.floor)`. With `options.up` set, the same
 /// number of columns follow, for each lag in turn: the quantiles of the vertices' signed rates
@@ -483,12 +510,13 @@ decltype(auto) with_positions_and_weights(const Mesh& animation, F&& f) {
 /// area, `vertex_area_weights`).
 /// @param options the lags, quantiles, floor and up direction (default `Motion_signature_options{}`).
 /// @param frames_per_second the frame rate the positions are sampled at. Default 30.
-/// @return the `T x (lags x bands x quantiles)` signatures, `T x (2 x lags x bands x quantiles)` with an up
-/// direction.
+/// @return the `T x (lags x regions x quantiles)` signatures (regions: `bands`, twice that with
+/// `sides`), `T x (2 x lags x regions x quantiles)` with an up direction.
 /// @throws invalid_input when the sizes disagree, when there are fewer than two frames (a single
 /// pose has no motion), when a lag or the frame rate is not positive and finite, when `quantiles`
 /// is 0, when `floor` is not positive, when the up direction is zero or not finite, when `bands`
-/// is 0, above `max_bands`, or above 1 without an up direction, when
+/// is 0, above `max_bands`, or above 1 without an up direction, when `sides` is zero or not
+/// finite, when
 /// `vertical_unit` is not positive or `vertical_weight` negative, or when the animation does not
 /// move its vertices apart from each other (zero radius).
 /// @par Complexity O(T V L log k) expected for T frames, V vertices, L lags and k quantiles (a
@@ -508,7 +536,7 @@ Eigen::MatrixXd motion_signatures(std::span<const Coordinate> positions, std::sp
 /// the first frame's area, at the animation's frame rate (`frames_per_second`: its own, else 30);
 /// see the overload on raw positions for what a signature is.
 /// @tparam Mesh a `DeformingMesh`.
-/// @return the `T x (lags x bands x quantiles)` signatures (twice the columns with an up direction).
+/// @return the `T x (lags x regions x quantiles)` signatures (twice the columns with an up direction).
 /// @throws invalid_input as the overload on raw positions.
 /// @par Complexity O(T V L log k) expected, plus a copy of the positions for a mesh that is not a
 /// `Deforming_mesh`.

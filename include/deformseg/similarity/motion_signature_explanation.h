@@ -29,6 +29,7 @@ struct Signature_channel {
   Kind kind = Kind::speed;  ///< what the channel holds
   double lag = 0;         ///< the lag, in seconds (`Motion_signature_options::lags`)
   std::size_t band = 0;   ///< the height band, 0 the lowest (`Motion_signature_options::bands`)
+  int side = 0;  ///< -1 the negative half across the body, +1 the positive, 0 both (`Motion_signature_options::sides`)
   bool upper_half = false;  ///< the quantiles from the median up (the faster, or more rising, half of the surface)
   /// @brief The channel's share of the squared differences of the aligned rows, summed over the
   /// alignment: the shares of all channels sum to 1 (all 0 when the aligned rows are equal).
@@ -41,7 +42,7 @@ struct Signature_channel {
 /// @brief Where two animations' motion signatures differ along their alignment.
 struct Motion_signature_explanation {
   /// @brief Every channel, in the signatures' column order: the speeds' then the vertical rates',
-  /// each by lag, then band, then the lower and upper half.
+  /// each by lag, then band, then side, then the lower and upper half of the quantiles.
   std::vector<Signature_channel> channels;
   /// @brief The aligned pairs of rows the differences were summed over.
   std::size_t pairs = 0;
@@ -53,8 +54,8 @@ struct Motion_signature_explanation {
 /// @param a, b the signatures (rows at instants, as `Motion_signature_description::signatures`),
 /// made with `options`.
 /// @param row_pairs the aligned pairs (row of a, row of b), as the alignment policy gives them.
-/// @param options the options the signatures were made with: their lags, quantiles, bands and up
-/// direction fix the columns' meaning.
+/// @param options the options the signatures were made with: their lags, quantiles, bands, sides
+/// and up direction fix the columns' meaning.
 /// @pre every pair's rows exist in `a` and `b`.
 /// @throws invalid_input when the signatures' width is not the options', or a pair names a row
 /// beyond them.
@@ -65,7 +66,8 @@ inline Motion_signature_explanation explain_signatures(const Eigen::MatrixXf& a,
                                                        std::span<const std::pair<std::size_t, std::size_t>> row_pairs,
                                                        const signatures::Motion_signature_options& options) {
   const std::size_t k = options.quantiles, bands = options.bands, lags = options.lags.size();
-  const std::size_t kinds = options.up ? 2 : 1, width = kinds * lags * bands * k;
+  const std::size_t halves = options.sides ? 2 : 1, kinds = options.up ? 2 : 1;
+  const std::size_t width = kinds * lags * bands * halves * k;
   if (std::size_t(a.cols()) != width || std::size_t(b.cols()) != width)
     throw invalid_input("explain_signatures: signatures of " + std::to_string(a.cols()) + " and " +
                         std::to_string(b.cols()) + " columns, where the options make " + std::to_string(width));
@@ -74,10 +76,15 @@ inline Motion_signature_explanation explain_signatures(const Eigen::MatrixXf& a,
   for (std::size_t kind = 0; kind < kinds; ++kind)
     for (std::size_t l = 0; l < lags; ++l)
       for (std::size_t band = 0; band < bands; ++band)
-        for (const bool upper : {false, true})
-          out.channels.push_back({kind == 0 ? Signature_channel::Kind::speed : Signature_channel::Kind::vertical_rate,
-                                  options.lags[l], band, upper});
-  // Column c's channel: its (kind, lag, band) block of k quantiles, then the half it falls in.
+        for (std::size_t half = 0; half < halves; ++half)
+          for (const bool upper : {false, true})
+            out.channels.push_back({.kind = kind == 0 ? Signature_channel::Kind::speed
+                                                      : Signature_channel::Kind::vertical_rate,
+                                    .lag = options.lags[l],
+                                    .band = band,
+                                    .side = halves == 1 ? 0 : half == 0 ? -1 : 1,
+                                    .upper_half = upper});
+  // Column c's channel: its (kind, lag, band, side) block of k quantiles, then the half it falls in.
   const auto channel_of = [&](std::size_t c) { return 2 * (c / k) + (2 * (c % k) + 1 > k ? 1 : 0); };
   std::vector<double> squares(out.channels.size()), sums(out.channels.size());
   std::vector<std::size_t> columns(out.channels.size());

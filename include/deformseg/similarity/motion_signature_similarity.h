@@ -35,10 +35,11 @@ namespace deformseg::similarity {
 /// (`motion_signatures`) at instants at most 1 / `signature_rate` seconds apart, each row with the
 /// frame nearest its instant.
 struct Motion_signature_description {
-  /// @brief One signature per row, at increasing instants: `R x (lags x bands x quantiles)`, twice as wide
-  /// with an up direction. In float, rounded once from the double values `motion_signatures_at`
-  /// computes, and column-major (each dimension's R values contiguous): the layout of
-  /// `Motion_signature_view` (see `view`), which the comparison kernel reads.
+  /// @brief One signature per row, at increasing instants: `R x (lags x regions x quantiles)`
+  /// (regions: the options' bands, twice that with sides), twice as wide with an up direction. In
+  /// float, rounded once from the double values `motion_signatures_at` computes, and column-major
+  /// (each dimension's R values contiguous): the layout of `Motion_signature_view` (see `view`),
+  /// which the comparison kernel reads.
   Eigen::MatrixXf signatures;
   /// @brief Per row, the animation's frame nearest its instant: non-decreasing, from 0 to the last
   /// frame, every frame at least once.

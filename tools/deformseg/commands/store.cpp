@@ -277,6 +277,7 @@ void add_describe_command(CLI::App& app) {
              "for its rows, each on its body_file (else --body's body, else its own); or");
   add_parameter(*command, std::get<3>(frontend::policy_parameters), o->policy.up);
   add_parameter(*command, std::get<4>(frontend::policy_parameters), o->policy.bands);
+  add_parameter(*command, std::get<5>(frontend::policy_parameters), o->policy.sides);
   add_store_option(*command, o->store, "The store's folder (made when missing)");
   command->add_flag("--hash", o->hash,
                     "Tell a changed source by its bytes' hash rather than its modification time (reads every file)");
