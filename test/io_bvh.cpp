@@ -374,6 +374,28 @@ TEST_CASE("bvh: malformed files are refused, naming the file and the line", "[bv
   CHECK_THAT(refused("missing.bvh", ""), Contains("missing.bvh"));
 }
 
+// A damaged file's bytes (E9, a Latin-1 e acute; 1B, a terminal's escape) reach the message as \xHH,
+// both in Assimp's words and in deformseg's own checks.
+TEST_CASE("bvh: a message quotes a damaged file's bytes escaped, never raw", "[bvh][errors]") {
+  const auto message_of = [](const std::string& name, const std::string& text) {
+    try {
+      static_cast<void>(ds::io::Gltf_file(write_file("io_bvh/" + name, text)));
+    } catch (const ds::invalid_input& e) {
+      return std::string(e.what());
+    }
+    FAIL("read " << name);
+    return std::string();
+  };
+  const std::string keyword =
+      message_of("keyword.bvh", "HIERARCHY\nROOT A\n{\n  OFFSET 0 0 0\n  WH\xE9\x1B 3\n}\nMOTION\n");
+  CHECK_THAT(keyword, Contains("not a valid BVH file: line 5: Unknown keyword \"WH\\xE9\\x1B\""));
+  const std::string count =
+      message_of("count.bvh", "HIERARCHY\nROOT A\xE9\n{\n  OFFSET 0 0 0\n  CHANNELS 3\xE9\n}\n");
+  CHECK_THAT(count, Contains("count.bvh:5: joint 'A\\xE9' CHANNELS count must be a whole number, not '3\\xE9'"));
+  for (const std::string& message : {keyword, count})
+    CHECK((message.find('\xE9') == std::string::npos && message.find('\x1B') == std::string::npos));
+}
+
 TEST_CASE("bvh: a file of no mesh and no bone is refused with the hint to give a body", "[bvh]") {
   const fs::path path = write_file("io_bvh/one_joint.bvh",
                                    "HIERARCHY\nROOT A\n{\n OFFSET 0 0 0\n CHANNELS 3 Zrotation Xrotation Yrotation\n}\n"

@@ -226,6 +226,39 @@ TEST_CASE("read_obj: each error names the file and the line", "[io][obj][errors]
   }
 }
 
+// A damaged file's bytes reach the message escaped, so that a terminal shows them and acts on none.
+TEST_CASE("read_obj: a message quotes a damaged file's bytes as \\xHH, never raw", "[io][obj][errors]") {
+  const std::string three = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const auto message_of = [](const fs::path& path) {
+    try {
+      static_cast<void>(read_obj(path));
+    } catch (const invalid_input& e) {
+      return std::string(e.what());
+    }
+    FAIL("read " << path);
+    return std::string();
+  };
+  SECTION("a statement of Latin-1 and control bytes") {
+    // v, E9 (Latin-1 e acute, not UTF-8), ESC [2J (a terminal's clear-screen), DEL.
+    const fs::path latin = obj_file("latin1.obj", three + "v\xE9\x1B[2J\x7F 1 2 3\n");
+    const std::string message = message_of(latin);
+    CHECK(message == at(latin, 4, "unknown OBJ statement \"v\\xE9\\x1B[2J\\x7F\""));
+    CHECK(message.find('\xE9') == std::string::npos);
+    CHECK(message.find('\x1B') == std::string::npos);
+  }
+  SECTION("a number cut inside a UTF-8 sequence, and a backslash") {
+    // 40 bytes kept: the 2-byte e acute (C3 A9) at bytes 40 and 41 is cut after its first byte.
+    const fs::path cut = obj_file("cut.obj", three + "v 1 2 " + std::string(39, '7') + "\xC3\xA9\\9\n");
+    CHECK(message_of(cut) == at(cut, 4, "malformed number \"" + std::string(39, '7') + "\\xC3...\""));
+    const fs::path slash = obj_file("slash.obj", three + "v 1 2 a\\b\n");
+    CHECK(message_of(slash) == at(slash, 4, "malformed number \"a\\\\b\""));
+  }
+  SECTION("valid UTF-8 stays as it is") {
+    const fs::path utf8 = obj_file("utf8.obj", three + "caf\xC3\xA9 1\n");
+    CHECK(message_of(utf8) == at(utf8, 4, "unknown OBJ statement \"caf\xC3\xA9\""));
+  }
+}
+
 TEST_CASE("read_mesh_points (OBJ): positions only, in double or float", "[io][obj]") {
   const fs::path path = obj_file("points.obj", "vn 0 0 1\nv 0.1 0.2 0.3\nf 1 2 3 4 5\nv 1 2 3\nv 4 5 6 7\n");
   std::vector<double> xyz(9);

@@ -4,7 +4,9 @@ command's JSON records of its inputs, and `--csv -` printing as `--json -` does.
 
 import csv
 import io
+import os
 import shutil
+import subprocess
 
 import pytest
 
@@ -111,3 +113,15 @@ def test_absurd_coordinates_are_warned_of_or_refused(tool, scratch, synth_obj):
     run = succeeds(tool("describe", folder, "--store", scratch / "store-absurd"))
     assert f"warning: {folder.resolve()}: {where}" in run.err
     fails(tool("describe", folder, "--store", scratch / "store-absurd-refused", "--refuse-defects"), where)
+
+
+# A damaged file's bytes (E9, a Latin-1 e acute; 1B, a terminal's escape) reach the message as
+# \xHH: standard error is printable UTF-8, whatever the file holds.
+def test_damaged_file_bytes_are_escaped(scratch):
+    damaged = scratch / "damaged.obj"
+    damaged.write_bytes(b"v 0 0 0\nv 1 0 0\nv\xe9\x1b[2J 0 1 0\nf 1 2 3\n")
+    run = subprocess.run([os.environ["DEFORMSEG_TOOL"], "info", str(damaged)], capture_output=True)
+    assert run.returncode == 1, run
+    assert b'damaged.obj:3: frame 0: unknown OBJ statement "v\\xE9\\x1B[2J"' in run.stderr, run.stderr
+    assert b"\xe9" not in run.stderr and b"\x1b" not in run.stderr, run.stderr
+    run.stderr.decode("utf-8")  # strict: no invalid sequence

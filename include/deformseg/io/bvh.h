@@ -10,6 +10,7 @@
 #endif
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/utf8.h>
 #include <deformseg/io/character_files.h>
 #include <deformseg/io/fbx_collada.h>
 #include <deformseg/io/internal/bvh_checks.h>
@@ -70,9 +71,12 @@ inline tinygltf::Model model_from_bytes(std::string_view bytes) {
     // No post-processing: Assimp's validation refuses a scene without a mesh.
     scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, "bvh");
   } catch (const std::exception& e) {
-    throw invalid_input(std::string("Assimp could not parse the file: ") + e.what());
+    throw invalid_input("Assimp could not parse the file: " + deformseg::internal::printable_text(e.what()));
   }
-  if (!scene) throw invalid_input("not a valid BVH file: " + assimp_message(importer.GetErrorString()));
+  // Assimp quotes the file's bytes ("Unknown keyword '...'"), which may be anything in a damaged file.
+  if (!scene)
+    throw invalid_input("not a valid BVH file: " +
+                        deformseg::internal::printable_text(assimp_message(importer.GetErrorString())));
   tinygltf::Model model = assimp::model_of(*scene, 1.0);
   leave_out_made_up_channels(model, recorded);
   return model;

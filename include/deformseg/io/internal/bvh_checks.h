@@ -8,6 +8,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/utf8.h>
 
 #include <algorithm>
 #include <cctype>
@@ -20,6 +21,9 @@
 #include <vector>
 
 namespace deformseg::io::internal::bvh {
+
+// The joints' names and the tokens a message quotes are the file's bytes: shown escaped.
+using deformseg::internal::printable_text;
 
 /// The deepest joint hierarchy read: Assimp reads one level per recursive call.
 inline constexpr std::size_t max_depth = 1'000;
@@ -64,7 +68,7 @@ inline double number(std::string_view token) {
 inline std::size_t whole_number(std::string_view token, const std::string& what, std::size_t line) {
   const double value = number(token);
   if (!(value >= 0 && value < 4294967296.0) || value != std::floor(value))
-    throw invalid_input(what + " must be a whole number, not '" + std::string(token) + "'", {.line = line});
+    throw invalid_input(what + " must be a whole number, not '" + printable_text(token) + "'", {.line = line});
   return std::size_t(value);
 }
 
@@ -77,7 +81,8 @@ struct Channels {
 /// Reads a CHANNELS list of `joint`.
 /// @throws invalid_input for position channels on a joint that has not 6 channels.
 inline Channels read_channels(Tokens& tokens, const std::string& joint) {
-  Channels channels{.count = whole_number(tokens.next(), "joint '" + joint + "' CHANNELS count", tokens.line())};
+  const std::string what = "joint '" + printable_text(joint) + "' CHANNELS count";
+  Channels channels{.count = whole_number(tokens.next(), what, tokens.line())};
   const std::size_t line = tokens.line();
   for (std::size_t c = 0; c < channels.count; ++c) {
     const std::string_view name = tokens.next();
@@ -86,7 +91,7 @@ inline Channels read_channels(Tokens& tokens, const std::string& joint) {
     channels.rotation = channels.rotation || name.ends_with("rotation");
   }
   if (channels.position && channels.count != 6)
-    throw invalid_input("joint '" + joint + "' has " + std::to_string(channels.count) +
+    throw invalid_input("joint '" + printable_text(joint) + "' has " + std::to_string(channels.count) +
                             " channels, some of them positions: Assimp keeps the positions of a joint of 6 channels "
                             "(3 positions, 3 rotations) only, and dropping them would change the motion",
                         {.line = line});
@@ -113,7 +118,8 @@ inline Recorded check_hierarchy(Tokens& tokens) {
     if (token == "ROOT" || token == "JOINT") {
       joint = std::string(tokens.next());
       if (!joints.insert(joint).second)
-        throw invalid_input("two joints are named '" + joint + "': their channels could not be told apart",
+        throw invalid_input("two joints are named '" + printable_text(joint) +
+                                "': their channels could not be told apart",
                             {.line = tokens.line()});
     } else if (token == "{" && ++depth > max_depth) {
       throw invalid_input("the joint hierarchy is deeper than " + std::to_string(max_depth) + " levels",

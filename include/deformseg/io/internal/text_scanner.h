@@ -9,6 +9,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/utf8.h>
 #include <deformseg/io/internal/file_io.h>
 #include <deformseg/io/triangle_soup.h>
 
@@ -189,12 +190,13 @@ public:
     file_.fail_at(position, message);
   }
 
-  /// The token starting at `position`, cut to a length that fits in a message.
+  /// The token starting at `position`, cut to a length that fits in a message, its bytes outside
+  /// printable UTF-8 escaped (`printable_text`): a damaged file's bytes never reach the terminal raw.
   static std::string token_at(const char* position) {
     constexpr std::size_t longest = 40;
     std::size_t n = 0;
     while (n < longest && !ends_token(position[n])) ++n;
-    std::string token(position, n);
+    std::string token = deformseg::internal::printable_text({position, n});
     if (n == longest) token += "...";
     return token;
   }
