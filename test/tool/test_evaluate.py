@@ -59,7 +59,9 @@ def test_evaluate_tubes(evaluate_tubes):
                     r"median same +0\.[0-9]+ \(4 pairs\)", r"median different +0\.[0-9]+ \(8 pairs\)",
                     r"bend +2 / 2", r"twice +2 / 2", r"confusion", r"bend +\. +2 +\.\n", r"twice +\. +\. +2\n"):
         assert re.search(pattern, run.out), f"{pattern}\n{run.describe()}"
-    assert "described 5 animations" in run.err and "matrix: 20 of 20 steps" in run.err
+    # Each phase counted on its own: the 5 descriptions, then the 5 x 6 / 2 comparisons.
+    assert re.search(r"described 5 animations in [0-9.]+ s\n", run.err), run.describe()
+    assert "matrix: 15 of 15 comparisons" in run.err and " steps" not in run.err, run.describe()
 
 
 def test_evaluate_figure_written(tubes, evaluate_tubes):
@@ -90,6 +92,9 @@ def test_evaluate_pose(tool, tubes):
 def test_evaluate_pose_skipped(tool, tubes):
     run = succeeds(tool("evaluate", tubes[0] / "pose.csv", "--skip-unreadable"))
     assert re.search(r"skipped [^\n]*frame_0003.obj: motion_signatures: an animation of 1 frame", run.output)
+    # The count says how many were described and how many left out; the comparisons, of those kept.
+    assert re.search(r"described 2 of 3 animations in [0-9.]+ s \(1 left out\)", run.err), run.describe()
+    assert "matrix: 3 of 3 comparisons" in run.err and "of 9" not in run.err, run.describe()
     for pattern in (r"items +2\n", r"queries +2\n", r"NN accuracy +1.000\n"):
         assert re.search(pattern, run.out), f"{pattern}\n{run.describe()}"
 

@@ -180,7 +180,7 @@ def test_matrix_csv(tool, scratch, synth_obj, bend_once):
     matrix = run.json()["similarity"]
     assert len(matrix) == 3 and all(len(row) == 3 for row in matrix)
     assert [matrix[i][i] for i in range(3)] == [1.0, 1.0, 1.0] and matrix[0][2] == 1.0
-    assert "described 3 animations" in run.err and "matrix: 9 of 9 steps" in run.err
+    assert "described 3 animations" in run.err and "matrix: 6 of 6 comparisons" in run.err
     header, *rows = (scratch / "matrix.csv").read_text().splitlines()
     assert header.startswith("animation,") and len(rows) == 3
     assert (scratch / "matrix.png").read_bytes().startswith(b"\x89PNG\r\n\x1a\n")

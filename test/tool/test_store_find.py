@@ -3,6 +3,8 @@
 `find QUERY --store S` gives the best windows over all the store's clips, a stored clip found whole
 in itself and in its copy at 1, the lower index first."""
 
+import re
+
 import pytest
 
 from conftest import fails, succeeds, synth
@@ -104,3 +106,13 @@ def test_find_in_store_takes_one_query(tool, store, clips):
     fails(tool("find", clips[0], clips[1], "--store", store), "find --store takes one input, the query, not 2")
     fails(tool("find", clips[0]), "find takes the query and the long animation, or the query and --store S")
     fails(tool("find", clips[0], "--store", store, "--count", "0"), "--count: must be a whole")
+
+
+# The summary gives the pruned share to one decimal ("93.3 % pruned"), not a double's 17 digits;
+# the JSON keeps every digit.
+def test_knn_graph_summary_pruned_share(tool, store):
+    run = succeeds(tool("knn-graph", "--store", store, "-k", "1"))
+    share = re.search(r"\(([0-9.]+) % pruned before a full alignment\)", run.out)
+    assert share and re.fullmatch(r"\d{1,3}\.\d", share.group(1)), run.describe()
+    exact = tool("knn-graph", "--store", store, "-k", "1", "--json", "-").json()["pruning"]["pruned_share"]
+    assert float(share.group(1)) == pytest.approx(100 * exact, abs=0.05)

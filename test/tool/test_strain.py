@@ -15,6 +15,15 @@ def test_strain_summary(tool, synth_obj):
     assert isinstance(strain["sigma"], float) and strain["sigma"] > 0
 
 
+# The summary prints sigma to 6 significant digits ("0.872746"), not a double's 17.
+def test_strain_summary_sigma_digits(tool, synth_obj):
+    run = succeeds(tool("strain", synth_obj[0]))
+    sigma = re.search(r"^sigma +(\S+)$", run.out, re.M)
+    assert sigma and re.fullmatch(r"0\.\d{1,6}", sigma.group(1)), run.describe()
+    exact = tool("strain", synth_obj[0], "--json", "-").json()["sigma"]
+    assert float(sigma.group(1)) == pytest.approx(exact, rel=1e-5)
+
+
 @pytest.fixture(scope="module")
 def strain_outputs(tool, scratch, synth_obj):
     """strain writing the field file and the coloured meshes."""

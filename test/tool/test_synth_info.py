@@ -36,6 +36,19 @@ def test_info(tool, tubes, format):
     assert (info["frames"], info["vertices"], info["triangles"]) == (41, 786, 1568)
 
 
+# The summary prints the bounding box to 6 significant digits, not a double's 17
+# (-0.10103061890839388); the JSON keeps every digit.
+def test_info_summary_figures(tool, tubes):
+    run = succeeds(tool("info", *input_of(tubes, "obj")))
+    box = re.search(r"^bounding box  \[(.*)\] to \[(.*)\]$", run.out, re.M)
+    assert box, run.describe()
+    coordinates = [c for corner in box.groups() for c in corner.split(", ")]
+    assert len(coordinates) == 6 and coordinates[0] == "-0.101031", run.describe()
+    assert all(len(re.sub(r"[-.]|e.*", "", c).lstrip("0")) <= 6 for c in coordinates), run.describe()
+    exact = tool("info", *input_of(tubes, "obj"), "--json", "-").json()["bounding_box"]["min"]
+    assert [float(c) for c in coordinates[:3]] == pytest.approx(exact, rel=1e-5)
+
+
 def test_synth_two_joints(synth_two):
     made = synth_two[1].json()
     assert made["frames"] == 16 and made["triangles"] == 304

@@ -146,23 +146,65 @@ std::string percent_text(double share) {
   return text;
 }
 
+std::string figure_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+
+std::string point_text(const nlohmann::json& point) {
+  std::string text = "[";
+  for (const nlohmann::json& coordinate : point)
+    text += (text.size() > 1 ? ", " : "") + figure_text(coordinate.get<double>());
+  return text + "]";
+}
+
 std::string seconds_text(double seconds) { return value_text(seconds); }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+namespace {
+
+// The K of a matrix of K animations, from its K (K + 1) / 2 comparisons (each pair and each
+// animation with itself). Complexity O(sqrt(comparisons)).
+std::size_t animations_compared(std::size_t comparisons) {
+  std::size_t k = 0;
+  while ((k + 1) * (k + 2) / 2 <= comparisons) ++k;
+  return k;
+}
+
+std::string elapsed_text(double seconds) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", seconds);
+  return text;
+}
+
+}  // namespace
+
 bool Matrix_progress::operator()(std::size_t done, std::size_t total) {
   const double seconds = seconds_since(start);
-  char elapsed[32];
-  std::snprintf(elapsed, sizeof elapsed, "%.1f s", seconds);
-  if (done == descriptions && describe_seconds == 0) {
-    describe_seconds = seconds;
-    progress("described " + std::to_string(descriptions) + " animations in " + elapsed);
+  if (done < descriptions) {  // reading and describing; the frontend reports about every 5 %
+    progress("reading and describing: " + std::to_string(done) + " of " + std::to_string(descriptions) +
+             " animations, " + elapsed_text(seconds));
+    return true;
   }
-  if (done >= next_report || done == total) {
-    progress("matrix: " + std::to_string(done) + " of " + std::to_string(total) + " steps, " + elapsed);
-    next_report = done + std::max<std::size_t>(1, total / 20);
+  if (describe_seconds == 0 && descriptions > 0) describe_seconds = seconds;
+  // The last description's report still has the first total; the comparisons' reports have the
+  // total of the animations kept, so the line waits for the first of them.
+  const std::size_t comparisons = total - descriptions, compared = done - descriptions;
+  if (descriptions > 0 && !described_reported && (compared > 0 || comparisons == 0)) {
+    described_reported = true;
+    const std::size_t kept = animations_compared(comparisons), left_out = descriptions - kept;
+    progress("described " + (left_out ? std::to_string(kept) + " of " : "") + std::to_string(descriptions) +
+             " animations in " + elapsed_text(describe_seconds) +
+             (left_out ? " (" + std::to_string(left_out) + " left out)" : ""));
+  }
+  if (compared > 0 && (compared >= next_report || compared == comparisons)) {
+    progress("matrix: " + std::to_string(compared) + " of " + std::to_string(comparisons) + " comparisons, " +
+             elapsed_text(seconds));
+    next_report = compared + std::max<std::size_t>(1, comparisons / 20);
   }
   return true;
 }

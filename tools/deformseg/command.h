@@ -84,18 +84,31 @@ std::string value_text(double value);
 /// every digit.
 std::string percent_text(double share);
 
+/// A measurement as a summary prints it, to 6 significant digits ("0.872746", "-0.101031", "1.5e-07"),
+/// not the 17 a raw double shows; `--json` keeps every digit. Complexity O(1).
+std::string figure_text(double value);
+
+/// A point as a summary prints it: "[x, y, z]", each coordinate as `figure_text`.
+/// @pre `point` is a JSON array of numbers. Complexity O(its size).
+std::string point_text(const nlohmann::json& point);
+
 /// Seconds as a summary prints them, to the millisecond ("1.234").
 std::string seconds_text(double seconds);
 
 /// The seconds from `start` to now, on the steady clock.
 double seconds_since(std::chrono::steady_clock::time_point start);
 
-/// A similarity matrix's progress (a `Progress`) on standard error: a line when its
-/// `descriptions` are all made, with their time, and one about every 5 % of the steps.
+/// A similarity matrix's progress (a `Progress`, in `frontend::similarity_matrix`'s steps: one a
+/// description, then one a comparison) on standard error, each phase counted on its own:
+/// "reading and describing: D of N animations", then, once the comparisons start, "described K of
+/// N animations in T s (M left out)", then "matrix: P of Q comparisons" about every 5 %. The
+/// frontend's total drops from N + N (N + 1) / 2 to N + K (K + 1) / 2 when some of the N are left
+/// out, which is how K is known: the totals of the two phases are each fixed.
 struct Matrix_progress {
-  std::size_t descriptions = 0;
+  std::size_t descriptions = 0;  ///< N, the animations to read and describe (0: described already)
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-  double describe_seconds = 0;  // set when the descriptions are all made
+  double describe_seconds = 0;  ///< set when the descriptions are all made
+  bool described_reported = false;  ///< whether the "described K of N" line is out
   std::size_t next_report = 0;
 
   bool operator()(std::size_t done, std::size_t total);

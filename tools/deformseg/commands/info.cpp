@@ -118,7 +118,7 @@ void print(const nlohmann::json& info, const io::Repair_report& repair) {
             << "frames        " << info["frames"] << '\n'
             << "vertices      " << info["vertices"] << '\n'
             << "triangles     " << info["triangles"] << '\n'
-            << "bounding box  " << box["min"].dump() << " to " << box["max"].dump() << '\n'
+            << "bounding box  " << point_text(box["min"]) << " to " << point_text(box["max"]) << '\n'
             << "memory        " << info["memory_bytes"].get<std::size_t>() / 1024 << " KiB\n"
             << "repair        " << frontend::describe(repair) << " (read " << repair.input_vertices
             << " vertices, " << repair.input_triangles << " triangles)\n";

@@ -126,11 +126,13 @@ nlohmann::json summary(const Strain_command_options& o, const frontend::Read_inp
   return document;
 }
 
-// The summary: the strains with six decimals, so that a strain of 4e-41 (a float's rounding
-// noise on a still triangle) reads 0.000000, as meant; the JSON keeps every digit.
+// The summary: sigma to six significant digits, the strains with six decimals, so that a strain
+// of 4e-41 (a float's rounding noise on a still triangle) reads 0.000000, as meant; the JSON keeps
+// every digit.
 void print(const nlohmann::json& s) {
-  std::cout << "frames      " << s["frames"] << "\ntriangles   " << s["triangles"] << "\nsigma       "
-            << s["sigma"].dump() << "\ndegenerate  " << s["degenerate_count"] << "\nframe  min  max  mean\n"
+  const std::string sigma = s["sigma"].is_number() ? figure_text(s["sigma"].get<double>()) : "null";
+  std::cout << "frames      " << s["frames"] << "\ntriangles   " << s["triangles"] << "\nsigma       " << sigma
+            << "\ndegenerate  " << s["degenerate_count"] << "\nframe  min  max  mean\n"
             << std::fixed << std::setprecision(6);
   for (const auto& f : s["per_frame"])
     std::cout << f["frame"] << "  " << f["min"].get<double>() << "  " << f["max"].get<double>() << "  "
