@@ -42,21 +42,18 @@ inline bool is_control_character(std::string_view sequence) noexcept {
   return sequence.size() == 2 && first == 0xC2 && static_cast<unsigned char>(sequence[1]) < 0xA0;
 }
 
-/// @brief Bytes quoted from a file as a message may show them: printable UTF-8 as it is, a
-/// backslash written `\\`, and every other byte (one not part of a valid sequence, or of a
-/// control character: `is_control_character`) written `\xHH` (upper-case hexadecimal), as
-/// `store::escaped_name` writes a name. A token cut inside a sequence shows its bytes escaped.
-/// @par Example
-/// The bytes of `v`, E9 (a Latin-1 é), 1B (a terminal's escape) and `[2J` give the text
-/// `v\xE9\x1B[2J`; `café` in UTF-8 stays `café`.
+/// @brief `bytes` with a backslash written `\\` and every byte not part of a valid UTF-8 sequence
+/// (with `controls`, also those of a control character: `is_control_character`) written `\xHH`
+/// (upper-case hexadecimal); the rest as it is. What `printable_text` and `store::escaped_name`
+/// share; reversed by `store::unescaped_name`.
 /// @par Complexity O(size of `bytes`).
-inline std::string printable_text(std::string_view bytes) {
+inline std::string escaped_bytes(std::string_view bytes, bool controls) {
   constexpr char hex[] = "0123456789ABCDEF";
   std::string text;
   text.reserve(bytes.size());
   for (std::size_t i = 0; i < bytes.size();) {
     const std::size_t length = utf8_sequence_length(bytes, i);
-    if (length == 0 || is_control_character(bytes.substr(i, length))) {  // its bytes, each escaped
+    if (length == 0 || (controls && is_control_character(bytes.substr(i, length)))) {  // each byte escaped
       for (const std::size_t end = i + std::max<std::size_t>(length, 1); i < end; ++i) {
         const auto byte = static_cast<unsigned char>(bytes[i]);
         text.append("\\x").push_back(hex[byte >> 4]);
@@ -70,5 +67,14 @@ inline std::string printable_text(std::string_view bytes) {
   }
   return text;
 }
+
+/// @brief Bytes quoted from a file as a message may show them (`escaped_bytes` with the control
+/// characters escaped), so that a damaged file cannot put raw bytes or a terminal's control codes
+/// into an error message.
+/// @par Example
+/// The bytes of `v`, E9 (a Latin-1 é), 1B (a terminal's escape) and `[2J` give the text
+/// `v\xE9\x1B[2J`; `café` in UTF-8 stays `café`.
+/// @par Complexity O(size of `bytes`).
+inline std::string printable_text(std::string_view bytes) { return escaped_bytes(bytes, true); }
 
 }  // namespace deformseg::internal

@@ -102,24 +102,7 @@ inline bool is_utf8(std::string_view text) noexcept { return internal::valid_utf
 /// in UTF-8 (é the bytes C3 A9) as `café.glb`; the name `a\b` as `a\\b`:
 /// @include escaped_name.cpp
 /// @par Complexity O(size of `name`).
-inline std::string escaped_name(std::string_view name) {
-  constexpr char hex[] = "0123456789ABCDEF";
-  std::string text;
-  text.reserve(name.size());
-  for (std::size_t i = 0; i < name.size();) {
-    const std::size_t length = internal::utf8_sequence_length(name, i);
-    if (length == 0) {
-      const auto byte = static_cast<unsigned char>(name[i++]);
-      text.append("\\x").push_back(hex[byte >> 4]);
-      text.push_back(hex[byte & 0xFu]);
-      continue;
-    }
-    if (name[i] == '\\') text.push_back('\\');
-    text.append(name.substr(i, length));
-    i += length;
-  }
-  return text;
-}
+inline std::string escaped_name(std::string_view name) { return deformseg::internal::escaped_bytes(name, false); }
 
 /// @brief The bytes of the name `escaped_name` wrote as `text`: `\\` a backslash, `\xHH` the byte
 /// HH; a backslash in any other sequence is kept as it is. `unescaped_name(escaped_name(s)) == s`
