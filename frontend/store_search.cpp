@@ -98,25 +98,22 @@ Eigen::MatrixXd Store_search::matrix(std::vector<std::size_t> indices, const Pro
 
 void Store_search::check_policy(const Policy_choice& asked, Front front) const {
   // What was asked must be the store's; what was not is.
-  const similarity::Default_similarity wanted = store_policy(asked, front);  // motion signatures, DTW
+  const signatures::Motion_signature_options wanted = store_policy(asked, front).signatures;  // DTW too
+  const signatures::Motion_signature_options& stored = policy_.signatures;
   const std::string where = front == Front::python ? "MotionStore.description"
                                                    : "deformseg store info " + store().folder().string();
-  const auto& up = wanted.signatures.up;
-  const auto& stored_up = policy_.signatures.up;
-  if (!asked.up.empty() && !((!up && !stored_up) || (up && stored_up && *up == *stored_up)))
-    throw invalid_input(spelled("up", asked.up, front) + " differs from the store's up direction (" + where +
-                            " gives it)",
+  const auto refuse = [&](const std::string& asked_for, const std::string& theirs, const char* them = "it") {
+    throw invalid_input(asked_for + " differs from the store's " + theirs + " (" + where + " gives " + them + ")",
                         {.file = store().folder().string()});
-  const auto& sides = wanted.signatures.sides;
-  const auto& stored_sides = policy_.signatures.sides;
-  if (!asked.sides.empty() && !(stored_sides && *sides == *stored_sides))
-    throw invalid_input(spelled("sides", asked.sides, front) + " differs from the store's sides (" + where +
-                            " gives them)",
-                        {.file = store().folder().string()});
-  if (asked.bands && *asked.bands != policy_.signatures.bands)
-    throw invalid_input(spelled("bands", front) + " " + std::to_string(*asked.bands) + " differs from the store's " +
-                            std::to_string(policy_.signatures.bands) + " (" + where + " gives it)",
-                        {.file = store().folder().string()});
+  };
+  const auto same = [](const std::optional<Eigen::Vector3d>& a, const std::optional<Eigen::Vector3d>& b) {
+    return a.has_value() == b.has_value() && (!a || *a == *b);
+  };
+  if (!asked.up.empty() && !same(wanted.up, stored.up)) refuse(spelled("up", asked.up, front), "up direction");
+  if (!asked.sides.empty() && !same(wanted.sides, stored.sides))
+    refuse(spelled("sides", asked.sides, front), "sides", "them");
+  if (asked.bands && *asked.bands != stored.bands)
+    refuse(spelled("bands", front) + " " + std::to_string(*asked.bands), std::to_string(stored.bands));
 }
 
 std::vector<std::size_t> Store_search::labelled(const std::string& labels, const std::optional<Input_options>& read,
