@@ -117,11 +117,44 @@ void check_outliers(Read_input& read, bool refuse_defects, Front front) {
       read.outliers.note(*outlier, read.name.file, refuse_defects, front);
 }
 
-std::string body_fit_warning(const Read_input& read, const Input_options& options) {
-  if (options.body.empty() || !read.gltf || 2 * read.gltf->animated_joints >= read.gltf->joints) return "";
-  return "clip '" + read.gltf->clip + "' moves " + std::to_string(read.gltf->animated_joints) + " of the " +
-         std::to_string(read.gltf->joints) + " joints of the body " + options.body +
+namespace {
+
+std::string body_fit_warning(const std::optional<io::Gltf_read_report>& gltf, const Input_options& options) {
+  if (options.body.empty() || !gltf || 2 * gltf->animated_joints >= gltf->joints) return "";
+  return "clip '" + gltf->clip + "' moves " + std::to_string(gltf->animated_joints) + " of the " +
+         std::to_string(gltf->joints) + " joints of the body " + options.body +
          ": the others keep their rest pose (a body of another skeleton, or joints named otherwise?)";
+}
+
+}  // namespace
+
+std::string body_fit_warning(const Read_input& read, const Input_options& options) {
+  return body_fit_warning(read.gltf, options);
+}
+
+std::string body_fit_warning(const Stream_read& read, const Input_options& options) {
+  return body_fit_warning(read.gltf, options);
+}
+
+bool streams(const std::string& input, const Input_options& options, Front front) {
+  check(options, front);
+  const Input_name name = input_name(input, options, front);
+  return io::is_character_file(name.file) || reads_frame_by_frame(name.file, options);
+}
+
+io::Gltf_read_report clip_report(const io::Gltf_file& file, const io::Repaired_triangles& repaired,
+                                 const std::string& clip, double fps) {
+  // The report comes with a read: one of the first triangle alone gives it for 9 coordinates a frame.
+  io::Repaired_triangles one;
+  if (!repaired.triangles.empty()) {
+    one.triangles = {{0, 1, 2}};
+    for (const std::uint32_t v : repaired.triangles.front()) one.source_vertex.push_back(repaired.source_vertex[v]);
+    one.source_triangle = {repaired.source_triangle.front()};
+  }
+  io::Gltf_read_report report;
+  file.read(one, {.clip = clip, .fps = fps, .threads = 1}, &report);
+  report.repair = repaired.report;
+  return report;
 }
 
 void require_motion(const mesh::Surface_mesh_animation& animation, const std::string& input) {

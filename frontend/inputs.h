@@ -4,6 +4,7 @@
 
 #include "parameters.h"
 
+#include <deformseg/io/frame_stream.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/outlying_vertices.h>
@@ -13,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -137,7 +139,7 @@ public:
   void read_frame(std::span<Coordinate> out) {
     source_.read_frame(out);
     const std::size_t t = next_++;
-    if (t == 0 && !check_) check_.emplace(std::span<const Coordinate>(out));
+    if (t == 0 && !check_) check_ = std::make_unique<io::Outlier_check>(std::span<const Coordinate>(out));
     if (t < checked_) return;  // a frame of the first pass, read again
     checked_ = t + 1;
     if (const std::optional<io::Outlying_vertex> outlier = (*check_)(std::span<const Coordinate>(out), t))
@@ -154,7 +156,9 @@ private:
   bool refuse_defects_;
   Front front_;
   Outliers& outliers_;
-  std::optional<io::Outlier_check> check_;
+  // Made from frame 0 when it is read; held apart, which keeps GCC 12 from taking an optional's
+  // members for uninitialised where it inlines the check into a caller's loop.
+  std::unique_ptr<io::Outlier_check> check_;
   std::size_t next_ = 0, checked_ = 0;
 };
 
@@ -171,6 +175,71 @@ struct Read_input {
 /// of the body's joints ("clip 'Walk' moves 3 of the 24 joints of the body B.glb: ..."); empty
 /// otherwise (no body given, a body without skin, or half its joints moved or more).
 std::string body_fit_warning(const Read_input& read, const Input_options& options);
+
+/// What reading an input frame by frame (`with_input_stream`) found: a `Read_input` without its
+/// animation, the same name, repair and glTF report as `read_input` gives, and the outliers of
+/// the frames read.
+struct Stream_read {
+  Input_name name{};
+  io::Repair_report repair{};
+  std::optional<io::Gltf_read_report> gltf{};  ///< for a character file
+  Outliers outliers{};                         ///< noted as the frames are read
+};
+
+/// `body_fit_warning` of an input read frame by frame.
+std::string body_fit_warning(const Stream_read& read, const Input_options& options);
+
+/// True when `input` can be read frame by frame as `read_input` reads it whole
+/// (`with_input_stream`): a character file's clip (welded, when it is, by what the file fixes), or
+/// an animation file that `reads_frame_by_frame`.
+/// @throws invalid_input as `read_input` for options and names it refuses before reading.
+/// @par Complexity O(1): no file is read.
+bool streams(const std::string& input, const Input_options& options, Front front);
+
+/// The report `read_input` gives a character file's clip (`io::Gltf_read_report`: the clip, its
+/// times and frames, what was skipped, the joints moved, `repaired`'s counts), without sampling
+/// the clip's vertices: only those of one triangle are posed, 9 coordinates a frame.
+/// @param file the parsed file; `repaired` its repair (`io::Gltf_connectivity::repaired`).
+/// @param clip the clip's name or index (empty: the first); `fps` its sampling rate.
+/// @throws invalid_input naming the file, as `io::Gltf_file::read`.
+/// @par Complexity O(T (N + J)) for T frames, N nodes and J joints.
+io::Gltf_read_report clip_report(const io::Gltf_file& file, const io::Repaired_triangles& repaired,
+                                 const std::string& clip, double fps);
+
+/// Reads `input` frame by frame as `read_input` reads it whole: calls `f(source)` once with a
+/// `signatures::FrameSource` of its frames, vertices and triangles (those of `read_input`'s
+/// animation, the same bits), whose frames are checked for outliers as `read_input` checks them
+/// (noted in `read.outliers`, or refused with `refuse_defects`); fills `read`'s name, repair and
+/// glTF report before `f` is called. Returns what `f` returns.
+/// @pre `streams(input, options, front)`; one frame of the source is in memory at a time.
+/// @throws invalid_input naming the file, the clip, the frame or the option, as `read_input`.
+/// @par Complexity opening the source (a character file parsed and repaired, a topology read),
+/// then what `f` reads.
+template <class F>
+decltype(auto) with_input_stream(const std::string& input, const Input_options& options, Front front,
+                                 bool first_clip_by_default, Stream_read& read, F&& f) {
+  check(options, front);
+  read.name = input_name(input, options, front);
+  const auto checked = [&](auto& source) -> decltype(auto) {
+    Outlier_checked_source checked_source(source, read.name.file, options.refuse_defects, front, read.outliers);
+    return f(checked_source);
+  };
+  if (io::is_character_file(read.name.file)) {
+    const io::Gltf_file gltf = character_file(read.name.file, options);
+    if (!first_clip_by_default) io::require_clip_choice(gltf, read.name.clip);
+    io::Gltf_frame_source source(
+        gltf, {.clip = read.name.clip, .fps = options.fps, .repair = repair_options(read.name.file, options)});
+    read.repair = source.connectivity().repaired().report;
+    read.gltf = clip_report(gltf, source.connectivity().repaired(), read.name.clip, options.fps);
+    return checked(source);
+  }
+  return io::with_frame_source(read.name.file, animation_read_options(read.name.file, options),
+                               [&](auto& source) -> decltype(auto) {
+                                 // A character file, the one source without repair(), was opened above.
+                                 if constexpr (requires { source.repair(); }) read.repair = source.repair();
+                                 return checked(source);
+                               });
+}
 
 /// Looks for vertices absurdly far for the mesh's own scale (`io::Outlier_check`) in every frame
 /// of `read`'s animation, noting them in `read.outliers` (`Outliers::note`).

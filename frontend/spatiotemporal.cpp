@@ -15,10 +15,9 @@ void check(const Spatiotemporal_request& r, Front front) {
            spelled("reference", "previous", front));
 }
 
-Spatiotemporal_result spatiotemporal_segments(const mesh::Surface_mesh_animation& animation,
-                                              const Spatiotemporal_request& r, int threads) {
+spatiotemporal::Spatiotemporal_options segmentation_options(const Spatiotemporal_request& r) {
   const std::string reference = r.reference.empty() ? (r.reference_mesh.empty() ? "previous" : "rest") : r.reference;
-  const spatiotemporal::Spatiotemporal_options options{
+  return {
       .reference = reference == "rest" ? strain::Strain_reference::rest_pose : strain::Strain_reference::previous_pose,
       .sigma = r.sigma,
       .threshold = r.threshold,
@@ -28,6 +27,18 @@ Spatiotemporal_result spatiotemporal_segments(const mesh::Surface_mesh_animation
       .min_area = r.min_area,
       .hysteresis = r.hysteresis,
       .parts = {.contact_distance = r.contact_distance, .rigid_tolerance = r.rigid_tolerance}};
+}
+
+bool segments_stream(const Spatiotemporal_request& request) { return request.reference_mesh.empty(); }
+
+std::size_t streamed_chunk_frames(std::size_t vertices) {
+  constexpr std::size_t coordinates = std::size_t(1) << 22;  // 32 MB of doubles
+  return std::max<std::size_t>(2, coordinates / std::max<std::size_t>(3 * vertices, 1));
+}
+
+Spatiotemporal_result spatiotemporal_segments(const mesh::Surface_mesh_animation& animation,
+                                              const Spatiotemporal_request& r, int threads) {
+  const spatiotemporal::Spatiotemporal_options options = segmentation_options(r);
   strain::Strain_options strain = spatiotemporal::strain_options(options);
   strain.threads = threads;
   const auto field = strain_against(animation, r.reference_mesh, strain);

@@ -6,7 +6,7 @@ import re
 
 import pytest
 
-from conftest import fails, reads_nothing, succeeds
+from conftest import fails, reads_nothing, succeeds, synth
 
 
 def test_spatiotemporal_json(tool, bend_once):
@@ -69,3 +69,36 @@ def test_spatiotemporal_reference_mesh_previous(tool, scratch):
     reads_nothing(fails(tool("spatiotemporal", scratch / "no-such-tube", "--reference", "previous",
                              "--reference-mesh", "x.obj"),
                         "--reference-mesh is a rest pose: it excludes --reference previous"))
+
+
+# The input is read frame by frame (frame files, point caches not welded), its coordinates never
+# whole, or read whole (welded: welding compares every frame): the same segments, key frames and
+# coloured meshes, byte for byte. The tubes have no coincident vertices, so welding changes nothing.
+@pytest.mark.parametrize("reference", ["previous", "rest"])
+def test_spatiotemporal_streamed_as_whole(tool, scratch, bend_once, reference):
+    made = {}
+    for way, options in (("streamed", []), ("whole", ["--weld"])):
+        meshes = scratch / f"bend-once-{reference}-{way}"
+        made[way] = tool("spatiotemporal", bend_once[0], "--threshold", "0.01", "--reference", reference, *options,
+                         "--mesh-dir", meshes, "--json", "-").json(), meshes
+    assert made["streamed"][0] == made["whole"][0]
+    files = sorted(path.name for path in made["whole"][1].iterdir())
+    assert len(files) == 31 and files == sorted(path.name for path in made["streamed"][1].iterdir())
+    for name in files:
+        assert (made["streamed"][1] / name).read_bytes() == (made["whole"][1] / name).read_bytes(), name
+
+
+# A point cache of 16,450 vertices and 121 frames is read in chunks of 84 frames (32 MB of
+# coordinates): the strain across the chunks' seam, against the frame before or frame 0, is the
+# one of the animation read whole.
+@pytest.mark.parametrize("reference", ["previous", "rest"])
+def test_spatiotemporal_streamed_in_chunks(tool, scratch, reference):
+    folder = scratch / "chunked-tube"
+    if not (folder / "tube.pc2").exists():
+        synth(tool, scratch, "chunked-tube", "--sectors", "64", "--rings", "256", "--format", "pc2",
+              "--schedule", "30:0", "30:90", "30:", "30:0")
+    cache = [folder / "tube.pc2", "--topology", folder / "tube.obj", "--reference", reference]
+    streamed = tool("spatiotemporal", *cache, "--json", "-").json()
+    whole = tool("spatiotemporal", *cache, "--weld", "--json", "-").json()
+    assert streamed["frames"] == 121 and streamed["segments"] > 0
+    assert streamed == whole

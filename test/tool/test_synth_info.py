@@ -49,6 +49,29 @@ def test_info_summary_figures(tool, tubes):
     assert [float(c) for c in coordinates[:3]] == pytest.approx(exact, rel=1e-5)
 
 
+# info reads one frame at a time (the bounding box accumulated frame by frame) where it can, and
+# reads welded frame files whole, which compare every frame: both say the same of the same tube,
+# to the digit. The tube has no coincident vertices, so welding changes nothing.
+def test_info_streamed_as_whole(tool, tubes):
+    streamed = succeeds(tool("info", *input_of(tubes, "obj")))
+    whole = succeeds(tool("info", *input_of(tubes, "obj"), "--weld"))
+    assert streamed.out == whole.out, streamed.describe() + whole.describe()
+    streamed_json = tool("info", *input_of(tubes, "obj"), "--json", "-").json()
+    whole_json = tool("info", *input_of(tubes, "obj"), "--weld", "--json", "-").json()
+    assert streamed_json == whole_json
+
+
+# The memory info gives is what the animation takes read whole (as most commands read it): its
+# coordinates as doubles, 12 + 4 bytes a triangle and 4 a vertex, computed from the counts; the
+# help says so.
+@pytest.mark.parametrize("format", FORMATS)
+def test_info_memory_of_the_whole_animation(tool, tubes, format):
+    info = tool("info", *input_of(tubes, format), "--json", "-").json()
+    frames, vertices, triangles = info["frames"], info["vertices"], info["triangles"]
+    assert info["memory_bytes"] == 3 * vertices * frames * 8 + 16 * triangles + 4 * vertices
+    assert "what the animation takes read whole" in " ".join(succeeds(tool("info", "--help")).out.split())
+
+
 def test_synth_two_joints(synth_two):
     made = synth_two[1].json()
     assert made["frames"] == 16 and made["triangles"] == 304

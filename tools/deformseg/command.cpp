@@ -47,9 +47,28 @@ frontend::Read_input read_one(const std::string& input, const Input_options& opt
 
 }  // namespace
 
+void report_stream(const std::string& input, const frontend::Stream_read& read, const Input_options& options,
+                   bool done) {
+  if (!done) {
+    if (read.gltf)
+      progress("clip \"" + read.gltf->clip + "\", " + std::to_string(read.gltf->frames) + " frames at " +
+               nlohmann::json(options.fps).dump() + " fps");
+    if (read.repair.changed()) progress("repaired: " + frontend::describe(read.repair));
+    return;
+  }
+  if (const std::string warning = read.outliers.warning(frontend::Front::command_line); !warning.empty())
+    progress("warning: " + input + ": " + warning);
+  if (const std::string warning = frontend::body_fit_warning(read, options); !warning.empty())
+    progress("warning: " + input + ": " + warning);
+}
+
 frontend::Read_input read_input(const std::string& input, const Input_options& options, bool first_clip_by_default) {
   frontend::check_clip_applies({input}, options, frontend::Front::command_line);
   return read_one(input, options, first_clip_by_default);
+}
+
+frontend::Read_input read_one_of(const std::string& input, const Input_options& options) {
+  return read_one(input, options, false);
 }
 
 std::vector<frontend::Read_input> read_inputs(const std::vector<std::string>& inputs, const Input_options& options,
@@ -67,6 +86,12 @@ nlohmann::json sources(std::span<const frontend::Read_input> inputs, const Input
   nlohmann::json records = nlohmann::json::array();
   for (const frontend::Read_input& input : inputs) records.push_back(frontend::input_record(input, options.fps));
   return records;
+}
+
+nlohmann::json sources(const frontend::Stream_read& input, const Input_options& options) {
+  nlohmann::json record = frontend::input_record(input.name.file, options.fps);
+  if (input.gltf) record["clip"] = input.gltf->clip;
+  return nlohmann::json::array({record});
 }
 
 void write_outputs(const nlohmann::json& document, const std::string& json_path,

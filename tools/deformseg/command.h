@@ -47,6 +47,10 @@ void add_input(CLI::App& command, std::string& input, Input_options& options);
 frontend::Read_input read_input(const std::string& input, const Input_options& options,
                                 bool first_clip_by_default = false);
 
+/// Reads one of a command's inputs, as `read_input`, once the caller has checked that `--clip`
+/// applies to them all (`frontend::check_clip_applies`).
+frontend::Read_input read_one_of(const std::string& input, const Input_options& options);
+
 /// Reads every input, as `read_input`, `--clip` applying to those that name no clip after '#';
 /// with `motions_only`, refuses those of fewer than 2 frames.
 std::vector<frontend::Read_input> read_inputs(const std::vector<std::string>& inputs, const Input_options& options,
@@ -54,6 +58,15 @@ std::vector<frontend::Read_input> read_inputs(const std::vector<std::string>& in
 
 /// What the inputs were, for a command's JSON: [{"file", "clip", "fps"}].
 nlohmann::json sources(std::span<const frontend::Read_input> inputs, const Input_options& options);
+
+/// The same for one input read frame by frame.
+nlohmann::json sources(const frontend::Stream_read& input, const Input_options& options);
+
+/// Says on standard error, as `read_input` does, which clip a streamed input plays and what the
+/// repair changed (once the source is open), or, `done`, the warnings its frames gave.
+void report_stream(const std::string& input, const frontend::Stream_read& read, const Input_options& options,
+                   bool done);
+
 
 /// The tool's one rule for what a command prints: its summary in words on standard output, and,
 /// with `--json FILE`, the JSON document written to FILE as well; `--json -` puts the JSON on
@@ -146,5 +159,26 @@ void add_describe_command(CLI::App& app);
 void add_search_command(CLI::App& app);
 void add_knn_graph_command(CLI::App& app);
 void add_store_command(CLI::App& app);
+
+/// Reads the one animation `input` of a command frame by frame when it can be read so
+/// (`frontend::streams`: a character file's clip, a point cache with its topology, frame files not
+/// welded), calling `f(source)` once with its frame source (`frontend::with_input_stream`), and
+/// saying on standard error what `read_input` says; returns false, having read nothing, when it
+/// cannot be (the command then reads it whole, with `read_input`).
+/// The caller checks that `--clip` applies (`frontend::check_clip_applies`) to its inputs.
+/// @throws invalid_input as `read_input`.
+template <class F>
+bool stream_input(const std::string& input, const Input_options& options, bool first_clip_by_default,
+                  frontend::Stream_read& read, F&& f) {
+  constexpr frontend::Front front = frontend::Front::command_line;
+  if (!frontend::streams(input, options, front)) return false;
+  progress("reading " + input);
+  frontend::with_input_stream(input, options, front, first_clip_by_default, read, [&](auto& source) {
+    report_stream(input, read, options, false);
+    f(source);
+  });
+  report_stream(input, read, options, true);
+  return true;
+}
 
 }  // namespace deformseg::tool

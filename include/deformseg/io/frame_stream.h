@@ -122,6 +122,7 @@ public:
     input_vertices_ = soup.num_vertices();
     const Repaired_triangles repaired = internal::stream_repair(soup, options.repair, location);
     sources_ = repaired.source_vertex;
+    repair_ = repaired.report;
     open();
     mesh::Coordinate_buffer<float> first(3 * sources_.size());
     read_frame(std::span<float>(first));
@@ -137,6 +138,8 @@ public:
   double frames_per_second() const noexcept { return fps_; }
   /// @brief The repaired triangles, as `read_animation` numbers them.
   std::span<const std::array<std::uint32_t, 3>> triangles() const noexcept { return triangles_; }
+  /// @brief What the repair of the topology changed, as `read_animation`'s report says it.
+  const Repair_report& repair() const noexcept { return repair_; }
 
   /// @brief Reads the next frame's `3V` coordinates into `out`.
   /// @throws invalid_input naming the file and the frame past the last frame, for a frame the file
@@ -184,6 +187,7 @@ private:
   std::size_t input_vertices_ = 0;
   std::vector<std::uint32_t> sources_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;
+  Repair_report repair_{};
   Point_cache_info info_{};
   std::ifstream file_;
   std::vector<char> bytes_;
@@ -215,6 +219,7 @@ public:
     input_vertices_ = soup.num_vertices();
     const Repaired_triangles repaired = internal::stream_repair(soup, options.repair, location);
     sources_ = repaired.source_vertex;
+    repair_ = repaired.report;
     // The first frame's positions as read_frame_sequence takes them: those of its mesh file.
     if (!options.topology) first_frame_ = std::move(soup.points);
     mesh::Coordinate_buffer<double> first(3 * sources_.size());
@@ -231,6 +236,8 @@ public:
   double frames_per_second() const noexcept { return fps_; }
   /// @brief The repaired triangles, as `read_frame_sequence` numbers them.
   std::span<const std::array<std::uint32_t, 3>> triangles() const noexcept { return triangles_; }
+  /// @brief What the repair of the connectivity changed, as `read_frame_sequence`'s report says it.
+  const Repair_report& repair() const noexcept { return repair_; }
 
   /// @brief Reads the next frame file's `3V` coordinates into `out` (`read_mesh_points`).
   /// @throws invalid_input naming the file and the frame past the last frame, or as
@@ -268,6 +275,7 @@ private:
   std::size_t input_vertices_ = 0;
   std::vector<std::uint32_t> sources_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;
+  Repair_report repair_{};
   std::vector<double> first_frame_;
   std::vector<double> read_;
   std::size_t next_ = 0;

@@ -381,4 +381,20 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> part_links(const Mesh& anim
   }
 }
 
+/// @brief The links `part_links` gives an animation whose frames are handed over one at a time,
+/// as a frame source read again from its start gives them, one frame in memory.
+/// @tparam Frames a type with `num_frames()`, `num_vertices()`, `triangles()` (a span of
+/// `std::array<std::uint32_t, 3>`, as `Deforming_mesh::triangles()`) and `frame_points(t)`, frame
+/// `t` as a `3 x V` `Eigen::Matrix3Xd` of finite coordinates (else it throws `invalid_input`). It
+/// is asked for frame 0 a few times, then for every frame in order from 0, once (when the mesh has
+/// several parts and `options.rigid_tolerance` is not 0).
+/// @pre as `part_links`.
+/// @return the links of `part_links` of an animation of these frames and triangles, to the bit.
+/// @par Complexity as `part_links`.
+template <class Frames>
+std::vector<std::pair<std::uint32_t, std::uint32_t>> part_links_of_frames(const Frames& frames,
+                                                                          const Part_link_options& options = {}) {
+  return internal::part_links_of(frames, options);
+}
+
 }  // namespace deformseg::spatiotemporal

@@ -5,9 +5,13 @@
 
 #include <deformseg/io/frame_sequence.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <span>
+#include <vector>
 
 namespace deformseg::tool {
 namespace {
@@ -28,9 +32,51 @@ void check_files_option(const Info_options& o) {
                         {.file = io::split_clip_suffix(o.input).first});
 }
 
-nlohmann::json bounding_box(const mesh::Surface_mesh_animation& animation) {
-  const auto [low, high] = motion_box(animation);
-  return {{"min", {low.x(), low.y(), low.z()}}, {"max", {high.x(), high.y(), high.z()}}};
+// What info reports of an animation's frames: its counts, the box around every frame and the
+// memory the animation read whole takes.
+struct Animation_counts {
+  std::size_t frames = 0, vertices = 0, triangles = 0;
+  Motion_box box{};
+  std::size_t memory_bytes = 0;
+};
+
+// The memory an animation of these counts takes read whole (`Deforming_mesh::memory_bytes`: its
+// coordinates as doubles, its triangles and index tables), computed, not measured: info reads one
+// frame at a time when it can. O(1).
+std::size_t whole_animation_bytes(std::size_t frames, std::size_t vertices, std::size_t triangles) {
+  using Animation = mesh::Surface_mesh_animation;
+  return 3 * vertices * frames * sizeof(Animation::coordinate_type) +
+         triangles * (sizeof(Animation::Triangle) + sizeof(Animation::face_descriptor)) +
+         vertices * sizeof(Animation::vertex_descriptor);
+}
+
+// The counts of an animation read whole.
+Animation_counts counted(const mesh::Surface_mesh_animation& animation) {
+  return {.frames = animation.num_frames(), .vertices = animation.num_vertices(), .triangles = animation.num_faces(),
+          .box = motion_box(animation), .memory_bytes = animation.memory_bytes()};
+}
+
+// The counts of an animation read frame by frame, one frame in memory; the box is the same to the
+// bit as `motion_box` of the animation read whole (minima and maxima of the same coordinates).
+template <class Source>
+Animation_counts counted(Source& source) {
+  Animation_counts counts{.frames = source.num_frames(), .vertices = source.num_vertices(),
+                          .triangles = source.triangles().size()};
+  std::vector<typename Source::Coordinate> frame(3 * counts.vertices);
+  for (std::size_t t = 0; t < counts.frames; ++t) {
+    source.read_frame(std::span(frame));
+    for (std::size_t i = 0; i < counts.vertices; ++i)
+      for (Eigen::Index k = 0; k < 3; ++k) {
+        const double x = double(frame[3 * i + std::size_t(k)]);
+        counts.box.low[k] = std::min(counts.box.low[k], x), counts.box.high[k] = std::max(counts.box.high[k], x);
+      }
+  }
+  counts.memory_bytes = whole_animation_bytes(counts.frames, counts.vertices, counts.triangles);
+  return counts;
+}
+
+nlohmann::json bounding_box(const Motion_box& box) {
+  return {{"min", {box.low.x(), box.low.y(), box.low.z()}}, {"max", {box.high.x(), box.high.y(), box.high.z()}}};
 }
 
 // The clips of a character file (an FBX, Collada or BVH file's as glTF holds them), the skins and
@@ -62,24 +108,46 @@ nlohmann::json gltf_json(const std::string& file, const std::string& body, doubl
           {"skipped", read.skipped}};
 }
 
-nlohmann::json describe(const Info_options& options, const frontend::Read_input& read) {
-  const mesh::Surface_mesh_animation& animation = read.animation;
-  nlohmann::json info = {{"input", read.name.file},
-                         {"sources", sources({&read, 1}, options.read)},
-                         {"format", io::animation_format(read.name.file)},
-                         {"frames", animation.num_frames()},
-                         {"vertices", animation.num_vertices()},
-                         {"triangles", animation.num_faces()},
-                         {"bounding_box", bounding_box(animation)},
-                         {"memory_bytes", animation.memory_bytes()},
+// What info says of an input, read whole or frame by frame.
+struct Info_input {
+  std::string file;
+  nlohmann::json sources;
+  Animation_counts counts;
+  io::Repair_report repair;
+  std::optional<io::Gltf_read_report> gltf;
+};
+
+nlohmann::json describe(const Info_options& options, const Info_input& read) {
+  const Animation_counts& counts = read.counts;
+  nlohmann::json info = {{"input", read.file},
+                         {"sources", read.sources},
+                         {"format", io::animation_format(read.file)},
+                         {"frames", counts.frames},
+                         {"vertices", counts.vertices},
+                         {"triangles", counts.triangles},
+                         {"bounding_box", bounding_box(counts.box)},
+                         {"memory_bytes", counts.memory_bytes},
                          {"repair", frontend::repair_record(read.repair)}};
-  if (read.gltf) info["gltf"] = gltf_json(read.name.file, options.read.body, options.read.fps, *read.gltf);
+  if (read.gltf) info["gltf"] = gltf_json(read.file, options.read.body, options.read.fps, *read.gltf);
   if (options.files) {
     nlohmann::json files = nlohmann::json::array();
-    for (const auto& file : io::list_frame_files(read.name.file)) files.push_back(file.string());
+    for (const auto& file : io::list_frame_files(read.file)) files.push_back(file.string());
     info["files"] = files;
   }
   return info;
+}
+
+// The input read frame by frame when it can be (one frame in memory), else whole, as other commands
+// read it (welded frame files, which compare every frame).
+Info_input read_info_input(const Info_options& options) {
+  // info lists the clips of a file whichever it reads: of several, none named, the first.
+  frontend::check_clip_applies({options.input}, options.read, frontend::Front::command_line);
+  frontend::Stream_read streamed;
+  Animation_counts counts;
+  if (stream_input(options.input, options.read, true, streamed, [&](auto& source) { counts = counted(source); }))
+    return {streamed.name.file, sources(streamed, options.read), counts, streamed.repair, streamed.gltf};
+  const frontend::Read_input read = read_input(options.input, options.read, true);
+  return {read.name.file, sources({&read, 1}, options.read), counted(read.animation), read.repair, read.gltf};
 }
 
 void print_gltf(const nlohmann::json& gltf) {
@@ -135,18 +203,19 @@ void print(const nlohmann::json& info, const io::Repair_report& repair) {
 void add_info_command(CLI::App& app) {
   auto options = std::make_shared<Info_options>();
   CLI::App* command = app.add_subcommand(
-      "info", "Frames, vertices, triangles, bounding box over all frames, format, memory used and what "
+      "info", "Frames, vertices, triangles, bounding box over all frames, format, memory and what "
               "the repair of the mesh changed; for glTF, FBX, Collada and BVH also the clips, skins and meshes "
               "(of a file of several clips with none named, the first clip is read, and named; of a file without "
-              "a mesh, the body made from its skeleton)");
+              "a mesh, the body made from its skeleton). The frames are read one at a time (welded frame files "
+              "whole); memory is what the animation takes read whole, as most commands read it: its coordinates "
+              "as doubles and its triangles, computed from the counts");
   add_input(*command, options->input, options->read);
   command->add_flag("--files", options->files,
                     "List the frame files of a folder or glob in the order they are read, frame by frame");
   add_json_option(*command, options->json, "the answer");
   command->callback([options] {
     check_files_option(*options);
-    // info lists the clips of a file whichever it reads: of several, none named, the first.
-    const frontend::Read_input read = read_input(options->input, options->read, true);
+    const Info_input read = read_info_input(*options);
     const nlohmann::json info = describe(*options, read);
     write_outputs(info, options->json, [&] { print(info, read.repair); });
   });
