@@ -791,6 +791,7 @@ Describe_report merge_stores(const std::string& folder, const std::vector<std::s
                           {.file = name});
     say("merging " + std::to_string(part.size()) + " clip(s) of " + name);
     for (std::size_t i = 0; i < part.size(); ++i) {
+      part.verify_clip(i);  // never carry a corrupted block into the merged store under a new checksum
       const store::Store_record record = part.record(i);
       const std::vector<std::uint32_t> frames(part.frames(i).begin(), part.frames(i).end());
       const std::string clip_name = stored_clip_name(part, i);

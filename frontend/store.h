@@ -189,9 +189,9 @@ Description_plan plan_description(const std::string& folder, const std::vector<C
 /// already is replaced at its index. One commit at the end: the store is the merge of stores
 /// described apart (a cluster's workers each describe a part; one writer merges them). `say` gets
 /// a line per part.
-/// @throws invalid_input naming the part or the store when a part cannot be opened, the parts'
-/// descriptions differ from each other or from the store's, or the store cannot be written; the
-/// store is then as it was.
+/// @throws invalid_input naming the part or the store when a part cannot be opened, a clip's block
+/// in a part does not match its checksum, the parts' descriptions differ from each other or from
+/// the store's, or the store cannot be written; the store is then as it was.
 Describe_report merge_stores(const std::string& folder, const std::vector<std::string>& parts,
                              const std::function<void(const std::string&)>& say);
 

@@ -1,5 +1,6 @@
 // Tests of store/stored_motions.h: a store searched in place gives what the same clips give in
-// memory, bit for bit (search, knn graph, matrix); a store of other summaries is refused.
+// memory, bit for bit (search, knn graph, matrix); a store of other summaries is refused; a
+// corrupted clip is refused when a search reads it.
 #include "test_support.h"
 
 #include <deformseg/similarity/nearest_motions.h>
@@ -8,7 +9,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <fstream>
 #include <random>
+#include <string>
 #include <vector>
 
 using namespace deformseg;
@@ -80,4 +83,28 @@ TEST_CASE("a store of other summaries is refused, naming its manifest") {
   write(wrong_width, all, 2, store::motion_summary_layout(3));
   CHECK_THROWS_WITH(store::Stored_motions(store::Motion_store::open(wrong_width)), Catch::Contains("with 3 chunks"));
   CHECK(store::Stored_motions(store::Motion_store{}).size() == 0);
+}
+
+TEST_CASE("a corrupted clip is refused, naming it, the first time a search reads it") {
+  const auto all = clips();
+  const auto folder = test::fresh_dir("stored_motions/corrupted");
+  write(folder, all, 4, store::motion_summary_layout(4));
+  const store::Motion_store opened = store::Motion_store::open(folder);
+  // Flip a bit of clip 5's first value in the mapped file's bytes: the structure still holds.
+  const std::filesystem::path signatures = folder / "signatures-000001.npy";
+  std::string bytes = test::file_text(signatures);
+  const std::size_t data = bytes.find('\n', 12) + 1;  // past the .npy header, which ends with a newline
+  bytes[data + opened.record(5).block.offset * 4] ^= 0x01;
+  std::ofstream(signatures, std::ios::binary) << bytes;
+
+  const store::Stored_motions stored(store::Motion_store::open(folder));
+  const std::string named = "clip 5 (/clips/5.pc2): its block's checksum does not match";
+  CHECK_NOTHROW(stored.view(4));
+  CHECK_THROWS_WITH(stored.view(5), Catch::Contains(named) && Catch::Contains("clips-000001.npy"));
+  CHECK_THROWS_WITH(stored.view(5), Catch::Contains(named));  // again: it was not marked verified
+  CHECK_THROWS_WITH(similarity::similarity_matrix(stored), Catch::Contains(named));
+  CHECK_THROWS_WITH(similarity::nearest_motions(stored.view(0), stored, {.k = 19}), Catch::Contains(named));
+  CHECK_THROWS_WITH(store::Motion_store::open(folder, store::Verify::checksums), Catch::Contains("corrupted"));
+  CHECK_NOTHROW(opened.verify_clip(4));
+  CHECK_THROWS_WITH(opened.verify_clip(5), Catch::Contains(named));
 }

@@ -4,6 +4,9 @@
 
 #include <deformseg/exceptions.h>
 
+#include <cstdint>
+#include <string>
+
 namespace py = pybind11;
 
 namespace deformseg::python {
@@ -44,6 +47,19 @@ mesh::Coordinate_buffer<double> positions_of(const py::array& frames) {
   return mesh::Coordinate_buffer<double>(converted.data(), converted.data() + count);
 }
 
+namespace {
+
+// A vertex index as the message shows it: a negative index stored in an unsigned array (NumPy
+// wraps -1 to 4294967295 in uint32) is named as the negative number it was too.
+std::string index_text(std::int64_t v, const py::array& faces) {
+  const auto bits = 8 * faces.dtype().itemsize();
+  if (faces.dtype().kind() != 'u' || bits >= 64 || v < (std::int64_t{1} << (bits - 1))) return std::to_string(v);
+  return std::to_string(v) + " (" + std::to_string(v - (std::int64_t{1} << bits)) + " stored as an unsigned " +
+         std::to_string(bits) + "-bit integer?)";
+}
+
+}  // namespace
+
 std::vector<std::array<std::uint32_t, 3>> triangles_of(const py::array& faces, std::size_t vertices) {
   if (faces.dtype().kind() != 'i' && faces.dtype().kind() != 'u')
     throw py::type_error("faces: expected an integer array of shape (F, 3), got dtype " + dtype_of(faces));
@@ -56,7 +72,7 @@ std::vector<std::array<std::uint32_t, 3>> triangles_of(const py::array& faces, s
     for (py::ssize_t k = 0; k < 3; ++k) {
       const std::int64_t v = read(j, k);
       if (v < 0 || std::uint64_t(v) >= vertices)
-        throw invalid_input("faces: triangle " + std::to_string(j) + " has vertex index " + std::to_string(v) +
+        throw invalid_input("faces: triangle " + std::to_string(j) + " has vertex index " + index_text(v, faces) +
                             " out of range [0, " + std::to_string(vertices) + ")");
       triangles[std::size_t(j)][std::size_t(k)] = std::uint32_t(v);
     }

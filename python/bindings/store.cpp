@@ -480,8 +480,9 @@ readable while another process appends to it; this object goes on showing what i
       .def("signatures", &signatures, "i"_a,
            "Clip i's signatures: an (R, W) float32 array, one row per described instant, a read-only view "
            "of the store's mapping (no copy; strides (4, 4 R): the store keeps them dimension-major) that "
-           "keeps the store open. Raises InvalidInput naming the store for an index out of range. "
-           "Complexity O(1).")
+           "keeps the store open. Raises InvalidInput naming the store for an index out of range, and naming "
+           "the clip when its block does not match its checksum (checked on its first read). "
+           "Complexity O(1); the first read of a clip O(R W).")
       .def("frames", &frames, "i"_a,
            "Clip i's frame numbers, one per row of its signatures: an (R,) uint32 read-only view (no copy). "
            "Complexity O(1).")

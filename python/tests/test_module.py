@@ -196,6 +196,12 @@ def test_faces_of_the_wrong_shape_dtype_or_range_are_refused(grid):
     bad[3, 1] = -1
     with pytest.raises(deformseg.InvalidInput, match="vertex index -1"):
         deformseg.Animation(bad, frames)
+    # The same -1 in an unsigned array, as NumPy wraps it: named as what it was.
+    with pytest.raises(deformseg.InvalidInput,
+                       match=r"vertex index 4294967295 \(-1 stored as an unsigned 32-bit integer\?\) out of range"):
+        deformseg.Animation(bad.astype(np.uint32), frames)
+    with pytest.raises(deformseg.InvalidInput, match=r"vertex index 9 out of range"):
+        deformseg.Animation(np.where(bad < 0, 9, bad).astype(np.uint16), frames)
 
 
 def test_invalid_input_is_a_value_error_naming_the_frame(grid):

@@ -446,12 +446,20 @@ def test_a_missing_truncated_or_corrupted_store_is_refused_naming_the_file(descr
         (copy / f.name).write_bytes(f.read_bytes())
     signatures = copy / store_format.file_name("signatures", 1)
     data = bytearray(signatures.read_bytes())
-    data[-1] ^= 0xFF  # a flipped bit in the last clip's data: only the checksums see it
+    data[-1] ^= 0xFF  # flipped bits in the last clip's data: opening does not read them
     signatures.write_bytes(bytes(data))
-    deformseg.open_store(copy)
+    opened = deformseg.open_store(copy)
+    opened.signatures(0)
+    last = len(opened) - 1
+    with pytest.raises(deformseg.InvalidInput, match=rf"clip {last} \(.*\): its block's checksum does not match"):
+        opened.signatures(last)  # as a search reads it: checked on its first read
     with pytest.raises(deformseg.InvalidInput, match="checksum") as error:
         deformseg.open_store(copy, verify="checksums")
     assert error.value.file == str(signatures)
+    # A merge of parts (deformseg.distributed's last step) never carries the damaged clip on.
+    with pytest.raises(deformseg.InvalidInput, match=rf"clip {last} \(.*\): its block's checksum does not match"):
+        deformseg._deformseg._merge_stores(tmp_path / "merged", [copy])
+    assert not (tmp_path / "merged" / "store.json").exists()
     signatures.write_bytes(bytes(data[:-4]))  # truncated
     with pytest.raises(deformseg.InvalidInput, match="truncated|bytes") as error:
         deformseg.open_store(copy)

@@ -116,3 +116,24 @@ def test_knn_graph_summary_pruned_share(tool, store):
     assert share and re.fullmatch(r"\d{1,3}\.\d", share.group(1)), run.describe()
     exact = tool("knn-graph", "--store", store, "-k", "1", "--json", "-").json()["pruning"]["pruned_share"]
     assert float(share.group(1)) == pytest.approx(100 * exact, abs=0.05)
+
+
+
+# ---- a corrupted store ---------------------------------------------------------------------------
+
+def test_a_flipped_byte_in_a_searched_clip_fails_naming_the_clip(tool, store, scratch):
+    """Opening checks the structure; the first read of a clip's signatures checks its block, so a
+    search that compares a damaged clip fails naming it rather than answering from it."""
+    copy = scratch / "store-flipped"
+    copy.mkdir()
+    for f in store.iterdir():
+        (copy / f.name).write_bytes(f.read_bytes())
+    signatures = copy / "signatures-000001.npy"
+    data = bytearray(signatures.read_bytes())
+    data[data.index(b"\n", 12) + 1] ^= 0x01  # the first value of clip 0 ("bend"), past the .npy header
+    signatures.write_bytes(bytes(data))
+    named = ("clips-000001.npy: clip 0 (", "tube-bend", "its block's checksum does not match")
+    fails(tool("search", "--store", copy, "--clip-index", "1", "-k", "4"), *named)
+    fails(tool("matrix", "--store", copy), *named)
+    fails(tool("store", "verify", copy), "signatures-000001.npy: its checksum does not match")  # every byte
+    succeeds(tool("store", "info", copy))  # which reads no clip's rows

@@ -8,9 +8,9 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/internal/file_io.h>
 #include <deformseg/io/character_files.h>
 #include <deformseg/similarity/motion_signature_view.h>
-#include <deformseg/store/internal/file_io.h>
 #include <deformseg/store/internal/manifest.h>
 #include <deformseg/store/internal/npy.h>
 #include <deformseg/store/internal/store_files.h>
@@ -121,6 +121,26 @@ public:
     return {segments_[e.segment].summaries + e.record.block.summary_row * summary_width_, summary_width_};
   }
 
+  /// @brief Checks clip `i`'s block (its signatures, frame numbers and summary) against the checksum
+  /// its writer recorded: what `Verify::checksums` checks of every clip on opening, for one clip, so
+  /// that a reader of a few clips verifies what it reads at the cost of reading it once.
+  /// @pre `i < size()` (not checked).
+  /// @throws invalid_input naming the clip table's file and the clip when the block was changed
+  /// since it was written ("its block's checksum does not match").
+  /// @par Complexity O(rows × width() + summary_width()).
+  void verify_clip(std::size_t i) const {
+    const Entry& e = entries_[i];
+    const Store_record& r = e.record;
+    const Segment& s = segments_[e.segment];
+    std::uint32_t crc = internal::crc32(s.signatures + r.block.offset, std::size_t{r.rows} * width_ * 4);
+    crc = internal::crc32(s.frames + r.block.frames_offset, std::size_t{r.rows} * 4, crc);
+    crc = internal::crc32(s.summaries + r.block.summary_row * summary_width_, summary_width_ * 4, crc);
+    if (crc != r.block.crc32)
+      clip_error(deformseg::internal::join(internal::clip_name(i, e.path, e.clip, e.body),
+                                           ": its block's checksum does not match: its data in generation ",
+                                           std::to_string(s.generation), " is corrupted"));
+  }
+
   /// @brief Clip `i`'s record, strings copied.
   /// @pre `i < size()` (not checked). @par Complexity O(its strings).
   Store_record record(std::size_t i) const {
@@ -200,11 +220,11 @@ private:
       throw invalid_input("not a motion store: no such folder", {.file = folder_.string()});
     if (!std::filesystem::exists(folder_ / "store.json", error))
       throw invalid_input("not a motion store: the folder has no store.json", {.file = folder_.string()});
-    const internal::File_bytes bytes =
-        internal::read_file_bytes(folder_ / "store.json", internal::max_manifest_bytes + 1);
+    const deformseg::internal::File_bytes bytes =
+        deformseg::internal::read_file_bytes(folder_ / "store.json", internal::max_manifest_bytes + 1);
     if (bytes.file_size > internal::max_manifest_bytes)
-      throw invalid_input(internal::join("a manifest of ", std::to_string(bytes.file_size),
-                                         " bytes; a store's manifest has at most 4 MiB"),
+      throw invalid_input(deformseg::internal::join("a manifest of ", std::to_string(bytes.file_size),
+                                                    " bytes; a store's manifest has at most 4 MiB"),
                           {.file = file});
     const std::string_view text(bytes.begin(), bytes.size);
     const internal::Json json = internal::parse_json(text, file);
@@ -225,8 +245,8 @@ private:
     const auto value = object.find(std::string(key));
     const bool found = value != object.end();
     if (!found || (kind == internal::Json::value_t::number_unsigned ? !value->is_number() : value->type() != kind))
-      throw invalid_input(internal::join("the manifest's \"", key, "\" is ", found ? "not " : "missing: it must be ",
-                                         kind_name(kind)),
+      throw invalid_input(deformseg::internal::join("the manifest's \"", key, "\" is ",
+                                                    found ? "not " : "missing: it must be ", kind_name(kind)),
                           {.file = file});
     return *value;
   }
@@ -234,16 +254,17 @@ private:
   static std::uint64_t count(const internal::Json& value, std::string_view what, const std::string& file,
                              std::uint64_t most = std::numeric_limits<std::uint64_t>::max()) {
     if (!value.is_number_unsigned() || value.get<std::uint64_t>() > most)
-      throw invalid_input(internal::join("the manifest's ", what, " (", internal::json_text(value).substr(0, 40),
-                                         ") is not a count of at most ", std::to_string(most)),
-                          {.file = file});
+      throw invalid_input(
+          deformseg::internal::join("the manifest's ", what, " (", internal::json_text(value).substr(0, 40),
+                                    ") is not a count of at most ", std::to_string(most)),
+          {.file = file});
     return value.get<std::uint64_t>();
   }
 
   static std::uint64_t count_member(const internal::Json& object, std::string_view key, const std::string& file,
                                     std::uint64_t most = std::numeric_limits<std::uint64_t>::max()) {
-    return count(member(object, key, internal::Json::value_t::number_unsigned, file), internal::join("\"", key, "\""),
-                 file, most);
+    return count(member(object, key, internal::Json::value_t::number_unsigned, file),
+                 deformseg::internal::join("\"", key, "\""), file, most);
   }
 
   // The manifest must end with its "checksum" member in the form `checksum_suffix` writes, whose
@@ -257,15 +278,16 @@ private:
     const auto version = json.find("version");
     if (version == json.end() || !version->is_number_unsigned() || version->get<std::uint64_t>() == 0)
       throw invalid_input("the manifest's \"version\" is missing or not a positive count", {.file = file});
-    const std::string newer = internal::join("store version ", internal::json_text(*version),
-                                             " is newer than this deformseg, which reads version ",
-                                             std::to_string(internal::store_version));
+    const std::string newer = deformseg::internal::join("store version ", internal::json_text(*version),
+                                                        " is newer than this deformseg, which reads version ",
+                                                        std::to_string(internal::store_version));
     const std::size_t covered = text.size() - std::min(text.size(), internal::checksum_suffix_bytes);
     const bool named = !json.empty() && std::prev(json.end()).key() == "checksum";
     const bool sums = named && text.substr(covered) == internal::checksum_suffix(text.substr(0, covered));
     if (version->get<std::uint64_t>() > internal::store_version)
       throw invalid_input(
-          sums ? newer : internal::join(newer, " (or its manifest is corrupted: its checksum does not match)"),
+          sums ? newer
+               : deformseg::internal::join(newer, " (or its manifest is corrupted: its checksum does not match)"),
           {.file = file});
     if (!sums)
       throw invalid_input(
@@ -301,15 +323,15 @@ private:
         throw invalid_input("the manifest's \"files\" holds a value that is not an object", {.file = file});
       const std::string& name = member(f, "name", V::string, file).get_ref<const std::string&>();
       if (std::find(expected.begin(), expected.end(), name) == expected.end() || m.files.count(name))
-        throw invalid_input(internal::join("the manifest lists \"", name.substr(0, 80),
-                                           "\", which is not one of the store's files or is listed twice"),
+        throw invalid_input(deformseg::internal::join("the manifest lists \"", name.substr(0, 80),
+                                                      "\", which is not one of the store's files or is listed twice"),
                             {.file = file});
       m.files[name] = {count_member(f, "bytes", file),
                        static_cast<std::uint32_t>(count_member(f, "data_crc32", file, 0xFFFFFFFFu))};
     }
     for (const std::string& name : expected)
       if (!m.files.count(name))
-        throw invalid_input(internal::join("the manifest does not list ", name, ", a file of the store"),
+        throw invalid_input(deformseg::internal::join("the manifest does not list ", name, ", a file of the store"),
                             {.file = file});
     return m;
   }
@@ -341,9 +363,9 @@ private:
     const std::string clips_name = internal::store_file_name("clips", m.generation);
     auto [clips, rows] = map_file(clips_name, internal::clip_table_descr, internal::clip_row_bytes, 1, 1, true);
     if (rows != m.clips)
-      throw invalid_input(
-          internal::join("it holds ", std::to_string(rows), " clips, the manifest says ", std::to_string(m.clips)),
-          {.file = path_of(clips_name)});
+      throw invalid_input(deformseg::internal::join("it holds ", std::to_string(rows), " clips, the manifest says ",
+                                                    std::to_string(m.clips)),
+                          {.file = path_of(clips_name)});
     auto [strings, bytes] = map_file(internal::store_file_name("strings", m.generation), "'|u1'", 1, 1, 1, true);
     clip_table_ = std::move(clips);
     clip_rows_ = rows;
@@ -380,25 +402,25 @@ private:
   void read_strings(std::size_t i, std::uint64_t offset, std::uint32_t length, Entry& e) const {
     const char* base = strings_->data() + data_offset(*strings_, strings_bytes_);
     if (offset > strings_bytes_ || length > strings_bytes_ - offset)
-      clip_error(internal::join("clip ", std::to_string(i), ": its strings at byte ", std::to_string(offset), " (",
-                                std::to_string(length), " bytes) run past the end of ",
-                                path_of(internal::store_file_name("strings", generation_))));
+      clip_error(deformseg::internal::join("clip ", std::to_string(i), ": its strings at byte ", std::to_string(offset),
+                                           " (", std::to_string(length), " bytes) run past the end of ",
+                                           path_of(internal::store_file_name("strings", generation_))));
     std::string_view text(base + offset, length);
     const std::size_t count = internal::clip_string_count(version_);
-    const std::string expected = internal::join(std::to_string(count), " NUL-terminated strings");
+    const std::string expected = deformseg::internal::join(std::to_string(count), " NUL-terminated strings");
     std::string_view* parts[] = {&e.path, &e.clip, &e.input_options, &e.topology_path, &e.body};
     for (std::string_view* part : std::span(parts).first(count)) {
       const std::size_t end = text.find('\0');
       if (end == std::string_view::npos)
-        clip_error(internal::join("clip ", std::to_string(i), ": its strings are not ", expected));
+        clip_error(deformseg::internal::join("clip ", std::to_string(i), ": its strings are not ", expected));
       *part = text.substr(0, end);
       if (!internal::valid_utf8(*part))
-        clip_error(internal::join("clip ", std::to_string(i), ": its strings are not valid UTF-8"));
+        clip_error(deformseg::internal::join("clip ", std::to_string(i), ": its strings are not valid UTF-8"));
       text.remove_prefix(end + 1);
     }
     if (!text.empty() || e.path.empty())
-      clip_error(
-          internal::join("clip ", std::to_string(i), ": its strings are not ", expected, ", the path not empty"));
+      clip_error(deformseg::internal::join("clip ", std::to_string(i), ": its strings are not ", expected,
+                                           ", the path not empty"));
     if (version_ < 2 && io::is_character_file(e.path)) e.body = e.topology_path;  // where version 1 kept the body
   }
 
@@ -407,32 +429,25 @@ private:
     const std::string name = internal::clip_name(i, e.path, e.clip, e.body);
     const Segment& s = segments_[e.segment];
     const auto past = [&](std::string_view kind, std::string_view what) {
-      clip_error(internal::join(name, ": ", what, " run past the end of ",
-                                path_of(internal::store_file_name(kind, s.generation))));
+      clip_error(deformseg::internal::join(name, ": ", what, " run past the end of ",
+                                           path_of(internal::store_file_name(kind, s.generation))));
     };
-    if (r.rows == 0) clip_error(internal::join(name, ": 0 rows; a clip has at least one"));
-    if (!(r.fps > 0) || !std::isfinite(r.fps)) clip_error(internal::join(name, ": its fps is not positive and finite"));
+    if (r.rows == 0) clip_error(deformseg::internal::join(name, ": 0 rows; a clip has at least one"));
+    if (!(r.fps > 0) || !std::isfinite(r.fps))
+      clip_error(deformseg::internal::join(name, ": its fps is not positive and finite"));
     if (r.block.offset % internal::block_alignment_floats != 0)
-      clip_error(
-          internal::join(name, ": its block at float ", std::to_string(r.block.offset), " is not 64-byte aligned"));
+      clip_error(deformseg::internal::join(name, ": its block at float ", std::to_string(r.block.offset),
+                                           " is not 64-byte aligned"));
     const std::uint64_t floats = std::uint64_t{r.rows} * width_;
     if (r.block.offset > s.floats || floats > s.floats - r.block.offset)
-      past("signatures", internal::join(std::to_string(r.rows), " rows of ", std::to_string(width_),
-                                        " floats at float ", std::to_string(r.block.offset)));
+      past("signatures", deformseg::internal::join(std::to_string(r.rows), " rows of ", std::to_string(width_),
+                                                   " floats at float ", std::to_string(r.block.offset)));
     if (r.block.frames_offset > s.frame_count || r.rows > s.frame_count - r.block.frames_offset)
-      past("frames",
-           internal::join(std::to_string(r.rows), " frame numbers at ", std::to_string(r.block.frames_offset)));
+      past("frames", deformseg::internal::join(std::to_string(r.rows), " frame numbers at ",
+                                               std::to_string(r.block.frames_offset)));
     if (r.block.summary_row >= s.summary_rows)
-      past("summaries", internal::join("its summary row ", std::to_string(r.block.summary_row), " would"));
-    if (verify == Verify::checksums) {
-      const similarity::Motion_signature_view v{s.signatures + r.block.offset, r.rows, width_};
-      std::uint32_t crc = internal::crc32(v.values, floats * 4);
-      crc = internal::crc32(s.frames + r.block.frames_offset, std::size_t{r.rows} * 4, crc);
-      crc = internal::crc32(s.summaries + r.block.summary_row * summary_width_, summary_width_ * 4, crc);
-      if (crc != r.block.crc32)
-        clip_error(internal::join(name, ": its block's checksum does not match: its data in generation ",
-                                  std::to_string(s.generation), " is corrupted"));
-    }
+      past("summaries", deformseg::internal::join("its summary row ", std::to_string(r.block.summary_row), " would"));
+    if (verify == Verify::checksums) verify_clip(i);
   }
 
   void read_clips(Verify verify) {
@@ -447,8 +462,9 @@ private:
       const auto segment = std::lower_bound(segments_.begin(), segments_.end(), row.numbers.block.generation,
                                             [](const Segment& s, std::uint64_t g) { return s.generation < g; });
       if (segment == segments_.end() || segment->generation != row.numbers.block.generation)
-        clip_error(internal::join(internal::clip_name(i, e.path, e.clip, e.body), ": its generation ",
-                                  std::to_string(row.numbers.block.generation), " is not among the store's segments"));
+        clip_error(deformseg::internal::join(internal::clip_name(i, e.path, e.clip, e.body), ": its generation ",
+                                             std::to_string(row.numbers.block.generation),
+                                             " is not among the store's segments"));
       e.segment = static_cast<std::size_t>(segment - segments_.begin());
       check_entry(i, e, verify);
     }
@@ -458,8 +474,8 @@ private:
     for (std::size_t k = 1; k < rows; ++k)
       if (key_of(by_key_[k - 1]) == key_of(by_key_[k])) {
         const Entry& e = entries_[by_key_[k]];
-        clip_error(internal::join(internal::clip_name(by_key_[k], e.path, e.clip, e.body), ": the same clip as clip ",
-                                  std::to_string(by_key_[k - 1])));
+        clip_error(deformseg::internal::join(internal::clip_name(by_key_[k], e.path, e.clip, e.body),
+                                             ": the same clip as clip ", std::to_string(by_key_[k - 1])));
       }
   }
 

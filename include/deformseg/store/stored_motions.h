@@ -10,12 +10,15 @@
 #include <deformseg/similarity/motion_collection.h>
 #include <deformseg/store/motion_store.h>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <span>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace deformseg::store {
 
@@ -54,6 +57,12 @@ inline std::size_t stored_summary_chunks(const Motion_store& store) {
 
 /// @brief A motion store's clips as a `similarity::MotionCollection`: clip i's signatures and
 /// summary are read in the store's mapping, never copied.
+///
+/// A clip's block is verified against its checksum (`Motion_store::verify_clip`) the first time its
+/// signatures are read, so that a search never compares a corrupted clip silently; what a pruned
+/// search reads of a clip it prunes, its summary, is not verified (opening the store with
+/// `Verify::checksums`, or `deformseg store verify`, checks every byte). Copies share what has been
+/// verified; reading from several threads at once is safe.
 /// @par Example
 /// @include nearest_motions_in_store.cpp
 class Stored_motions {
@@ -62,13 +71,28 @@ public:
   /// (`motion_summary_layout`); an empty store of no clip is accepted whatever its layout.
   /// @throws invalid_input naming the manifest when the summaries are of another layout or size.
   /// @par Complexity O(1).
+  /// @par Complexity O(size()).
   explicit Stored_motions(Motion_store store)
-      : store_(std::move(store)), chunks_(store_.size() == 0 ? 1 : internal::stored_summary_chunks(store_)) {}
+      : store_(std::move(store)),
+        chunks_(store_.size() == 0 ? 1 : internal::stored_summary_chunks(store_)),
+        verified_(std::make_shared<std::vector<std::atomic<bool>>>(store_.size())) {
+    for (std::atomic<bool>& v : *verified_) v.store(false, std::memory_order_relaxed);
+  }
 
   /// @brief The number of clips.
   std::size_t size() const { return store_.size(); }
-  /// @brief Clip `i`'s signatures. @pre `i < size()` (not checked). @par Complexity O(1).
-  similarity::Motion_signature_view view(std::size_t i) const { return store_.view(i); }
+  /// @brief Clip `i`'s signatures, its block verified on the first read.
+  /// @pre `i < size()` (not checked).
+  /// @throws invalid_input naming the clip when its block does not match its checksum.
+  /// @par Complexity O(1); the first read of a clip O(its block), as `Motion_store::verify_clip`.
+  similarity::Motion_signature_view view(std::size_t i) const {
+    std::atomic<bool>& verified = (*verified_)[i];
+    if (!verified.load(std::memory_order_acquire)) {
+      store_.verify_clip(i);  // two threads may both verify a clip: the same answer, once more
+      verified.store(true, std::memory_order_release);
+    }
+    return store_.view(i);
+  }
   /// @brief Clip `i`'s summary. @pre `i < size()` (not checked). @par Complexity O(1).
   similarity::Motion_summary_view summary(std::size_t i) const {
     return {store_.summary(i), store_.width(), chunks_};
@@ -79,6 +103,7 @@ public:
 private:
   Motion_store store_;
   std::size_t chunks_;
+  std::shared_ptr<std::vector<std::atomic<bool>>> verified_;  // shared by copies, which read the same mapping
 };
 
 static_assert(similarity::MotionCollection<Stored_motions>);
