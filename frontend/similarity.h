@@ -183,8 +183,7 @@ inline constexpr std::tuple policy_parameters{
     numeric_parameter("bands", &Policy_choice::bands,
                       "motion-signature: the surface cut into this many bands of equal height in the first pose, "
                       "each compared with the band at its height, so that a big head does not outweigh the legs "
-                      "(3 or 4 rank a library of many studios better, a rig's own motions a little worse: chapter 7 "
-                      "of the manual). Default: 1",
+                      "(3 or 4 for a library of many studios or body plans: chapter 7 of the manual). Default: 1",
                       positive_counts(double(signatures::max_bands))),
     choice_parameter("sides", &Policy_choice::sides,
                      "motion-signature: keep the two sides of the body apart, cut at its centre along this axis "

@@ -1,4 +1,5 @@
 #include <deformseg/ged/edit_cost.h>
+#include <deformseg/ged/ged_policy.h>
 #include <deformseg/ged/ged_result.h>
 
 #include "ged_support.h"

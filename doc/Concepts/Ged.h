@@ -23,7 +23,8 @@
 /// A type `P` is a model for graphs `G` and costs `C` when, for `const P& p`, `const G& a, b` and
 /// `const C& costs`, `p(a, b, costs)` returns a deformseg::ged::Ged_result whose `lower` and
 /// `upper` bracket the graph edit distance and whose `mapping` costs `upper`
-/// (deformseg::ged::edit_cost).
+/// (deformseg::ged::edit_cost). The C++20 concept is deformseg::ged::GedPolicy, in
+/// `ged/ged_policy.h`; each model's header includes it.
 ///
 /// Models:
 /// - deformseg::ged::Exact_ged: the exact distance by depth-first branch and bound

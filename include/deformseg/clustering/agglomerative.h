@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deformseg/clustering/clustering.h>
+#include <deformseg/clustering/internal/weighted_items.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/threads.h>
 
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -148,10 +150,7 @@ struct Agglomerative {
   /// a distance matrix, both `clusters` and `height` are given, `clusters` is 0 or more than n,
   /// `height` is negative or not finite, or `max_clusters` < 2.
   Clustering operator()(const Eigen::MatrixXd& distances) const {
-    const int used = thread_count(threads, "Agglomerative");
-    check_distance_matrix(distances, "Agglomerative");
-    const auto n = std::size_t(distances.rows());
-    return solve(distances, std::vector<double>(n, 1.0), n, used);
+    return internal::cluster_matrix(distances, threads, "Agglomerative", std::bind_front(&Agglomerative::solve, this));
   }
 
   /// @brief Clusters weighted groups of items (one label per group), as `cluster` does.
@@ -159,14 +158,14 @@ struct Agglomerative {
   /// @return the clustering of the groups.
   /// @throws invalid_input as the other overload, or when the groups are inconsistent.
   Clustering operator()(const Grouped_items& groups) const {
-    const int used = thread_count(threads, "Agglomerative");
-    internal::check_groups(groups, "Agglomerative");
-    return solve(groups.distances, groups.weights, groups.group_of_item.size(), used);
+    return internal::cluster_groups(groups, threads, "Agglomerative", std::bind_front(&Agglomerative::solve, this));
   }
 
 private:
   // `used`: `threads` as thread_count resolved it.
-  Clustering solve(const Eigen::MatrixXd& d, const std::vector<double>& w, std::size_t items, int used) const {
+  Clustering solve(const internal::Weighted_items& g, int used) const {
+    const Eigen::MatrixXd& d = g.distances;
+    const std::vector<double>& w = g.weights;
     if (clusters && height) throw invalid_input("Agglomerative: give clusters or height, not both");
     if (height && !(*height >= 0 && std::isfinite(*height)))
       throw invalid_input("Agglomerative: height " + std::to_string(*height) + " is not a finite number >= 0");
@@ -177,6 +176,7 @@ private:
                                           [](double h, const internal::Merge& m) { return h < m.height; });
       return internal::finish(d, w, internal::cut(merges, n, std::size_t(below - merges.begin())), used);
     }
+    const std::size_t items = g.group_of_item.size();
     return internal::given_or_best_k(n, items, clusters, max_clusters, "Agglomerative", [&](std::size_t k) {
       return internal::finish(d, w, internal::cut(merges, n, n - k), used);
     });

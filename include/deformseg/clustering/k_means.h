@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deformseg/clustering/clustering.h>
+#include <deformseg/clustering/internal/weighted_items.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/threads.h>
 
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -26,7 +28,7 @@ namespace internal {
 // The embedding, one column per group: its distances to the prototypes. All items as prototypes
 // (none given): the distances to every group, coordinate j scaled by sqrt(w_j), which keeps the
 // Euclidean geometry of the embedding of the items themselves.
-inline Eigen::MatrixXd embedding(const Grouped_items& g, const std::vector<std::size_t>& prototypes) {
+inline Eigen::MatrixXd embedding(const Weighted_items& g, const std::vector<std::size_t>& prototypes) {
   if (prototypes.empty()) {
     Eigen::MatrixXd x = g.distances;
     for (Eigen::Index j = 0; j < x.rows(); ++j) x.row(j) *= std::sqrt(g.weights[std::size_t(j)]);
@@ -231,13 +233,7 @@ struct K_means {
   /// a distance matrix, `clusters` is 0 or more than n, `max_clusters` < 2, `restarts` is 0, or a
   /// prototype is not an item.
   Clustering operator()(const Eigen::MatrixXd& distances) const {
-    const int used = thread_count(threads, "K_means");
-    check_distance_matrix(distances, "K_means");
-    const auto n = std::size_t(distances.rows());
-    Grouped_items items{distances, std::vector<double>(n, 1.0), std::vector<std::size_t>(n), {}};
-    std::iota(items.group_of_item.begin(), items.group_of_item.end(), std::size_t{0});
-    items.first_item = items.group_of_item;
-    return solve(items, used);
+    return internal::cluster_matrix(distances, threads, "K_means", std::bind_front(&K_means::solve, this));
   }
 
   /// @brief Clusters weighted groups of items (one label per group), as `cluster` does;
@@ -246,14 +242,12 @@ struct K_means {
   /// @return the clustering of the groups.
   /// @throws invalid_input as the other overload, or when the groups are inconsistent.
   Clustering operator()(const Grouped_items& groups) const {
-    const int used = thread_count(threads, "K_means");
-    internal::check_groups(groups, "K_means");
-    return solve(groups, used);
+    return internal::cluster_groups(groups, threads, "K_means", std::bind_front(&K_means::solve, this));
   }
 
 private:
   // `used`: `threads` as thread_count resolved it.
-  Clustering solve(const Grouped_items& g, int used) const {
+  Clustering solve(const internal::Weighted_items& g, int used) const {
     if (restarts == 0) throw invalid_input("K_means: restarts must be at least 1");
     const Eigen::MatrixXd x = internal::embedding(g, prototypes);
     const internal::Lloyd lloyd(x, g.weights, used);
@@ -261,7 +255,8 @@ private:
                                      [&](std::size_t k) { return best_of_runs(g, lloyd, k, used); });
   }
 
-  Clustering best_of_runs(const Grouped_items& g, const internal::Lloyd& lloyd, std::size_t k, int used) const {
+  Clustering best_of_runs(const internal::Weighted_items& g, const internal::Lloyd& lloyd, std::size_t k,
+                          int used) const {
     Clustering c;
     if (k == 0) return c;
     deformseg::internal::Random_engine random(seed);

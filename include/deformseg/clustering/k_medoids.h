@@ -4,14 +4,17 @@
 #pragma once
 
 #include <deformseg/clustering/clustering.h>
+#include <deformseg/clustering/internal/weighted_items.h>
 #include <deformseg/threads.h>
 
 #include <Eigen/Core>
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace deformseg::clustering {
@@ -151,10 +154,7 @@ struct K_medoids {
   /// @throws invalid_input when `threads` is out of range (before any work), `distances` is not
   /// a distance matrix, `clusters` is 0 or more than n, or `max_clusters` < 2.
   Clustering operator()(const Eigen::MatrixXd& distances) const {
-    const int used = thread_count(threads, "K_medoids");
-    check_distance_matrix(distances, "K_medoids");
-    const auto n = std::size_t(distances.rows());
-    return solve(distances, std::vector<double>(n, 1.0), n, used);
+    return internal::cluster_matrix(distances, threads, "K_medoids", std::bind_front(&K_medoids::solve, this));
   }
 
   /// @brief Clusters weighted groups of items (one label per group), as `cluster` does.
@@ -162,17 +162,17 @@ struct K_medoids {
   /// @return the clustering of the groups.
   /// @throws invalid_input as the other overload, or when the groups are inconsistent.
   Clustering operator()(const Grouped_items& groups) const {
-    const int used = thread_count(threads, "K_medoids");
-    internal::check_groups(groups, "K_medoids");
-    return solve(groups.distances, groups.weights, groups.group_of_item.size(), used);
+    return internal::cluster_groups(groups, threads, "K_medoids", std::bind_front(&K_medoids::solve, this));
   }
 
 private:
   // `used`: `threads` as thread_count resolved it.
-  Clustering solve(const Eigen::MatrixXd& d, const std::vector<double>& w, std::size_t items, int used) const {
-    return internal::given_or_best_k(w.size(), items, clusters, max_clusters, "K_medoids", [&](std::size_t k) {
-      return internal::finish(d, w, pam(d, w, k, used), used);
-    });
+  Clustering solve(const internal::Weighted_items& g, int used) const {
+    return internal::given_or_best_k(g.weights.size(), g.group_of_item.size(), clusters, max_clusters, "K_medoids",
+                                     [&](std::size_t k) {
+                                       Clustering c = pam(g.distances, g.weights, k, used);
+                                       return internal::finish(g.distances, g.weights, std::move(c), used);
+                                     });
   }
 
   Clustering pam(const Eigen::MatrixXd& d, const std::vector<double>& w, std::size_t k, int used) const {

@@ -5,7 +5,7 @@
 
 #include <deformseg/ged/assignment.h>
 #include <deformseg/ged/edit_cost.h>
-#include <deformseg/ged/ged_result.h>
+#include <deformseg/ged/ged_policy.h>
 
 #include <Eigen/Core>
 

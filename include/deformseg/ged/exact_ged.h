@@ -6,7 +6,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/ged/bipartite_ged.h>
 #include <deformseg/ged/edit_cost.h>
-#include <deformseg/ged/ged_result.h>
+#include <deformseg/ged/ged_policy.h>
 #include <deformseg/ged/internal/ged_search.h>
 #include <deformseg/threads.h>
 

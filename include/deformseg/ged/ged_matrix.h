@@ -5,7 +5,7 @@
 
 #include <deformseg/exceptions.h>
 #include <deformseg/ged/exact_ged.h>
-#include <deformseg/ged/ged_result.h>
+#include <deformseg/ged/ged_policy.h>
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/threads.h>
 

@@ -1,10 +1,8 @@
 /// @file ged/ged_result.h
-/// @brief What a graph edit distance policy returns, and the `GedPolicy` concept.
+/// @brief What a graph edit distance policy returns: `Ged_result`. The `GedPolicy` concept is
+/// in `ged/ged_policy.h`.
 #pragma once
 
-#include <deformseg/ged/cost_model.h>
-
-#include <concepts>
 #include <vector>
 
 namespace deformseg::ged {
@@ -21,13 +19,5 @@ struct Ged_result {
   double upper = 0;          ///< the cost of `mapping`, an upper bound
   std::vector<int> mapping;  ///< node i of A -> node of B, or -1 when i is deleted
 };
-
-/// @brief A graph edit distance policy: `policy(a, b, costs)` compares two labelled graphs under
-/// a cost model and returns a `Ged_result`.
-template <class P, class G, class C>
-concept GedPolicy = LabelledGraph<G> && GedCostModel<C, label_t<G>> &&
-                    requires(const P& p, const G& a, const G& b, const C& costs) {
-                      { p(a, b, costs) } -> std::same_as<Ged_result>;
-                    };
 
 }  // namespace deformseg::ged

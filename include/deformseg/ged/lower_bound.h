@@ -4,7 +4,7 @@
 #pragma once
 
 #include <deformseg/ged/edit_cost.h>
-#include <deformseg/ged/ged_result.h>
+#include <deformseg/ged/ged_policy.h>
 #include <deformseg/ged/internal/ged_search.h>
 
 #include <cstddef>

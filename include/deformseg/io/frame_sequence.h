@@ -395,9 +395,9 @@ void format_frame(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std:
                   const io::Sequence_write_options& options, const std::filesystem::path& file, std::string& bytes) {
   bytes.clear();
   if (options.format == io::Mesh_format::obj) {
-    append_obj(animation, frame, bytes);
+    append_text_mesh(animation, frame, obj_format, bytes);
   } else if (options.format == io::Mesh_format::off) {
-    append_off(animation, frame, bytes);
+    append_text_mesh(animation, frame, off_format, bytes);
   } else {
     const std::vector<color::Rgb> colors = options.face_colors ? options.face_colors(frame) : std::vector<color::Rgb>{};
     check_face_colors(colors.size(), animation.num_faces(), file, frame);

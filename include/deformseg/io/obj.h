@@ -5,6 +5,7 @@
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/internal/file_io.h>
+#include <deformseg/io/internal/mesh_writer.h>
 #include <deformseg/io/internal/text_scanner.h>
 #include <deformseg/io/triangle_soup.h>
 
@@ -204,22 +205,10 @@ inline Triangle_soup read_obj(const std::filesystem::path& path, const Mesh_read
 
 namespace deformseg::io::internal {
 
-/// Appends frame `frame` of `animation` to `text` as OBJ: a comment, the `v` lines of the
+/// OBJ as `append_text_mesh` and `write_text_mesh` write it: a comment, the `v` lines of the
 /// vertices in index order, the `f` lines of the triangles (1-based indices).
-/// @pre `frame < animation.num_frames()`.
-template <class Graph, class Coordinate>
-void append_obj(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std::size_t frame, std::string& text) {
-  // At most 25 characters a double and 11 an index: the appends below do not reallocate.
-  text.reserve(text.size() + 64 + animation.num_vertices() * (2 + 3 * 25) + animation.num_faces() * (2 + 3 * 11));
-  text.append("# deformseg: frame ");
-  append_decimal(text, frame);
-  text.append(" of ");
-  append_decimal(text, animation.num_frames());
-  text.push_back('\n');
-
-  append_point_lines(text, animation.frame_positions(frame), "v ");
-  append_triangle_lines(text, animation.triangles(), "f ", 1);
-}
+inline constexpr Text_mesh_format obj_format{.first_line = "", .counts = false, .vertex_prefix = "v ",
+                                             .face_prefix = "f ", .first_index = 1};
 
 }  // namespace deformseg::io::internal
 
@@ -244,10 +233,7 @@ namespace deformseg::io {
 template <mesh::FaceGraph Graph, std::floating_point Coordinate>
 void write_obj(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std::size_t frame,
                const std::filesystem::path& file) {
-  internal::check_frame_to_write(frame, animation.num_frames(), file);
-  std::string text;
-  internal::append_obj(animation, frame, text);
-  internal::write_file_bytes(file, text);
+  internal::write_text_mesh(animation, frame, file, internal::obj_format);
 }
 
 }  // namespace deformseg::io

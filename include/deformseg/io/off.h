@@ -5,6 +5,7 @@
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/internal/file_io.h>
+#include <deformseg/io/internal/mesh_writer.h>
 #include <deformseg/io/internal/text_scanner.h>
 #include <deformseg/io/triangle_soup.h>
 
@@ -176,26 +177,10 @@ inline Triangle_soup read_off(const std::filesystem::path& path, const Mesh_read
 
 namespace deformseg::io::internal {
 
-/// Appends frame `frame` of `animation` to `text` as OFF: the `OFF` line, a comment, the counts,
-/// the vertices in index order and the triangles (`3 a b c`, 0-based indices).
-/// @pre `frame < animation.num_frames()`.
-template <class Graph, class Coordinate>
-void append_off(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std::size_t frame, std::string& text) {
-  // At most 25 characters a double and 11 an index: the appends below do not reallocate.
-  text.reserve(text.size() + 96 + animation.num_vertices() * (1 + 3 * 25) + animation.num_faces() * (2 + 3 * 11));
-  text.append("OFF\n# deformseg: frame ");
-  append_decimal(text, frame);
-  text.append(" of ");
-  append_decimal(text, animation.num_frames());
-  text.push_back('\n');
-  append_decimal(text, animation.num_vertices());
-  text.push_back(' ');
-  append_decimal(text, animation.num_faces());
-  text.append(" 0\n");
-
-  append_point_lines(text, animation.frame_positions(frame), "");
-  append_triangle_lines(text, animation.triangles(), "3 ", 0);
-}
+/// OFF as `append_text_mesh` and `write_text_mesh` write it: the `OFF` line, a comment, the counts
+/// `V F 0`, the vertices in index order and the triangles (`3 a b c`, 0-based indices).
+inline constexpr Text_mesh_format off_format{.first_line = "OFF\n", .counts = true, .vertex_prefix = "",
+                                             .face_prefix = "3 ", .first_index = 0};
 
 }  // namespace deformseg::io::internal
 
@@ -222,10 +207,7 @@ namespace deformseg::io {
 template <mesh::FaceGraph Graph, std::floating_point Coordinate>
 void write_off(const mesh::Deforming_mesh<Graph, Coordinate>& animation, std::size_t frame,
                const std::filesystem::path& file) {
-  internal::check_frame_to_write(frame, animation.num_frames(), file);
-  std::string text;
-  internal::append_off(animation, frame, text);
-  internal::write_file_bytes(file, text);
+  internal::write_text_mesh(animation, frame, file, internal::off_format);
 }
 
 }  // namespace deformseg::io

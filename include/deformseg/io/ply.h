@@ -5,6 +5,7 @@
 #include <deformseg/color/color.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/internal/file_io.h>
+#include <deformseg/io/internal/mesh_writer.h>
 #include <deformseg/io/internal/text_scanner.h>
 #include <deformseg/io/triangle_soup.h>
 #include <deformseg/mesh/deforming_mesh.h>

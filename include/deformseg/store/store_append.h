@@ -6,7 +6,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/io/files.h>
 #include <deformseg/similarity/motion_signature_view.h>
-#include <deformseg/store/internal/file_io.h>
+#include <deformseg/internal/file_io.h>
 #include <deformseg/store/internal/manifest.h>
 #include <deformseg/store/internal/npy.h>
 #include <deformseg/store/internal/store_files.h>
@@ -111,9 +111,10 @@ public:
     const std::size_t index = size();
     check_clip(index, record, view, frames, summary);
     if (base_.find(record.path, record.clip, record.body) || added_keys_.count(key_of(record)))
-      throw invalid_input(internal::join(internal::clip_name(index, record.path, record.clip, record.body),
-                                         ": the store already holds this clip; replace it rather than add it"),
-                          {.file = folder_.string()});
+      throw invalid_input(
+          deformseg::internal::join(internal::clip_name(index, record.path, record.clip, record.body),
+                                    ": the store already holds this clip; replace it rather than add it"),
+          {.file = folder_.string()});
     write_block(record, view, frames, summary);
     added_keys_[key_of(record)] = index;
     added_.push_back(std::move(record));
@@ -128,16 +129,15 @@ public:
   void replace(std::size_t index, Store_record record, similarity::Motion_signature_view view,
                std::span<const std::uint32_t> frames, std::span<const float> summary) {
     if (index >= size())
-      throw invalid_input(internal::join("cannot replace clip ", std::to_string(index), ": the store will hold ",
-                                         std::to_string(size()), " clips"),
+      throw invalid_input(deformseg::internal::join("cannot replace clip ", std::to_string(index),
+                                                    ": the store will hold ", std::to_string(size()), " clips"),
                           {.file = folder_.string()});
     check_clip(index, record, view, frames, summary);
     const Store_record old = index < base_.size() ? base_.record(index) : added_[index - base_.size()];
     if (key_of(old) != key_of(record))
-      throw invalid_input(internal::join(internal::clip_name(index, old.path, old.clip, old.body),
-                                         ": cannot be replaced by ",
-                                         internal::clip_name(index, record.path, record.clip, record.body),
-                                         ", another clip"),
+      throw invalid_input(deformseg::internal::join(
+                              internal::clip_name(index, old.path, old.clip, old.body), ": cannot be replaced by ",
+                              internal::clip_name(index, record.path, record.clip, record.body), ", another clip"),
                           {.file = folder_.string()});
     write_block(record, view, frames, summary);
     if (index < base_.size()) replaced_[index] = std::move(record);
@@ -186,7 +186,7 @@ private:
   internal::Json parse_object(std::string_view json, std::string_view what) const {
     internal::Json value = internal::parse_json(json, folder_.string(), internal::max_json_depth - 1);
     if (!value.is_object())
-      throw invalid_input(internal::join(what, " must be a JSON object"), {.file = folder_.string()});
+      throw invalid_input(deformseg::internal::join(what, " must be a JSON object"), {.file = folder_.string()});
     return value;
   }
 
@@ -197,27 +197,29 @@ private:
       const auto value = [&](const internal::Json& object) {
         return object.contains(*key) ? internal::json_text(object.at(*key)) : std::string("not given");
       };
-      throw invalid_input(internal::join("the store was described with other options: \"", *key, "\" is ",
-                                         value(stored), " in the store, ", value(description_),
-                                         " in this append; a store holds descriptions made with one set of options"),
-                          {.file = file});
+      throw invalid_input(
+          deformseg::internal::join("the store was described with other options: \"", *key, "\" is ", value(stored),
+                                    " in the store, ", value(description_),
+                                    " in this append; a store holds descriptions made with one set of options"),
+          {.file = file});
     }
     const internal::Json layout = internal::parse_json(base_.summary_layout(), file);
     if (base_.summary_width() != summary_width_ || internal::first_different_member(layout, summary_layout_))
-      throw invalid_input(
-          internal::join("the store's summaries are of another layout (", std::to_string(base_.summary_width()),
-                         " floats, ", base_.summary_layout(), ") than this append's (", std::to_string(summary_width_),
-                         " floats, ", internal::json_text(summary_layout_), ")"),
-          {.file = file});
+      throw invalid_input(deformseg::internal::join(
+                              "the store's summaries are of another layout (", std::to_string(base_.summary_width()),
+                              " floats, ", base_.summary_layout(), ") than this append's (",
+                              std::to_string(summary_width_), " floats, ", internal::json_text(summary_layout_), ")"),
+                          {.file = file});
   }
 
   void check_no_other_files() const {
     for (const auto& entry : std::filesystem::directory_iterator(folder_)) {
       const std::string name = entry.path().filename().string();
       if (name != "lock" && !internal::is_store_file_name(name))
-        throw invalid_input(internal::join("not a motion store: the folder has no store.json and holds other files (",
-                                           name, "); a new store is made in a missing or empty folder"),
-                            {.file = folder_.string()});
+        throw invalid_input(
+            deformseg::internal::join("not a motion store: the folder has no store.json and holds other files (", name,
+                                      "); a new store is made in a missing or empty folder"),
+            {.file = folder_.string()});
     }
   }
 
@@ -238,7 +240,7 @@ private:
                   std::span<const std::uint32_t> frames, std::span<const float> summary) {
     const std::string name = internal::clip_name(index, r.path, r.clip, r.body);
     const auto fail = [&](const std::string& what) {
-      throw invalid_input(internal::join(name, ": ", what), {.file = folder_.string()});
+      throw invalid_input(deformseg::internal::join(name, ": ", what), {.file = folder_.string()});
     };
     if (committed_) fail("the append is already committed");
     if (r.path.empty()) fail("its path is empty");
@@ -251,13 +253,14 @@ private:
     if (view.width == 0 || view.width > internal::max_width)
       fail("its description has no value per row, or more than 65536");
     if (width_ != 0 && view.width != width_)
-      fail(internal::join("its description has ", std::to_string(view.width), " values per row, the store's ",
-                          std::to_string(width_)));
+      fail(deformseg::internal::join("its description has ", std::to_string(view.width),
+                                     " values per row, the store's ", std::to_string(width_)));
     if (frames.size() != view.rows)
-      fail(internal::join(std::to_string(frames.size()), " frame numbers for ", std::to_string(view.rows), " rows"));
+      fail(deformseg::internal::join(std::to_string(frames.size()), " frame numbers for ", std::to_string(view.rows),
+                                     " rows"));
     if (summary.size() != summary_width_)
-      fail(internal::join("a summary of ", std::to_string(summary.size()), " floats, the store's have ",
-                          std::to_string(summary_width_)));
+      fail(deformseg::internal::join("a summary of ", std::to_string(summary.size()), " floats, the store's have ",
+                                     std::to_string(summary_width_)));
   }
 
   void open_data_files() {

@@ -6,7 +6,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/store/internal/file_io.h>
+#include <deformseg/internal/file_io.h>
 #include <deformseg/store/internal/utf8.h>
 
 #include <cstddef>
@@ -137,7 +137,9 @@ inline std::string unescaped_name(std::string_view text) {
 /// @par Complexity O(file size), in chunks of 1 MiB.
 inline std::uint64_t hash_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw invalid_input(internal::join("cannot open: ", internal::last_system_error()), {.file = path.string()});
+  if (!in)
+    throw invalid_input(deformseg::internal::join("cannot open: ", deformseg::internal::last_system_error()),
+                        {.file = path.string()});
   std::uint64_t hash = 0xcbf29ce484222325ull;
   std::vector<char> chunk(1u << 20);
   while (in) {

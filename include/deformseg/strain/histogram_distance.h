@@ -22,8 +22,8 @@ namespace deformseg::strain {
 /// with values in [0, 1].
 ///
 /// The default of `histogram_distance(s)` is `earth_movers`: on strain histograms it tells motions
-/// apart with about 1.6 times the margin of total variation (see `Strain_histogram_options`),
-/// because a strain slightly larger is near, not as far as any other.
+/// apart with a wider margin than total variation (@ref section_histogram_defaults), because a
+/// strain slightly larger is near, not as far as any other.
 enum class Histogram_metric {
   /// @brief The total variation distance `0.5 sum_k |h_k - g_k|`: the share of the mass that sits
   /// in other bins. 1 when no bin is shared; blind to how far apart the bins are.

@@ -41,13 +41,13 @@ using Strain_histograms = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 
 /// hundreds); see `histogram_edges`. The defaults were chosen for the default strain of
 /// `Strain_histogram_options` (the raw `Max_principal_strain` of each frame against the one
 /// before, a relative stretch): below 5 % of stretch from one frame to the next counts as rigid,
-/// at or above 100 % as overflow. See `Strain_histogram_options` for the measurements.
+/// at or above 100 % as overflow (@ref section_histogram_defaults).
 struct Histogram_options {
   /// @brief The number B of log-spaced bins between `min_strain` and `max_strain`, at least 1.
-  /// Default: 16 (8 and 24 rank the measured pairs alike).
+  /// Default: 16 (fewer or more bins rank pairs of animations alike: @ref section_histogram_defaults).
   std::size_t bins = 16;
-  /// @brief The lower edge of the first log-spaced bin, finite and > 0. Default: 0.05 (0.01 gives
-  /// smaller margins, 0.05 to 0.1 the largest; see `Strain_histogram_options`).
+  /// @brief The lower edge of the first log-spaced bin, finite and > 0. Default: 0.05, which
+  /// tells motions apart with the largest margin (@ref section_histogram_defaults).
   double min_strain = 0.05;
   /// @brief The upper edge of the last log-spaced bin, finite and > `min_strain`. Default: 1.
   double max_strain = 1.0;
@@ -196,19 +196,12 @@ Strain_histograms strain_histograms(const Strain_field<Value>& field, std::span<
 ///
 /// Defaults: the raw `Max_principal_strain` against the previous pose, binned by the default
 /// `Histogram_options` (16 log bins from 0.05 to 1), to be compared with
-/// `Histogram_metric::earth_movers`. Chosen by ranking pairs of animations by a DTW over their
-/// frame distances (symmetric steps, diagonal weight 2, cost over Ta + Tb; lower is more alike).
-/// With the defaults: cat poses against the same poses on the lion 0.031, against the cat poses
-/// in two other orders 0.070 and 0.072 and against the samba's first 10 frames 0.169; two tubes
-/// doing one bending schedule 0.0018, one tube doing it against other timings 0.0037 or two bends
-/// 0.0051. The horse gallop's nearest is the samba (0.031; the cat poses 0.082). The smaller of the
-/// two ratios "nearest wrong pair / right pair" is 2.06 (cat 2.25, tubes 2.06); with total
-/// variation 1.31, with `min_strain` 0.01 1.46, with the Gaussian-normalised strain at most 1.44.
-/// Against the rest pose every setting failed (best 0.80): a pose's histogram does not depend on
-/// the order of the others, so the cat poses reordered with the same first frame (the rest) scored
-/// 0.024 against 0.029 for the lion. The price of the previous pose: frame 0's histogram is all
-/// rigid, and the strain between frames, so the histograms, depend on the speed of the motion
-/// and the frame rate (lower `min_strain` for animations sampled much more densely).
+/// `Histogram_metric::earth_movers`: of the settings tried, the one that ranks the same motion on
+/// another mesh nearest with the widest margin (@ref section_histogram_defaults). The previous
+/// pose because a histogram against the rest pose does not depend on the order of the other poses,
+/// so it cannot tell a motion from its poses reordered. Its price: frame 0's histogram is all
+/// rigid, and the strain between frames, so the histograms, depend on the speed of the motion and
+/// the frame rate (lower `min_strain` for animations sampled much more densely).
 ///
 /// A strain of one's own measure or normalisation is binned by the overload of `strain_histograms`
 /// that takes a field (`compute_strain` with the policy objects, weights from `face_areas`).

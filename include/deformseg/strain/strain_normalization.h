@@ -82,9 +82,8 @@ enum class Sigma_statistic {
   /// 95): robust to any share of outliers below 100 - percentile %. The default.
   percentile,
   /// @brief The standard deviation of the strain magnitudes, the method's first reading
-  /// (@ref method_strain). Not robust: on the horse gallop, the 16 worst-shaped of its 16843
-  /// triangles (0.1 %) take it from 0.48 to 2.07 (strains up to 385), flattening every other
-  /// normalised strain.
+  /// (@ref method_strain). Not robust: a few sliver triangles multiply it, flattening every other
+  /// normalised strain (@ref section_sigma_choice).
   standard_deviation,
   /// @brief The median absolute deviation of the strain magnitudes from their median, times
   /// 1.4826 (the standard deviation of a normal distribution with that MAD). Robust, but a
@@ -97,8 +96,8 @@ enum class Sigma_statistic {
 ///
 /// sigma is `sigma` when given, else a statistic of the raw strains (`sigma_of`): by default
 /// their 95th percentile, so that a strain of that size becomes 1 - exp(-1/2) = 0.39, strains well
-/// above it (joints bent hard, and sliver triangles, whose strains reach the hundreds on real
-/// meshes) saturate near 1, and the rest keep their order and contrast.
+/// above it (joints bent hard, and sliver triangles) saturate near 1, and the rest keep their
+/// order and contrast.
 ///
 /// The statistic is taken over the magnitudes `|s|` of the samples of the field (every frame but
 /// the one whose strain is 0 by definition) that exceed `noise_level`: strains below it are the
@@ -106,15 +105,8 @@ enum class Sigma_statistic {
 /// sigma of rounding size and blow its noise up to visible strains. sigma is at least
 /// `noise_level`.
 ///
-/// Why the 95th percentile (the figures come from the tests on the shared data). Shape
-/// independence: the cat and lion poses of Sumner and Popović (nine poses and the reference, on two
-/// different meshes) give 10 x 10 frame distance matrices whose upper triangles correlate at 0.959
-/// (0.963 for the nine poses alone); without normalisation 0.940, with sigma the standard deviation
-/// 0.874, the median 0.890, the scaled MAD 0.896, the 90th percentile 0.952, the 99th 0.975.
-/// Robustness: leaving out the horse gallop's worst-shaped 0.1 %, 1 % and 5 % of its triangles
-/// moves its 95th percentile by 0.4 %, 2.7 % and 4.3 %, its 99th by 2.7 %, 14 % and 25 %, its
-/// standard deviation by factors of 4.3, 4.9 and 5.7 (2.07 to 0.36). The 95th percentile is the
-/// highest of these that slivers hardly move.
+/// The 95th percentile because it is the highest percentile that sliver triangles hardly move,
+/// and it keeps the strain of one motion on two different meshes alike (@ref section_sigma_choice).
 struct Gaussian_normalization {
   /// @brief sigma, when given (finite, > 0). Default: none, from the data.
   std::optional<double> sigma{};

@@ -20,17 +20,16 @@ namespace deformseg::temporal {
 /// exactly `segments` segments; found exactly by dynamic programming.
 ///
 /// Why the weight: `Ds` is an average, and a one-frame segment has `Ds = 0`, so the plain sum of
-/// `Ds` is least when single frames are cut off (@ref method_temporal; on the horse gallop its
-/// optimum with 6 segments is five single frames). Weighted by length, the cost is the sum over
-/// segments of their frames' mean distance to the other frames of their segment: the kernel
-/// change-point cost.
+/// `Ds` is least when single frames are cut off (@ref method_temporal, @ref section_partition_choice).
+/// Weighted by length, the cost is the sum over segments of their frames' mean distance to the
+/// other frames of their segment: the kernel change-point cost.
 ///
 /// With `segments` unset, the number of segments is free and each costs `penalty`: relative to
 /// the cost of the whole animation as one segment, `T Ds(0, T - 1)`, about `T` times the mean
 /// frame distance, so that 0.03 (the default) adds a segment only where it lowers that cost by at
-/// least 3 %. A larger penalty never gives more segments. On the horse gallop 0.03 gives six
-/// segments per cycle, the same in both cycles, where 0.05 leaves the whole gallop one segment:
-/// its poses recur each cycle, so no single cut lowers the cost much.
+/// least 3 %. A larger penalty never gives more segments; the default splits a gallop into its
+/// phases, where a slightly larger one may leave a motion whose poses recur one segment
+/// (@ref section_partition_choice).
 /// @par Complexity
 /// O(T^2) time for a penalty, O(K T^2) for K segments; O(T) memory (O(K T) for K segments).
 struct Optimal_partition {

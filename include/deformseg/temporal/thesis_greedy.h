@@ -27,7 +27,7 @@ struct Thesis_greedy {
   /// @brief The largest `Ds` of a segment. Default: 0.2 times the mean frame distance. A window
   /// mixing two poses at distance d in shares p and 1 - p has `Ds = 2 p (1 - p) d`: with d about
   /// the mean distance, 0.2 admits about 1 frame in 9 of another pose, and a looser threshold lets
-  /// the longest window reach across a transition (at 0.5 it does on the tests' three-pose tube).
+  /// the longest window reach across a transition (@ref section_partition_choice).
   Segmentation_threshold threshold{.value = 0.2, .relative = true};
 
   /// @brief The segments of `cost`'s frames.

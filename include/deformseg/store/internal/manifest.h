@@ -4,7 +4,7 @@
 
 #include <deformseg/exceptions.h>
 #include <deformseg/store/internal/crc32.h>
-#include <deformseg/store/internal/file_io.h>
+#include <deformseg/internal/file_io.h>
 #include <deformseg/store/store_record.h>
 
 #include <nlohmann/json.hpp>
@@ -44,6 +44,7 @@ struct Clip_row {
 
 inline void encode_clip_row(char* out, const Clip_row& row) {
   constexpr auto le = std::endian::little;
+  using deformseg::internal::store_word;
   const Store_record& r = row.numbers;
   store_word<le>(out + 0, r.block.generation);
   store_word<le>(out + 8, r.block.offset);
@@ -64,6 +65,7 @@ inline void encode_clip_row(char* out, const Clip_row& row) {
 
 inline Clip_row decode_clip_row(const char* in) {
   constexpr auto le = std::endian::little;
+  using deformseg::internal::load_word;
   Clip_row row;
   Store_record& r = row.numbers;
   r.block.generation = load_word<le, std::uint64_t>(in + 0);
@@ -88,7 +90,7 @@ inline Clip_row decode_clip_row(const char* in) {
 inline std::string store_file_name(std::string_view kind, std::uint64_t generation) {
   std::string digits = std::to_string(generation);
   if (digits.size() < 6) digits.insert(0, 6 - digits.size(), '0');
-  return join(kind, "-", digits, ".npy");
+  return deformseg::internal::join(kind, "-", digits, ".npy");
 }
 
 /// True for the names of files a store's writer makes (data files, tables, temporary files):
@@ -111,7 +113,7 @@ inline constexpr std::size_t clip_string_count(std::uint64_t version) { return v
 
 /// "clip 12 (/data/walk.glb#Walk on /data/body.glb)", as errors name a clip (" on BODY" when it has one).
 inline std::string clip_name(std::size_t index, std::string_view path, std::string_view clip, std::string_view body) {
-  std::string name = join("clip ", std::to_string(index), " (", path);
+  std::string name = deformseg::internal::join("clip ", std::to_string(index), " (", path);
   if (!clip.empty()) name.append("#").append(clip);
   if (!body.empty()) name.append(" on ").append(body);
   return name.append(")");
@@ -124,13 +126,13 @@ inline std::string checksum_text(std::string_view covered) {
   constexpr char hex[] = "0123456789abcdef";
   for (int k = 0; k < 8; ++k) digits[k] = hex[(crc >> (28 - 4 * k)) & 0xFu];
   digits[8] = '\0';
-  return join("crc32:", digits);
+  return deformseg::internal::join("crc32:", digits);
 }
 
 /// The manifest's end: its "checksum" member in the one form a reader accepts, for the bytes
 /// `covered` before it, then the object's closing brace and a newline.
 inline std::string checksum_suffix(std::string_view covered) {
-  return join("\"checksum\": \"", checksum_text(covered), "\"}\n");
+  return deformseg::internal::join("\"checksum\": \"", checksum_text(covered), "\"}\n");
 }
 
 /// The size of `checksum_suffix`'s text.
@@ -169,18 +171,20 @@ inline Json parse_json(std::string_view text, const std::string& file, int most_
   const auto shallow = [&](int depth, Json::parse_event_t event, Json&) {
     const bool opens = event == Json::parse_event_t::object_start || event == Json::parse_event_t::array_start;
     if (opens && depth >= most_depth)
-      throw invalid_input(join("not valid here: JSON nested more than ", std::to_string(most_depth), " deep"),
-                          {.file = file});
+      throw invalid_input(
+          deformseg::internal::join("not valid here: JSON nested more than ", std::to_string(most_depth), " deep"),
+          {.file = file});
     return true;
   };
   try {
     return Json::parse(text, shallow);
   } catch (const Json::parse_error& e) {
     const std::size_t byte = e.byte > 0 ? e.byte - 1 : 0;  // nlohmann counts the bytes read, the failing one too
-    throw invalid_input(join("not valid JSON at byte ", std::to_string(byte), ": ", json_error_text(e)),
-                        {.file = file});
+    throw invalid_input(
+        deformseg::internal::join("not valid JSON at byte ", std::to_string(byte), ": ", json_error_text(e)),
+        {.file = file});
   } catch (const Json::exception& e) {
-    throw invalid_input(join("not valid JSON: ", json_error_text(e)), {.file = file});
+    throw invalid_input(deformseg::internal::join("not valid JSON: ", json_error_text(e)), {.file = file});
   }
 }
 

@@ -6,7 +6,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/store/internal/file_io.h>
+#include <deformseg/internal/file_io.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -25,10 +25,10 @@ inline constexpr std::size_t npy_alignment = 64;
 /// The bytes before the data of an array of `descr` and `shape`: a multiple of 64 bytes, and at
 /// least `least` bytes (a writer that fills the shape in last reserves room for the largest one).
 inline std::string npy_header(std::string_view descr, std::span<const std::uint64_t> shape, std::size_t least = 0) {
-  std::string dict = join("{'descr': ", descr, ", 'fortran_order': False, 'shape': (");
+  std::string dict = deformseg::internal::join("{'descr': ", descr, ", 'fortran_order': False, 'shape': (");
   for (std::size_t k = 0; k < shape.size(); ++k) {
     if (k) dict.append(", ");
-    append_decimal(dict, shape[k]);
+    deformseg::internal::append_decimal(dict, shape[k]);
   }
   dict.append(shape.size() == 1 ? ",), }" : "), }");
   std::size_t total = npy_magic.size() + 2 + dict.size() + 1;
@@ -61,16 +61,19 @@ public:
     if (size_ < npy_magic.size() + 2 || std::string_view(data_, 6) != npy_magic.substr(0, 6))
       fail("not a .npy file (no \\x93NUMPY magic at its start)");
     if (data_[6] != 1 || data_[7] != 0)
-      fail(join("a .npy file of version ", std::to_string(int(static_cast<unsigned char>(data_[6]))), ".",
-                std::to_string(int(static_cast<unsigned char>(data_[7]))), "; the store's files are of version 1.0"));
+      fail(deformseg::internal::join(
+          "a .npy file of version ", std::to_string(int(static_cast<unsigned char>(data_[6]))), ".",
+          std::to_string(int(static_cast<unsigned char>(data_[7]))), "; the store's files are of version 1.0"));
     const std::size_t length = static_cast<unsigned char>(data_[8]) | std::size_t(static_cast<unsigned char>(data_[9])) << 8;
     Npy_header header;
     header.data_offset = npy_magic.size() + 2 + length;
     if (header.data_offset > size_)
-      fail(join("its .npy header of ", std::to_string(length), " bytes runs past the end of the file (",
-                std::to_string(size_), " bytes): truncated"));
+      fail(deformseg::internal::join("its .npy header of ", std::to_string(length),
+                                     " bytes runs past the end of the file (", std::to_string(size_),
+                                     " bytes): truncated"));
     if (header.data_offset % npy_alignment != 0)
-      fail(join("its data starts at byte ", std::to_string(header.data_offset), ", not a multiple of 64"));
+      fail(deformseg::internal::join("its data starts at byte ", std::to_string(header.data_offset),
+                                     ", not a multiple of 64"));
     text_ = std::string_view(data_ + npy_magic.size() + 2, length);
     parse_dict(header);
     return header;
@@ -79,7 +82,8 @@ public:
 private:
   [[noreturn]] void fail(const std::string& what) const { throw invalid_input(what, {.file = file_}); }
   [[noreturn]] void bad(const std::string& what) const {
-    fail(join("malformed .npy header at byte ", std::to_string(npy_magic.size() + 2 + at_), ": ", what));
+    fail(deformseg::internal::join("malformed .npy header at byte ", std::to_string(npy_magic.size() + 2 + at_), ": ",
+                                   what));
   }
 
   void skip_space() {
@@ -94,7 +98,7 @@ private:
     return false;
   }
   void expect(char c) {
-    if (!take(c)) bad(join("expected '", std::string(1, c), "'"));
+    if (!take(c)) bad(deformseg::internal::join("expected '", std::string(1, c), "'"));
   }
 
   std::string quoted() {
@@ -110,7 +114,7 @@ private:
   // A dtype: a quoted string, or a list of (name, type) tuples kept as text, brackets balanced.
   std::string descr() {
     skip_space();
-    if (at_ < text_.size() && text_[at_] == '\'') return join("'", quoted(), "'");
+    if (at_ < text_.size() && text_[at_] == '\'') return deformseg::internal::join("'", quoted(), "'");
     if (at_ >= text_.size() || text_[at_] != '[') bad("expected the dtype");
     const std::size_t begin = at_;
     int depth = 0;
@@ -156,7 +160,7 @@ private:
       const std::string key = quoted();
       expect(':');
       const auto once = [&](bool& seen) {
-        if (seen) bad(join("'", key, "' given twice"));
+        if (seen) bad(deformseg::internal::join("'", key, "' given twice"));
         seen = true;
       };
       if (key == "descr") {
@@ -172,7 +176,7 @@ private:
         once(seen_shape);
         header.shape = shape();
       } else {
-        bad(join("unknown key '", key, "'"));
+        bad(deformseg::internal::join("unknown key '", key, "'"));
       }
       if (!take(',')) {
         expect('}');
@@ -205,14 +209,15 @@ inline std::uint64_t check_npy(const char* data, std::size_t size, const std::st
     return out;
   };
   if (without_spaces(header.descr) != without_spaces(descr))
-    throw invalid_input(join("its dtype is ", header.descr.substr(0, 200), ", not ", descr), {.file = file});
+    throw invalid_input(deformseg::internal::join("its dtype is ", header.descr.substr(0, 200), ", not ", descr),
+                        {.file = file});
   if (header.shape.size() != dimensions)
-    throw invalid_input(join("its array has ", std::to_string(header.shape.size()), " dimensions, not ",
-                             std::to_string(dimensions)),
+    throw invalid_input(deformseg::internal::join("its array has ", std::to_string(header.shape.size()),
+                                                  " dimensions, not ", std::to_string(dimensions)),
                         {.file = file});
   if (dimensions == 2 && header.shape[1] != columns)
-    throw invalid_input(join("its array has ", std::to_string(header.shape[1]), " columns, the manifest says ",
-                             std::to_string(columns)),
+    throw invalid_input(deformseg::internal::join("its array has ", std::to_string(header.shape[1]),
+                                                  " columns, the manifest says ", std::to_string(columns)),
                         {.file = file});
   const std::uint64_t data_bytes = size - header.data_offset;
   const std::uint64_t row_bytes = item_bytes * (dimensions == 2 ? columns : 1);
@@ -221,9 +226,11 @@ inline std::uint64_t check_npy(const char* data, std::size_t size, const std::st
                                    : rows <= std::numeric_limits<std::uint64_t>::max() / row_bytes &&
                                          rows * row_bytes == data_bytes;
   if (!fits)
-    throw invalid_input(join("its shape (", std::to_string(rows), dimensions == 2 ? join(", ", std::to_string(columns)) : ",",
-                             ") does not match its ", std::to_string(data_bytes), " bytes of data"),
-                        {.file = file});
+    throw invalid_input(
+        deformseg::internal::join("its shape (", std::to_string(rows),
+                                  dimensions == 2 ? deformseg::internal::join(", ", std::to_string(columns)) : ",",
+                                  ") does not match its ", std::to_string(data_bytes), " bytes of data"),
+        {.file = file});
   return rows;
 }
 

@@ -4,7 +4,7 @@
 
 #include <deformseg/exceptions.h>
 #include <deformseg/store/internal/crc32.h>
-#include <deformseg/store/internal/file_io.h>
+#include <deformseg/internal/file_io.h>
 #include <deformseg/store/internal/npy.h>
 #include <deformseg/store/internal/utf8.h>
 
@@ -43,7 +43,8 @@ public:
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) {
       if (errno == ENOENT) throw Store_file_vanished{file};
-      throw invalid_input(join("cannot open: ", last_system_error()), {.file = file});
+      throw invalid_input(deformseg::internal::join("cannot open: ", deformseg::internal::last_system_error()),
+                          {.file = file});
     }
     struct ::stat status {};
     if (::fstat(fd, &status) != 0 || !S_ISREG(status.st_mode)) {
@@ -53,18 +54,19 @@ public:
     const auto bytes = static_cast<std::uint64_t>(status.st_size);
     if (bytes != expected_bytes) {
       ::close(fd);
-      throw invalid_input(join(std::to_string(bytes), " bytes, the manifest says ", std::to_string(expected_bytes),
-                               bytes < expected_bytes ? ": truncated" : ": longer than written"),
-                          {.file = file});
+      throw invalid_input(
+          deformseg::internal::join(std::to_string(bytes), " bytes, the manifest says ", std::to_string(expected_bytes),
+                                    bytes < expected_bytes ? ": truncated" : ": longer than written"),
+          {.file = file});
     }
     auto mapped = std::shared_ptr<Mapped_file>(new Mapped_file);
     mapped->size_ = static_cast<std::size_t>(bytes);
     if (bytes > 0) {
       void* address = ::mmap(nullptr, mapped->size_, PROT_READ, MAP_SHARED, fd, 0);
       if (address == MAP_FAILED) {
-        const std::string reason = last_system_error();
+        const std::string reason = deformseg::internal::last_system_error();
         ::close(fd);
-        throw invalid_input(join("cannot map it into memory: ", reason), {.file = file});
+        throw invalid_input(deformseg::internal::join("cannot map it into memory: ", reason), {.file = file});
       }
       mapped->data_ = static_cast<const char*>(address);
     }
@@ -93,14 +95,18 @@ class File_lock {
 public:
   explicit File_lock(const std::filesystem::path& path) {
     fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw invalid_input(join("cannot open the store's lock file: ", last_system_error()), {.file = path.string()});
+    if (fd_ < 0)
+      throw invalid_input(
+          deformseg::internal::join("cannot open the store's lock file: ", deformseg::internal::last_system_error()),
+          {.file = path.string()});
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
       const bool busy = errno == EWOULDBLOCK;
-      const std::string reason = last_system_error();
+      const std::string reason = deformseg::internal::last_system_error();
       ::close(fd_);
-      throw invalid_input(busy ? "another append to this store is running (it holds this lock file); one writer at a time"
-                               : join("cannot lock the store: ", reason),
-                          {.file = path.string()});
+      throw invalid_input(
+          busy ? "another append to this store is running (it holds this lock file); one writer at a time"
+               : deformseg::internal::join("cannot lock the store: ", reason),
+          {.file = path.string()});
     }
   }
   File_lock(const File_lock&) = delete;
@@ -123,7 +129,7 @@ public:
     partial_ = path_;
     partial_ += ".partial-" + std::to_string(::getpid());
     fd_ = ::open(partial_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd_ < 0) fail(join("cannot write: ", last_system_error()));
+    if (fd_ < 0) fail(deformseg::internal::join("cannot write: ", deformseg::internal::last_system_error()));
     const std::string zeros(header_bytes, ' ');
     put(zeros.data(), zeros.size());
   }
@@ -153,10 +159,11 @@ public:
     if (::pwrite(fd_, header.data(), header.size(), 0) != static_cast<ssize_t>(header.size()) || ::fsync(fd_) != 0 ||
         ::close(fd_) != 0) {
       fd_ = -1;
-      fail(join("cannot write: ", last_system_error()));
+      fail(deformseg::internal::join("cannot write: ", deformseg::internal::last_system_error()));
     }
     fd_ = -1;
-    if (::rename(partial_.c_str(), path_.c_str()) != 0) fail(join("cannot write: ", last_system_error()));
+    if (::rename(partial_.c_str(), path_.c_str()) != 0)
+      fail(deformseg::internal::join("cannot write: ", deformseg::internal::last_system_error()));
     finished_ = true;
     return header_bytes + items_ * item_bytes_;
   }
@@ -175,7 +182,7 @@ private:
     while (bytes > 0) {
       const ssize_t done = ::write(fd_, at, static_cast<std::size_t>(std::min<std::uint64_t>(bytes, 1u << 30)));
       if (done < 0 && errno == EINTR) continue;
-      if (done <= 0) fail(join("cannot write: ", last_system_error()));
+      if (done <= 0) fail(deformseg::internal::join("cannot write: ", deformseg::internal::last_system_error()));
       at += done;
       bytes -= static_cast<std::uint64_t>(done);
     }
