@@ -15,9 +15,14 @@ compares motion signatures (its kernel, DTW and normalisation: `described_matrix
 queries scored against their whole set with the evaluation's rules. A fixed description chooses
 nothing, so each group's figures are those of a group left out. `default` reproduces the library's
 default (`deformseg evaluate`'s figures to the last digit); `bands-3` and `bands-4` the option
-`bands`. Two rows re-rank the default's matrix instead, reading no label: `body-centred` takes from
-each similarity the query's mean similarity to the candidate's body (the body's offset), `hubs`
-half the candidate's mean similarity to its 10 nearest clips of other bodies.
+`bands`; `vertical-W` the default with vertical rates weighted W (0.2 in the default); `axes-W` the
+default and speeds across and along the body (x and z), weighted W. `learned-S` maps the default's
+rows by a metric learned, without labels, from copies of the other sets' clips (played 0.8x and
+1.25x, their motion scaled 0.75 and 1.25): the inverse square root of the copies' row differences'
+covariance, shrunk towards the identity by S. Two rows re-rank the default's matrix instead, reading
+no label: `body-centred` takes from each similarity the query's mean similarity to the candidate's
+body (the body's offset), `hubs` half the candidate's mean similarity to its 10 nearest clips of
+other bodies.
 """
 import argparse
 import json
@@ -96,7 +101,7 @@ def displacements(p, lag, unit):
     return (p[np.minimum(t + lag, len(p) - 1)] - p[np.maximum(t - lag, 0)]) * unit / (2 * lag / FPS)
 
 
-def rows(p, regions, unit, k=8, transform=None):
+def rows(p, regions, unit, k=8, transform=None, vertical_weight=VERTICAL_WEIGHT):
     """Per lag, each region's (a vertex weighting's) speed quantiles, then its vertical rates'."""
     speeds, verticals = [], []
     for lag in LAGS:
@@ -106,8 +111,19 @@ def rows(p, regions, unit, k=8, transform=None):
         for w in regions:
             on = w > 0
             speeds.append(np.log(np.maximum(quantiles(np.linalg.norm(d[:, on], axis=2), w[on], k), FLOOR)))
-            verticals.append(np.sqrt(VERTICAL_WEIGHT) * np.arcsinh(quantiles(d[:, on, 1], w[on], k) / VERTICAL_UNIT))
+            verticals.append(np.sqrt(vertical_weight) * np.arcsinh(quantiles(d[:, on, 1], w[on], k) / VERTICAL_UNIT))
     return np.hstack(speeds + verticals)
+
+
+def axis_speeds(p, w, unit, weight):
+    """The default's rows, then per lag the quantiles of the speeds across the body (x, either way)
+    and along it (z, either way), as logarithms weighted by `weight`: a run and a strafe apart."""
+    along = []
+    for axis in (0, 2):
+        for lag in LAGS:
+            d = np.abs(displacements(p, lag, unit)[:, :, axis])
+            along.append(np.sqrt(weight) * np.log(np.maximum(quantiles(d, w, 8), FLOOR)))
+    return np.hstack([rows(p, [w], unit)] + along)
 
 
 def cut(values, count):
@@ -139,6 +155,10 @@ def describe(name, p, faces):
         return rows(p, [sum(regions_of(cut(height, 3), w, 3)) / 3], 1 / radius)
     if name == "vertex-weights":
         return rows(p, [np.full(len(w), 1 / len(w))], 1 / radius)
+    if name.startswith("vertical-"):
+        return rows(p, [w], 1 / radius, vertical_weight=float(name[9:]))
+    if name.startswith("axes-"):
+        return axis_speeds(p, w, 1 / radius, float(name[5:]))
     if name == "height-unit":
         return rows(p, [w], 1 / (height.max() - height.min()))
     if name in ("local", "local-and-travel"):
@@ -208,9 +228,62 @@ def homecoming(p, w, radius):
     return float(np.log(max(np.sqrt(((p[-1] - p[0]) ** 2).sum(-1) @ w) / radius, 1e-3)))
 
 
+# ---- a metric learned from augmented copies -----------------------------------------------------
+
+def resampled(p, speed):
+    """`p` played `speed` times as fast (positions interpolated linearly), and the original's time
+    of each of its frames."""
+    times = np.arange(0, len(p) - 1 + 1e-9, speed)
+    i = np.minimum(np.floor(times).astype(int), max(len(p) - 2, 0))
+    f = (times - i)[:, None, None]
+    return (1 - f) * p[i] + f * p[np.minimum(i + 1, len(p) - 1)], times
+
+
+def augmented(path):
+    """A clip's default rows and the differences of its copies' rows from them, row by row along
+    the time they share: played 0.8x and 1.25x, and its motion scaled 0.75 and 1.25 from its first
+    pose (each vertex's path about where it starts), each a copy of the same motion."""
+    z = np.load(path)
+    p, faces = z["positions"].astype(np.float64), z["faces"]
+    original = describe("default", p, faces)
+    differences = []
+    for speed in (0.8, 1.25):
+        copy, times = resampled(p, speed)
+        differences.append(describe("default", copy, faces) - original[np.rint(times).astype(int)])
+    for scale in (0.75, 1.25):
+        differences.append(describe("default", p[:1] + scale * (p - p[:1]), faces) - original)
+    return original, np.vstack(differences)
+
+
+def learned_map(training, shrink):
+    """The map (N + shrink tr(N)/W I)^(-1/2), N the mean outer product of `training`'s copy
+    differences, scaled so that the mean squared distance of random pairs of its rows stays."""
+    differences = np.vstack([d for _, d in training])
+    nuisance = differences.T @ differences / len(differences)
+    values, vectors = np.linalg.eigh(nuisance + shrink * np.trace(nuisance) / len(nuisance) * np.eye(len(nuisance)))
+    m = vectors @ np.diag(values ** -0.5) @ vectors.T
+    rows_ = np.vstack([r for r, _ in training])
+    pairs = rows_[np.random.default_rng(0).choice(len(rows_), 4000)]
+    gap = pairs[:2000] - pairs[2000:]
+    return m * np.sqrt((gap ** 2).sum(1).mean() / ((gap @ m) ** 2).sum(1).mean())
+
+
+def learned_matrices(sets, pool, program, shrink):
+    """Each set's rows mapped by the map learned on the other sets' copies (the characters' on the
+    library's and the cute fish's, and so on): no clip of a set teaches its own map."""
+    described_sets = [pool.map(augmented, [c["path"] for c in clips], chunksize=4) for _, clips in sets]
+    matrices = []
+    for k, described_set in enumerate(described_sets):
+        m = learned_map([d for j, other in enumerate(described_sets) if j != k for d in other], shrink)
+        matrices.append(similarity_matrix([rows_ @ m for rows_, _ in described_set], program))
+    return matrices
+
+
 DESCRIPTIONS = ["default", "bands-3", "bands-4", "bands-3x2-front-back", "bands-3-left-right",
                 "bands-3-equal-weights", "vertex-weights", "height-unit", "local", "local-and-travel",
-                "amplitude-0", "amplitude-0.5", "bands-3-and-alternation", "bands-3-and-return"]
+                "amplitude-0", "amplitude-0.5", "bands-3-and-alternation", "bands-3-and-return",
+                "vertical-0.6", "axes-0.25"]
+LEARNED = ["learned-1", "learned-3"]
 RERANKINGS = ["body-centred", "hubs"]
 
 
@@ -297,7 +370,7 @@ def report(name, sets, matrices):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("names", nargs="*", default=DESCRIPTIONS + RERANKINGS)
+    parser.add_argument("names", nargs="*", default=DESCRIPTIONS + LEARNED + RERANKINGS)
     parser.add_argument("--matrix", default="build-bench/test/bench/described_matrix")
     parser.add_argument("--cache", type=Path, default=Path(tempfile.gettempdir()) / "deformseg-descriptions")
     args = parser.parse_args()
@@ -305,6 +378,9 @@ def main():
     default_matrices = None
     with Pool(2) as pool:
         for name in args.names:
+            if name in LEARNED:
+                report(name, sets, learned_matrices(sets, pool, args.matrix, float(name[8:])))
+                continue
             if name in RERANKINGS:
                 if default_matrices is None:
                     default_matrices = [similarity_matrix(pool.map(described, [("default", c["path"]) for c in clips]),
