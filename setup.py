@@ -3,7 +3,12 @@
 The compiled extension deformseg._deformseg is the CMake target `_deformseg` (python/CMakeLists.txt):
 build_ext configures the project with the Python module alone (no tests, examples or tool) for the
 Python that runs pip, builds that target and copies it into the wheel beside the pure-Python files
-of python/deformseg/. CMake's build folder is kept below build-python/, so that a second
+of python/deformseg/. Only the target and what it links (the front end, frontend/) are compiled: no
+tool, examples, tests or precompiled header.
+
+Nothing is written into the source tree, which may be read-only: setuptools' build folder (the CMake
+build among it) and its egg-info folder go to a temporary folder, removed when pip's build step ends,
+or to DEFORMSEG_PIP_BUILD_DIR when set, a folder the user names and keeps, so that a second
 `pip install .` recompiles only what changed.
 
 Environment: CMAKE_ARGS, more arguments for CMake's configuration (`-DDEFORMSEG_ARCH=` for a
@@ -11,7 +16,8 @@ wheel that runs on any x86-64, `-DCMAKE_CXX_COMPILER=clang++`); CMAKE_BUILD_PARA
 number of compile jobs (default: every core); DEFORMSEG_CMAKE_BUILD_DIR, a build folder of this
 project configured already with the Python module (-DDEFORMSEG_BUILD_PYTHON=ON) for the Python that
 runs pip, whose target is built (nothing, when it is up to date) instead of configuring one here:
-a build that makes the module anyway packages it without compiling it twice.
+a build that makes the module anyway packages it without compiling it twice; DEFORMSEG_PIP_BUILD_DIR,
+the folder for setuptools' and CMake's build files (default: a temporary folder, removed afterwards).
 """
 import os
 import pathlib
@@ -21,12 +27,25 @@ import shutil
 import subprocess
 import sys
 import sysconfig
+import tempfile
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 
 ROOT = pathlib.Path(__file__).resolve().parent
-BUILD_BASE = "build-python"  # below the tree's root, beside CMake's usual build/ (both git-ignored)
+
+
+def build_base():
+    """The folder setuptools builds in (its build/ and egg-info), CMake's build folder below it, and
+    whether it is a temporary one to remove: never the source tree, so that a read-only checkout
+    installs and a checkout is left as it was. pip runs this script once per build step (metadata,
+    wheel), each in a process of its own, so a temporary folder lives for one step."""
+    named = os.environ.get("DEFORMSEG_PIP_BUILD_DIR")
+    if named:
+        folder = pathlib.Path(named).expanduser().resolve()
+        folder.mkdir(parents=True, exist_ok=True)
+        return folder, False
+    return pathlib.Path(tempfile.mkdtemp(prefix="deformseg-pip-build-")), True
 
 
 def project_version():
@@ -93,10 +112,17 @@ def require_wheel_support():
 
 
 require_wheel_support()
-(ROOT / BUILD_BASE).mkdir(exist_ok=True)  # egg_info writes its folder there, not in the tree
-setup(
-    version=project_version(),
-    ext_modules=[CMakeExtension("deformseg._deformseg", target="_deformseg")],
-    cmdclass={"build_ext": CMakeBuild},
-    options={"build": {"build_base": BUILD_BASE}, "egg_info": {"egg_base": BUILD_BASE}},
-)
+BUILD_BASE, TEMPORARY = build_base()
+try:
+    # egg_base: egg_info writes deformseg.egg-info beside setup.py otherwise (pip's metadata step
+    # names its own folder on the command line, which wins over these options).
+    setup(
+        version=project_version(),
+        ext_modules=[CMakeExtension("deformseg._deformseg", target="_deformseg")],
+        cmdclass={"build_ext": CMakeBuild},
+        options={"build": {"build_base": str(BUILD_BASE)}, "egg_info": {"egg_base": str(BUILD_BASE)}},
+    )
+finally:
+    # The wheel is in pip's own folder by now; the compiled objects are not needed again.
+    if TEMPORARY:
+        shutil.rmtree(BUILD_BASE, ignore_errors=True)
