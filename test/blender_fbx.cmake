@@ -10,15 +10,8 @@
 # Arguments: -DTESTS= the unit tests, -DDATA= the shared data, -DSCRIPT= export_fbx.py, -DOUT= a
 # folder for the exports, -DFBX2GLTF= FBX2glTF (optional). DEFORMSEG_BLENDER names another Blender,
 # DEFORMSEG_FBX2GLTF another FBX2glTF.
-if(DEFINED ENV{DEFORMSEG_BLENDER})
-  set(BLENDER "$ENV{DEFORMSEG_BLENDER}")
-else()
-  find_program(BLENDER blender)
-endif()
-if(NOT BLENDER OR NOT EXISTS "${BLENDER}")
-  message("SKIPPED: Blender not found (Debian's package blender; DEFORMSEG_BLENDER names another)")
-  return()
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/find_blender.cmake)
+find_blender_or_skip()
 if(NOT EXISTS "${DATA}/characters/Fox.glb" OR NOT EXISTS "${DATA}/characters/Knight.glb")
   message("SKIPPED: no shared glTF characters Fox.glb and Knight.glb in ${DATA}/characters")
   return()

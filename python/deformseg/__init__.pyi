@@ -178,7 +178,14 @@ class EvolvingGraph:
     num_frames: int
     num_segments: int
     key_frames: List[KeyFrame]
-    def __init__(self, num_frames: int, num_segments: int, key_frames: List[KeyFrame] = ...) -> None: ...
+    face_segments: Optional[npt.NDArray[np.int32]]  # (T, F), -1 rigid; with evolving_graph(face_segments=True)
+    def __init__(
+        self,
+        num_frames: int,
+        num_segments: int,
+        key_frames: List[KeyFrame] = ...,
+        face_segments: Optional[npt.NDArray[np.int32]] = ...,
+    ) -> None: ...
     def __len__(self) -> int: ...
     def __getitem__(self, index: int) -> KeyFrame: ...
     def __iter__(self) -> Iterator[KeyFrame]: ...
@@ -199,6 +206,7 @@ def evolving_graph(
     hysteresis: float = 0.0,
     contact_distance: float = 0.01,
     rigid_tolerance: float = 0.002,
+    face_segments: bool = False,
 ) -> EvolvingGraph: ...
 
 class Similarity:

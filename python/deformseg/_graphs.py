@@ -10,6 +10,7 @@ from . import _deformseg
 
 if TYPE_CHECKING:  # networkx is optional: only to_networkx and ged on networkx graphs need it
     import networkx
+    import numpy
 
 
 def _networkx() -> Any:
@@ -72,11 +73,14 @@ class KeyFrame:
 class EvolvingGraph:
     """The evolving graph of an animation (deformseg::spatiotemporal::Evolving_graph): its key frames in time order,
     which cover frames 0..num_frames-1 exactly once, and the number of spatio-temporal segments
-    (deformed node ids are in [0, num_segments)). A sequence of KeyFrame."""
+    (deformed node ids are in [0, num_segments)). A sequence of KeyFrame. face_segments, when
+    evolving_graph was asked for it: each triangle's segment in each frame, a (T, F) int32 array,
+    -1 where the triangle is rigid (what the tool's ``spatiotemporal --mesh-dir`` colours)."""
 
     num_frames: int
     num_segments: int
     key_frames: List[KeyFrame] = field(default_factory=list)
+    face_segments: Optional["numpy.ndarray"] = field(default=None, compare=False)
 
     def __len__(self) -> int:
         return len(self.key_frames)
@@ -110,7 +114,8 @@ class EvolvingGraph:
 def evolving_graph(animation: _deformseg.Animation, *, threshold: float = 0.5, reference: Optional[str] = None,
                    reference_mesh: Optional[Union[str, "os.PathLike[str]"]] = None, sigma: Optional[float] = None,
                    min_triangles: int = 10, min_frames: int = 6, max_island: int = 30, min_area: float = 0.0, hysteresis: float = 0.0,
-                   contact_distance: float = 0.01, rigid_tolerance: float = 0.002) -> EvolvingGraph:
+                   contact_distance: float = 0.01, rigid_tolerance: float = 0.002,
+                   face_segments: bool = False) -> EvolvingGraph:
     """The spatio-temporal segmentation of `animation` and the evolving graph of its key frames
     (deformseg::spatiotemporal::evolving_graph with Spatiotemporal_options; the tool's ``spatiotemporal``).
 
@@ -127,16 +132,18 @@ def evolving_graph(animation: _deformseg.Animation, *, threshold: float = 0.5, r
     contact_distance (default 0.01) and rigid_tolerance (default 0.002), shares of the rest pose's
     diagonal: separate parts that touch, or that move as one rigid body, are neighbours (0 and 0:
     shared edges only, the thesis; deformseg::spatiotemporal::part_links).
+    face_segments (default False): also each triangle's segment in each frame
+    (EvolvingGraph.face_segments, 4 T F bytes).
     Node areas are shares of the mesh's area in frame 0. Raises InvalidInput as the library does.
     Complexity O(T F) besides the strain's O(T F) and part_links'. Releases the GIL.
     """
     record = _deformseg._evolving_graph(animation, threshold, reference, reference_mesh, sigma, min_triangles,
                                         min_frames, max_island, min_area, hysteresis, contact_distance,
-                                        rigid_tolerance)
+                                        rigid_tolerance, face_segments=face_segments)
     return EvolvingGraph(record["frames"], record["segments"], [
         KeyFrame(k["first"], k["last"], [Node(n["kind"], n["segment"], n["triangles"], n["area"]) for n in k["nodes"]],
                  [tuple(edge) for edge in k["edges"]])
-        for k in record["key_frames"]])
+        for k in record["key_frames"]], record.get("face_segments"))
 
 
 GraphLike = Union[KeyFrame, "networkx.Graph"]

@@ -111,6 +111,22 @@ def test_evolving_graph_of_a_character_as_tool(tool, characters):
     graph = deformseg.evolving_graph(deformseg.read_animation(knight), min_frames=4)
     check_evolving_graph(graph, document)
     assert max(len(k.nodes) for k in graph) <= 10  # its parts touch: not the 46 nodes of shared edges alone
+    assert graph.face_segments is None  # not asked for
+
+
+def test_face_segments_are_the_key_frames_segments(tool, characters):
+    """Each triangle's segment in each frame: in every frame of a key frame, the segments present
+    are exactly its deformed nodes'; the graph is the one made without them."""
+    knight = deformseg.read_animation(f"{characters / 'Knight.glb'}#Walking_A")
+    graph = deformseg.evolving_graph(knight, min_frames=4, face_segments=True)
+    labels = graph.face_segments
+    assert labels.shape == (knight.num_frames, knight.num_faces) and labels.dtype == np.int32
+    assert labels.min() >= -1 and labels.max() < graph.num_segments and (labels == -1).any()
+    for key in graph:
+        deformed = {node.segment for node in key.nodes if node.segment is not None}
+        for t in range(key.first, key.last + 1):
+            assert set(np.unique(labels[t][labels[t] >= 0]).tolist()) == deformed, (key.first, t)
+    assert graph == deformseg.evolving_graph(knight, min_frames=4)  # face_segments does not compare
 
 
 # ---- similarity --------------------------------------------------------------------------------
