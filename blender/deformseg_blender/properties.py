@@ -47,8 +47,8 @@ class DeformsegSettings(bpy.types.PropertyGroup):
     # Look
     look_mode: EnumProperty(name="Colour by", items=[
         ('STRAIN', "Strain", "Normalised strain of each triangle against the first frame"),
-        ('SEGMENTS', "Segments", "Spatio-temporal segmentation: each segment in a colour of its own, rigid triangles grey; "
-                                 "key frames of the evolving graph as markers"),
+        ('SEGMENTS', "Segments", "Spatio-temporal segmentation: each segment in a colour of its own, rigid "
+                                 "triangles grey; key frames of the evolving graph as markers"),
         ('DEVIATION', "Deviation", "Normalised strain against a chosen frame: how far each triangle is from its "
                                    "shape then"),
     ])
