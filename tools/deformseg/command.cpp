@@ -30,18 +30,31 @@ void add_input(CLI::App& command, std::string& input, Input_options& options) {
 
 namespace {
 
-frontend::Read_input read_one(const std::string& input, const Input_options& options, bool first_clip_by_default) {
-  progress("reading " + input);
-  frontend::Read_input read = frontend::read_input(input, options, frontend::Front::command_line,
-                                                   first_clip_by_default);
+// What an input read whole (frontend::Read_input) or frame by frame (frontend::Stream_read) says
+// once open: the clip it plays and what the repair changed.
+template <class Read>
+void report_opened(const Read& read, const Input_options& options) {
   if (read.gltf)
     progress("clip \"" + read.gltf->clip + "\", " + std::to_string(read.gltf->frames) + " frames at " +
              nlohmann::json(options.fps).dump() + " fps");
   if (read.repair.changed()) progress("repaired: " + frontend::describe(read.repair));
+}
+
+// The warnings its frames gave: outlying vertices, a body that the clip moves in part.
+template <class Read>
+void report_warnings(const std::string& input, const Read& read, const Input_options& options) {
   if (const std::string warning = read.outliers.warning(frontend::Front::command_line); !warning.empty())
     progress("warning: " + input + ": " + warning);
   if (const std::string warning = frontend::body_fit_warning(read, options); !warning.empty())
     progress("warning: " + input + ": " + warning);
+}
+
+frontend::Read_input read_one(const std::string& input, const Input_options& options, bool first_clip_by_default) {
+  progress("reading " + input);
+  frontend::Read_input read = frontend::read_input(input, options, frontend::Front::command_line,
+                                                   first_clip_by_default);
+  report_opened(read, options);
+  report_warnings(input, read, options);
   return read;
 }
 
@@ -49,17 +62,10 @@ frontend::Read_input read_one(const std::string& input, const Input_options& opt
 
 void report_stream(const std::string& input, const frontend::Stream_read& read, const Input_options& options,
                    bool done) {
-  if (!done) {
-    if (read.gltf)
-      progress("clip \"" + read.gltf->clip + "\", " + std::to_string(read.gltf->frames) + " frames at " +
-               nlohmann::json(options.fps).dump() + " fps");
-    if (read.repair.changed()) progress("repaired: " + frontend::describe(read.repair));
-    return;
-  }
-  if (const std::string warning = read.outliers.warning(frontend::Front::command_line); !warning.empty())
-    progress("warning: " + input + ": " + warning);
-  if (const std::string warning = frontend::body_fit_warning(read, options); !warning.empty())
-    progress("warning: " + input + ": " + warning);
+  if (done)
+    report_warnings(input, read, options);
+  else
+    report_opened(read, options);
 }
 
 frontend::Read_input read_input(const std::string& input, const Input_options& options, bool first_clip_by_default) {

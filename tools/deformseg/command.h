@@ -67,7 +67,6 @@ nlohmann::json sources(const frontend::Stream_read& input, const Input_options& 
 void report_stream(const std::string& input, const frontend::Stream_read& read, const Input_options& options,
                    bool done);
 
-
 /// The tool's one rule for what a command prints: its summary in words on standard output, and,
 /// with `--json FILE`, the JSON document written to FILE as well; `--json -` puts the JSON on
 /// standard output in the summary's place, as does any other output written to '-'
