@@ -10,6 +10,8 @@
 #if DEFORMSEG_HAS_ASSIMP
 #include <deformseg/io/bvh.h>
 #include <deformseg/io/gltf.h>
+
+#include <tiny_gltf.h>  // the model bvh_model gives
 #endif
 
 #include <exception>

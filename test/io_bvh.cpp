@@ -4,10 +4,13 @@
 // Fox's own body and on the body made from the BVH's skeleton.
 #include "test_support.h"
 
+#include <deformseg/io/config.h>
+
 #if DEFORMSEG_HAS_ASSIMP
 
 #include <deformseg/io/bvh.h>
 #include <deformseg/io/gltf.h>
+#include <deformseg/io/internal/gltf_file.h>
 #include <deformseg/io/read_animation.h>
 
 #include <Eigen/Geometry>

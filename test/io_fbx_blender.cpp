@@ -4,12 +4,16 @@
 // frame, with the glTF files they came from.
 #include "test_support.h"
 
+#include <deformseg/io/config.h>
+
 #if DEFORMSEG_HAS_ASSIMP
 
 #include "point_sets.h"
 
 #include <deformseg/io/fbx_collada.h>
 #include <deformseg/io/gltf.h>
+#include <deformseg/io/internal/assimp_model.h>
+#include <deformseg/io/internal/gltf_file.h>
 
 #include <assimp/commonMetaData.h>
 #include <assimp/scene.h>

@@ -3,12 +3,16 @@
 // and the shared characters (../shared/data/fbx-collada).
 #include "test_support.h"
 
+#include <deformseg/io/config.h>
+
 #if DEFORMSEG_HAS_ASSIMP
 
 #include "point_sets.h"
 
 #include <deformseg/io/fbx_collada.h>
 #include <deformseg/io/gltf.h>
+#include <deformseg/io/internal/assimp_model.h>
+#include <deformseg/io/internal/gltf_file.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/similarity/motion_similarity.h>
 

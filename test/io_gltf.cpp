@@ -5,6 +5,7 @@
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/frame_stream.h>
 #include <deformseg/io/gltf.h>
+#include <deformseg/io/internal/gltf_file.h>
 #include <deformseg/io/outlying_vertices.h>
 #include <deformseg/io/read_animation.h>
 #include <deformseg/io/frame_sequence.h>

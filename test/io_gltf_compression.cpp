@@ -1,6 +1,8 @@
 // Compressed glTF (io/gltf.h with io/internal/gltf_decompression.h): copies of the shared
 // characters compressed here with libdraco's and libmeshoptimizer's encoders read as the originals,
 // within the quantisation step; damaged or absurd compressed data are refused, named.
+#include <deformseg/io/config.h>
+
 #if DEFORMSEG_HAS_DRACO && DEFORMSEG_HAS_MESHOPT
 #include "gltf_compression.h"
 #include "gltf_writer.h"

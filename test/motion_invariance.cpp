@@ -19,6 +19,7 @@
 
 #include <deformseg/evaluation/motion_labels.h>
 #include <deformseg/io/gltf.h>
+#include <deformseg/io/internal/gltf_accessor.h>
 #include <deformseg/similarity/motion_similarity.h>
 
 #include <tiny_gltf.h>

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <deformseg/io/character_files.h>
+#include <deformseg/io/config.h>
 #include <deformseg/io/frame_sequence.h>
 #if DEFORMSEG_HAS_GLTF
 #include <deformseg/io/gltf.h>

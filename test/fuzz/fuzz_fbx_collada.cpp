@@ -10,6 +10,7 @@
 
 #include <deformseg/io/fbx_collada.h>
 #include <deformseg/io/gltf.h>
+#include <deformseg/io/internal/assimp_model.h>
 
 #include <assimp/scene.h>
 

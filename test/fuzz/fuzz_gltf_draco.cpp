@@ -4,6 +4,7 @@
 #include "fuzz_support.h"
 
 #include <deformseg/io/gltf.h>
+#include <deformseg/io/internal/gltf_document.h>
 
 #include <vector>
 

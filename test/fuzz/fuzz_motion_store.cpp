@@ -70,7 +70,7 @@ void read_whole(const fs::path& folder) {
   const store::Motion_store store = store::Motion_store::open(folder, store::Verify::checksums);
   float sum = 0;
   for (std::size_t i = 0; i < store.size(); ++i) {
-    const similarity::Motion_signature_view view = store.view(i);
+    const signatures::Motion_signature_view view = store.view(i);
     for (std::size_t k = 0; k < view.rows * view.width; ++k) sum += view.values[k];
     for (const std::uint32_t frame : store.frames(i)) sum += static_cast<float>(frame);
     for (const float value : store.summary(i)) sum += value;

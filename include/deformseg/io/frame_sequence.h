@@ -452,4 +452,10 @@ std::vector<std::filesystem::path> write_sequence(const mesh::Deforming_mesh<Gra
   return files;
 }
 
+// The instance of the default types, compiled in deformseg's io library (src/io/frame_sequence.cpp).
+/// @cond
+extern template mesh::Deforming_mesh<mesh::Surface_mesh, double>
+read_frame_sequence<mesh::Surface_mesh, double>(const std::string&, const Frame_sequence_options&, Repair_report*);
+/// @endcond
+
 }  // namespace deformseg::io

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/io/config.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/internal/file_io.h>
 #include <deformseg/io/mesh_repair.h>

@@ -8,55 +8,46 @@
 /// here: the default scene's node hierarchy, every TRIANGLES primitive of every mesh node
 /// instance, linear blend skinning, morph targets, the LINEAR, STEP and CUBICSPLINE samplers,
 /// sparse and normalised-integer accessors (KHR_mesh_quantization).
+///
+/// The header declares: deformseg's io library parses and samples (src/io/gltf.cpp), so that a
+/// program that reads glTF compiles no parser. Available when deformseg was built with tinygltf
+/// (`DEFORMSEG_HAS_GLTF` in `deformseg/io/config.h`).
 #pragma once
 
-#if !__has_include(<tiny_gltf.h>)
-#error "deformseg/io/gltf.h needs tinygltf (Debian: libtinygltf-dev), linked as TinyGLTF::TinyGLTF"
+#include <deformseg/io/config.h>
+
+#if !DEFORMSEG_HAS_GLTF
+#error "deformseg/io/gltf.h needs a deformseg built with tinygltf (Debian: libtinygltf-dev nlohmann-json3-dev)"
 #endif
 
-#include <deformseg/mesh/default_mesh.h>
-#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/io/character_files.h>
-#include <deformseg/io/internal/gltf_animation.h>
-#include <deformseg/io/internal/file_io.h>
-#include <deformseg/io/internal/gltf_binding.h>
-#include <deformseg/io/internal/gltf_decompression.h>
-#include <deformseg/io/internal/gltf_mesh.h>
-#include <deformseg/io/internal/gltf_welding.h>
-#include <deformseg/io/internal/skeleton_body.h>
-#include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/mesh_repair.h>
-#include <deformseg/threads.h>
+#include <deformseg/mesh/default_mesh.h>
+#include <deformseg/mesh/deforming_mesh.h>
 
-// FBX, Collada and BVH files are read when deformseg was configured with Assimp (its CMake target then
-// defines DEFORMSEG_HAS_ASSIMP and links assimp::assimp).
-#if DEFORMSEG_HAS_ASSIMP
-#include <deformseg/io/bvh.h>
-#include <deformseg/io/fbx_collada.h>
-#endif
-
-#include <tiny_gltf.h>
-
-#include <algorithm>
 #include <array>
-#include <atomic>
-#include <cctype>
-#include <cmath>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
-#include <exception>
 #include <filesystem>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <span>
 #include <string>
-#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+// tinygltf's model, which a `Gltf_file` may be made from and the FBX, Collada and BVH readers give:
+// declared only, so that this header needs no parser (who builds one includes <tiny_gltf.h>).
+namespace tinygltf {
+class Model;
+}  // namespace tinygltf
+
+namespace deformseg::io::internal::gltf {
+struct Loaded_file;
+}  // namespace deformseg::io::internal::gltf
 
 namespace deformseg::io {
 
@@ -152,348 +143,45 @@ struct Gltf_contents {
 
 }  // namespace deformseg::io
 
-namespace deformseg::io::internal::gltf {
-
-/// The most coordinates (T x 3V) a sampled clip may have: 4 GiB of doubles.
-inline constexpr std::size_t max_coordinates = std::size_t(1) << 29;
-
-// Images are never decoded: deformseg needs only the geometry.
-inline bool ignore_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*,
-                         int, void*) {
-  return true;
-}
-
-/// Throws for a required extension deformseg does not know; those that change only the look of a
-/// file are let through (compressed geometry is decoded before tinygltf parses the file).
-inline void refuse_unread_extension(const std::string& name) {
-  const bool known = name == "KHR_mesh_quantization" || name == "KHR_texture_transform" ||
-                     name == "KHR_texture_basisu" || name == "EXT_texture_webp" || name == "KHR_lights_punctual" ||
-                     name == "KHR_materials_variants" || name.starts_with("KHR_materials_");
-  if (!known) throw invalid_input("the file requires the glTF extension " + name + ", which deformseg does not know");
-}
-
-/// Refuses any required extension deformseg does not know.
-inline void check_extensions(const tinygltf::Model& model) {
-  for (const std::string& name : model.extensionsRequired) refuse_unread_extension(name);
-}
-
-/// Parses a .gltf or .glb file (told apart by the GLB magic, not the extension), its compressed
-/// geometry decoded first, or an FBX, Collada or BVH file (told by its extension) into the same
-/// structures.
-inline tinygltf::Model load_model(const std::filesystem::path& path) {
-  if (is_fbx_or_collada(path) || is_bvh(path)) {
-#if DEFORMSEG_HAS_ASSIMP
-    return is_bvh(path) ? bvh_model(path) : fbx_collada_model(path);
-#else
-    throw invalid_input("this deformseg was built without Assimp, which reads FBX, Collada and BVH files (Debian: "
-                        "libassimp-dev; link assimp::assimp and define DEFORMSEG_HAS_ASSIMP=1)");
-#endif
-  }
-  const File_bytes read = read_file_bytes(path);  // a missing file or a folder refused as every reader does
-  std::span<const unsigned char> file(reinterpret_cast<const unsigned char*>(read.begin()), read.size);
-  const std::string base_dir = path.parent_path().string();
-  Bytes decompressed;
-  if (names_compression(file)) {
-    decompressed = decompressed_glb(file, base_dir);
-    file = decompressed;
-  }
-  if (file.size() > std::numeric_limits<unsigned>::max())
-    throw invalid_input("a glTF file of " + std::to_string(file.size()) + " bytes: tinygltf reads files under 4 GiB");
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&ignore_image, nullptr);
-  tinygltf::Model model;
-  std::string err, warn;
-  bool loaded = false;
-  try {
-    loaded = is_glb(file) ? loader.LoadBinaryFromMemory(&model, &err, &warn, file.data(), unsigned(file.size()), base_dir)
-                          : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(file.data()),
-                                                       unsigned(file.size()), base_dir);
-  } catch (const std::exception& e) {
-    err = e.what();
-  }
-  if (!loaded) {
-    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-    throw invalid_input("not a valid glTF file: " + (err.empty() ? std::string("tinygltf refused it") : err));
-  }
-  return model;
-}
-
-/// The index of the clip `wanted` names (see `Gltf_read_options::clip`), or none when the file
-/// has no animation and none was asked.
-inline std::optional<std::size_t> select_clip(const tinygltf::Model& model, const std::string& wanted) {
-  const std::size_t count = model.animations.size();
-  if (wanted.empty()) {
-    if (count == 0) return std::nullopt;
-    return 0;
-  }
-  for (std::size_t i = 0; i < count; ++i)
-    if (model.animations[i].name == wanted) return i;
-  const bool digits = std::all_of(wanted.begin(), wanted.end(), [](char c) { return c >= '0' && c <= '9'; });
-  if (digits && wanted.size() < 10 && std::stoul(wanted) < count) return std::stoul(wanted);
-  if (count == 0) throw invalid_input("no clip '" + wanted + "': the file has no animation");
-  const auto lower = [](std::string text) {
-    std::ranges::transform(text, text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return text;
-  };
-  std::string list, same_letters;
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::string& name = model.animations[i].name;
-    list.append(i == 0 ? "" : ", ").append("'" + name + "'");
-    if (same_letters.empty() && lower(name) == lower(wanted)) same_letters = name;
-  }
-  const std::string hint = same_letters.empty() ? "" : " (clip names are case-sensitive: did you mean '" +
-                                                           same_letters + "'?)";
-  throw invalid_input("no clip '" + wanted + "'" + hint + "; the file's clips are " + list + " (or an index 0 to " +
-                      std::to_string(count - 1) + ")");
-}
-
-inline void check_options(const io::Gltf_read_options& options) {
-  mesh::check_frames_per_second(options.fps);
-  thread_count(options.threads);
-}
-
-/// Poses frame `t` of the `frames` frames of `clip` (or the rest pose) sampled at `fps` into `out`:
-/// every vertex (3V values), or those of `selection` when not null (3 per output vertex); throws
-/// naming the frame and the smallest scene vertex posed with a non-finite coordinate.
-inline void pose_frame(const Rig& rig, const Clip* clip, double fps, std::size_t frames, std::size_t t,
-                       const Vertex_selection* selection, Pose_scratch& scratch, double* out) {
-  const double time = clip ? frame_time(clip->start, clip->end, fps, t, frames) : 0.0;
-  if (selection) pose_selected_at(rig, clip, time, *selection, scratch, out);
-  else pose_at(rig, clip, time, scratch, out);
-  const std::size_t block = 3 * (selection ? selection->input.size() : rig.geometry.vertices);
-  if (std::all_of(out, out + block, [](double x) { return std::isfinite(x); })) return;
-  std::size_t vertex = rig.geometry.vertices;
-  for (std::size_t i = 0; i < block; ++i)
-    if (!std::isfinite(out[i])) vertex = std::min<std::size_t>(vertex, selection ? selection->input[i / 3] : i / 3);
-  throw invalid_input("vertex " + std::to_string(vertex) + " has a non-finite position", {.frame = t});
-}
-
-/// Samples every frame of `clip` (or the rest pose) into `positions`, every vertex or those of
-/// `selection` when not null, in parallel; throws the error of the lowest frame with a non-finite
-/// coordinate, whatever the number of threads.
-inline void sample_frames(const Rig& rig, const Clip* clip, double fps, std::size_t frames, int threads,
-                          const Vertex_selection* selection, std::span<double> positions) {
-  const std::size_t block = 3 * (selection ? selection->input.size() : rig.geometry.vertices);
-  const auto sample = [&](Pose_scratch& scratch, std::size_t t) {
-    pose_frame(rig, clip, fps, frames, t, selection, scratch, positions.data() + t * block);
-  };
-  deformseg::internal::parallel_for_with_locals(frames, threads, 1, [] { return Pose_scratch{}; }, sample);
-}
-
-/// A parsed file and the scene's geometry, read once for any number of clips; the clips of
-/// another file when it is bound to one (`Gltf_file`'s constructor of a body and its clips).
-struct Loaded_file {
-  tinygltf::Model model{};
-  Rig rig{};
-  std::optional<Bound_clips> clips{};
-};
-
-/// The model whose animations are the file's clips.
-inline const tinygltf::Model& clip_model(const Loaded_file& file) {
-  return file.clips ? *file.clips->model : file.model;
-}
-
-/// The clip `wanted` names among the file's clips (none for a file without animation), moving
-/// the file's nodes, with its index; errors in another file's clips name that file.
-inline std::optional<std::pair<std::size_t, Clip>> clip_of(const Loaded_file& file, const std::string& wanted) {
-  try {
-    const std::optional<std::size_t> index = select_clip(clip_model(file), wanted);
-    if (!index) return std::nullopt;
-    Clip clip = read_clip(clip_model(file), *index);
-    if (file.clips) clip = bound_clip(std::move(clip), file.model, *file.clips);
-    return std::pair{*index, std::move(clip)};
-  } catch (const invalid_input& e) {
-    if (!file.clips) throw;
-    throw e.located({.file = file.clips->file});
-  }
-}
-
-/// What a file without a mesh is told: every command reads a clip on some body.
-inline constexpr const char* no_mesh_hint =
-    "no mesh: play it on a body with --body FILE (the default scene has no triangle, and no clip moves a "
-    "skeleton of bones to make a body from)";
-
-/// Reads the scene of a parsed file; a scene without triangle gets the body made from its
-/// skeleton (`add_skeleton_body`), or is refused with `no_mesh_hint`.
-inline Loaded_file load_file(tinygltf::Model model) {
-  Loaded_file file{.model = std::move(model)};
-  check_extensions(file.model);
-  file.rig = read_rig(file.model);
-  if (file.rig.geometry.triangles.empty() && add_skeleton_body(file.model)) file.rig = read_rig(file.model);
-  if (file.rig.geometry.triangles.empty()) throw invalid_input(no_mesh_hint);
-  return file;
-}
-
-/// Samples the clip `options` names: every vertex, or the scene's vertices `vertices` when not
-/// null (then `num_vertices` is their number, and the triangles are left out).
-inline io::Sampled_gltf sample(const Loaded_file& file, const io::Gltf_read_options& options,
-                               const std::vector<std::uint32_t>* vertices = nullptr) {
-  check_options(options);
-  const Rig& rig = file.rig;
-  io::Sampled_gltf sampled;
-  std::optional<std::pair<std::size_t, Clip>> chosen = clip_of(file, options.clip);
-  const Clip* clip = chosen ? &chosen->second : nullptr;
-  auto& report = sampled.report;
-  report.frames = clip ? frame_count(clip->start, clip->end, options.fps) : 1;
-  if (clip) {
-    report.clip = clip->name;
-    report.clip_index = chosen->first;
-    report.start = clip->start;
-    report.end = clip->end;
-    std::tie(report.animated_joints, report.joints) = animated_joints(file.model, *clip);
-  }
-  report.skeleton_body = has_skeleton_body(file.model);
-  report.skipped = rig.geometry.skipped;
-  std::optional<Vertex_selection> selection;
-  if (vertices) selection = select_vertices(rig.geometry, *vertices);
-  sampled.num_vertices = vertices ? vertices->size() : rig.geometry.vertices;
-  if (report.frames > max_coordinates / (3 * std::max<std::size_t>(sampled.num_vertices, 1)))
-    throw invalid_input(std::to_string(report.frames) + " frames of " + std::to_string(sampled.num_vertices) +
-                        " vertices exceed the " + std::to_string(max_coordinates) + " coordinates deformseg samples");
-  sampled.positions.resize(report.frames * 3 * sampled.num_vertices);
-  sample_frames(rig, clip, options.fps, report.frames, options.threads, selection ? &*selection : nullptr,
-                sampled.positions);
-  if (!vertices) sampled.triangles = rig.geometry.triangles;
-  return sampled;
-}
-
-/// The clip `options` names (none for a file without animation) and its frame count at `options.fps`.
-inline std::pair<std::optional<Clip>, std::size_t> clip_and_frames(const Loaded_file& file,
-                                                                   const io::Gltf_read_options& options) {
-  check_options(options);
-  std::optional<std::pair<std::size_t, Clip>> chosen = clip_of(file, options.clip);
-  if (!chosen) return {std::nullopt, 1};
-  const std::size_t frames = frame_count(chosen->second.start, chosen->second.end, options.fps);
-  return {std::move(chosen->second), frames};
-}
-
-/// The connectivity every clip of the file shares: the scene's vertices welded by what the file
-/// fixes (see `gltf_welding.h`) when `options.weld`, then the triangles repaired once; the skin
-/// weights' repairs counted (or the first refused).
-inline io::Repaired_triangles repair_scene(const Rig& rig, const io::Repair_options& options) {
-  const Weight_defects& weights = rig.geometry.weights;
-  if (options.defects == io::Defect_policy::refuse && !weights.first.empty()) throw invalid_input(weights.first);
-  const std::span<const std::array<std::uint32_t, 3>> triangles(rig.geometry.triangles);
-  check_repair_input(std::span<const double>(), rig.geometry.vertices, triangles, options);
-  std::size_t skin_joints = 0;
-  for (const auto& joints : rig.skins.joints) skin_joints += joints.size();
-  std::vector<std::uint32_t> welded;
-  if (options.weld) welded = weld_scene_vertices(rig.geometry, skin_joints, options.weld_tolerance);
-  io::Repaired_triangles repaired =
-      repair_welded(triangles, welding_of(std::move(welded), rig.geometry.vertices), options.defects);
-  repaired.report.dropped_influences = weights.dropped_influences;
-  repaired.report.unweighted_vertices = weights.unweighted_vertices;
-  return repaired;
-}
-
-inline io::Gltf_mesh_info mesh_info(const tinygltf::Model& model, std::size_t mesh) {
-  io::Gltf_mesh_info info{.name = model.meshes[mesh].name};
-  for (std::size_t p = 0; p < model.meshes[mesh].primitives.size(); ++p) {
-    const tinygltf::Primitive& primitive = model.meshes[mesh].primitives[p];
-    const std::string name = primitive_name(model, mesh, p);
-    io::Gltf_primitive_info pi{.mode = mode_name(primitive_mode(primitive)), .morph_targets = primitive.targets.size()};
-    if (attribute(primitive, "POSITION") >= 0)
-      pi.vertices = accessor_count(model, attribute(primitive, "POSITION"), name);
-    if (primitive_mode(primitive) == TINYGLTF_MODE_TRIANGLES)
-      pi.triangles = (primitive.indices >= 0 ? accessor_count(model, primitive.indices, name) : pi.vertices) / 3;
-    info.primitives.push_back(pi);
-  }
-  return info;
-}
-
-/// What a parsed model holds, its clips' frames counted at `fps` (`io::gltf_contents`).
-inline io::Gltf_contents contents(const tinygltf::Model& model, double fps) {
-  check_options({.fps = fps});
-  check_extensions(model);
-  io::Gltf_contents result;
-  result.nodes = model.nodes.size();
-  result.skeleton_body = has_skeleton_body(model);
-  for (std::size_t a = 0; a < model.animations.size(); ++a) {
-    const Clip clip = read_clip(model, a);
-    result.clips.push_back({.name = clip.name, .start = clip.start, .end = clip.end,
-                            .duration = clip.end - clip.start, .frames = frame_count(clip.start, clip.end, fps),
-                            .channels = clip.channels.size()});
-  }
-  for (const tinygltf::Skin& skin : model.skins)
-    result.skins.push_back({.name = skin.name, .joints = skin.joints.size()});
-  for (std::size_t m = 0; m < model.meshes.size(); ++m) result.meshes.push_back(mesh_info(model, m));
-  const Node_forest forest = node_forest(model);
-  for (const auto [node, mesh] : mesh_instances(model, forest)) {
-    io::Gltf_mesh_info& info = result.meshes[mesh];
-    ++info.instances;
-    info.skinned = info.skinned || model.nodes[node].skin >= 0;
-    for (std::size_t p = 0; p < info.primitives.size(); ++p)
-      if (skip_reason(model.meshes[mesh].primitives[p]).empty()) {
-        result.vertices += info.primitives[p].vertices;
-        result.triangles += info.primitives[p].triangles;
-      }
-  }
-  return result;
-}
-
-/// What a file holds, a body made from its skeleton when it has no triangle (as `Gltf_file`
-/// reads it); a file of neither is listed as it is (its clips may play on another body).
-inline io::Gltf_contents contents(const std::filesystem::path& path, double fps) {
-  check_options({.fps = fps});
-  tinygltf::Model model = load_model(path);
-  io::Gltf_contents result = contents(model, fps);
-  if (result.triangles == 0 && add_skeleton_body(model)) result = contents(model, fps);
-  return result;
-}
-
-}  // namespace deformseg::io::internal::gltf
-
 namespace deformseg::io {
 
 class Gltf_file;
 
 /// @brief One clip of a `Gltf_file` sampled a frame at a time (`Gltf_file::frame_sampler`), in
 /// the vertex order of `Sampled_gltf`, before any repair: every vertex, or the vertices asked.
+///
+/// Movable, not copyable: it holds the clip and the scratch of its poses (a private implementation,
+/// compiled in deformseg's io library).
 class Gltf_frame_sampler {
 public:
+  /// @brief Moves a sampler (the one moved from may only be destroyed or assigned to).
+  Gltf_frame_sampler(Gltf_frame_sampler&&) noexcept;
+  /// @brief Moves a sampler into this one.
+  Gltf_frame_sampler& operator=(Gltf_frame_sampler&&) noexcept;
+  /// @brief Frees the clip and the scratch.
+  ~Gltf_frame_sampler();
+
   /// @brief The number of frames T of the clip at the frame rate asked (1 without animation).
-  std::size_t num_frames() const noexcept { return frames_; }
+  std::size_t num_frames() const noexcept;
   /// @brief The number of vertices V of a frame: the scene's before any repair, or the number of
   /// vertices asked.
-  std::size_t num_vertices() const noexcept {
-    return selection_ ? selection_->input.size() : rig_->geometry.vertices;
-  }
+  std::size_t num_vertices() const noexcept;
   /// @brief The clip's name as in the file (maybe empty), as `Gltf_read_report::clip`; empty
   /// for a file without animation.
-  std::string clip_name() const { return clip_ ? clip_->name : std::string(); }
+  std::string clip_name() const;
   /// @brief Writes frame `t`'s `3V` coordinates to `out`.
   /// @pre `out` holds `3V` values and `t < num_frames()`; otherwise throws `invalid_input`.
   /// @throws invalid_input naming the file, the frame and the smallest vertex (numbered as in
   /// `Sampled_gltf`) of a non-finite position.
   /// @par Complexity O(N + J + V I), as one frame of `Gltf_file::sample`, V the vertices sampled.
-  void sample_frame(std::size_t t, std::span<double> out) {
-    if (t >= frames_ || out.size() != 3 * num_vertices())
-      throw invalid_input("Gltf_frame_sampler: no frame " + std::to_string(t) + " of " + std::to_string(out.size()) +
-                              " coordinates in a clip of " + std::to_string(frames_) + " frames",
-                          {.file = path_.string(), .frame = t});
-    try {
-      internal::gltf::pose_frame(*rig_, clip_ ? &*clip_ : nullptr, fps_, frames_, t,
-                                 selection_ ? &*selection_ : nullptr, scratch_, out.data());
-    } catch (const invalid_input& e) {
-      throw e.located({.file = path_.string()});
-    }
-  }
+  void sample_frame(std::size_t t, std::span<double> out);
 
 private:
   friend class Gltf_file;
-  Gltf_frame_sampler(std::filesystem::path path, const internal::gltf::Rig& rig,
-                     std::optional<internal::gltf::Clip> clip, std::size_t frames, double fps,
-                     std::optional<internal::gltf::Vertex_selection> selection)
-      : path_(std::move(path)), rig_(&rig), clip_(std::move(clip)), frames_(frames), fps_(fps),
-        selection_(std::move(selection)) {}
+  struct Impl;  // the clip, the scene it poses and the scratch of its poses (src/io/gltf_frame_sampler.cpp)
+  explicit Gltf_frame_sampler(std::unique_ptr<Impl> impl) noexcept;
 
-  std::filesystem::path path_;
-  const internal::gltf::Rig* rig_;
-  std::optional<internal::gltf::Clip> clip_;
-  std::size_t frames_;
-  double fps_;
-  std::optional<internal::gltf::Vertex_selection> selection_;
-  internal::gltf::Pose_scratch scratch_{};
+  std::unique_ptr<Impl> impl_;
 };
 
 /// @brief A glTF 2.0 file (or an FBX or Collada file, written into glTF's structures by
@@ -530,6 +218,10 @@ private:
 /// comes from the rest pose alone, so that every clip of one skeleton plays on the same vertices.
 /// It is no skin: the tubes overlap at the joints, and nothing keeps their volume. A file of
 /// neither triangles nor bones is refused: "no mesh: play it on a body with --body FILE".
+///
+/// Movable, not copyable: the parsed file is held by a private implementation (compiled in
+/// deformseg's io library), which stays where it is when the `Gltf_file` moves, so that its
+/// samplers and frame sources stay valid.
 class Gltf_file {
 public:
   /// @brief Parses `path` and reads the scene's geometry (not its clips).
@@ -546,21 +238,16 @@ public:
   /// with --body FILE"); an accessor or buffer view outside its buffer, a count that disagrees,
   /// an index out of range; a node hierarchy that is not a forest; more than 2^26 vertices.
   /// @par Complexity O(file size).
-  explicit Gltf_file(const std::filesystem::path& path) : path_(path), file_(load(path)) {}
+  explicit Gltf_file(const std::filesystem::path& path);
 
   /// @brief Reads the scene of a model parsed or built in memory (by tinygltf, or by
   /// `fbx_collada_model`), as the constructor from a path reads a file's.
   /// @param name the name errors give as the file's.
-  /// @param model the model, kept by the `Gltf_file`.
+  /// @param model the model, kept by the `Gltf_file` (a caller includes <tiny_gltf.h>, which
+  /// defines it).
   /// @throws invalid_input naming `name`, for the same malformed scenes as the constructor from a path.
   /// @par Complexity O(size of the model).
-  Gltf_file(std::filesystem::path name, tinygltf::Model model) : path_(std::move(name)) {
-    try {
-      file_ = internal::gltf::load_file(std::move(model));
-    } catch (const invalid_input& e) {
-      throw e.located({.file = path_.string()});
-    }
-  }
+  Gltf_file(std::filesystem::path name, tinygltf::Model model);
 
   /// @brief The clips of the file `clips` played on the body of the file `body`, as engines bind
   /// an animation to a model: each channel of a clip moves the body's node of the same name as
@@ -584,30 +271,22 @@ public:
   /// @par Complexity O(size of both files).
   /// @par Example
   /// @snippet read_gltf.cpp bind
-  Gltf_file(const std::filesystem::path& body, const std::filesystem::path& clips) : Gltf_file(body) {
-    try {
-      auto model = std::make_shared<const tinygltf::Model>(internal::gltf::load_model(clips));
-      internal::gltf::check_extensions(*model);
-      auto body_node = internal::gltf::body_nodes_by_name(file_.model, *model);
-      auto change = internal::gltf::frame_changes(file_.model, *model, body_node);
-      internal::gltf::make_animatable(file_.model, file_.rig.rest, *model, body_node);
-      file_.clips = internal::gltf::Bound_clips{.model = model, .file = clips.string(), .body_file = body.string(),
-                                                .body_node = std::move(body_node), .change = std::move(change)};
-    } catch (const invalid_input& e) {
-      throw e.located({.file = clips.string()});
-    }
-  }
+  Gltf_file(const std::filesystem::path& body, const std::filesystem::path& clips);
+
+  /// @brief Moves a file (the one moved from may only be destroyed or assigned to); the parsed
+  /// file does not move, so that the samplers and frame sources of the file stay valid.
+  Gltf_file(Gltf_file&&) noexcept;
+  /// @brief Moves a file into this one.
+  Gltf_file& operator=(Gltf_file&&) noexcept;
+  /// @brief Frees the parsed file (its samplers must be gone).
+  ~Gltf_file();
 
   /// @brief The file's path as given.
   const std::filesystem::path& path() const noexcept { return path_; }
   /// @brief The names of the file's clips (glTF animations), in the file's order (maybe empty).
-  std::vector<std::string> clip_names() const {
-    std::vector<std::string> names;
-    for (const auto& animation : internal::gltf::clip_model(file_).animations) names.push_back(animation.name);
-    return names;
-  }
+  std::vector<std::string> clip_names() const;
   /// @brief The number of vertices V a sampled clip has, before any repair.
-  std::size_t num_vertices() const noexcept { return file_.rig.geometry.vertices; }
+  std::size_t num_vertices() const noexcept;
 
   /// @brief What the file holds, as `gltf_contents(path(), fps)` gives it, from this parse (of a
   /// body played with another file's clips: the body's own): its clips with their frame counts
@@ -615,13 +294,8 @@ public:
   /// @pre `fps > 0`.
   /// @throws invalid_input naming the file, as `gltf_contents` (a malformed clip).
   /// @par Complexity O(size of the model).
-  Gltf_contents contents(double fps = 30) const {
-    try {
-      return internal::gltf::contents(file_.model, fps);
-    } catch (const invalid_input& e) {
-      throw e.located({.file = path_.string()});
-    }
-  }
+  Gltf_contents contents(double fps = 30) const;
+
 
   /// @brief Samples one clip, without repair: the vertices in the file's order (see `Sampled_gltf`).
   /// @param options `clip` (default: the first), `fps` (30), `threads` (0: all); `repair` is not
@@ -633,13 +307,7 @@ public:
   /// non-finite position, more than 10^6 frames or 2^29 coordinates.
   /// @par Complexity O(T (N + J + V I)) for N nodes, J joints, V vertices and I influences per
   /// skinned vertex (4 or 8), the frames shared among the threads.
-  Sampled_gltf sample(const Gltf_read_options& options = {}) const {
-    try {
-      return internal::gltf::sample(file_, options);
-    } catch (const invalid_input& e) {
-      throw e.located({.file = path_.string()});
-    }
-  }
+  Sampled_gltf sample(const Gltf_read_options& options = {}) const;
 
   /// @brief Samples one clip a frame at a time, as `sample` samples all of them: frame `t` of
   /// the sampler equals frame `t` of `sample(options)`'s positions, bit for bit, so that a long
@@ -684,15 +352,8 @@ public:
   /// @throws invalid_input naming the file, as `repair_triangles`.
   /// @par Complexity O(V + F log F) expected (a hash grid on the rest positions, as
   /// `repair_triangles` on frame 0).
-  Repaired_triangles repair(const Repair_options& options = Gltf_read_options{}.repair) const {
-    try {
-      return internal::gltf::repair_scene(file_.rig, options);
-    } catch (const invalid_input& e) {
-      throw e.located({.file = path_.string()});
-    }
-  }
+  Repaired_triangles repair(const Repair_options& options = Gltf_read_options{}.repair) const;
 
-  /// @brief Reads one clip as an animation: `sample`, then the connectivity of
   /// `repair(options.repair)`, which every clip of the file shares, each output vertex moving as
   /// its source vertex (welding on by default). Only the source vertices are posed, each once,
   /// which gives their positions in `sample` bit for bit; a non-finite position of a vertex the
@@ -709,9 +370,7 @@ public:
   /// O(V + F log F).
   template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
   mesh::Deforming_mesh<Graph, Coordinate> read(const Gltf_read_options& options = {},
-                                         Gltf_read_report* report = nullptr) const {
-    return read<Graph, Coordinate>(repair(options.repair), options, report);
-  }
+                                               Gltf_read_report* report = nullptr) const;
 
   /// @brief Reads one clip as `read(options, report)` does, with the file's connectivity repaired
   /// beforehand: the clips of one file share it, so that reading several repairs once.
@@ -728,55 +387,39 @@ public:
   /// @include read_gltf.cpp
   template <mesh::FaceGraph Graph = mesh::Surface_mesh, std::floating_point Coordinate = double>
   mesh::Deforming_mesh<Graph, Coordinate> read(const Repaired_triangles& repaired, const Gltf_read_options& options,
-                                         Gltf_read_report* report = nullptr) const {
-    Sampled_gltf sampled;
-    try {
-      sampled = internal::gltf::sample(file_, options, &repaired.source_vertex);
-    } catch (const invalid_input& e) {
-      throw e.located({.file = path_.string()});
-    }
-    try {
-      mesh::Coordinate_buffer<Coordinate> positions;
-      if constexpr (std::is_same_v<Coordinate, double>) positions = std::move(sampled.positions);
-      else positions.assign(sampled.positions.begin(), sampled.positions.end());
-      mesh::Deforming_mesh<Graph, Coordinate> animation =
-          internal::animation_of<Graph, Coordinate>(repaired, std::move(positions), &sampled.report.repair);
-      animation.set_frames_per_second(options.fps);
-      if (report) *report = std::move(sampled.report);
-      return animation;
-    } catch (const invalid_input& e) {
-      throw e.located({.file = path_.string()});
-    }
-  }
+                                               Gltf_read_report* report = nullptr) const;
 
 private:
-  static internal::gltf::Loaded_file load(const std::filesystem::path& path) {
-    try {
-      return internal::gltf::load_file(internal::gltf::load_model(path));
-    } catch (const invalid_input& e) {
-      throw e.located({.file = path.string()});
-    }
-  }
+  // Samples the source vertices of `repaired` (`sample` of `options` for those vertices alone), as
+  // `read` needs them: compiled once in the library, whatever the mesh and coordinate types.
+  Sampled_gltf sample_sources(const Repaired_triangles& repaired, const Gltf_read_options& options) const;
 
   std::filesystem::path path_;
-  internal::gltf::Loaded_file file_;
+  std::unique_ptr<internal::gltf::Loaded_file> file_;
 };
 
-inline Gltf_frame_sampler Gltf_file::frame_sampler(const Gltf_read_options& options) const {
-  try {
-    auto [clip, frames] = internal::gltf::clip_and_frames(file_, options);
-    return Gltf_frame_sampler(path_, file_.rig, std::move(clip), frames, options.fps, std::nullopt);
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path_.string()});
-  }
+// Member templates defined outside the class, so not inline: a program on the default types calls
+// the library's instances (declared below) rather than compiling its own.
+template <mesh::FaceGraph Graph, std::floating_point Coordinate>
+mesh::Deforming_mesh<Graph, Coordinate> Gltf_file::read(const Gltf_read_options& options,
+                                                        Gltf_read_report* report) const {
+  return read<Graph, Coordinate>(repair(options.repair), options, report);
 }
 
-inline Gltf_frame_sampler Gltf_file::frame_sampler(const Gltf_read_options& options,
-                                                   std::span<const std::uint32_t> vertices) const {
+template <mesh::FaceGraph Graph, std::floating_point Coordinate>
+mesh::Deforming_mesh<Graph, Coordinate> Gltf_file::read(const Repaired_triangles& repaired,
+                                                        const Gltf_read_options& options,
+                                                        Gltf_read_report* report) const {
+  Sampled_gltf sampled = sample_sources(repaired, options);
   try {
-    auto [clip, frames] = internal::gltf::clip_and_frames(file_, options);
-    return Gltf_frame_sampler(path_, file_.rig, std::move(clip), frames, options.fps,
-                              internal::gltf::select_vertices(file_.rig.geometry, vertices));
+    mesh::Coordinate_buffer<Coordinate> positions;
+    if constexpr (std::is_same_v<Coordinate, double>) positions = std::move(sampled.positions);
+    else positions.assign(sampled.positions.begin(), sampled.positions.end());
+    mesh::Deforming_mesh<Graph, Coordinate> animation =
+        internal::animation_of<Graph, Coordinate>(repaired, std::move(positions), &sampled.report.repair);
+    animation.set_frames_per_second(options.fps);
+    if (report) *report = std::move(sampled.report);
+    return animation;
   } catch (const invalid_input& e) {
     throw e.located({.file = path_.string()});
   }
@@ -793,16 +436,7 @@ inline Gltf_frame_sampler Gltf_file::frame_sampler(const Gltf_read_options& opti
 /// @par Complexity O(clips).
 /// @par Example
 /// @include sample_gltf.cpp
-inline void require_clip_choice(const Gltf_file& file, const std::string& clip) {
-  const std::vector<std::string> names = file.clip_names();
-  if (!clip.empty() || names.size() < 2) return;
-  std::string list;
-  for (const std::string& name : names) list.append(list.empty() ? "" : ", ").append("'" + name + "'");
-  throw invalid_input("the file holds " + std::to_string(names.size()) + " clips: name the one to read, as in \"" +
-                          file.path().filename().string() + "#" + names.front() + "\" or by the clip option (the " +
-                          "clips: " + list + ")",
-                      {.file = file.path().string()});
-}
+void require_clip_choice(const Gltf_file& file, const std::string& clip);
 
 /// @brief Samples one clip of a glTF 2.0 file into positions and triangles, without repair:
 /// `Gltf_file(path).sample(options)` (see `Gltf_file` for what is read and how).
@@ -818,9 +452,7 @@ inline void require_clip_choice(const Gltf_file& file, const std::string& clip) 
 /// @sa read_gltf, Gltf_file
 /// @par Example
 /// @include sample_gltf.cpp
-inline Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {}) {
-  return Gltf_file(path).sample(options);
-}
+Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_read_options& options = {});
 
 /// @brief Reads one clip of a glTF 2.0 file as an animation: `sample_gltf`, then the connectivity
 /// every clip of the file shares (`Gltf_file::repair` with `options.repair`, welding on by
@@ -852,12 +484,17 @@ mesh::Deforming_mesh<Graph, Coordinate> read_gltf(const std::filesystem::path& p
 /// @pre `fps > 0`.
 /// @throws invalid_input naming the file, for the same malformed files as `sample_gltf`.
 /// @par Complexity O(file size).
-inline Gltf_contents gltf_contents(const std::filesystem::path& path, double fps = 30) {
-  try {
-    return internal::gltf::contents(path, fps);
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path.string()});
-  }
-}
+Gltf_contents gltf_contents(const std::filesystem::path& path, double fps = 30);
+
+// The instances of the default types, compiled in deformseg's io library (src/io/gltf.cpp).
+/// @cond
+extern template mesh::Deforming_mesh<mesh::Surface_mesh, double>
+Gltf_file::read<mesh::Surface_mesh, double>(const Gltf_read_options&, Gltf_read_report*) const;
+extern template mesh::Deforming_mesh<mesh::Surface_mesh, double>
+Gltf_file::read<mesh::Surface_mesh, double>(const Repaired_triangles&, const Gltf_read_options&,
+                                            Gltf_read_report*) const;
+extern template mesh::Deforming_mesh<mesh::Surface_mesh, double>
+read_gltf<mesh::Surface_mesh, double>(const std::filesystem::path&, const Gltf_read_options&, Gltf_read_report*);
+/// @endcond
 
 }  // namespace deformseg::io

@@ -458,4 +458,12 @@ void write_mdd(const mesh::Deforming_mesh<Graph, Coordinate>& animation, const s
   internal::write_file_bytes(cache, bytes);
 }
 
+// The instances of the default types, compiled in deformseg's io library (src/io/point_cache.cpp).
+/// @cond
+extern template mesh::Deforming_mesh<mesh::Surface_mesh, double>
+read_pc2<mesh::Surface_mesh, double>(const std::filesystem::path&, mesh::Surface_mesh, double);
+extern template mesh::Deforming_mesh<mesh::Surface_mesh, double>
+read_mdd<mesh::Surface_mesh, double>(const std::filesystem::path&, mesh::Surface_mesh, double);
+/// @endcond
+
 }  // namespace deformseg::io

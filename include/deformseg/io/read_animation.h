@@ -5,6 +5,7 @@
 
 #include <deformseg/exceptions.h>
 #include <deformseg/io/character_files.h>
+#include <deformseg/io/config.h>
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/io/mesh_repair.h>
 #include <deformseg/io/point_cache.h>
@@ -13,8 +14,7 @@
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/threads.h>
 
-// glTF is read when deformseg was configured with tinygltf (its CMake target then defines
-// DEFORMSEG_HAS_GLTF and links TinyGLTF::TinyGLTF).
+// glTF is read when deformseg's io library was built with tinygltf (io/config.h says so).
 #if DEFORMSEG_HAS_GLTF
 #include <deformseg/io/gltf.h>
 #endif
@@ -104,8 +104,7 @@ mesh::Deforming_mesh<Graph, Coordinate> read_gltf_input(const std::string& input
 #else
   static_cast<void>(report);
   throw invalid_input("this deformseg was built without tinygltf, which reads glTF, FBX, Collada and BVH files (Debian: "
-                      "libtinygltf-dev and nlohmann-json3-dev; link TinyGLTF::TinyGLTF and nlohmann_json::nlohmann_json, "
-                      "and define DEFORMSEG_HAS_GLTF=1)",
+                      "libtinygltf-dev and nlohmann-json3-dev, then build deformseg again)",
                       {.file = input});
 #endif
 }
@@ -139,8 +138,8 @@ namespace deformseg::io {
 /// @param report where to store what the repair changed, when not null (default null).
 /// @pre a point cache comes with `options.topology`; a character file comes with no `topology`, a
 /// clip (after '#' or in `options.clip`, not both) unless it holds one clip or none, and deformseg
-/// was built with tinygltf (`DEFORMSEG_HAS_GLTF`), and for FBX and Collada with Assimp
-/// (`DEFORMSEG_HAS_ASSIMP`); every frame is valid (see the readers).
+/// was built with tinygltf (`DEFORMSEG_HAS_GLTF` of `deformseg/io/config.h`), and for FBX and
+/// Collada with Assimp (`DEFORMSEG_HAS_ASSIMP`); every frame is valid (see the readers).
 /// @throws invalid_input naming the file, line or frame of the first problem found; with
 /// `Defect_policy::refuse`, the first defect of the connectivity, located at its file.
 /// @par Complexity linear in the size of the input, plus the repair's (see `repair_triangles`).
@@ -196,5 +195,11 @@ mesh::Deforming_mesh<Graph, Coordinate> read_animation(const std::string& input,
   animation.set_frames_per_second(options.fps);
   return animation;
 }
+
+// The instance of the default types, compiled in deformseg's io library (src/io/read_animation.cpp).
+/// @cond
+extern template mesh::Deforming_mesh<mesh::Surface_mesh, double>
+read_animation<mesh::Surface_mesh, double>(const std::string&, const Animation_read_options&, Repair_report*);
+/// @endcond
 
 }  // namespace deformseg::io

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/io/config.h>
 #include <deformseg/io/internal/gltf_document.h>
 
 #if DEFORMSEG_HAS_DRACO
