@@ -276,3 +276,11 @@ Synthetic_animation<Graph> make_bending_tube(const Bending_tube& spec) {
 }
 
 }  // namespace deformseg::mesh
+
+#if DEFORMSEG_COMPILED
+// deformseg::compiled holds this instantiation (src/compiled/mesh.cpp): a program that links it
+// compiles against its declaration. Any other connectivity instantiates where it is used.
+namespace deformseg::mesh {
+extern template Synthetic_animation<Surface_mesh> make_bending_tube<Surface_mesh>(const Bending_tube&);
+}  // namespace deformseg::mesh
+#endif

@@ -68,8 +68,7 @@ struct Motion_signature_options {
   double vertical_unit = 9e-3;
   /// @brief The weight of the vertical quantiles against the speeds' in the squared distance of two
   /// signatures: they are multiplied by its square root. Default 0.2. The three vertical defaults
-  /// were chosen on the shared characters leaving each body out in turn (every body chose these,
-  /// but the robot: its 8 queries preferred 9e-2 and 0.35).
+  /// were chosen leaving each body of the shared characters out in turn (chapter 7).
   double vertical_weight = 0.2;
   /// @brief The surface cut into this many bands of equal height along `up` in the first frame (the
   /// pose the animation starts in), each band's area-weighted quantiles side by side: per lag (and
@@ -548,3 +547,19 @@ Eigen::MatrixXd motion_signatures(const Mesh& animation, const Motion_signature_
 }
 
 }  // namespace deformseg::signatures
+
+#if DEFORMSEG_COMPILED
+// deformseg::compiled holds these instantiations (src/compiled/similarity.cpp): a program that
+// links it compiles against their declarations. Any other type instantiates where it is used.
+#include <deformseg/mesh/default_mesh.h>
+
+namespace deformseg::signatures {
+extern template Eigen::MatrixXd motion_signatures_at<double>(std::span<const double>, std::span<const double>,
+                                                             const Motion_signature_options&, double,
+                                                             std::span<const double>);
+extern template Eigen::MatrixXd motion_signatures<double>(std::span<const double>, std::span<const double>,
+                                                          const Motion_signature_options&, double);
+extern template Eigen::MatrixXd motion_signatures<mesh::Surface_mesh_animation>(const mesh::Surface_mesh_animation&,
+                                                                               const Motion_signature_options&);
+}  // namespace deformseg::signatures
+#endif

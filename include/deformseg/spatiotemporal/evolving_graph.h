@@ -165,3 +165,14 @@ Evolving_graph evolving_graph(const Mesh& animation, const Spatiotemporal_option
 }
 
 }  // namespace deformseg::spatiotemporal
+
+#if DEFORMSEG_COMPILED
+// deformseg::compiled holds this instantiation (src/compiled/spatiotemporal.cpp): a program that
+// links it compiles against its declaration. Any other type instantiates where it is used.
+#include <deformseg/mesh/default_mesh.h>
+
+namespace deformseg::spatiotemporal {
+extern template Evolving_graph evolving_graph<mesh::Surface_mesh_animation>(const mesh::Surface_mesh_animation&,
+                                                                           const Spatiotemporal_options&);
+}  // namespace deformseg::spatiotemporal
+#endif

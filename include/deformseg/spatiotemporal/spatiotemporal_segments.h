@@ -373,3 +373,17 @@ Spatiotemporal_segmentation spatiotemporal_segmentation(const Mesh& animation,
 }
 
 }  // namespace deformseg::spatiotemporal
+
+#if DEFORMSEG_COMPILED
+// deformseg::compiled holds these instantiations (src/compiled/spatiotemporal.cpp): a program that
+// links it compiles against their declarations. Any other type instantiates where it is used.
+#include <deformseg/mesh/default_mesh.h>
+
+namespace deformseg::spatiotemporal {
+extern template Spatiotemporal_segmentation spatiotemporal_segmentation<float>(const strain::Strain_field<float>&,
+                                                                              const Body_layout&,
+                                                                              const Spatiotemporal_options&);
+extern template Spatiotemporal_segmentation spatiotemporal_segmentation<mesh::Surface_mesh_animation>(
+    const mesh::Surface_mesh_animation&, const Spatiotemporal_options&);
+}  // namespace deformseg::spatiotemporal
+#endif

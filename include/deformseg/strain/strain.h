@@ -513,3 +513,16 @@ void put_principal_directions(const Strain_field<Value>& field, std::size_t t, c
 }
 
 }  // namespace deformseg::strain
+
+#if DEFORMSEG_COMPILED
+// deformseg::compiled holds these instantiations (src/compiled/strain.cpp): a program that links it
+// compiles against their declarations. Any other type or policy instantiates where it is used.
+#include <deformseg/mesh/default_mesh.h>
+
+namespace deformseg::strain {
+extern template Strain_field<float> compute_strain<float, mesh::Surface_mesh_animation>(
+    const mesh::Surface_mesh_animation&, const Strain_options&);
+extern template Strain_field<double> compute_strain<double, mesh::Surface_mesh_animation>(
+    const mesh::Surface_mesh_animation&, const Strain_options&);
+}  // namespace deformseg::strain
+#endif

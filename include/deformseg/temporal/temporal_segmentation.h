@@ -110,3 +110,17 @@ Temporal_segmentation temporal_segmentation(const Mesh& animation, const Policy&
 }
 
 }  // namespace deformseg::temporal
+
+#if DEFORMSEG_COMPILED
+// deformseg::compiled holds these instantiations (src/compiled/temporal.cpp): a program that links
+// it compiles against their declarations. Any other type or policy instantiates where it is used.
+#include <deformseg/mesh/default_mesh.h>
+
+namespace deformseg::temporal {
+extern template Temporal_segmentation segment_frames<Optimal_partition>(const Segment_cost&, const Optimal_partition&);
+extern template Temporal_segmentation temporal_segmentation<float, Optimal_partition>(
+    const strain::Strain_field<float>&, const Optimal_partition&, const strain::Frame_distance_options&);
+extern template Temporal_segmentation temporal_segmentation<mesh::Surface_mesh_animation, Optimal_partition>(
+    const mesh::Surface_mesh_animation&, const Optimal_partition&, const strain::Frame_distance_options&);
+}  // namespace deformseg::temporal
+#endif
