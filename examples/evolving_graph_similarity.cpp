@@ -4,6 +4,7 @@
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/clustering/agglomerative.h>
 #include <deformseg/ged/exact_ged.h>
+#include <deformseg/similarity/evolving_graph_similarity.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/mesh/synthetic.h>
 

@@ -4,7 +4,7 @@
 // over all the clips come back with their clip, frames and values (from the descriptions as
 // stored, as find_motion_in gives them for each clip alone).
 #include <deformseg/mesh/synthetic.h>
-#include <deformseg/similarity/find_motion_in_collection.h>
+#include <deformseg/search/find_motion_in_collection.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 
 #include <cstdio>
@@ -18,7 +18,7 @@ int main() {
     return std::vector<mesh::Tube_phase>{{5, {0.0}}, {pace, {right}}, {8, {}}, {pace, {0.0}}, {5, {}}};
   };
   const similarity::Motion_signature_similarity<> policy;
-  similarity::Motion_collection library;
+  search::Motion_collection library;
   for (const std::size_t pace : {std::size_t(6), std::size_t(10), std::size_t(16)}) {
     mesh::Bending_tube spec;
     spec.schedule = bend(pace);
@@ -32,11 +32,11 @@ int main() {
   mesh::Bending_tube query;
   query.schedule = bend(10);
   // [find]
-  const std::vector<similarity::Clip_match> found =
-      similarity::find_motion_in_collection(policy.describe(mesh::make_bending_tube(query).animation), library,
+  const std::vector<search::Clip_match> found =
+      search::find_motion_in_collection(policy.describe(mesh::make_bending_tube(query).animation), library,
                                             {.count = 3});
   // [find]
-  for (const similarity::Clip_match& c : found)
+  for (const search::Clip_match& c : found)
     std::printf("clip %zu, frames %zu to %zu: %.3f\n", c.clip, c.match.first, c.match.last, c.match.value);
   return !found.empty() && found.front().clip == 1 ? 0 : 1;
 }

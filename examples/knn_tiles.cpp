@@ -3,8 +3,9 @@
 // k-nearest-neighbour graph from blocks of rows searched among blocks of candidates, merged per
 // row. Both equal the in-process results, value for value.
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/search/nearest_motions.h>
+#include <deformseg/search/similarity_tile.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/nearest_motions.h>
 
 #include <algorithm>
 #include <iostream>
@@ -14,7 +15,7 @@
 int main() {
   using namespace deformseg;
   const similarity::Default_similarity policy;
-  similarity::Motion_collection collection;
+  search::Motion_collection collection;
   // Tube i bends to a right angle in 2 + 2 i frames, holds, unbends, and rests.
   for (std::size_t i = 0; i < 8; ++i) {
     mesh::Bending_tube spec;
@@ -22,40 +23,40 @@ int main() {
     collection.add(policy.describe(mesh::make_bending_tube(spec).animation));
   }
   const std::size_t n = collection.size(), tile = 3;
-  std::vector<similarity::Clip_range> blocks;
+  std::vector<search::Clip_range> blocks;
   for (std::size_t begin = 0; begin < n; begin += tile) blocks.push_back({begin, std::min(n, begin + tile)});
 
   // [tiles]
   Eigen::MatrixXd matrix(n, n);
   for (std::size_t r = 0; r < blocks.size(); ++r)
     for (std::size_t c = r; c < blocks.size(); ++c) {
-      const Eigen::MatrixXd values = similarity::similarity_tile(collection, blocks[r], blocks[c]);
+      const Eigen::MatrixXd values = search::similarity_tile(collection, blocks[r], blocks[c]);
       matrix.block(blocks[r].begin, blocks[c].begin, values.rows(), values.cols()) = values;
       matrix.block(blocks[c].begin, blocks[r].begin, values.cols(), values.rows()) = values.transpose();
     }
   // [tiles]
   std::cout << "matrix from " << blocks.size() << " x " << blocks.size() << " tiles: "
-            << (matrix == similarity::similarity_matrix(collection) ? "the same" : "differs") << "\n";
+            << (matrix == search::similarity_matrix(collection) ? "the same" : "differs") << "\n";
 
   // [knn]
   const std::size_t k = 2;
-  std::vector<similarity::Nearest_motions> graph;
-  for (const similarity::Clip_range rows : blocks) {
-    std::vector<std::vector<similarity::Nearest_motions>> parts;  // per block of candidates, per row
-    for (const similarity::Clip_range candidates : blocks)
-      parts.push_back(similarity::knn_graph(collection, rows, {.k = k, .candidates = candidates}));
+  std::vector<search::Nearest_motions> graph;
+  for (const search::Clip_range rows : blocks) {
+    std::vector<std::vector<search::Nearest_motions>> parts;  // per block of candidates, per row
+    for (const search::Clip_range candidates : blocks)
+      parts.push_back(search::knn_graph(collection, rows, {.k = k, .candidates = candidates}));
     for (std::size_t r = 0; r < rows.size(); ++r) {
-      std::vector<similarity::Nearest_motions> row;
+      std::vector<search::Nearest_motions> row;
       for (const auto& part : parts) row.push_back(part[r]);
-      graph.push_back(similarity::merge_nearest(row, k));
+      graph.push_back(search::merge_nearest(row, k));
     }
   }
   // [knn]
-  const auto whole = similarity::knn_graph(collection, {.k = k});
+  const auto whole = search::knn_graph(collection, {.k = k});
   bool same = true;
   for (std::size_t i = 0; i < n; ++i) same = same && graph[i].neighbours == whole[i].neighbours;
   std::cout << "k-nearest-neighbour graph from tiles: " << (same ? "the same" : "differs") << "\n";
   std::cout << "tube 3's nearest: tube " << graph[3].neighbours[0].index << " (" << graph[3].neighbours[0].value
             << ")\n";
-  return same && matrix == similarity::similarity_matrix(collection) ? 0 : 1;
+  return same && matrix == search::similarity_matrix(collection) ? 0 : 1;
 }

@@ -4,7 +4,7 @@
 // and DTW over the lazy dissimilarity gives the policy's own compare value.
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/mesh/synthetic.h>
-#include <deformseg/similarity/motion_signature_kernel.h>
+#include <deformseg/signatures/motion_signature_kernel.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 
 #include <cstdio>
@@ -30,9 +30,9 @@ int main() {
   const auto b = policy.describe(tube({{5, {0.0}}, {20, {right}}, {4, {}}, {20, {0.0}}, {5, {}}}));
 
   // The dissimilarity refers to the descriptions' floats (similarity::view); 1 / (64 scale^2) by default.
-  const similarity::Motion_signature_dissimilarity d(
+  const signatures::Motion_signature_dissimilarity d(
       similarity::view(a), similarity::view(b),
-      similarity::frame_dissimilarity_unit(std::size_t(a.signatures.cols()), policy.scale));
+      signatures::frame_dissimilarity_unit(std::size_t(a.signatures.cols()), policy.scale));
   std::vector<double> row(d.cols());
   d.row(20, 0, d.cols(), row.data());  // frame 20 of a (held bent) against every frame of b
   std::printf("frame 20 of a against b's frames 0, 25, 50: %.3f %.3f %.3f\n", row[0], row[25], row[50]);

@@ -1,7 +1,9 @@
 // How alike two tubes move: the same schedule on a thin and on a thick tube, against another
 // schedule on the thin one, by the default policy (motion signatures), by strain histograms and by
 // the thesis' policy (evolving graphs).
+#include <deformseg/similarity/evolving_graph_similarity.h>
 #include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/similarity/strain_distribution_similarity.h>
 #include <deformseg/mesh/synthetic.h>
 
 #include <iostream>

@@ -3,8 +3,8 @@
 // similar with their values (those similarity_matrix gives) and how many it never had to align.
 // Then every tube's 2 nearest others: the k-nearest-neighbour graph.
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/search/nearest_motions.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/nearest_motions.h>
 
 #include <iostream>
 #include <numbers>
@@ -12,7 +12,7 @@
 int main() {
   using namespace deformseg;
   const similarity::Default_similarity policy;
-  similarity::Motion_collection collection;
+  search::Motion_collection collection;
   // Tube i bends to a right angle in 2 + i frames, holds, unbends, and rests.
   for (std::size_t i = 0; i < 12; ++i) {
     mesh::Bending_tube spec;
@@ -20,7 +20,7 @@ int main() {
     collection.add(policy.describe(mesh::make_bending_tube(spec).animation));
   }
   // [search]
-  const auto found = similarity::nearest_motions(collection.view(5), collection, {.k = 3});
+  const auto found = search::nearest_motions(collection.view(5), collection, {.k = 3});
   // [search]
   std::cout << "nearest to tube 5:";
   for (const auto& n : found.neighbours) std::cout << " tube " << n.index << " (" << n.value << ")";
@@ -28,7 +28,7 @@ int main() {
             << " aligned whole\n";
 
   // [graph]
-  const auto graph = similarity::knn_graph(collection, {.k = 2});
+  const auto graph = search::knn_graph(collection, {.k = 2});
   // [graph]
   for (std::size_t i = 0; i < graph.size(); ++i) {
     std::cout << "tube " << i << ":";

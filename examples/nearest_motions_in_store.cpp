@@ -3,8 +3,8 @@
 // later (by another program, say), is searched in place through store::Stored_motions, and gives the
 // values and order the same clips give in memory.
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/search/nearest_motions.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/nearest_motions.h>
 #include <deformseg/store/store_append.h>
 #include <deformseg/store/stored_motions.h>
 
@@ -19,11 +19,11 @@ int main() {
   const std::filesystem::path folder = "tubes.store";
   std::filesystem::remove_all(folder);
   const similarity::Default_similarity policy;
-  similarity::Motion_collection in_memory;
+  search::Motion_collection in_memory;
   {
     // [write]
     constexpr std::size_t chunks = 4;
-    store::Store_append append(folder, R"({"policy": "motion-signature"})", similarity::summary_width(64, chunks),
+    store::Store_append append(folder, R"({"policy": "motion-signature"})", search::summary_width(64, chunks),
                             store::motion_summary_layout(chunks));
     for (std::size_t i = 0; i < 10; ++i) {
       mesh::Bending_tube spec;  // tube i bends in 2 + i frames, holds, unbends
@@ -35,7 +35,7 @@ int main() {
       record.fps = 30;
       const std::vector<std::uint32_t> frames(description.frames.begin(), description.frames.end());
       const auto view = similarity::view(description);
-      append.add(record, view, frames, similarity::summarize(view, chunks).floats);
+      append.add(record, view, frames, search::summarize(view, chunks).floats);
       in_memory.add(description);
     }
     append.commit();
@@ -43,9 +43,9 @@ int main() {
   }
   // [search]
   const store::Stored_motions stored(store::Motion_store::open(folder));
-  const auto found = similarity::nearest_motions(stored.view(3), stored, {.k = 3});
+  const auto found = search::nearest_motions(stored.view(3), stored, {.k = 3});
   // [search]
-  const auto expected = similarity::nearest_motions(in_memory.view(3), in_memory, {.k = 3});
+  const auto expected = search::nearest_motions(in_memory.view(3), in_memory, {.k = 3});
   std::cout << "nearest to tube 3 in the store:";
   for (const auto& n : found.neighbours)
     std::cout << ' ' << stored.store().record(n.index).path << " (" << n.value << ")";

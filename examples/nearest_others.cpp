@@ -3,8 +3,8 @@
 // the values similarity_matrix gives them (tube 3 itself is no candidate). Row 3 of knn_graph is
 // the same search, so it gives the same neighbours.
 #include <deformseg/mesh/synthetic.h>
+#include <deformseg/search/nearest_motions.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/nearest_motions.h>
 
 #include <iostream>
 #include <numbers>
@@ -12,7 +12,7 @@
 int main() {
   using namespace deformseg;
   const similarity::Default_similarity policy;
-  similarity::Motion_collection collection;
+  search::Motion_collection collection;
   // Tube i bends to a right angle in 2 + 2 i frames, holds, unbends, and rests.
   for (std::size_t i = 0; i < 8; ++i) {
     mesh::Bending_tube spec;
@@ -20,12 +20,12 @@ int main() {
     collection.add(policy.describe(mesh::make_bending_tube(spec).animation));
   }
   // [others]
-  const auto found = similarity::nearest_others(collection, 3, {.k = 2});
+  const auto found = search::nearest_others(collection, 3, {.k = 2});
   // [others]
   std::cout << "nearest to tube 3:";
   for (const auto& n : found.neighbours) std::cout << " tube " << n.index << " (" << n.value << ")";
   std::cout << "\nof " << found.pruning.candidates << " other tubes, " << found.pruning.aligned << " aligned whole\n";
-  const auto graph = similarity::knn_graph(collection, {.k = 2});
+  const auto graph = search::knn_graph(collection, {.k = 2});
   std::cout << (graph[3].neighbours == found.neighbours ? "row 3 of the graph is the same\n" : "differs\n");
   return graph[3].neighbours == found.neighbours ? 0 : 1;
 }

@@ -18,7 +18,7 @@
 
 namespace deformseg::frontend {
 
-/// The summaries a store's clips get: `similarity::summarize(view, store_summary_chunks)`.
+/// The summaries a store's clips get: `search::summarize(view, store_summary_chunks)`.
 inline constexpr std::size_t store_summary_chunks = 4;
 
 /// "FILE", "FILE#CLIP" or "FILE#CLIP on BODY": a clip named for reports (`body` "": its own file's),

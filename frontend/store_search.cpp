@@ -5,14 +5,14 @@
 namespace deformseg::frontend {
 namespace {
 
-// Some clips of a store, in a given order (a similarity::MotionCollection).
+// Some clips of a store, in a given order (a search::MotionCollection).
 struct Selected_clips {
   const store::Stored_motions* stored;
   std::vector<std::size_t> indices;
 
   std::size_t size() const { return indices.size(); }
-  similarity::Motion_signature_view view(std::size_t i) const { return stored->view(indices[i]); }
-  similarity::Motion_summary_view summary(std::size_t i) const { return stored->summary(indices[i]); }
+  signatures::Motion_signature_view view(std::size_t i) const { return stored->view(indices[i]); }
+  search::Motion_summary_view summary(std::size_t i) const { return stored->summary(indices[i]); }
 };
 
 // The first five names, and how many more.
@@ -37,50 +37,50 @@ similarity::Motion_signature_description Store_search::describe(const mesh::Surf
   return policy.describe(query);
 }
 
-similarity::Nearest_motions Store_search::nearest(const mesh::Surface_mesh_animation& query,
-                                                  const similarity::Nearest_motions_options& options) const {
+search::Nearest_motions Store_search::nearest(const mesh::Surface_mesh_animation& query,
+                                                  const search::Nearest_motions_options& options) const {
   if (size() == 0) throw invalid_input("the store holds no clip", {.file = store().folder().string()});
   check_range(options.candidates, "candidates");  // before describing the query
   return nearest(similarity::view(describe(query, options.threads)), options);
 }
 
-similarity::Nearest_motions Store_search::nearest(similarity::Motion_signature_view query,
-                                                  const similarity::Nearest_motions_options& options) const {
+search::Nearest_motions Store_search::nearest(signatures::Motion_signature_view query,
+                                                  const search::Nearest_motions_options& options) const {
   if (size() == 0) throw invalid_input("the store holds no clip", {.file = store().folder().string()});
   check_range(options.candidates, "candidates");
-  return similarity::nearest_motions(query, clips_, options, policy_);
+  return search::nearest_motions(query, clips_, options, policy_);
 }
 
-similarity::Nearest_motions Store_search::nearest_to_clip(std::size_t i,
-                                                          const similarity::Nearest_motions_options& options) const {
+search::Nearest_motions Store_search::nearest_to_clip(std::size_t i,
+                                                          const search::Nearest_motions_options& options) const {
   if (i >= size())
     throw invalid_input("no clip " + std::to_string(i) + ": the store holds " + std::to_string(size()) + " clips",
                         {.file = store().folder().string()});
   check_range(options.candidates, "candidates");
-  return similarity::nearest_others(clips_, i, options, policy_);
+  return search::nearest_others(clips_, i, options, policy_);
 }
 
-std::vector<similarity::Clip_match> Store_search::find(const mesh::Surface_mesh_animation& query,
-                                                      const similarity::Find_in_collection_options& options) const {
+std::vector<search::Clip_match> Store_search::find(const mesh::Surface_mesh_animation& query,
+                                                      const search::Find_in_collection_options& options) const {
   if (size() == 0) throw invalid_input("the store holds no clip", {.file = store().folder().string()});
-  return similarity::find_motion_in_collection(describe(query, options.threads), clips_, options, policy_);
+  return search::find_motion_in_collection(describe(query, options.threads), clips_, options, policy_);
 }
 
-std::vector<similarity::Nearest_motions> Store_search::knn_graph(
-    const similarity::Nearest_motions_options& options, std::optional<similarity::Clip_range> rows) const {
+std::vector<search::Nearest_motions> Store_search::knn_graph(
+    const search::Nearest_motions_options& options, std::optional<search::Clip_range> rows) const {
   check_range(rows, "rows");
   check_range(options.candidates, "candidates");
-  return similarity::knn_graph(clips_, rows.value_or(similarity::all_clips(clips_)), options, policy_);
+  return search::knn_graph(clips_, rows.value_or(search::all_clips(clips_)), options, policy_);
 }
 
-Eigen::MatrixXd Store_search::tile(similarity::Clip_range rows, similarity::Clip_range columns,
+Eigen::MatrixXd Store_search::tile(search::Clip_range rows, search::Clip_range columns,
                                    const Progress& progress, int threads) const {
   check_range(rows, "rows");
   check_range(columns, "columns");
-  return similarity::similarity_tile(clips_, rows, columns, policy_, progress, threads);
+  return search::similarity_tile(clips_, rows, columns, policy_, progress, threads);
 }
 
-void Store_search::check_range(std::optional<similarity::Clip_range> range, const char* what) const {
+void Store_search::check_range(std::optional<search::Clip_range> range, const char* what) const {
   if (range && (range->begin > range->end || range->end > size()))
     throw invalid_input(std::string("the ") + what + " [" + std::to_string(range->begin) + ", " +
                             std::to_string(range->end) + ") are not clips of the store, which holds " +
@@ -89,11 +89,11 @@ void Store_search::check_range(std::optional<similarity::Clip_range> range, cons
 }
 
 Eigen::MatrixXd Store_search::matrix(const Progress& progress, int threads) const {
-  return similarity::similarity_matrix(clips_, policy_, progress, threads);
+  return search::similarity_matrix(clips_, policy_, progress, threads);
 }
 
 Eigen::MatrixXd Store_search::matrix(std::vector<std::size_t> indices, const Progress& progress, int threads) const {
-  return similarity::similarity_matrix(Selected_clips{&clips_, std::move(indices)}, policy_, progress, threads);
+  return search::similarity_matrix(Selected_clips{&clips_, std::move(indices)}, policy_, progress, threads);
 }
 
 void Store_search::check_policy(const Policy_choice& asked, Front front) const {

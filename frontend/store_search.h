@@ -6,9 +6,10 @@
 #include "similarity.h"
 
 #include <deformseg/mesh/default_mesh.h>
-#include <deformseg/similarity/find_motion_in_collection.h>
+#include <deformseg/search/find_motion_in_collection.h>
+#include <deformseg/search/nearest_motions.h>
+#include <deformseg/search/similarity_tile.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/nearest_motions.h>
 #include <deformseg/store/stored_motions.h>
 
 #include <cstddef>
@@ -36,37 +37,37 @@ class Store_search {
   /// `query` described as the store's clips were, its rows on `threads` threads (0: all the
   /// hardware's, `thread_count`).
   similarity::Motion_signature_description describe(const mesh::Surface_mesh_animation& query, int threads) const;
-  /// The `options.k` clips nearest to `query` (`similarity::nearest_motions`).
+  /// The `options.k` clips nearest to `query` (`search::nearest_motions`).
   /// @throws invalid_input naming the store when it holds no clip, or when the candidates are not a
   /// block of its clips.
-  similarity::Nearest_motions nearest(const mesh::Surface_mesh_animation& query,
-                                      const similarity::Nearest_motions_options& options) const;
+  search::Nearest_motions nearest(const mesh::Surface_mesh_animation& query,
+                                      const search::Nearest_motions_options& options) const;
   /// The `options.k` clips nearest to the query described as `query` (by `describe`).
   /// @throws invalid_input as the other `nearest`, and when `query` has no row or another width
   /// than the store's clips.
-  similarity::Nearest_motions nearest(similarity::Motion_signature_view query,
-                                      const similarity::Nearest_motions_options& options) const;
+  search::Nearest_motions nearest(signatures::Motion_signature_view query,
+                                      const search::Nearest_motions_options& options) const;
   /// The `options.k` clips nearest to clip `i` of the store, itself left out
-  /// (`similarity::nearest_others`): row `i` of `knn_graph`, the same neighbours, values and counts.
+  /// (`search::nearest_others`): row `i` of `knn_graph`, the same neighbours, values and counts.
   /// @throws invalid_input naming the index when the store has no clip `i`.
-  similarity::Nearest_motions nearest_to_clip(std::size_t i, const similarity::Nearest_motions_options& options) const;
+  search::Nearest_motions nearest_to_clip(std::size_t i, const search::Nearest_motions_options& options) const;
   /// The `options.k` nearest others of each clip of `rows` (default all: the whole graph), among
-  /// `options.candidates` (`similarity::knn_graph`).
+  /// `options.candidates` (`search::knn_graph`).
   /// @throws invalid_input naming the store when `rows` or the candidates are not blocks of its clips.
-  std::vector<similarity::Nearest_motions> knn_graph(const similarity::Nearest_motions_options& options,
-                                                     std::optional<similarity::Clip_range> rows = {}) const;
-  /// Where `query` occurs in the store (`similarity::find_motion_in_collection`): the best
+  std::vector<search::Nearest_motions> knn_graph(const search::Nearest_motions_options& options,
+                                                     std::optional<search::Clip_range> rows = {}) const;
+  /// Where `query` occurs in the store (`search::find_motion_in_collection`): the best
   /// `options.count` non-overlapping windows over all its clips, each in its clip's stored frames,
   /// valued on the descriptions as stored (1 minus the mean dissimilarity along the warping path).
   /// @throws invalid_input when the store holds no clip.
-  std::vector<similarity::Clip_match> find(const mesh::Surface_mesh_animation& query,
-                                           const similarity::Find_in_collection_options& options) const;
+  std::vector<search::Clip_match> find(const mesh::Surface_mesh_animation& query,
+                                           const search::Find_in_collection_options& options) const;
   /// The similarity of every pair of the store's clips (`similarity::similarity_matrix`), on
   /// `threads` threads (0: all the hardware's, `thread_count`).
   Eigen::MatrixXd matrix(const Progress& progress, int threads) const;
-  /// A tile of the matrix: rows `rows`, columns `columns` (`similarity::similarity_tile`).
+  /// A tile of the matrix: rows `rows`, columns `columns` (`search::similarity_tile`).
   /// @throws invalid_input naming the store when `rows` or `columns` are not blocks of its clips.
-  Eigen::MatrixXd tile(similarity::Clip_range rows, similarity::Clip_range columns, const Progress& progress = {},
+  Eigen::MatrixXd tile(search::Clip_range rows, search::Clip_range columns, const Progress& progress = {},
                        int threads = 0) const;
   /// The similarity of every pair of clips `indices` of the store, in that order, on `threads`
   /// threads.
@@ -89,7 +90,7 @@ class Store_search {
 
  private:
   // Refuses, naming the store, a block (`what`: rows, columns, candidates) that is not one of its clips.
-  void check_range(std::optional<similarity::Clip_range> range, const char* what) const;
+  void check_range(std::optional<search::Clip_range> range, const char* what) const;
 
   store::Stored_motions clips_;
   similarity::Default_similarity policy_;

@@ -1,10 +1,10 @@
-// Tests of similarity/find_motion_in_collection.h: the windows over a collection equal find_motion_in
+// Tests of search/find_motion_in_collection.h: the windows over a collection equal find_motion_in
 // run on each clip alone and merged (stably sorted by value, cut at the count), on one and two
 // threads; a query cut from a clip finds that clip at the right frames (its stored frames), at 1;
 // errors name what is wrong.
 #include "test_support.h"
 
-#include <deformseg/similarity/find_motion_in_collection.h>
+#include <deformseg/search/find_motion_in_collection.h>
 #include <deformseg/similarity/motion_similarity.h>
 
 #include <catch2/catch.hpp>
@@ -50,13 +50,13 @@ TEST_CASE("find_motion_in_collection equals find_motion_in on each clip, merged,
   const similarity::Default_similarity policy;
   for (std::uint32_t seed = 1; seed <= 3; ++seed) {
     const auto clips = drifting_clips(seed, 25);
-    const similarity::Motion_collection collection(clips);
+    const search::Motion_collection collection(clips);
     std::mt19937 random(seed + 50);
     const auto query = drifting_clip(random, 4 + 6 * seed, 8, 1);
     for (std::size_t count : {std::size_t(1), std::size_t(3), std::size_t(200)})
       for (double shortest : {0.5, 1.0}) {
         INFO("seed " << seed << ", count " << count << ", shortest " << shortest);
-        std::vector<similarity::Clip_match> expected;
+        std::vector<search::Clip_match> expected;
         for (std::size_t i = 0; i < clips.size(); ++i)
           for (auto& m : similarity::find_motion_in(policy, query, clips[i], {.count = count, .shortest = shortest}))
             expected.push_back({i, m});
@@ -64,7 +64,7 @@ TEST_CASE("find_motion_in_collection equals find_motion_in on each clip, merged,
                          [](const auto& x, const auto& y) { return x.match.value > y.match.value; });
         expected.resize(std::min(count, expected.size()));
         for (int threads : {1, 2}) {
-          const auto found = similarity::find_motion_in_collection(
+          const auto found = search::find_motion_in_collection(
               query, collection, {.count = count, .shortest = shortest, .threads = threads});
           REQUIRE(found.size() == expected.size());
           for (std::size_t r = 0; r < found.size(); ++r) {
@@ -78,7 +78,7 @@ TEST_CASE("find_motion_in_collection equals find_motion_in on each clip, merged,
 
 TEST_CASE("find_motion_in_collection finds a query cut from a clip in that clip, at its frames") {
   const auto clips = drifting_clips(9, 20);
-  const similarity::Motion_collection collection(clips);
+  const search::Motion_collection collection(clips);
   const std::size_t first_row = 10, rows = 30;
   // The first clip long enough whose frames are not its rows.
   std::size_t source = 0;
@@ -90,7 +90,7 @@ TEST_CASE("find_motion_in_collection finds a query cut from a clip in that clip,
   query.signatures = clips[source].signatures.middleRows(Eigen::Index(first_row), Eigen::Index(rows));
   query.frames.assign(clips[source].frames.begin() + std::ptrdiff_t(first_row),
                       clips[source].frames.begin() + std::ptrdiff_t(first_row + rows));
-  const auto found = similarity::find_motion_in_collection(query, collection, {.count = 2});
+  const auto found = search::find_motion_in_collection(query, collection, {.count = 2});
   REQUIRE(found.size() == 2);
   CHECK(found[0].clip == source);
   CHECK(found[0].match.value == 1.0);
@@ -105,12 +105,12 @@ TEST_CASE("find_motion_in_collection finds a query cut from a clip in that clip,
 TEST_CASE("find_motion_in_collection: an empty collection finds nothing, and errors name what is wrong") {
   std::mt19937 random(3);
   const auto query = drifting_clip(random, 10, 8, 1);
-  CHECK(similarity::find_motion_in_collection(query, similarity::Motion_collection{}).empty());
-  const similarity::Motion_collection collection(drifting_clips(4, 3));
-  CHECK_THROWS_WITH(similarity::find_motion_in_collection(drifting_clip(random, 10, 4, 1), collection),
+  CHECK(search::find_motion_in_collection(query, search::Motion_collection{}).empty());
+  const search::Motion_collection collection(drifting_clips(4, 3));
+  CHECK_THROWS_WITH(search::find_motion_in_collection(drifting_clip(random, 10, 4, 1), collection),
                     Catch::Contains("4 values, the collection's 8"));
-  CHECK_THROWS_WITH(similarity::find_motion_in_collection(query, collection, {.shortest = 0}),
+  CHECK_THROWS_WITH(search::find_motion_in_collection(query, collection, {.shortest = 0}),
                     Catch::Contains("shortest must be in (0, 1]"));
-  CHECK_THROWS_WITH(similarity::find_motion_in_collection(Motion_signature_description{}, collection),
+  CHECK_THROWS_WITH(search::find_motion_in_collection(Motion_signature_description{}, collection),
                     Catch::Contains("no signature"));
 }

@@ -1,4 +1,4 @@
-// Tests of similarity/motion_bounds.h: the summary's layout and errors; every lower bound at most
+// Tests of search/motion_bounds.h: the summary's layout and errors; every lower bound at most
 // the mean along Dtw's path and the least mean over all paths on random small pairs (overlapping,
 // apart, identical, constant, one row) and on real pairs of the shared characters; the row bounds
 // at most every cell of their row; the safe bound strictly below a kernel's value perturbed by the
@@ -7,7 +7,7 @@
 #include "test_support.h"
 
 #include <deformseg/io/read_animation.h>
-#include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/search/motion_bounds.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 
 #include <algorithm>
@@ -21,7 +21,7 @@
 #include <vector>
 
 using namespace deformseg;
-using similarity::Motion_signature_view;
+using signatures::Motion_signature_view;
 
 namespace {
 
@@ -41,16 +41,16 @@ struct Bounds {
   double box, mean, rows_columns;
 };
 
-Bounds bounds_of(const similarity::Motion_summary& a, const similarity::Motion_summary& b, double unit) {
-  return {similarity::lb_box(a.view(), b.view(), unit), similarity::lb_mean(a.view(), b.view(), unit),
-          similarity::lb_rows_columns(a.view(), b.view(), unit)};
+Bounds bounds_of(const search::Motion_summary& a, const search::Motion_summary& b, double unit) {
+  return {search::lb_box(a.view(), b.view(), unit), search::lb_mean(a.view(), b.view(), unit),
+          search::lb_rows_columns(a.view(), b.view(), unit)};
 }
 
 // Checks every bound of (a, b) against the brute-force D, and the least mean over all paths when
 // `least_mean` is set; gives the bounds.
 Bounds check_bounds(const Eigen::MatrixXf& a, const Eigen::MatrixXf& b, std::size_t chunks_a, std::size_t chunks_b,
                     double unit, bool least_mean) {
-  const auto sa = similarity::summarize(view_of(a), chunks_a), sb = similarity::summarize(view_of(b), chunks_b);
+  const auto sa = search::summarize(view_of(a), chunks_a), sb = search::summarize(view_of(b), chunks_b);
   const Bounds lb = bounds_of(sa, sb, unit);
   const Eigen::MatrixXd d = test::reference_dissimilarities(view_of(a), view_of(b), unit);
   const double dtw = test::dtw_mean(d);
@@ -68,7 +68,7 @@ Bounds check_bounds(const Eigen::MatrixXf& a, const Eigen::MatrixXf& b, std::siz
   CHECK(at_most(lb.box, lb.rows_columns));
   // Row bounds: at most every cell of their row, exactly (the same sums, each term no larger).
   std::vector<double> rows(std::size_t(a.rows()));
-  similarity::row_bounds(view_of(a), sb.view(), unit, rows);
+  search::row_bounds(view_of(a), sb.view(), unit, rows);
   for (Eigen::Index i = 0; i < a.rows(); ++i) CHECK(rows[std::size_t(i)] <= d.row(i).minCoeff());
   // Row i's bound is f of its least gap2 to a chunk box, each summed over the dimensions in order.
   for (Eigen::Index i = 0; i < a.rows(); ++i) {
@@ -82,20 +82,20 @@ Bounds check_bounds(const Eigen::MatrixXf& a, const Eigen::MatrixXf& b, std::siz
       }
       least = std::min(least, sum);
     }
-    CHECK(rows[std::size_t(i)] == similarity::frame_dissimilarity(least, unit));
+    CHECK(rows[std::size_t(i)] == signatures::frame_dissimilarity(least, unit));
   }
   // With the caller's scratch, dirty and longer than needed: the same bounds, bit for bit.
   std::vector<double> scratch(rows.size() + 3, 7.5), again(rows.size(), -1.0);
-  similarity::row_bounds(view_of(a), sb.view(), unit, again, scratch);
+  search::row_bounds(view_of(a), sb.view(), unit, again, scratch);
   CHECK(again == rows);
   std::vector<double> gaps(chunks_a + chunks_b + 2, -1.0);
-  CHECK(similarity::lb_rows_columns(sa.view(), sb.view(), unit, gaps) == lb.rows_columns);
+  CHECK(search::lb_rows_columns(sa.view(), sb.view(), unit, gaps) == lb.rows_columns);
   // A kernel at the worst of its contract: the safe bounds stay strictly below its value, and a
   // candidate whose value ties the k-th is never pruned.
   const double kernel = test::dtw_mean(kernel_worst_case(d));
   for (const double bound : {lb.box, lb.mean, lb.rows_columns, least}) {
-    CHECK(similarity::safe_lower_bound(bound) < kernel);
-    CHECK(similarity::may_beat(bound, 1 - kernel));
+    CHECK(search::safe_lower_bound(bound) < kernel);
+    CHECK(search::may_beat(bound, 1 - kernel));
   }
   return lb;
 }
@@ -106,9 +106,9 @@ TEST_CASE("summarize: bounds, mean, first and last rows and chunk boxes, dimensi
           "[motion_bounds]") {
   Eigen::MatrixXf m(5, 2);  // rows 0..4, dimension 0 then dimension 1
   m << 1, -1, 4, 0, 2, 7, -3, 2, 5, 1;
-  const auto s = similarity::summarize(view_of(m), 2);
-  REQUIRE(s.floats.size() == similarity::summary_width(2, 2));
-  CHECK(similarity::summary_width(64, 4) == 833);
+  const auto s = search::summarize(view_of(m), 2);
+  REQUIRE(s.floats.size() == search::summary_width(2, 2));
+  CHECK(search::summary_width(64, 4) == 833);
   const auto v = s.view();
   CHECK(v.rows() == 5);
   CHECK(v.width() == 2);
@@ -132,16 +132,16 @@ TEST_CASE("summarize: bounds, mean, first and last rows and chunk boxes, dimensi
   CHECK(s.floats[1 + 2] == 5);
   // Round trip through a caller's block.
   std::vector<float> block(s.floats.size());
-  similarity::write_summary(s, block);
-  CHECK(similarity::read_summary(block, 2, 2).floats == s.floats);
-  similarity::summarize_into(view_of(m), 2, block);
+  search::write_summary(s, block);
+  CHECK(search::read_summary(block, 2, 2).floats == s.floats);
+  search::summarize_into(view_of(m), 2, block);
   CHECK(block == s.floats);
 }
 
 TEST_CASE("summarize: fewer rows than chunks repeat the last row's box", "[motion_bounds]") {
   Eigen::MatrixXf m(2, 1);
   m << 3, 8;
-  const auto s = similarity::summarize(view_of(m));
+  const auto s = search::summarize(view_of(m));
   const auto v = s.view();
   REQUIRE(v.chunks() == 4);
   const float expected[] = {3, 8, 8, 8};
@@ -153,47 +153,47 @@ TEST_CASE("summarize: fewer rows than chunks repeat the last row's box", "[motio
 
 TEST_CASE("summarize and the bounds: errors name what is wrong", "[motion_bounds]") {
   Eigen::MatrixXf m = Eigen::MatrixXf::Ones(3, 2), wide = Eigen::MatrixXf::Ones(3, 4), empty(0, 2);
-  CHECK_THROWS_WITH(similarity::summarize(view_of(empty)), Catch::Contains("no row"));
-  CHECK_THROWS_WITH(similarity::summarize(view_of(m), 0), Catch::Contains("chunks must be positive"));
-  const auto s = similarity::summarize(view_of(m));
+  CHECK_THROWS_WITH(search::summarize(view_of(empty)), Catch::Contains("no row"));
+  CHECK_THROWS_WITH(search::summarize(view_of(m), 0), Catch::Contains("chunks must be positive"));
+  const auto s = search::summarize(view_of(m));
   std::vector<float> block(s.floats.size() + 1);
-  CHECK_THROWS_WITH(similarity::write_summary(s, block), Catch::Contains("holds 28 floats"));
-  CHECK_THROWS_WITH(similarity::read_summary(std::span(block).first(27), 2, 3),
+  CHECK_THROWS_WITH(search::write_summary(s, block), Catch::Contains("holds 28 floats"));
+  CHECK_THROWS_WITH(search::read_summary(std::span(block).first(27), 2, 3),
                     Catch::Contains("has 23 floats, not 27"));
-  CHECK_THROWS_WITH(similarity::summarize_into(view_of(m), 4, block), Catch::Contains("holds 28 floats"));
+  CHECK_THROWS_WITH(search::summarize_into(view_of(m), 4, block), Catch::Contains("holds 28 floats"));
   auto broken = s.floats;
   broken[0] = 2.5f;
-  CHECK_THROWS_WITH(similarity::read_summary(broken, 2, 4), Catch::Contains("not a summary"));
+  CHECK_THROWS_WITH(search::read_summary(broken, 2, 4), Catch::Contains("not a summary"));
   broken[0] = 0;
-  CHECK_THROWS_WITH(similarity::read_summary(broken, 2, 4), Catch::Contains("not a summary"));
-  const auto w = similarity::summarize(view_of(wide));
-  CHECK_THROWS_WITH(similarity::lb_box(s.view(), w.view(), 1), Catch::Contains("different widths (2 and 4)"));
-  CHECK_THROWS_WITH(similarity::lb_mean(s.view(), w.view(), 1), Catch::Contains("lb_mean"));
-  CHECK_THROWS_WITH(similarity::lb_rows_columns(w.view(), s.view(), 1), Catch::Contains("lb_rows_columns"));
+  CHECK_THROWS_WITH(search::read_summary(broken, 2, 4), Catch::Contains("not a summary"));
+  const auto w = search::summarize(view_of(wide));
+  CHECK_THROWS_WITH(search::lb_box(s.view(), w.view(), 1), Catch::Contains("different widths (2 and 4)"));
+  CHECK_THROWS_WITH(search::lb_mean(s.view(), w.view(), 1), Catch::Contains("lb_mean"));
+  CHECK_THROWS_WITH(search::lb_rows_columns(w.view(), s.view(), 1), Catch::Contains("lb_rows_columns"));
   std::vector<double> out(3);
-  CHECK_THROWS_WITH(similarity::row_bounds(view_of(wide), s.view(), 1, out), Catch::Contains("4 wide"));
-  CHECK_THROWS_WITH(similarity::row_bounds(view_of(m), s.view(), 1, std::span(out).first(2)),
+  CHECK_THROWS_WITH(search::row_bounds(view_of(wide), s.view(), 1, out), Catch::Contains("4 wide"));
+  CHECK_THROWS_WITH(search::row_bounds(view_of(m), s.view(), 1, std::span(out).first(2)),
                     Catch::Contains("3 rows"));
   std::vector<double> short_scratch(2);
-  CHECK_THROWS_WITH(similarity::row_bounds(view_of(m), s.view(), 1, out, short_scratch),
+  CHECK_THROWS_WITH(search::row_bounds(view_of(m), s.view(), 1, out, short_scratch),
                     Catch::Contains("the scratch 2, the query has 3 rows"));
-  CHECK_THROWS_WITH(similarity::lb_rows_columns(s.view(), s.view(), 1, short_scratch),
+  CHECK_THROWS_WITH(search::lb_rows_columns(s.view(), s.view(), 1, short_scratch),
                     Catch::Contains("the scratch holds 2 values"));
   // A view made unchecked reads the same block as a checked one.
-  const auto unchecked = similarity::Motion_summary_view::unchecked(s.floats, s.width, s.chunks);
+  const auto unchecked = search::Motion_summary_view::unchecked(s.floats, s.width, s.chunks);
   CHECK(unchecked.rows() == s.view().rows());
-  CHECK(similarity::lb_mean(unchecked, s.view(), 1) == similarity::lb_mean(s.view(), s.view(), 1));
+  CHECK(search::lb_mean(unchecked, s.view(), 1) == search::lb_mean(s.view(), s.view(), 1));
 }
 
 TEST_CASE("may_beat: prunes only when 1 - the safe bound is strictly below the k-th value", "[motion_bounds]") {
-  CHECK(similarity::safe_lower_bound(1) == 1 - 0x1p-10 - 0x1p-20);
-  CHECK(similarity::may_beat(0.5, -std::numeric_limits<double>::infinity()));
-  CHECK(similarity::may_beat(0.5, 0.5));
-  CHECK(similarity::may_beat(0.5, 0.5 + 0x1p-11));  // within the slack
-  CHECK(!similarity::may_beat(0.5, 0.5 + 0x1p-10));
-  CHECK(!similarity::may_beat(0.9, 0.2));
-  CHECK(similarity::may_beat(std::numeric_limits<double>::quiet_NaN(), 0.9));
-  CHECK(similarity::may_beat(0, 1));  // a bound of 0 prunes nothing
+  CHECK(search::safe_lower_bound(1) == 1 - 0x1p-10 - 0x1p-20);
+  CHECK(search::may_beat(0.5, -std::numeric_limits<double>::infinity()));
+  CHECK(search::may_beat(0.5, 0.5));
+  CHECK(search::may_beat(0.5, 0.5 + 0x1p-11));  // within the slack
+  CHECK(!search::may_beat(0.5, 0.5 + 0x1p-10));
+  CHECK(!search::may_beat(0.9, 0.2));
+  CHECK(search::may_beat(std::numeric_limits<double>::quiet_NaN(), 0.9));
+  CHECK(search::may_beat(0, 1));  // a bound of 0 prunes nothing
 }
 
 TEST_CASE("lb_box, lb_mean, lb_rows_columns, row_bounds: at most D and the least mean over all paths on random "
@@ -238,7 +238,7 @@ TEST_CASE("lb_box, lb_mean, lb_rows_columns, row_bounds: at most D and the least
       b = noise(1, width, spread).replicate(m, 1);
       break;
     }
-    const double unit = similarity::frame_dissimilarity_unit(std::size_t(width), std::array{0.3, 1.77, 5.0}[trial % 3]);
+    const double unit = signatures::frame_dissimilarity_unit(std::size_t(width), std::array{0.3, 1.77, 5.0}[trial % 3]);
     const std::size_t chunks_a = trial % 4 == 0 ? std::size_t(pick(1, 6)) : 4;
     const std::size_t chunks_b = trial % 4 == 0 ? std::size_t(pick(1, 6)) : 4;
     const Bounds lb = check_bounds(a, b, chunks_a, chunks_b, unit, true);
@@ -254,11 +254,11 @@ TEST_CASE("lb_rows_columns: exact for one cell, and for one row against one row"
   Eigen::MatrixXf a(1, 3), b(1, 3);
   a << 0.5f, -1, 2;
   b << 0, 1, 1.5f;
-  const double unit = similarity::frame_dissimilarity_unit(3, 1.77);
-  const auto sa = similarity::summarize(view_of(a)), sb = similarity::summarize(view_of(b));
+  const double unit = signatures::frame_dissimilarity_unit(3, 1.77);
+  const auto sa = search::summarize(view_of(a)), sb = search::summarize(view_of(b));
   const Eigen::MatrixXd d = test::reference_dissimilarities(view_of(a), view_of(b), unit);
-  CHECK(similarity::lb_rows_columns(sa.view(), sb.view(), unit) == d(0, 0));
-  CHECK(similarity::lb_rows_columns(sb.view(), sa.view(), unit) == d(0, 0));
+  CHECK(search::lb_rows_columns(sa.view(), sb.view(), unit) == d(0, 0));
+  CHECK(search::lb_rows_columns(sb.view(), sa.view(), unit) == d(0, 0));
 }
 
 TEST_CASE("lb_box, lb_mean, lb_rows_columns, row_bounds: at most D on pairs of the shared characters",
@@ -281,7 +281,7 @@ TEST_CASE("lb_box, lb_mean, lb_rows_columns, row_bounds: at most D on pairs of t
     clips.push_back(policy.describe(animation).signatures.cast<float>());
   }
   REQUIRE(clips.size() >= 18);
-  const double unit = similarity::frame_dissimilarity_unit(std::size_t(clips[0].cols()), policy.scale);
+  const double unit = signatures::frame_dissimilarity_unit(std::size_t(clips[0].cols()), policy.scale);
   const std::size_t count = clips.size(), k = 3;
   std::vector<Bounds> bounds(count * count);
   std::vector<double> values(count * count);
@@ -303,7 +303,7 @@ TEST_CASE("lb_box, lb_mean, lb_rows_columns, row_bounds: at most D on pairs of t
     for (std::size_t c = 0; c < count; ++c) {
       if (c == q) continue;
       const Bounds& lb = bounds[q * count + c];
-      const bool prunable = !similarity::may_beat(std::max({lb.box, lb.mean, lb.rows_columns}), kth);
+      const bool prunable = !search::may_beat(std::max({lb.box, lb.mean, lb.rows_columns}), kth);
       if (values[q * count + c] >= kth) CHECK(!prunable);
       pruned += prunable;
     }

@@ -1,10 +1,10 @@
-// The quantity that similarity/motion_bounds.h bounds, by brute force, for its test and its bench:
+// The quantity that search/motion_bounds.h bounds, by brute force, for its test and its bench:
 // the frame dissimilarities of two float views by the double reference, the mean along the path
 // alignment::Dtw::align returns, and the least mean over all paths (exhaustive, small grids).
 #pragma once
 
 #include <deformseg/alignment/dtw.h>
-#include <deformseg/similarity/motion_signature_view.h>
+#include <deformseg/signatures/motion_signature_view.h>
 
 #include <Eigen/Core>
 
@@ -17,8 +17,8 @@ namespace deformseg::test {
 
 // d(i, j) = frame_dissimilarity(||a_i - b_j||^2, unit), the squared distance summed in double over
 // the dimensions in order.
-inline Eigen::MatrixXd reference_dissimilarities(const similarity::Motion_signature_view& a,
-                                                 const similarity::Motion_signature_view& b, double unit) {
+inline Eigen::MatrixXd reference_dissimilarities(const signatures::Motion_signature_view& a,
+                                                 const signatures::Motion_signature_view& b, double unit) {
   Eigen::MatrixXd d(a.rows, b.rows);
   for (std::size_t i = 0; i < a.rows; ++i)
     for (std::size_t j = 0; j < b.rows; ++j) {
@@ -27,7 +27,7 @@ inline Eigen::MatrixXd reference_dissimilarities(const similarity::Motion_signat
         const double g = double(a(i, k)) - double(b(j, k));
         s += g * g;
       }
-      d(Eigen::Index(i), Eigen::Index(j)) = similarity::frame_dissimilarity(s, unit);
+      d(Eigen::Index(i), Eigen::Index(j)) = signatures::frame_dissimilarity(s, unit);
     }
   return d;
 }

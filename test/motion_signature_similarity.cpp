@@ -10,17 +10,17 @@
 
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/alignment/subsequence_dtw.h>
-#include <deformseg/similarity/find_motion.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/mesh/synthetic.h>
+#include <deformseg/signatures/motion_signature_kernel.h>
 #include <deformseg/signatures/motion_signatures.h>
-#include <deformseg/similarity/motion_signature_kernel.h>
+#include <deformseg/similarity/find_motion.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
+#include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/self_similarity_matching.h>
 #include <deformseg/similarity/significance.h>
 #include <deformseg/strain/strain_histograms.h>
-#include <deformseg/mesh/synthetic.h>
 #include <deformseg/threads.h>
 
 #include <Eigen/Geometry>
@@ -626,7 +626,7 @@ Eigen::MatrixXf random_signatures(std::size_t rows, std::size_t width, float spr
   return s;
 }
 
-similarity::Motion_signature_view kernel_view_of(const Eigen::MatrixXf& s) {
+signatures::Motion_signature_view kernel_view_of(const Eigen::MatrixXf& s) {
   return {s.data(), std::size_t(s.rows()), std::size_t(s.cols())};
 }
 
@@ -641,14 +641,14 @@ double exact_squared_distance(const Eigen::MatrixXf& a, std::size_t i, const Eig
 /// Checks the kernel's contract with the search's lower bounds for every cell of (a, b): within
 /// 2^-12 f + 2^-22 of the double reference f, in [0, 1]; returns the largest error relative to f.
 double check_kernel_accuracy(const Eigen::MatrixXf& a, const Eigen::MatrixXf& b, double unit) {
-  const similarity::Motion_signature_dissimilarity d(kernel_view_of(a), kernel_view_of(b), unit);
+  const signatures::Motion_signature_dissimilarity d(kernel_view_of(a), kernel_view_of(b), unit);
   std::vector<double> row(d.cols());
   double worst = 0;
   std::size_t failures = 0;
   for (std::size_t i = 0; i < d.rows(); ++i) {
     d.row(i, 0, d.cols(), row.data());
     for (std::size_t j = 0; j < d.cols(); ++j) {
-      const double f = similarity::frame_dissimilarity(exact_squared_distance(a, i, b, j), unit);
+      const double f = signatures::frame_dissimilarity(exact_squared_distance(a, i, b, j), unit);
       const double error = std::abs(row[j] - f);
       const bool ok = row[j] >= 0 && row[j] <= 1 && error <= std::ldexp(f, -12) + std::ldexp(1.0, -22);
       if (!ok && ++failures <= 5)
@@ -664,13 +664,14 @@ double check_kernel_accuracy(const Eigen::MatrixXf& a, const Eigen::MatrixXf& b,
 
 TEST_CASE("Motion_signature_dissimilarity: a cell has one value, read alone or within any row", "[motion_signature]") {
   std::mt19937 random(27);
-  const double unit = similarity::frame_dissimilarity_unit(64, 1.77);
+  const double unit = signatures::frame_dissimilarity_unit(64, 1.77);
   // Lengths about the kernel's 16 columns: padded, exact, one over, several chunks and a tail.
   for (const std::size_t m : {1, 5, 15, 16, 17, 37, 40})
     for (const std::size_t width : {1, 7, 64}) {
       const std::size_t n = 1 + (m * 7) % 19;
       const Eigen::MatrixXf a = random_signatures(n, width, 1.5f, random), b = random_signatures(m, width, 1.5f, random);
-      const similarity::Motion_signature_dissimilarity d(kernel_view_of(a), kernel_view_of(b), unit), back(kernel_view_of(b), kernel_view_of(a), unit);
+      const signatures::Motion_signature_dissimilarity d(kernel_view_of(a), kernel_view_of(b), unit),
+          back(kernel_view_of(b), kernel_view_of(a), unit);
       REQUIRE(d.rows() == n);
       REQUIRE(d.cols() == m);
       std::vector<double> row(m);
@@ -690,23 +691,25 @@ TEST_CASE("Motion_signature_dissimilarity: a cell has one value, read alone or w
     }
   // Equal rows give exactly 0, wherever they fall in a chunk.
   const Eigen::MatrixXf a = random_signatures(40, 64, 2.0f, random);
-  const similarity::Motion_signature_dissimilarity self(kernel_view_of(a), kernel_view_of(a), unit);
+  const signatures::Motion_signature_dissimilarity self(kernel_view_of(a), kernel_view_of(a), unit);
   std::vector<double> row(40);
   for (std::size_t i = 0; i < 40; ++i) {
     self.row(i, 0, 40, row.data());
     CHECK(same_bits(row[i], 0.0));
     CHECK(same_bits(self(i, i), 0.0));
   }
-  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(kernel_view_of(a), kernel_view_of(a.leftCols(63)), unit),
+  CHECK_THROWS_WITH(signatures::Motion_signature_dissimilarity(kernel_view_of(a), kernel_view_of(a.leftCols(63)), unit),
                     Catch::Contains("64 and 63"));
-  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(kernel_view_of(a), kernel_view_of(a), 0.0), Catch::Contains("unit"));
-  CHECK_THROWS_WITH(similarity::Motion_signature_dissimilarity(kernel_view_of(a), kernel_view_of(a), 1e300), Catch::Contains("unit"));
+  CHECK_THROWS_WITH(signatures::Motion_signature_dissimilarity(kernel_view_of(a), kernel_view_of(a), 0.0),
+                    Catch::Contains("unit"));
+  CHECK_THROWS_WITH(signatures::Motion_signature_dissimilarity(kernel_view_of(a), kernel_view_of(a), 1e300),
+                    Catch::Contains("unit"));
 }
 
 TEST_CASE("Motion_signature_dissimilarity: within 2^-12 f + 2^-22 of the double reference f, in [0, 1]",
           "[motion_signature]") {
   std::mt19937 random(12);
-  const double unit = similarity::frame_dissimilarity_unit(64, 1.77);
+  const double unit = signatures::frame_dissimilarity_unit(64, 1.77);
   // Random rows at distances from tiny to far beyond where the value rounds to 1.
   for (const float spread : {1e-6f, 1e-3f, 0.1f, 1.0f, 3.0f, 30.0f, 1e4f}) {
     const Eigen::MatrixXf a = random_signatures(23, 64, spread, random), b = random_signatures(41, 64, spread, random);
@@ -728,7 +731,7 @@ TEST_CASE("Motion_signature_dissimilarity: within 2^-12 f + 2^-22 of the double 
   // Infinite and NaN distances give 1.
   Eigen::MatrixXf huge(3, 1);
   huge << 1e30f, INFINITY, NAN;
-  const similarity::Motion_signature_dissimilarity d(kernel_view_of(zero), kernel_view_of(huge), unit);
+  const signatures::Motion_signature_dissimilarity d(kernel_view_of(zero), kernel_view_of(huge), unit);
   CHECK(d(0, 0) == 1.0);
   CHECK(d(0, 1) == 1.0);
   CHECK(d(0, 2) == 1.0);
@@ -739,7 +742,7 @@ TEST_CASE("Motion_signature_dissimilarity: real rows within 2^-12 f + 2^-22 of t
   const similarity::Motion_signature_similarity<> policy;
   const auto a = policy.describe(tube(bend_hold_unbend));
   const auto b = policy.describe(tube(other_timing, other_tube));
-  const double unit = similarity::frame_dissimilarity_unit(std::size_t(a.signatures.cols()), policy.scale);
+  const double unit = signatures::frame_dissimilarity_unit(std::size_t(a.signatures.cols()), policy.scale);
   WARN("tube rows: largest error " << check_kernel_accuracy(a.signatures, b.signatures, unit) << " of the reference");
   check_kernel_accuracy(a.signatures, a.signatures, unit);
   // The matrix is the lazy dissimilarity's values, and compare aligns exactly them.
@@ -805,7 +808,7 @@ TEST_CASE("Motion_signature_dissimilarity: shared clips' rows within 2^-12 f + 2
   const similarity::Motion_signature_similarity<> policy;
   const auto walk = policy.describe(io::read_animation((dir / "Knight.glb").string(), {.clip = "Walking_A"}));
   const auto run = policy.describe(io::read_animation((dir / "RobotExpressive.glb").string(), {.clip = "Running"}));
-  const double unit = similarity::frame_dissimilarity_unit(std::size_t(walk.signatures.cols()), policy.scale);
+  const double unit = signatures::frame_dissimilarity_unit(std::size_t(walk.signatures.cols()), policy.scale);
   WARN("Knight's Walking_A against the robot's Running: largest error "
        << check_kernel_accuracy(walk.signatures, run.signatures, unit) << " of the reference");
   check_kernel_accuracy(walk.signatures, walk.signatures, unit);

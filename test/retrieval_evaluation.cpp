@@ -8,6 +8,7 @@
 #include <deformseg/evaluation/retrieval_evaluation.h>
 #include <deformseg/mesh/synthetic.h>
 #include <deformseg/similarity/motion_similarity.h>
+#include <deformseg/similarity/strain_distribution_similarity.h>
 #include <deformseg/threads.h>
 
 #include <random>

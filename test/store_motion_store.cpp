@@ -4,7 +4,7 @@
 #include "mesh_types.h"
 
 #include <deformseg/mesh/synthetic.h>
-#include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/search/motion_bounds.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/store/store_append.h>
 
@@ -40,7 +40,7 @@ struct Store_test_clip {
   std::vector<float> summary;
   std::size_t width = 0;
 
-  similarity::Motion_signature_view view() const { return {values.data(), frames.size(), width}; }
+  signatures::Motion_signature_view view() const { return {values.data(), frames.size(), width}; }
 };
 
 std::uint64_t store_test_mix(std::uint64_t x) {
@@ -95,7 +95,7 @@ void store_test_write(const fs::path& folder, std::size_t first, std::size_t cou
 
 // Checks that clip `i` of `store` is `c`, bit for bit, the block fields aside.
 void store_test_check_clip(const store::Motion_store& store, std::size_t i, const Store_test_clip& c) {
-  const similarity::Motion_signature_view v = store.view(i);
+  const signatures::Motion_signature_view v = store.view(i);
   REQUIRE(v.rows == c.frames.size());
   REQUIRE(v.width == c.width);
   CHECK(std::memcmp(v.values, c.values.data(), c.values.size() * sizeof(float)) == 0);
@@ -788,9 +788,9 @@ store::Motion_store describe_into(const fs::path& folder, const Animations& anim
   for (std::size_t i = 0; i < animations.size(); ++i) {
     const auto& animation = animations[i].get();
     const similarity::Motion_signature_description description = policy.describe(animation);
-    const similarity::Motion_signature_view view = similarity::view(description);
-    if (!append) append.emplace(folder, R"({"policy": "motion-signature"})", similarity::summary_width(view.width, chunks));
-    const similarity::Motion_summary summary = similarity::summarize(view, chunks);
+    const signatures::Motion_signature_view view = similarity::view(description);
+    if (!append) append.emplace(folder, R"({"policy": "motion-signature"})", search::summary_width(view.width, chunks));
+    const search::Motion_summary summary = search::summarize(view, chunks);
     const std::vector<std::uint32_t> frames(description.frames.begin(), description.frames.end());
     store::Store_record record;
     record.path = "clip" + std::to_string(i);

@@ -3,7 +3,8 @@
 // corrupted clip is refused when a search reads it.
 #include "test_support.h"
 
-#include <deformseg/similarity/nearest_motions.h>
+#include <deformseg/search/nearest_motions.h>
+#include <deformseg/search/similarity_tile.h>
 #include <deformseg/store/store_append.h>
 #include <deformseg/store/stored_motions.h>
 
@@ -39,7 +40,7 @@ std::vector<similarity::Motion_signature_description> clips() {
 
 void write(const std::filesystem::path& folder, const std::vector<similarity::Motion_signature_description>& all,
            std::size_t chunks, const std::string& layout) {
-  store::Store_append append(folder, "{}", similarity::summary_width(16, chunks), layout);
+  store::Store_append append(folder, "{}", search::summary_width(16, chunks), layout);
   for (std::size_t c = 0; c < all.size(); ++c) {
     store::Store_record record;
     record.path = "/clips/" + std::to_string(c) + ".pc2";
@@ -47,7 +48,7 @@ void write(const std::filesystem::path& folder, const std::vector<similarity::Mo
     record.fps = 30;
     const std::vector<std::uint32_t> frames(all[c].frames.begin(), all[c].frames.end());
     const auto view = similarity::view(all[c]);
-    append.add(record, view, frames, similarity::summarize(view, chunks).floats);
+    append.add(record, view, frames, search::summarize(view, chunks).floats);
   }
   append.commit();
 }
@@ -59,18 +60,18 @@ TEST_CASE("a store searched in place equals its clips in memory, bit for bit") {
   const auto folder = test::fresh_dir("stored_motions/search");
   write(folder, all, 4, store::motion_summary_layout(4));
   const store::Stored_motions stored(store::Motion_store::open(folder));
-  const similarity::Motion_collection in_memory(all);
+  const search::Motion_collection in_memory(all);
   REQUIRE(stored.size() == all.size());
   for (std::size_t q : {std::size_t(0), std::size_t(2), std::size_t(19)}) {
-    const auto a = similarity::nearest_motions(stored.view(q), stored, {.k = 5});
-    const auto b = similarity::nearest_motions(in_memory.view(q), in_memory, {.k = 5});
+    const auto a = search::nearest_motions(stored.view(q), stored, {.k = 5});
+    const auto b = search::nearest_motions(in_memory.view(q), in_memory, {.k = 5});
     CHECK(a.neighbours == b.neighbours);
     CHECK(a.pruning == b.pruning);
   }
-  const auto graph = similarity::knn_graph(stored, {.k = 3});
-  const auto expected = similarity::knn_graph(in_memory, {.k = 3});
+  const auto graph = search::knn_graph(stored, {.k = 3});
+  const auto expected = search::knn_graph(in_memory, {.k = 3});
   for (std::size_t i = 0; i < all.size(); ++i) CHECK(graph[i].neighbours == expected[i].neighbours);
-  CHECK(similarity::similarity_matrix(stored) == similarity::similarity_matrix(in_memory));
+  CHECK(search::similarity_matrix(stored) == search::similarity_matrix(in_memory));
 }
 
 TEST_CASE("a store of other summaries is refused, naming its manifest") {
@@ -102,8 +103,8 @@ TEST_CASE("a corrupted clip is refused, naming it, the first time a search reads
   CHECK_NOTHROW(stored.view(4));
   CHECK_THROWS_WITH(stored.view(5), Catch::Contains(named) && Catch::Contains("clips-000001.npy"));
   CHECK_THROWS_WITH(stored.view(5), Catch::Contains(named));  // again: it was not marked verified
-  CHECK_THROWS_WITH(similarity::similarity_matrix(stored), Catch::Contains(named));
-  CHECK_THROWS_WITH(similarity::nearest_motions(stored.view(0), stored, {.k = 19}), Catch::Contains(named));
+  CHECK_THROWS_WITH(search::similarity_matrix(stored), Catch::Contains(named));
+  CHECK_THROWS_WITH(search::nearest_motions(stored.view(0), stored, {.k = 19}), Catch::Contains(named));
   CHECK_THROWS_WITH(store::Motion_store::open(folder, store::Verify::checksums), Catch::Contains("corrupted"));
   CHECK_NOTHROW(opened.verify_clip(4));
   CHECK_THROWS_WITH(opened.verify_clip(5), Catch::Contains(named));

@@ -1,6 +1,6 @@
 /// @file store.h
 /// @brief Every public header of module `store`, motion libraries: the motion store, its records,
-/// its transactional appends, and its clips read as a `similarity::MotionCollection`.
+/// its transactional appends, and its clips read as a `search::MotionCollection`.
 #pragma once
 
 #include <deformseg/store/motion_store.h>

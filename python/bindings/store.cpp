@@ -12,7 +12,7 @@
 #include "frontend/store.h"
 
 #include <deformseg/evaluation/motion_labels.h>
-#include <deformseg/similarity/nearest_motions.h>
+#include <deformseg/search/nearest_motions.h>
 
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -173,7 +173,7 @@ std::size_t checked_k(long long k, int threads) {
 
 // A block of the store's clips given as a Python range of step 1 (None: all); the store checks
 // that it holds them.
-std::optional<similarity::Clip_range> clip_range(const py::object& range, const char* name) {
+std::optional<search::Clip_range> clip_range(const py::object& range, const char* name) {
   if (range.is_none()) return std::nullopt;
   if (!py::isinstance(range, py::module_::import("builtins").attr("range")))
     throw py::type_error(std::string(name) + ": expected a range of clips (range(begin, end)) or None, got " +
@@ -182,7 +182,7 @@ std::optional<similarity::Clip_range> clip_range(const py::object& range, const 
   if (range.attr("step").cast<long long>() != 1 || begin < 0 || end < begin)
     refuse(std::string(name) + ": expected range(begin, end) with 0 <= begin <= end and step 1, got " +
            py::repr(range).cast<std::string>());
-  return similarity::Clip_range{std::size_t(begin), std::size_t(end)};
+  return search::Clip_range{std::size_t(begin), std::size_t(end)};
 }
 
 py::dict record_dict(const Opened_store& s, std::size_t i) {
@@ -194,17 +194,17 @@ py::dict record_dict(const Opened_store& s, std::size_t i) {
                   "source_hash"_a = r.source_hash, "topology_path"_a = r.topology_path);
 }
 
-py::dict pruning_dict(const similarity::Pruning_report& p) {
+py::dict pruning_dict(const search::Pruning_report& p) {
   return py::dict("candidates"_a = p.candidates, "pruned_by_summary"_a = p.pruned_by_summary,
                   "pruned_by_rows"_a = p.pruned_by_rows, "abandoned"_a = p.abandoned, "aligned"_a = p.aligned,
                   "rows_aligned"_a = p.rows_aligned, "rows_abandoned"_a = p.rows_abandoned,
                   "pruned_share"_a = p.pruned_share());
 }
 
-py::dict nearest_dict(const Opened_store& s, const similarity::Nearest_motions& found) {
+py::dict nearest_dict(const Opened_store& s, const search::Nearest_motions& found) {
   py::list neighbours;
   for (std::size_t r = 0; r < found.neighbours.size(); ++r) {
-    const similarity::Neighbour& n = found.neighbours[r];
+    const search::Neighbour& n = found.neighbours[r];
     const store::Store_record record = s.search.store().record(n.index);
     neighbours.append(py::dict("rank"_a = r + 1, "index"_a = n.index, "name"_a = s.search.name(n.index),
                                "path"_a = record.path, "clip"_a = record.clip, "body"_a = record.body,
@@ -219,9 +219,9 @@ using Described_query = py::array_t<float, py::array::f_style | py::array::force
 
 py::dict search(const Opened_store& s, const py::object& query, long long k, const py::object& candidates,
                 int threads) {
-  const similarity::Nearest_motions_options options{.k = checked_k(k, threads), .threads = threads,
+  const search::Nearest_motions_options options{.k = checked_k(k, threads), .threads = threads,
                                                     .candidates = clip_range(candidates, "candidates")};
-  similarity::Nearest_motions found;
+  search::Nearest_motions found;
   if (py::isinstance<Animation>(query)) {
     const Animation& animation = query.cast<const Animation&>();
     require_motion(animation.mesh, "query");
@@ -232,7 +232,7 @@ py::dict search(const Opened_store& s, const py::object& query, long long k, con
     if (!described || described.ndim() != 2 || described.shape(0) < 1)
       refuse("query: expected an Animation or its description, an (R, W) float32 array of R >= 1 rows (as "
              "MotionStore.describe gives it)");
-    const similarity::Motion_signature_view view{described.data(), std::size_t(described.shape(0)),
+    const signatures::Motion_signature_view view{described.data(), std::size_t(described.shape(0)),
                                                  std::size_t(described.shape(1))};
     Interruptible_call call;
     found = s.search.nearest(view, options);
@@ -257,10 +257,10 @@ py::array describe_query(const Opened_store& s, const Animation& query) {
 
 py::dict nearest_to_clip(const Opened_store& s, long long i, long long k, const py::object& candidates,
                          int threads) {
-  const similarity::Nearest_motions_options options{.k = checked_k(k, threads), .threads = threads,
+  const search::Nearest_motions_options options{.k = checked_k(k, threads), .threads = threads,
                                                     .candidates = clip_range(candidates, "candidates")};
   const std::size_t clip = clip_index(s, i);
-  similarity::Nearest_motions found;
+  search::Nearest_motions found;
   {
     Interruptible_call call;
     found = s.search.nearest_to_clip(clip, options);
@@ -272,18 +272,18 @@ py::dict nearest_to_clip(const Opened_store& s, long long i, long long k, const 
 // the MotionMatch's fields.
 py::list find_in_store(const Opened_store& s, const Animation& query, long long count, double shortest,
                        int threads) {
-  const similarity::Find_in_collection_options options{
+  const search::Find_in_collection_options options{
       .count = whole_argument("count", count, frontend::result_counts),
       .shortest = number_argument("shortest", shortest, frontend::window_shares),
       .threads = int(whole_argument("threads", threads, frontend::thread_counts))};
   require_motion(query.mesh, "query");
-  std::vector<similarity::Clip_match> matches;
+  std::vector<search::Clip_match> matches;
   {
     Interruptible_call call;
     matches = s.search.find(query.mesh, options);
   }
   py::list out;
-  for (const similarity::Clip_match& c : matches) {
+  for (const search::Clip_match& c : matches) {
     const store::Store_record record = s.search.store().record(c.clip);
     out.append(py::dict("index"_a = c.clip, "name"_a = s.search.name(c.clip), "path"_a = record.path,
                         "clip"_a = record.clip, "body"_a = record.body, "first"_a = c.match.first, "last"_a = c.match.last,
@@ -293,10 +293,10 @@ py::list find_in_store(const Opened_store& s, const Animation& query, long long 
 }
 
 // One query's search results (dicts as search gives) among disjoint blocks of candidates, merged by
-// similarity::merge_nearest: each neighbour's dict kept, its rank renumbered.
+// search::merge_nearest: each neighbour's dict kept, its rank renumbered.
 py::dict merge_nearest(const py::sequence& parts, long long k) {
   const std::size_t kept = whole_argument("k", k, frontend::result_counts);
-  std::vector<similarity::Nearest_motions> found(parts.size());
+  std::vector<search::Nearest_motions> found(parts.size());
   std::map<std::size_t, py::dict> dict_of;
   for (std::size_t p = 0; p < parts.size(); ++p) {
     const std::string where = "parts[" + std::to_string(p) + "]";
@@ -313,14 +313,14 @@ py::dict merge_nearest(const py::sequence& parts, long long k) {
       dict_of[index] = neighbour;
     }
     const auto counts = part["pruning"].cast<py::dict>();
-    similarity::Pruning_report& r = found[p].pruning;
+    search::Pruning_report& r = found[p].pruning;
     for (auto [name, field] : {std::pair{"candidates", &r.candidates}, {"pruned_by_summary", &r.pruned_by_summary},
                                {"pruned_by_rows", &r.pruned_by_rows}, {"abandoned", &r.abandoned},
                                {"aligned", &r.aligned}, {"rows_aligned", &r.rows_aligned},
                                {"rows_abandoned", &r.rows_abandoned}})
       *field = counts[name].cast<std::size_t>();
   }
-  const similarity::Nearest_motions merged = similarity::merge_nearest(found, kept);
+  const search::Nearest_motions merged = search::merge_nearest(found, kept);
   py::list neighbours;
   for (std::size_t r = 0; r < merged.neighbours.size(); ++r) {
     py::dict neighbour(dict_of.at(merged.neighbours[r].index));  // a copy, its rank renumbered
@@ -332,16 +332,16 @@ py::dict merge_nearest(const py::sequence& parts, long long k) {
 
 py::list knn_graph(const Opened_store& s, long long k, const py::object& rows, const py::object& candidates,
                    int threads) {
-  const similarity::Nearest_motions_options options{.k = checked_k(k, threads), .threads = threads,
+  const search::Nearest_motions_options options{.k = checked_k(k, threads), .threads = threads,
                                                     .candidates = clip_range(candidates, "candidates")};
-  const std::optional<similarity::Clip_range> block = clip_range(rows, "rows");
-  std::vector<similarity::Nearest_motions> graph;
+  const std::optional<search::Clip_range> block = clip_range(rows, "rows");
+  std::vector<search::Nearest_motions> graph;
   {
     Interruptible_call call;
     graph = s.search.knn_graph(options, block);
   }
   py::list out;
-  for (const similarity::Nearest_motions& node : graph) out.append(nearest_dict(s, node));
+  for (const search::Nearest_motions& node : graph) out.append(nearest_dict(s, node));
   return out;
 }
 
@@ -349,7 +349,7 @@ py::list knn_graph(const Opened_store& s, long long k, const py::object& rows, c
 // dimension-major (W blocks of R), so a row's values are R floats apart.
 py::array signatures(const py::object& self, long long i) {
   const Opened_store& s = self.cast<const Opened_store&>();
-  const similarity::Motion_signature_view v = s.search.clips().view(clip_index(s, i));
+  const signatures::Motion_signature_view v = s.search.clips().view(clip_index(s, i));
   constexpr auto item = py::ssize_t(sizeof(float));
   py::array a(py::dtype::of<float>(), {py::ssize_t(v.rows), py::ssize_t(v.width)}, {item, py::ssize_t(v.rows) * item},
               v.values, self);
@@ -389,8 +389,8 @@ py::array array_of(Eigen::MatrixXd m) {
 py::array matrix_or_tile(const Opened_store& s, const py::object& rows, const py::object& columns,
                          const std::optional<py::function>& progress, int threads) {
   thread_count(threads, "threads");
-  const std::optional<similarity::Clip_range> r = clip_range(rows, "rows"), c = clip_range(columns, "columns");
-  const similarity::Clip_range all = similarity::all_clips(s.search.clips());  // the whole matrix is the one tile
+  const std::optional<search::Clip_range> r = clip_range(rows, "rows"), c = clip_range(columns, "columns");
+  const search::Clip_range all = search::all_clips(s.search.clips());  // the whole matrix is the one tile
   Eigen::MatrixXd m;
   {
     Interruptible_call call;

@@ -7,6 +7,7 @@
 #include <deformseg/ged.h>
 #include <deformseg/io.h>
 #include <deformseg/mesh.h>
+#include <deformseg/search.h>
 #include <deformseg/signatures.h>
 #include <deformseg/similarity.h>
 #include <deformseg/spatiotemporal.h>
@@ -21,6 +22,7 @@ using namespace signatures;
 using namespace temporal;
 using namespace spatiotemporal;
 using namespace similarity;
+using namespace search;
 using namespace evaluation;
 using namespace color;
 using namespace io;

@@ -20,8 +20,8 @@
 // - `whole_over_read`: whole's time over read's (the goal: at most 2).
 #include <deformseg/io/frame_stream.h>
 #include <deformseg/io/gltf.h>
+#include <deformseg/search/motion_bounds.h>
 #include <deformseg/signatures/motion_signature_stream.h>
-#include <deformseg/similarity/motion_bounds.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/store/store_append.h>
 #include <deformseg/store/stored_motions.h>
@@ -107,13 +107,13 @@ std::size_t read_alone(const std::vector<fs::path>& files) {
 struct Store {
   Store(const fs::path& folder, std::size_t width)
       : append(folder, R"({"policy": "motion-signature", "bench": true})",
-               ds::similarity::summary_width(width, summary_chunks),
+               ds::search::summary_width(width, summary_chunks),
                ds::store::motion_summary_layout(summary_chunks)) {}
 
   void add(const std::string& file, const std::string& clip, std::size_t frames,
            const ds::similarity::Motion_signature_description& description) {
     const auto view = ds::similarity::view(description);
-    const auto summary = ds::similarity::summarize(view, summary_chunks);
+    const auto summary = ds::search::summarize(view, summary_chunks);
     ds::store::Store_record record;
     record.path = file, record.clip = clip, record.fps = fps, record.frame_count = std::uint32_t(frames);
     const std::vector<std::uint32_t> rows(description.frames.begin(), description.frames.end());

@@ -11,7 +11,7 @@
 //
 //   build/test/bench/dtw_path_memory [--benchmark_filter=...]
 #include <deformseg/alignment/dtw.h>
-#include <deformseg/similarity/motion_signature_kernel.h>
+#include <deformseg/signatures/motion_signature_kernel.h>
 
 #include <benchmark/benchmark.h>
 
@@ -60,7 +60,7 @@ void operator delete[](void* p, std::size_t) noexcept { uncounted(p); }
 namespace {
 
 namespace al = deformseg::alignment;
-namespace sim = deformseg::similarity;
+namespace sig = deformseg::signatures;
 
 constexpr std::size_t width = 64;
 
@@ -86,8 +86,8 @@ void dtw_path(benchmark::State& state) {
   const std::size_t limit =
       state.range(1) >= 64 ? std::numeric_limits<std::size_t>::max() : std::size_t(1) << state.range(1);
   const std::vector<float> a = signatures(n, 1), b = signatures(n, 2);
-  const sim::Motion_signature_dissimilarity d({a.data(), n, width}, {b.data(), n, width},
-                                              sim::frame_dissimilarity_unit(width, 1.77));
+  const sig::Motion_signature_dissimilarity d({a.data(), n, width}, {b.data(), n, width},
+                                       sig::frame_dissimilarity_unit(width, 1.77));
   const al::Dtw dtw{.max_trace_bytes = limit};
   std::size_t peak = 0;
   const std::clock_t start = std::clock();  // processor time: align runs on one thread

@@ -1,4 +1,4 @@
-// How much each lower bound of similarity/motion_bounds.h would prune in a top-k search over the
+// How much each lower bound of search/motion_bounds.h would prune in a top-k search over the
 // shared characters (motions.csv). Not a Google Benchmark:
 //
 //   build/test/bench/motion_bounds_pruning [--every S] [-k K] [--chunks C] [--threads T]
@@ -13,7 +13,7 @@
 // no bound exceeds D (and says so: a bench asserts nothing, but a violation would be printed).
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/search/motion_bounds.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 
 #include "../motion_bounds_reference.h"
@@ -33,7 +33,7 @@
 
 using namespace deformseg;
 namespace fs = std::filesystem;
-using similarity::Motion_signature_view;
+using signatures::Motion_signature_view;
 
 namespace {
 
@@ -82,9 +82,9 @@ Motion_signature_view view_of(const Eigen::MatrixXf& m) {
 
 // The rows bound with each query row's own bound (row_bounds: the row against the candidate's
 // chunk boxes) instead of its chunk's: what the exact pass's row bounds give before its first row.
-double per_row_bound(const Motion_signature_view& a, const similarity::Motion_summary_view& b, double unit) {
+double per_row_bound(const Motion_signature_view& a, const search::Motion_summary_view& b, double unit) {
   std::vector<double> r(a.rows);
-  similarity::row_bounds(a, b, unit, r);
+  search::row_bounds(a, b, unit, r);
   const std::size_t n = a.rows, m = b.rows();
   const double d00 = r[0], d_last = r[n - 1];  // no exact corners here: the row bounds alone
   if (n == 1) return r[0];
@@ -103,12 +103,12 @@ int main(int argc, char** argv) {
   const auto clips = described_clips(dir, options.every);
   const std::size_t count = clips.size();
   if (count <= options.k) throw std::runtime_error("fewer clips than k + 1");
-  const double unit = similarity::frame_dissimilarity_unit(std::size_t(clips[0].cols()),
+  const double unit = signatures::frame_dissimilarity_unit(std::size_t(clips[0].cols()),
                                                            similarity::Motion_signature_similarity<>{}.scale);
-  std::vector<similarity::Motion_summary> summaries;
+  std::vector<search::Motion_summary> summaries;
   std::size_t rows = 0;
   for (const auto& c : clips)
-    summaries.push_back(similarity::summarize(view_of(c), options.chunks)), rows += std::size_t(c.rows());
+    summaries.push_back(search::summarize(view_of(c), options.chunks)), rows += std::size_t(c.rows());
   std::printf("%zu clips, %.1f rows on average, width %lld, k = %zu, %zu chunks\n", count,
               double(rows) / double(count), static_cast<long long>(clips[0].cols()), options.k, options.chunks);
 
@@ -123,20 +123,20 @@ int main(int argc, char** argv) {
   using Bound = std::function<double(std::size_t, std::size_t)>;
   const auto summary = [&](std::size_t i) { return summaries[i].view(); };
   const std::vector<std::pair<std::string, Bound>> bounds{
-      {"lb_box", [&](std::size_t q, std::size_t c) { return similarity::lb_box(summary(q), summary(c), unit); }},
-      {"lb_mean", [&](std::size_t q, std::size_t c) { return similarity::lb_mean(summary(q), summary(c), unit); }},
+      {"lb_box", [&](std::size_t q, std::size_t c) { return search::lb_box(summary(q), summary(c), unit); }},
+      {"lb_mean", [&](std::size_t q, std::size_t c) { return search::lb_mean(summary(q), summary(c), unit); }},
       {"lb_rows_columns",
-       [&](std::size_t q, std::size_t c) { return similarity::lb_rows_columns(summary(q), summary(c), unit); }},
+       [&](std::size_t q, std::size_t c) { return search::lb_rows_columns(summary(q), summary(c), unit); }},
       {"max(box, rows_columns)",
        [&](std::size_t q, std::size_t c) {
-         return std::max(similarity::lb_box(summary(q), summary(c), unit),
-                         similarity::lb_rows_columns(summary(q), summary(c), unit));
+         return std::max(search::lb_box(summary(q), summary(c), unit),
+                         search::lb_rows_columns(summary(q), summary(c), unit));
        }},
       {"max(box, mean, rows_columns)",
        [&](std::size_t q, std::size_t c) {
-         return std::max({similarity::lb_box(summary(q), summary(c), unit),
-                          similarity::lb_mean(summary(q), summary(c), unit),
-                          similarity::lb_rows_columns(summary(q), summary(c), unit)});
+         return std::max({search::lb_box(summary(q), summary(c), unit),
+                          search::lb_mean(summary(q), summary(c), unit),
+                          search::lb_rows_columns(summary(q), summary(c), unit)});
        }},
       {"per-row (row_bounds)",
        [&](std::size_t q, std::size_t c) { return per_row_bound(view_of(clips[q]), summary(c), unit); }},
@@ -167,7 +167,7 @@ int main(int argc, char** argv) {
         const double bound = bounds[b].second(q, c), d = dissimilarity[q * count + c];
         violations += bound > d * (1 + 0x1p-40) + 0x1p-50;
         sum_bound += bound, sum_d += d;
-        const bool prune = !similarity::may_beat(bound, kth[q]);
+        const bool prune = !search::may_beat(bound, kth[q]);
         pruned += prune;
         pruned_by[b][q * count + c] = prune;
       }

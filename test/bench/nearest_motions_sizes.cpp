@@ -16,9 +16,9 @@
 // scaled to the collection) as the baseline.
 #include <deformseg/evaluation/motion_labels.h>
 #include <deformseg/io/gltf.h>
+#include <deformseg/search/nearest_motions.h>
 #include <deformseg/signatures/motion_signatures.h>
 #include <deformseg/similarity/motion_similarity.h>
-#include <deformseg/similarity/nearest_motions.h>
 
 #include <algorithm>
 #include <chrono>
@@ -147,12 +147,12 @@ Motion_signature_description synthetic_clip(const std::vector<Motion_signature_d
   return d;
 }
 
-void report_size(const similarity::Motion_collection& collection, const std::vector<Motion_signature_description>& queries,
+void report_size(const search::Motion_collection& collection, const std::vector<Motion_signature_description>& queries,
                  const Settings& s) {
-  similarity::Pruning_report total;
+  search::Pruning_report total;
   const auto start = std::chrono::steady_clock::now();
   for (const auto& q : queries)
-    total += similarity::nearest_motions(similarity::view(q), collection, {.k = s.k, .threads = s.threads}).pruning;
+    total += search::nearest_motions(similarity::view(q), collection, {.k = s.k, .threads = s.threads}).pruning;
   const double per_query = seconds_since(start) / double(queries.size());
   // The baseline: the first `brute` candidates of the first query, every one aligned whole.
   const std::size_t brute = std::min(s.brute, collection.size());
@@ -187,7 +187,7 @@ int main(int argc, char** argv) try {
   std::printf("%zu shared clips described or loaded in %.1f s\n", sources.size(), seconds_since(start));
   std::vector<Motion_signature_description> queries;
   for (std::size_t q = 0; q < s.queries; ++q) queries.push_back(synthetic_clip(sources, (std::uint64_t(1) << 40) + q));
-  similarity::Motion_collection collection;
+  search::Motion_collection collection;
   start = std::chrono::steady_clock::now();
   for (std::size_t size : s.sizes) {
     while (collection.size() < size) collection.add(synthetic_clip(sources, collection.size()));
@@ -195,11 +195,11 @@ int main(int argc, char** argv) try {
     report_size(collection, queries, s);
   }
   if (s.knn_graph > 0) {
-    similarity::Motion_collection graph_clips;
+    search::Motion_collection graph_clips;
     for (std::size_t c = 0; c < s.knn_graph; ++c) graph_clips.add(synthetic_clip(sources, c));
     start = std::chrono::steady_clock::now();
-    const auto graph = similarity::knn_graph(graph_clips, {.k = s.k, .threads = s.threads});
-    similarity::Pruning_report total;
+    const auto graph = search::knn_graph(graph_clips, {.k = s.k, .threads = s.threads});
+    search::Pruning_report total;
     for (const auto& row : graph) total += row.pruning;
     std::printf("knn graph of %zu clips, k = %zu: %.1f s; %.2f %% of the pairs aligned\n", s.knn_graph, s.k,
                 seconds_since(start), 100 * double(total.aligned) / double(total.candidates));

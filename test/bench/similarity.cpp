@@ -20,10 +20,12 @@
 // copies on two tubes' descriptions, on one thread, the dissimilarities computed once and each
 // copy's value without its path (reordering_comparison) or the policy compared afresh on each copy
 // (the generic path, as before).
-#include <deformseg/similarity/motion_signature_kernel.h>
+#include <deformseg/mesh/synthetic.h>
+#include <deformseg/signatures/motion_signature_kernel.h>
+#include <deformseg/similarity/evolving_graph_similarity.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/significance.h>
-#include <deformseg/mesh/synthetic.h>
+#include <deformseg/similarity/strain_distribution_similarity.h>
 
 #include <benchmark/benchmark.h>
 
@@ -100,11 +102,11 @@ Eigen::MatrixXf random_signatures(std::size_t rows, unsigned seed) {
   return s;
 }
 
-similarity::Motion_signature_view view_of(const Eigen::MatrixXf& s) {
+signatures::Motion_signature_view view_of(const Eigen::MatrixXf& s) {
   return {s.data(), std::size_t(s.rows()), std::size_t(s.cols())};
 }
 
-const double unit = similarity::frame_dissimilarity_unit(64, Signatures{}.scale);
+const double unit = signatures::frame_dissimilarity_unit(64, Signatures{}.scale);
 
 void set_cells_per_second(benchmark::State& state, std::size_t n) {
   state.counters["cells_per_second"] =
@@ -114,7 +116,7 @@ void set_cells_per_second(benchmark::State& state, std::size_t n) {
 void kernel_rows(benchmark::State& state) {
   const std::size_t n = std::size_t(state.range(0));
   const Eigen::MatrixXf a = random_signatures(n, 1), b = random_signatures(n, 2);
-  const similarity::Motion_signature_dissimilarity d(view_of(a), view_of(b), unit);
+  const signatures::Motion_signature_dissimilarity d(view_of(a), view_of(b), unit);
   std::vector<double> row(n);
   for (auto _ : state)
     for (std::size_t i = 0; i < n; ++i) {
@@ -128,7 +130,7 @@ void kernel_rows(benchmark::State& state) {
 void kernel_cells(benchmark::State& state) {
   const std::size_t n = std::size_t(state.range(0));
   const Eigen::MatrixXf a = random_signatures(n, 1), b = random_signatures(n, 2);
-  const similarity::Motion_signature_dissimilarity d(view_of(a), view_of(b), unit);
+  const signatures::Motion_signature_dissimilarity d(view_of(a), view_of(b), unit);
   for (auto _ : state)
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < n; ++j) benchmark::DoNotOptimize(d(i, j));

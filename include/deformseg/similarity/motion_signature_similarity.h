@@ -8,13 +8,13 @@
 
 #include <deformseg/alignment/alignment.h>
 #include <deformseg/alignment/dtw.h>
-#include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
+#include <deformseg/mesh/deforming_mesh.h>
+#include <deformseg/signatures/motion_signature_kernel.h>
 #include <deformseg/signatures/motion_signature_stream.h>
+#include <deformseg/signatures/motion_signature_view.h>
 #include <deformseg/signatures/motion_signatures.h>
 #include <deformseg/similarity/motion_signature_explanation.h>
-#include <deformseg/similarity/motion_signature_kernel.h>
-#include <deformseg/similarity/motion_signature_view.h>
 #include <deformseg/similarity/significance.h>
 #include <deformseg/similarity/similarity.h>
 
@@ -60,7 +60,7 @@ inline std::size_t frame_count(const Motion_signature_description& d) { return s
 /// @brief The signatures of `d` as a view: its rows, width and floats, which `d` keeps (it must
 /// outlive the view and not be resized meanwhile).
 /// @par Complexity O(1).
-inline Motion_signature_view view(const Motion_signature_description& d) {
+inline signatures::Motion_signature_view view(const Motion_signature_description& d) {
   return {d.signatures.data(), std::size_t(d.signatures.rows()), std::size_t(d.signatures.cols())};
 }
 
@@ -119,7 +119,7 @@ struct Reordered_columns {
 // computations) exactly in half the memory; column-major, or row-major with Options.
 template <class Scalar, int Options = Eigen::ColMajor>
 Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Options> dissimilarity_matrix(
-    const Motion_signature_dissimilarity& d) {
+    const signatures::Motion_signature_dissimilarity& d) {
   Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Options> out(Eigen::Index(d.rows()), Eigen::Index(d.cols()));
   std::vector<double> row(d.cols());
   for (std::size_t i = 0; i < d.rows(); ++i) {
@@ -172,15 +172,13 @@ private:
 /// (dynamic time warping by default); `normalization` makes the value, for DTW one minus the mean
 /// dissimilarity along the warping path.
 ///
-/// Calibrated values: 1 for an animation and any translated, scaled (or remeshed, up to the area
+/// The value is 1 for an animation and any translated, scaled (or remeshed, up to the area
 /// weights' change) copy of it, turned about the up direction (`Motion_signature_options::up`,
 /// +Y by default; about any axis with `std::nullopt`), and (up to the linear interpolation between
 /// frames) for the same motion sampled at another frame rate, each animation's own
-/// (`frames_per_second`): on the shared characters a clip read at 15, 24 or 60 fps scores at least
-/// 0.95 against itself at 30 fps. A motion played faster, such as the same frames shown at twice the
-/// rate, is a faster motion and scores lower, as a run against a walk. On the shared characters
-/// (`deformseg evaluate`) the median value of same-motion pairs of different bodies is about 0.78
-/// and that of different-motion pairs about 0.46.
+/// (`frames_per_second`). A motion played faster, such as the same frames shown at twice the rate,
+/// is a faster motion and scores lower, as a run against a walk. Chapter 7 of the manual gives the
+/// calibration and what values to expect on real characters.
 ///
 /// What it cannot see: which part of the body moves (a signature is a distribution over the
 /// surface, not a map), nor any direction but up and down.
@@ -202,9 +200,8 @@ struct Motion_signature_similarity {
   /// `Motion_signature_options{}`.
   signatures::Motion_signature_options signatures{};
   /// @brief The RMS difference of two frames' signatures at which their dissimilarity is 1 - 1/e.
-  /// Default 1.77, chosen on the shared characters with each body left out in turn (every fold
-  /// chose it but the robot's) as the smallest scale at which same-motion pairs of different bodies
-  /// score at least 0.7 and different-motion pairs at most 0.5 at the median.
+  /// Default 1.77, chosen so that the same motion on different bodies scores above 0.7 and
+  /// different motions below 0.5 at the median (chapter 7).
   double scale = 1.77;
   /// @brief How the two frame sequences are aligned. Default: dynamic time warping, no window.
   Alignment alignment{};
@@ -213,9 +210,8 @@ struct Motion_signature_similarity {
   /// @brief The fewest signatures per second: an animation sampled more slowly is described every
   /// 1 / `signature_rate` seconds (and at its last frame), its positions interpolated between
   /// frames, so that its signatures meet those of the same motion sampled faster at the same
-  /// instants; one sampled at least this fast, at its frames. Default 30 (the lags' unit): a clip
-  /// read at 15 fps scored 0.94 against itself at 30 fps described at its frames, 0.99 described
-  /// every 1/30 s (the robot's Running; chapter 7).
+  /// instants; one sampled at least this fast, at its frames. Default 30 (the lags' unit; chapter 7
+  /// gives what it changes).
   double signature_rate = 30;
 
   /// @brief What is compared of one animation: its signatures and the frame of each.
@@ -283,13 +279,14 @@ struct Motion_signature_similarity {
   /// @throws invalid_input when the signatures have different widths or none, or the scale is not
   /// positive.
   /// @par Complexity O(1), plus a copy of `described_b`'s signatures when it has fewer than 16 rows.
-  Motion_signature_dissimilarity dissimilarity(const Description& described_a, const Description& described_b) const {
-    const Motion_signature_view a = view(described_a), b = view(described_b);
+  signatures::Motion_signature_dissimilarity dissimilarity(const Description& described_a,
+                                                           const Description& described_b) const {
+    const signatures::Motion_signature_view a = view(described_a), b = view(described_b);
     if (a.width != b.width || a.width == 0)
       throw invalid_input("Motion_signature_similarity: signatures of " + std::to_string(a.width) + " and " +
                           std::to_string(b.width) + " values per frame");
     if (!(scale > 0)) throw invalid_input("Motion_signature_similarity: the scale must be positive");
-    return Motion_signature_dissimilarity(a, b, frame_dissimilarity_unit(a.width, scale));
+    return signatures::Motion_signature_dissimilarity(a, b, signatures::frame_dissimilarity_unit(a.width, scale));
   }
 
   /// @brief The `Ra x Rb` dissimilarities in [0, 1] of the descriptions' rows as a matrix: entry

@@ -6,10 +6,8 @@
 
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/parallel_for.h>
-#include <deformseg/similarity/evolving_graph_similarity.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
 #include <deformseg/similarity/similarity.h>
-#include <deformseg/similarity/strain_distribution_similarity.h>
 #include <deformseg/threads.h>
 
 #include <Eigen/Core>
@@ -227,3 +225,23 @@ Eigen::MatrixXd similarity_matrix(const Queries& queries, const Database& databa
 }
 
 }  // namespace deformseg::similarity
+
+#if DEFORMSEG_COMPILED
+// deformseg::compiled holds these instantiations (src/compiled/similarity.cpp): a program that
+// links it compiles against their declarations. Any other type or policy instantiates where it is
+// used.
+#include <deformseg/mesh/default_mesh.h>
+
+namespace deformseg::similarity {
+extern template Similarity motion_similarity<mesh::Surface_mesh_animation, Default_similarity>(
+    const mesh::Surface_mesh_animation&, const mesh::Surface_mesh_animation&, const Default_similarity&);
+extern template Eigen::MatrixXd similarity_matrix<std::vector<mesh::Surface_mesh_animation>, Default_similarity>(
+    const std::vector<mesh::Surface_mesh_animation>&, const Default_similarity&, const Progress&, int);
+extern template Eigen::MatrixXd similarity_matrix<std::vector<mesh::Surface_mesh_animation>,
+                                                  std::vector<mesh::Surface_mesh_animation>, Default_similarity>(
+    const std::vector<mesh::Surface_mesh_animation>&, const std::vector<mesh::Surface_mesh_animation>&,
+    const Default_similarity&, const Progress&, int);
+extern template Eigen::MatrixXd described_similarity_matrix<Default_similarity>(
+    std::span<const Motion_signature_description>, const Default_similarity&, const Progress&, int);
+}  // namespace deformseg::similarity
+#endif

@@ -10,7 +10,7 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/file_io.h>
 #include <deformseg/io/character_files.h>
-#include <deformseg/similarity/motion_signature_view.h>
+#include <deformseg/signatures/motion_signature_view.h>
 #include <deformseg/store/internal/manifest.h>
 #include <deformseg/store/internal/npy.h>
 #include <deformseg/store/internal/store_files.h>
@@ -102,7 +102,7 @@ public:
   /// @brief Clip `i`'s signatures, `rows x width()` floats dimension-major, in the store's mapping.
   /// @pre `i < size()` (not checked). Valid while a copy of this store exists.
   /// @par Complexity O(1).
-  similarity::Motion_signature_view view(std::size_t i) const {
+  signatures::Motion_signature_view view(std::size_t i) const {
     const Entry& e = entries_[i];
     return {segments_[e.segment].signatures + e.record.block.offset, e.record.rows, width_};
   }

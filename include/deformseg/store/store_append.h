@@ -4,9 +4,9 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/io/files.h>
-#include <deformseg/similarity/motion_signature_view.h>
 #include <deformseg/internal/file_io.h>
+#include <deformseg/io/files.h>
+#include <deformseg/signatures/motion_signature_view.h>
 #include <deformseg/store/internal/manifest.h>
 #include <deformseg/store/internal/npy.h>
 #include <deformseg/store/internal/store_files.h>
@@ -106,7 +106,7 @@ public:
   /// another body is another clip.
   /// @returns its index. @throws invalid_input naming the clip when a precondition fails.
   /// @par Complexity O(its floats) (written to the new data file).
-  std::size_t add(Store_record record, similarity::Motion_signature_view view, std::span<const std::uint32_t> frames,
+  std::size_t add(Store_record record, signatures::Motion_signature_view view, std::span<const std::uint32_t> frames,
                   std::span<const float> summary) {
     const std::size_t index = size();
     check_clip(index, record, view, frames, summary);
@@ -126,7 +126,7 @@ public:
   /// @pre `index < size()`, and the record names the same path, clip and body as the one it replaces.
   /// @throws invalid_input naming the clip when a precondition fails.
   /// @par Complexity O(its floats).
-  void replace(std::size_t index, Store_record record, similarity::Motion_signature_view view,
+  void replace(std::size_t index, Store_record record, signatures::Motion_signature_view view,
                std::span<const std::uint32_t> frames, std::span<const float> summary) {
     if (index >= size())
       throw invalid_input(deformseg::internal::join("cannot replace clip ", std::to_string(index),
@@ -236,7 +236,7 @@ private:
     }
   }
 
-  void check_clip(std::size_t index, const Store_record& r, const similarity::Motion_signature_view& view,
+  void check_clip(std::size_t index, const Store_record& r, const signatures::Motion_signature_view& view,
                   std::span<const std::uint32_t> frames, std::span<const float> summary) {
     const std::string name = internal::clip_name(index, r.path, r.clip, r.body);
     const auto fail = [&](const std::string& what) {
@@ -270,7 +270,7 @@ private:
     summaries_ = std::make_unique<internal::Npy_writer>(path("summaries"), "'<f4'", 4, summary_width_, true);
   }
 
-  void write_block(Store_record& r, const similarity::Motion_signature_view& view,
+  void write_block(Store_record& r, const signatures::Motion_signature_view& view,
                    std::span<const std::uint32_t> frames, std::span<const float> summary) {
     if (!signatures_) open_data_files();
     width_ = view.width;

@@ -1,13 +1,13 @@
 /// @file store/stored_motions.h
 /// @brief `Stored_motions`: a motion store (`Motion_store`) read as a
-/// `similarity::MotionCollection`, so that `similarity::nearest_motions`, `knn_graph` and
+/// `search::MotionCollection`, so that `search::nearest_motions`, `knn_graph` and
 /// `similarity_matrix` search its clips in place; and `motion_summary_layout`, the summary layout
 /// its writers record.
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/similarity/motion_bounds.h>
-#include <deformseg/similarity/motion_collection.h>
+#include <deformseg/search/motion_bounds.h>
+#include <deformseg/search/motion_collection.h>
 #include <deformseg/store/motion_store.h>
 
 #include <atomic>
@@ -23,8 +23,8 @@
 namespace deformseg::store {
 
 /// @brief The manifest's "summary" object of a store whose summaries are
-/// `similarity::summarize(view, chunks)`'s floats: `{"kind": "motion-summary", "chunks": K}`.
-/// A writer passes it to `Store_append` with `similarity::summary_width(width, chunks)`.
+/// `search::summarize(view, chunks)`'s floats: `{"kind": "motion-summary", "chunks": K}`.
+/// A writer passes it to `Store_append` with `search::summary_width(width, chunks)`.
 /// @par Complexity O(1).
 inline std::string motion_summary_layout(std::size_t chunks) {
   return R"({"kind": "motion-summary", "chunks": )" + std::to_string(chunks) + "}";
@@ -44,18 +44,18 @@ inline std::size_t stored_summary_chunks(const Motion_store& store) {
                             store.summary_layout() + "): describe the clips again into a new store",
                         {.file = file});
   const auto count = chunks->get<std::size_t>();
-  if (store.summary_width() != similarity::summary_width(store.width(), count))
+  if (store.summary_width() != search::summary_width(store.width(), count))
     throw invalid_input("the store's summaries have " + std::to_string(store.summary_width()) +
                             " floats, motion summaries of width " + std::to_string(store.width()) + " with " +
                             std::to_string(count) + " chunks " +
-                            std::to_string(similarity::summary_width(store.width(), count)),
+                            std::to_string(search::summary_width(store.width(), count)),
                         {.file = file});
   return count;
 }
 
 }  // namespace internal
 
-/// @brief A motion store's clips as a `similarity::MotionCollection`: clip i's signatures and
+/// @brief A motion store's clips as a `search::MotionCollection`: clip i's signatures and
 /// summary are read in the store's mapping, never copied.
 ///
 /// A clip's block is verified against its checksum (`Motion_store::verify_clip`) the first time its
@@ -85,7 +85,7 @@ public:
   /// @pre `i < size()` (not checked).
   /// @throws invalid_input naming the clip when its block does not match its checksum.
   /// @par Complexity O(1); the first read of a clip O(its block), as `Motion_store::verify_clip`.
-  similarity::Motion_signature_view view(std::size_t i) const {
+  signatures::Motion_signature_view view(std::size_t i) const {
     std::atomic<bool>& verified = (*verified_)[i];
     if (!verified.load(std::memory_order_acquire)) {
       store_.verify_clip(i);  // two threads may both verify a clip: the same answer, once more
@@ -94,7 +94,7 @@ public:
     return store_.view(i);
   }
   /// @brief Clip `i`'s summary. @pre `i < size()` (not checked). @par Complexity O(1).
-  similarity::Motion_summary_view summary(std::size_t i) const {
+  search::Motion_summary_view summary(std::size_t i) const {
     return {store_.summary(i), store_.width(), chunks_};
   }
   /// @brief The store read.
@@ -106,6 +106,6 @@ private:
   std::shared_ptr<std::vector<std::atomic<bool>>> verified_;  // shared by copies, which read the same mapping
 };
 
-static_assert(similarity::MotionCollection<Stored_motions>);
+static_assert(search::MotionCollection<Stored_motions>);
 
 }  // namespace deformseg::store

@@ -5,8 +5,8 @@
 
 #include <frontend/store_search.h>
 
+#include <deformseg/search/find_motion_in_collection.h>
 #include <deformseg/similarity/find_motion.h>
-#include <deformseg/similarity/find_motion_in_collection.h>
 #include <deformseg/store/motion_store.h>
 
 #include <iostream>
@@ -40,10 +40,10 @@ void run_find_in_store(const Find_command_options& o) {
   const std::vector<frontend::Read_input> inputs = read_inputs(o.inputs, o.read);
   progress("looking for " + std::to_string(inputs[0].animation.num_frames()) + " frames in the " +
            std::to_string(library.size()) + " clips of " + o.store);
-  const std::vector<similarity::Clip_match> matches =
+  const std::vector<search::Clip_match> matches =
       library.find(inputs[0].animation, {.count = o.count, .shortest = o.shortest, .threads = o.read.threads});
   nlohmann::json found = nlohmann::json::array();
-  for (const similarity::Clip_match& c : matches) {
+  for (const search::Clip_match& c : matches) {
     const store::Store_record record = library.store().record(c.clip);
     found.push_back({{"clip_index", c.clip}, {"path", record.path}, {"clip", record.clip}, {"body", record.body},
                      {"first", c.match.first}, {"last", c.match.last}, {"similarity", c.match.value},
@@ -53,7 +53,7 @@ void run_find_in_store(const Find_command_options& o) {
                                    {"sources", sources(inputs, o.read)}, {"policy", frontend::Policy_choice{}.policy},
                                    {"values", "descriptions as stored"}, {"matches", found}};
   write_outputs(document, o.json, [&] {
-    for (const similarity::Clip_match& c : matches)
+    for (const search::Clip_match& c : matches)
       std::cout << "clip " << c.clip << "  frames " << c.match.first << " to " << c.match.last << "  similarity "
                 << value_text(c.match.value) << "  " << library.name(c.clip) << '\n';
   });

@@ -7,7 +7,7 @@
 #include <frontend/store.h>
 #include <frontend/store_search.h>
 
-#include <deformseg/similarity/nearest_motions.h>
+#include <deformseg/search/nearest_motions.h>
 #include <deformseg/store/motion_store.h>
 #include <deformseg/store/stored_motions.h>
 
@@ -81,14 +81,14 @@ struct Search_options {
   std::string json;
 };
 
-nlohmann::json pruning_json(const similarity::Pruning_report& p) {
+nlohmann::json pruning_json(const search::Pruning_report& p) {
   return {{"candidates", p.candidates},     {"pruned_by_summary", p.pruned_by_summary},
           {"pruned_by_rows", p.pruned_by_rows}, {"abandoned", p.abandoned},
           {"aligned", p.aligned},           {"rows_aligned", p.rows_aligned},
           {"rows_abandoned", p.rows_abandoned}, {"pruned_share", p.pruned_share()}};
 }
 
-nlohmann::json neighbours_json(const std::vector<similarity::Neighbour>& neighbours, const store::Motion_store& store) {
+nlohmann::json neighbours_json(const std::vector<search::Neighbour>& neighbours, const store::Motion_store& store) {
   nlohmann::json found = nlohmann::json::array();
   for (std::size_t r = 0; r < neighbours.size(); ++r) {
     const store::Store_record record = store.record(neighbours[r].index);
@@ -110,11 +110,11 @@ void run_search(const Search_options& o) {
       throw invalid_input("--clip-index " + std::to_string(i) + ": the store holds " + std::to_string(store.size()) +
                           " clips", {.file = o.store});
   if (store.size() == 0) throw invalid_input("the store holds no clip", {.file = o.store});
-  const similarity::Nearest_motions_options options{.k = o.k, .threads = o.read.threads};
+  const search::Nearest_motions_options options{.k = o.k, .threads = o.read.threads};
   nlohmann::json results = nlohmann::json::array();
   const auto start = std::chrono::steady_clock::now();
   const auto record = [&](const std::string& name, std::optional<std::size_t> index,
-                          const similarity::Nearest_motions& found) {
+                          const search::Nearest_motions& found) {
     results.push_back({{"query", name}, {"clip_index", index ? nlohmann::json(*index) : nlohmann::json()},
                        {"neighbours", neighbours_json(found.neighbours, store)},
                        {"pruning", pruning_json(found.pruning)}});
@@ -159,7 +159,7 @@ std::string csv_field(const std::string& text) {
 
 // The edges, a line each: the store's indices, the rank, the value (every digit), then the two
 // clips' names.
-void write_edges_csv(const std::vector<similarity::Nearest_motions>& graph, const frontend::Store_search& library,
+void write_edges_csv(const std::vector<search::Nearest_motions>& graph, const frontend::Store_search& library,
                      const std::string& path) {
   std::ofstream file;
   if (path != "-") {
@@ -171,7 +171,7 @@ void write_edges_csv(const std::vector<similarity::Nearest_motions>& graph, cons
   out << "source,target,rank,value,source_name,target_name\n";
   for (std::size_t i = 0; i < graph.size(); ++i)
     for (std::size_t r = 0; r < graph[i].neighbours.size(); ++r) {
-      const similarity::Neighbour& n = graph[i].neighbours[r];
+      const search::Neighbour& n = graph[i].neighbours[r];
       out << i << ',' << n.index << ',' << r + 1 << ',' << exact(n.value) << ',' << csv_field(library.name(i)) << ','
           << csv_field(library.name(n.index)) << '\n';
     }
@@ -184,10 +184,10 @@ void run_knn_graph(const Knn_options& o) {
   if (store.size() == 0) throw invalid_input("the store holds no clip", {.file = o.store});
   progress("searching the " + std::to_string(store.size()) + " clips' nearest " + std::to_string(o.k));
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<similarity::Nearest_motions> graph =
+  const std::vector<search::Nearest_motions> graph =
       library.knn_graph({.k = o.k, .threads = o.threads});
   const double seconds = seconds_since(start);
-  similarity::Pruning_report total;
+  search::Pruning_report total;
   for (const auto& node : graph) total += node.pruning;
   if (!o.csv.empty()) write_edges_csv(graph, library, o.csv);
   nlohmann::json document;
@@ -198,7 +198,7 @@ void run_knn_graph(const Knn_options& o) {
       clips.push_back({{"index", i}, {"name", library.name(i)}, {"path", record.path}, {"clip", record.clip},
                        {"body", record.body}});
       for (std::size_t r = 0; r < graph[i].neighbours.size(); ++r) {
-        const similarity::Neighbour& n = graph[i].neighbours[r];
+        const search::Neighbour& n = graph[i].neighbours[r];
         const store::Store_record target = store.record(n.index);
         edges.push_back({{"source", i}, {"target", n.index}, {"rank", r + 1}, {"value", n.value},
                          {"source_path", record.path}, {"source_clip", record.clip}, {"source_body", record.body},

@@ -1,5 +1,5 @@
-/// @file similarity/internal/motion_bounds.h
-/// @brief Details of similarity/motion_bounds.h: the chunks of a summary's rows, box gaps, and the
+/// @file search/internal/motion_bounds.h
+/// @brief Details of search/motion_bounds.h: the chunks of a summary's rows, box gaps, and the
 /// row bound of LB_rows / LB_cols.
 #pragma once
 
@@ -9,7 +9,7 @@
 #include <span>
 #include <utility>
 
-namespace deformseg::similarity::internal {
+namespace deformseg::search::internal {
 
 // The rows [begin, end) whose box is chunk c of `chunks` over `rows` rows: contiguous chunks of
 // near-equal size (sizes differ by at most one). With fewer rows than chunks, chunk c < rows is row
@@ -72,4 +72,4 @@ inline double rows_side_bound(std::size_t n, std::size_t m, std::size_t chunks, 
   return std::min(mean_at(std::max(n, m)), mean_at(n + m - 1));
 }
 
-}  // namespace deformseg::similarity::internal
+}  // namespace deformseg::search::internal

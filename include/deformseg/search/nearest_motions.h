@@ -1,19 +1,20 @@
-/// @file similarity/nearest_motions.h
+/// @file search/nearest_motions.h
 /// @brief `nearest_motions`: the k clips of a `MotionCollection` most similar to a query under the
 /// default policy, exactly as `similarity_matrix` ranks them, most of the collection ruled out by
 /// lower bounds before any alignment; `nearest_others`, a clip's k nearest others in its own
 /// collection; `knn_graph`, every clip's (or a block's) k nearest others; `merge_nearest`, the
-/// searches of blocks of candidates made one; and the all-pairs `similarity_matrix` of a
-/// collection, and its tiles (`similarity_tile`).
+/// searches of blocks of candidates made one. The all-pairs matrix of a collection is
+/// `similarity_tile.h`'s.
 #pragma once
 
-#include <deformseg/alignment/dtw.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/parallel_for.h>
-#include <deformseg/similarity/motion_bounds.h>
-#include <deformseg/similarity/motion_collection.h>
+#include <deformseg/search/internal/aligned_value.h>
+#include <deformseg/search/motion_bounds.h>
+#include <deformseg/search/motion_collection.h>
+#include <deformseg/search/pruning_report.h>
+#include <deformseg/signatures/motion_signature_view.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
-#include <deformseg/similarity/motion_signature_view.h>
 #include <deformseg/threads.h>
 
 #include <Eigen/Core>
@@ -29,7 +30,7 @@
 #include <string>
 #include <vector>
 
-namespace deformseg::similarity {
+namespace deformseg::search {
 
 /// @brief One clip found by `nearest_motions`: its index in the collection and its similarity
 /// value with the query.
@@ -38,35 +39,6 @@ struct Neighbour {
   double value = 0;       ///< `compare(query, clip).value` (oriented as `similarity_matrix`)
   /// @brief Equal index and bit-identical value.
   bool operator==(const Neighbour&) const = default;
-};
-
-/// @brief What the search of one query (or, summed, of several) did with the collection's clips:
-/// every candidate is counted once, in the first of these that decided it.
-struct Pruning_report {
-  std::size_t candidates = 0;         ///< the clips searched: the collection less the query itself
-  std::size_t pruned_by_summary = 0;  ///< ruled out by the bound of their summaries (`lb_mean`)
-  std::size_t pruned_by_rows = 0;     ///< ruled out by the bound of their rows (`lb_rows_columns`)
-  std::size_t abandoned = 0;          ///< aligned in part: the alignment stopped once it could not win
-  std::size_t aligned = 0;            ///< aligned whole: their value computed
-  std::size_t rows_aligned = 0;       ///< rows the alignments of the abandoned ones went through
-  std::size_t rows_abandoned = 0;     ///< rows of the abandoned ones, in all
-
-  /// @brief The share of the candidates ruled out before a full alignment: 0 when there are none.
-  double pruned_share() const { return candidates ? double(candidates - aligned) / double(candidates) : 0.0; }
-
-  /// @brief Adds the counts of `other`.
-  Pruning_report& operator+=(const Pruning_report& other) {
-    candidates += other.candidates;
-    pruned_by_summary += other.pruned_by_summary;
-    pruned_by_rows += other.pruned_by_rows;
-    abandoned += other.abandoned;
-    aligned += other.aligned;
-    rows_aligned += other.rows_aligned;
-    rows_abandoned += other.rows_abandoned;
-    return *this;
-  }
-  /// @brief Equal counts.
-  bool operator==(const Pruning_report&) const = default;
 };
 
 /// @brief The result of `nearest_motions` for one query.
@@ -94,26 +66,6 @@ struct Nearest_motions_options {
 };
 
 namespace internal {
-
-// The value of the default policy for clips a (rows of the alignment) and b, computed by the
-// value pass that gives align's own score and path length; std::nullopt when the pass was
-// abandoned, proven below `at_least`. Counts the rows of an abandoned pass in `report`.
-inline std::optional<double> aligned_value(Motion_signature_view a, Motion_signature_view b, double unit,
-                                           std::optional<double> at_least, std::span<const double> row_bounds,
-                                           Pruning_report& report) {
-  alignment::Dtw_mean_cost_options options;
-  if (at_least) options.abandon_above = 1.0 - *at_least;
-  options.row_bounds = row_bounds;
-  const auto pass = alignment::Dtw{}.mean_cost(a.rows, b.rows, Motion_signature_dissimilarity{a, b, unit}, options);
-  if (pass.abandoned) {
-    ++report.abandoned;
-    report.rows_aligned += pass.rows_done;
-    report.rows_abandoned += a.rows;
-    return std::nullopt;
-  }
-  ++report.aligned;
-  return std::clamp(1.0 - pass.score / double(pass.length), 0.0, 1.0);
-}
 
 // Whether neighbour x ranks before y: greater value, then smaller index.
 inline bool ranks_before(const Neighbour& x, const Neighbour& y) {
@@ -158,8 +110,8 @@ class Query_search {
 public:
   // `self`: the query's index when it is a clip of `collection` (left out, and each pair
   // oriented as similarity_matrix does: the lower index first); `among`: the candidates.
-  Query_search(const C& collection, Motion_signature_view query, std::optional<std::size_t> self, Clip_range among,
-               double unit, std::size_t k, int threads)
+  Query_search(const C& collection, signatures::Motion_signature_view query, std::optional<std::size_t> self,
+               Clip_range among, double unit, std::size_t k, int threads)
       : collection_(collection), query_(query), summary_(summarize(query)), summary_view_(summary_.view()),
         self_(self), among_(among), unit_(unit), k_(k), threads_(threads),
         scratch_(std::size_t(deformseg::thread_count(threads, "nearest_motions"))) {}
@@ -231,7 +183,9 @@ private:
   // a guess, not a bound, at the k nearest.
   std::vector<std::size_t> likeliest(const std::vector<std::size_t>& order) const {
     std::vector<std::size_t> seeds = order;
-    const auto by_guess = [&](std::size_t x, std::size_t y) { return guess(x) != guess(y) ? guess(x) < guess(y) : x < y; };
+    const auto by_guess = [&](std::size_t x, std::size_t y) {
+      return guess(x) != guess(y) ? guess(x) < guess(y) : x < y;
+    };
     const std::size_t count = std::min(k_, seeds.size());
     std::nth_element(seeds.begin(), seeds.begin() + std::ptrdiff_t(count), seeds.end(), by_guess);
     seeds.resize(count);
@@ -260,9 +214,9 @@ private:
   // Candidate c's value, or std::nullopt when it is proven below `threshold` (counted in `report`).
   std::optional<double> value_of(std::size_t c, double threshold, Search_scratch& scratch,
                                  Pruning_report& report) const {
-    const Motion_signature_view clip = collection_.view(c);
+    const signatures::Motion_signature_view clip = collection_.view(c);
     const bool query_first = !self_ || *self_ < c;
-    const Motion_signature_view a = query_first ? query_ : clip, b = query_first ? clip : query_;
+    const signatures::Motion_signature_view a = query_first ? query_ : clip, b = query_first ? clip : query_;
     if (threshold == -std::numeric_limits<double>::infinity()) return aligned_value(a, b, unit_, {}, {}, report);
     const Motion_summary_view clip_summary = collection_.summary(c);
     const std::size_t chunks = summary_view_.chunks() + clip_summary.chunks();
@@ -280,7 +234,7 @@ private:
   }
 
   const C& collection_;
-  Motion_signature_view query_;
+  signatures::Motion_signature_view query_;
   Motion_summary summary_;
   Motion_summary_view summary_view_;  // of summary_, checked once
   std::optional<std::size_t> self_;
@@ -293,15 +247,6 @@ private:
   std::vector<std::optional<double>> values_;  // a batch's values
   std::vector<Pruning_report> counts_;         // a batch's counts
 };
-
-// The unit of the frame dissimilarity of `policy` for signatures of `width` values; refuses what
-// the search's bounds do not cover.
-inline double search_unit(const Motion_signature_similarity<>& policy, std::size_t width, const char* who) {
-  if (policy.alignment.window)
-    throw invalid_input(std::string(who) + ": the search aligns without a window (its bounds assume none)");
-  if (!(policy.scale > 0)) throw invalid_input(std::string(who) + ": the scale must be positive");
-  return frame_dissimilarity_unit(width, policy.scale);
-}
 
 // The candidates `options` names, checked, naming `who`.
 template <MotionCollection C>
@@ -350,9 +295,9 @@ Nearest_motions search_others(const C& collection, std::size_t i, Clip_range amo
 /// alignment (n, m rows); how many are ruled out depends on the data (the manual's chapter 7
 /// gives figures). O(N) memory beyond the collection.
 template <MotionCollection C>
-Nearest_motions nearest_motions(Motion_signature_view query, const C& collection,
+Nearest_motions nearest_motions(signatures::Motion_signature_view query, const C& collection,
                                 const Nearest_motions_options& options = {},
-                                const Motion_signature_similarity<>& policy = {}) {
+                                const similarity::Motion_signature_similarity<>& policy = {}) {
   internal::check_query(collection, query, "nearest_motions");
   const double unit = internal::search_unit(policy, query.width, "nearest_motions");
   const Clip_range among = internal::candidates_of(collection, options, "nearest_motions");
@@ -381,7 +326,7 @@ Nearest_motions nearest_motions(Motion_signature_view query, const C& collection
 /// @include nearest_others.cpp
 template <MotionCollection C>
 Nearest_motions nearest_others(const C& collection, std::size_t i, const Nearest_motions_options& options = {},
-                               const Motion_signature_similarity<>& policy = {}) {
+                               const similarity::Motion_signature_similarity<>& policy = {}) {
   if (i >= collection.size())
     throw invalid_input("nearest_others: no clip " + std::to_string(i) + ": the collection holds " +
                         std::to_string(collection.size()));
@@ -412,8 +357,9 @@ Nearest_motions nearest_others(const C& collection, std::size_t i, const Nearest
 /// @par Example
 /// @include knn_tiles.cpp
 template <MotionCollection C>
-std::vector<Nearest_motions> knn_graph(const C& collection, Clip_range rows, const Nearest_motions_options& options = {},
-                                       const Motion_signature_similarity<>& policy = {}) {
+std::vector<Nearest_motions> knn_graph(const C& collection, Clip_range rows,
+                                       const Nearest_motions_options& options = {},
+                                       const similarity::Motion_signature_similarity<>& policy = {}) {
   internal::check_range(collection, rows, "knn_graph", "rows");
   const Clip_range among = internal::candidates_of(collection, options, "knn_graph");
   std::vector<Nearest_motions> graph(rows.size());
@@ -434,7 +380,7 @@ std::vector<Nearest_motions> knn_graph(const C& collection, Clip_range rows, con
 /// alignments the bounds do not rule out.
 template <MotionCollection C>
 std::vector<Nearest_motions> knn_graph(const C& collection, const Nearest_motions_options& options = {},
-                                       const Motion_signature_similarity<>& policy = {}) {
+                                       const similarity::Motion_signature_similarity<>& policy = {}) {
   return knn_graph(collection, all_clips(collection), options, policy);
 }
 
@@ -460,72 +406,4 @@ inline Nearest_motions merge_nearest(std::span<const Nearest_motions> parts, std
   return merged;
 }
 
-/// @brief A tile of the similarity matrix of `collection`'s clips under `policy` (default the
-/// default policy): entry (a, b) is entry (rows.begin + a, columns.begin + b) of
-/// `similarity_matrix(collection)`, bit for bit; entry (i, j) is `policy.compare(clip min(i, j),
-/// clip max(i, j)).value`.
-///
-/// A tile is the unit of work a cluster hands out: the tiles of a partition of the rows and of the
-/// columns make up the matrix, and since it is symmetric the tiles on and above the diagonal
-/// suffice. A pair whose two entries are in the tile is aligned once.
-/// @param collection a `MotionCollection` described with `policy`'s options.
-/// @param rows, columns the tile's clips. @pre both end at most at `collection.size()` (checked).
-/// @param policy the scale and alignment of the values (default: the default policy's); no window.
-/// @param progress one step a pair aligned (see `Progress`); default none.
-/// @param threads the threads (default 0: all the hardware's threads (`thread_count`)); the values do not depend on it.
-/// @throws invalid_input when `rows` or `columns` are not blocks of the collection, or when `policy`
-/// has a window; cancelled as `similarity_matrix`.
-/// @par Complexity one value pass (`alignment::Dtw::mean_cost`, O(n m W)) per pair of the tile,
-/// counted once when both its entries are in it; O(max rows) memory per thread beyond the tile.
-/// @par Example
-/// @include knn_tiles.cpp
-template <MotionCollection C>
-Eigen::MatrixXd similarity_tile(const C& collection, Clip_range rows, Clip_range columns,
-                                const Motion_signature_similarity<>& policy = {}, const Progress& progress = {},
-                                int threads = 0) {
-  internal::check_range(collection, rows, "similarity_tile", "rows");
-  internal::check_range(collection, columns, "similarity_tile", "columns");
-  Eigen::MatrixXd values(Eigen::Index(rows.size()), Eigen::Index(columns.size()));
-  if (values.size() == 0) return values;
-  const double unit = internal::search_unit(policy, collection.view(rows.begin).width, "similarity_tile");
-  // Entry (i, j) is aligned unless it is the mirror, below the diagonal, of an entry of the tile.
-  const auto mirrored = [&](std::size_t i, std::size_t j) { return j < i && rows.contains(j) && columns.contains(i); };
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (std::size_t i = rows.begin; i < rows.end; ++i)
-    for (std::size_t j = columns.begin; j < columns.end; ++j)
-      if (!mirrored(i, j)) pairs.emplace_back(i, j);
-  const auto at = [&](std::size_t i, std::size_t j) -> double& {
-    return values(Eigen::Index(i - rows.begin), Eigen::Index(j - columns.begin));
-  };
-  deformseg::internal::parallel_for_reporting(pairs.size(), threads, progress, 0, pairs.size(), [&](std::size_t p) {
-    const auto [i, j] = pairs[p];
-    Pruning_report unused;
-    at(i, j) = *internal::aligned_value(collection.view(std::min(i, j)), collection.view(std::max(i, j)), unit, {},
-                                        {}, unused);
-  });
-  for (std::size_t i = rows.begin; i < rows.end; ++i)
-    for (std::size_t j = columns.begin; j < columns.end; ++j)
-      if (mirrored(i, j)) at(i, j) = at(j, i);
-  return values;
-}
-
-/// @brief The similarity of every pair of `collection`'s clips under `policy` (default the default
-/// policy): entry (i, j) and (j, i), i <= j, is `policy.compare(clip i, clip j).value`, bit for
-/// bit the matrix `similarity_matrix` gives for the animations the clips were described from; the
-/// one tile `similarity_tile(collection, all_clips(collection), all_clips(collection))`.
-/// @param collection a `MotionCollection` described with `policy`'s options.
-/// @param policy the scale and alignment of the values (default: the default policy's); no window.
-/// @param progress one step a pair i <= j (see `Progress`); default none.
-/// @param threads the threads (default 0: all the hardware's threads, `thread_count`); the values
-/// do not depend on it.
-/// @throws invalid_input when `policy` has a window or `threads` is out of range; cancelled as
-/// `similarity_matrix`.
-/// @par Complexity N (N + 1) / 2 value passes (`alignment::Dtw::mean_cost`), O(n m W) each, on
-/// `threads` threads; O(max rows) memory per thread beyond the N x N result.
-template <MotionCollection C>
-Eigen::MatrixXd similarity_matrix(const C& collection, const Motion_signature_similarity<>& policy = {},
-                                  const Progress& progress = {}, int threads = 0) {
-  return similarity_tile(collection, all_clips(collection), all_clips(collection), policy, progress, threads);
-}
-
-}  // namespace deformseg::similarity
+}  // namespace deformseg::search

@@ -1,4 +1,4 @@
-/// @file similarity/motion_bounds.h
+/// @file search/motion_bounds.h
 /// @brief Lower bounds of the default policy's dissimilarity of two described motions, from small
 /// fixed-size summaries (`Motion_summary`), and the pruning rule of an exact nearest-motion search.
 ///
@@ -12,8 +12,8 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/similarity/internal/motion_bounds.h>
-#include <deformseg/similarity/motion_signature_view.h>
+#include <deformseg/search/internal/motion_bounds.h>
+#include <deformseg/signatures/motion_signature_view.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-namespace deformseg::similarity {
+namespace deformseg::search {
 
 /// @brief The number of floats of the summary of a view of `width` values per row with `chunks`
 /// chunk boxes: `1 + 5 width + 2 chunks width`.
@@ -117,7 +117,7 @@ private:
 /// @throws invalid_input when the view has no row or no column, more than 2^24 rows, `chunks` is
 /// 0, or `out` does not hold exactly `summary_width(view.width, chunks)` floats.
 /// @par Complexity O(rows width) time, no allocation.
-inline void summarize_into(const Motion_signature_view& view, std::size_t chunks, std::span<float> out) {
+inline void summarize_into(const signatures::Motion_signature_view& view, std::size_t chunks, std::span<float> out) {
   if (view.rows == 0 || view.width == 0) throw invalid_input("summarize: the signatures have no row or no column");
   if (view.rows > summary_max_rows) throw invalid_input("summarize: more than 2^24 rows");
   if (chunks == 0) throw invalid_input("summarize: the chunks must be positive");
@@ -163,7 +163,7 @@ struct Motion_summary {
 /// @param chunks the chunk boxes, default 4.
 /// @throws invalid_input as `summarize_into`.
 /// @par Complexity O(rows width) time, `summary_width(width, chunks)` floats.
-inline Motion_summary summarize(const Motion_signature_view& view, std::size_t chunks = 4) {
+inline Motion_summary summarize(const signatures::Motion_signature_view& view, std::size_t chunks = 4) {
   const std::size_t floats = summary_width(view.width, std::max<std::size_t>(chunks, 1));
   Motion_summary summary{view.width, chunks, std::vector<float>(floats)};
   summarize_into(view, chunks, summary.floats);
@@ -210,7 +210,7 @@ inline void require_same_width(const Motion_summary_view& a, const Motion_summar
 /// @par Complexity O(width), reads lo and hi only.
 inline double lb_box(const Motion_summary_view& a, const Motion_summary_view& b, double unit) {
   internal::require_same_width(a, b, "lb_box");
-  return frame_dissimilarity(internal::box_gap2(a.lo(), a.hi(), b.lo(), b.hi()), unit);
+  return signatures::frame_dissimilarity(internal::box_gap2(a.lo(), a.hi(), b.lo(), b.hi()), unit);
 }
 
 /// @brief LB_mean, the Jensen and chord bound: `chi(max(G, g0)) <= D(A, B)`.
@@ -254,10 +254,10 @@ inline double lb_mean(const Motion_summary_view& a, const Motion_summary_view& b
     g += average_gap * average_gap;
     farthest += far * far;
   }
-  const double f0 = frame_dissimilarity(g0, unit);
+  const double f0 = signatures::frame_dissimilarity(g0, unit);
   if (!(farthest > g0) || !(g > g0)) return f0;
   const double x = std::min(g, farthest);
-  return f0 + (frame_dissimilarity(farthest, unit) - f0) * ((x - g0) / (farthest - g0));
+  return f0 + (signatures::frame_dissimilarity(farthest, unit) - f0) * ((x - g0) / (farthest - g0));
 }
 
 /// @brief LB_rows_columns, the LB_Keogh analogue for a DTW without window whose value is a mean:
@@ -295,10 +295,10 @@ inline double lb_rows_columns(const Motion_summary_view& a, const Motion_summary
       row_gap[ca] = std::min(row_gap[ca], g);
       column_gap[cb] = std::min(column_gap[cb], g);
     }
-  for (double& g : row_gap) g = frame_dissimilarity(g, unit);
-  for (double& g : column_gap) g = frame_dissimilarity(g, unit);
-  const double d00 = frame_dissimilarity(internal::squared_distance(a.first_row(), b.first_row()), unit);
-  const double d_last = frame_dissimilarity(internal::squared_distance(a.last_row(), b.last_row()), unit);
+  for (double& g : row_gap) g = signatures::frame_dissimilarity(g, unit);
+  for (double& g : column_gap) g = signatures::frame_dissimilarity(g, unit);
+  const double d00 = signatures::frame_dissimilarity(internal::squared_distance(a.first_row(), b.first_row()), unit);
+  const double d_last = signatures::frame_dissimilarity(internal::squared_distance(a.last_row(), b.last_row()), unit);
   const std::size_t n = a.rows(), m = b.rows();
   return std::max(internal::rows_side_bound(n, m, ka, row_gap, d00, d_last),
                   internal::rows_side_bound(m, n, kb, column_gap, d00, d_last));
@@ -324,8 +324,8 @@ inline double lb_rows_columns(const Motion_summary_view& a, const Motion_summary
 /// @throws invalid_input when the widths differ, `out` does not hold `query.rows` values or
 /// `scratch` fewer.
 /// @par Complexity O(query.rows chunks width) time.
-inline void row_bounds(const Motion_signature_view& query, const Motion_summary_view& candidate, double unit,
-                       std::span<double> out, std::span<double> scratch) {
+inline void row_bounds(const signatures::Motion_signature_view& query, const Motion_summary_view& candidate,
+                       double unit, std::span<double> out, std::span<double> scratch) {
   if (query.width != candidate.width())
     throw invalid_input("row_bounds: the query is " + std::to_string(query.width) + " wide, the candidate " +
                         std::to_string(candidate.width()));
@@ -348,14 +348,14 @@ inline void row_bounds(const Motion_signature_view& query, const Motion_summary_
     }
     for (std::size_t i = 0; i < n; ++i) out[i] = std::min(out[i], gap2[i]);
   }
-  for (double& r : out) r = frame_dissimilarity(r, unit);
+  for (double& r : out) r = signatures::frame_dissimilarity(r, unit);
 }
 
 /// @brief `row_bounds(query, candidate, unit, out, scratch)` with a scratch of its own.
 /// @throws invalid_input when the widths differ or `out` does not hold `query.rows` values.
 /// @par Complexity O(query.rows chunks width) time, O(query.rows) memory.
-inline void row_bounds(const Motion_signature_view& query, const Motion_summary_view& candidate, double unit,
-                       std::span<double> out) {
+inline void row_bounds(const signatures::Motion_signature_view& query, const Motion_summary_view& candidate,
+                       double unit, std::span<double> out) {
   std::vector<double> scratch(query.rows);
   row_bounds(query, candidate, unit, out, scratch);
 }
@@ -391,4 +391,4 @@ constexpr bool may_beat(double lower_bound, double kth_value) {
   return !(1.0 - safe_lower_bound(lower_bound) < kth_value);
 }
 
-}  // namespace deformseg::similarity
+}  // namespace deformseg::search

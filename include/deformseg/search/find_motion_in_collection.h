@@ -1,4 +1,4 @@
-/// @file similarity/find_motion_in_collection.h
+/// @file search/find_motion_in_collection.h
 /// @brief `find_motion_in_collection`: where a motion occurs in a library, the best non-overlapping
 /// windows over all the clips of a `MotionCollection` that match a query, from the descriptions as
 /// given (`find_motion_in` on each clip, merged).
@@ -6,11 +6,11 @@
 
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/parallel_for.h>
+#include <deformseg/search/motion_collection.h>
+#include <deformseg/signatures/motion_signature_kernel.h>
+#include <deformseg/signatures/motion_signature_view.h>
 #include <deformseg/similarity/find_motion.h>
-#include <deformseg/similarity/motion_collection.h>
-#include <deformseg/similarity/motion_signature_kernel.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
-#include <deformseg/similarity/motion_signature_view.h>
 #include <deformseg/threads.h>
 
 #include <Eigen/Core>
@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace deformseg::similarity {
+namespace deformseg::search {
 
 /// @brief A window of one clip of a collection that matches a query, found by
 /// `find_motion_in_collection`.
@@ -28,7 +28,7 @@ struct Clip_match {
   std::size_t clip = 0;  ///< the clip's index in the collection
   /// @brief The window in the clip's frames (its rows' frames, as the collection keeps them), its
   /// value and alignment, as `find_motion_in` gives them for the query and this clip.
-  Motion_match match;
+  similarity::Motion_match match;
 };
 
 /// @brief The options of `find_motion_in_collection`, an aggregate for designated initializers.
@@ -90,29 +90,30 @@ std::size_t clip_frame(const C& collection, std::size_t i, std::size_t row) {
 /// @par Example
 /// @include find_motion_in_collection.cpp
 template <MotionCollection C>
-std::vector<Clip_match> find_motion_in_collection(const Motion_signature_description& query, const C& collection,
-                                                  const Find_in_collection_options& options = {},
-                                                  const Motion_signature_similarity<>& policy = {}) {
-  const Find_motion_options per_clip{.count = options.count, .shortest = options.shortest};
-  internal::check_find_options(per_clip);
-  const Motion_signature_view q = view(query);
+std::vector<Clip_match> find_motion_in_collection(const similarity::Motion_signature_description& query,
+                                                  const C& collection, const Find_in_collection_options& options = {},
+                                                  const similarity::Motion_signature_similarity<>& policy = {}) {
+  const similarity::Find_motion_options per_clip{.count = options.count, .shortest = options.shortest};
+  similarity::internal::check_find_options(per_clip);
+  const signatures::Motion_signature_view q = similarity::view(query);
   internal::check_query(collection, q, "find_motion_in_collection");
   if (!(policy.scale > 0)) throw invalid_input("find_motion_in_collection: the scale must be positive");
-  const double unit = frame_dissimilarity_unit(q.width, policy.scale);
-  std::vector<std::vector<Motion_match>> per(collection.size());
+  const double unit = signatures::frame_dissimilarity_unit(q.width, policy.scale);
+  std::vector<std::vector<similarity::Motion_match>> per(collection.size());
   deformseg::internal::parallel_for(collection.size(), options.threads, [&](std::size_t i) {
-    per[i] = internal::find_windows_in(
-        internal::dissimilarity_matrix<double>(Motion_signature_dissimilarity(q, collection.view(i), unit)),
-        [&](std::size_t row) { return internal::frame_of_row(query, row); },
+    per[i] = similarity::internal::find_windows_in(
+        similarity::internal::dissimilarity_matrix<double>(
+            signatures::Motion_signature_dissimilarity(q, collection.view(i), unit)),
+        [&](std::size_t row) { return similarity::internal::frame_of_row(query, row); },
         [&](std::size_t row) { return internal::clip_frame(collection, i, row); }, per_clip);
   });
   std::vector<Clip_match> found;
   for (std::size_t i = 0; i < per.size(); ++i)
-    for (Motion_match& m : per[i]) found.push_back({i, std::move(m)});
+    for (similarity::Motion_match& m : per[i]) found.push_back({i, std::move(m)});
   std::stable_sort(found.begin(), found.end(),
                    [](const Clip_match& x, const Clip_match& y) { return x.match.value > y.match.value; });
   if (found.size() > options.count) found.resize(options.count);
   return found;
 }
 
-}  // namespace deformseg::similarity
+}  // namespace deformseg::search

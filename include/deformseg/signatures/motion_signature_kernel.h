@@ -1,11 +1,11 @@
-/// @file similarity/motion_signature_kernel.h
+/// @file signatures/motion_signature_kernel.h
 /// @brief `Motion_signature_dissimilarity`: the frame dissimilarities of two described animations
 /// computed on demand, a cell or a row at a time, by one vectorised float kernel; what
 /// `Motion_signature_similarity` aligns, and what a search over many descriptions calls.
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/similarity/motion_signature_view.h>
+#include <deformseg/signatures/motion_signature_view.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace deformseg::similarity {
+namespace deformseg::signatures {
 
 namespace internal {
 
@@ -189,4 +189,4 @@ private:
   std::vector<float> padded_b_;
 };
 
-}  // namespace deformseg::similarity
+}  // namespace deformseg::signatures

@@ -1,4 +1,4 @@
-/// @file similarity/motion_collection.h
+/// @file search/motion_collection.h
 /// @brief The `MotionCollection` concept, what the nearest-motion search reads (each clip's
 /// signatures and summary, by index), `Motion_collection`, its model over descriptions held in
 /// memory (`store::Motion_store` models it over a store on disk), and `Clip_range`, a block of
@@ -6,9 +6,9 @@
 #pragma once
 
 #include <deformseg/exceptions.h>
-#include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/search/motion_bounds.h>
+#include <deformseg/signatures/motion_signature_view.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
-#include <deformseg/similarity/motion_signature_view.h>
 
 #include <concepts>
 #include <cstddef>
@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-namespace deformseg::similarity {
+namespace deformseg::search {
 
 /// @brief A numbered set of described clips, as the search reads it: `c.size()` clips, clip i's
 /// signatures as `c.view(i)` (a `Motion_signature_view`, every clip of the same width) and its
@@ -26,7 +26,7 @@ namespace deformseg::similarity {
 template <class C>
 concept MotionCollection = requires(const C& c, std::size_t i) {
   { c.size() } -> std::convertible_to<std::size_t>;
-  { c.view(i) } -> std::same_as<Motion_signature_view>;
+  { c.view(i) } -> std::same_as<signatures::Motion_signature_view>;
   { c.summary(i) } -> std::convertible_to<Motion_summary_view>;
 };
 
@@ -43,7 +43,7 @@ public:
   /// @brief The collection of `descriptions`, in their order.
   /// @throws invalid_input as `add`.
   /// @par Complexity O(R W) per description of R rows and W values per row.
-  explicit Motion_collection(std::vector<Motion_signature_description> descriptions) {
+  explicit Motion_collection(std::vector<similarity::Motion_signature_description> descriptions) {
     descriptions_.reserve(descriptions.size());
     for (auto& d : descriptions) add(std::move(d));
   }
@@ -51,7 +51,7 @@ public:
   /// @brief Adds `description` as clip `size()`.
   /// @throws invalid_input when it has no row, or not the width of the clips already in.
   /// @par Complexity O(R W).
-  void add(Motion_signature_description description) {
+  void add(similarity::Motion_signature_description description) {
     const std::size_t rows = std::size_t(description.signatures.rows()),
                       width = std::size_t(description.signatures.cols());
     if (rows == 0 || width == 0)
@@ -67,17 +67,17 @@ public:
   /// @brief The number of clips.
   std::size_t size() const { return descriptions_.size(); }
   /// @brief Clip `i`'s signatures. @pre `i < size()` (not checked).
-  Motion_signature_view view(std::size_t i) const { return similarity::view(descriptions_[i]); }
+  signatures::Motion_signature_view view(std::size_t i) const { return similarity::view(descriptions_[i]); }
   /// @brief Clip `i`'s summary, not checked again: `summarize` made it. @pre `i < size()` (not checked).
   Motion_summary_view summary(std::size_t i) const {
     const Motion_summary& s = summaries_[i];
     return Motion_summary_view::unchecked(s.floats, s.width, s.chunks);
   }
   /// @brief Clip `i`'s description. @pre `i < size()` (not checked).
-  const Motion_signature_description& description(std::size_t i) const { return descriptions_[i]; }
+  const similarity::Motion_signature_description& description(std::size_t i) const { return descriptions_[i]; }
 
 private:
-  std::vector<Motion_signature_description> descriptions_;
+  std::vector<similarity::Motion_signature_description> descriptions_;
   std::vector<Motion_summary> summaries_;
 };
 
@@ -117,7 +117,7 @@ void check_range(const C& collection, Clip_range range, const char* who, const c
 
 // Refuses, naming `who`, a query of no row or of another width than the collection's clips.
 template <MotionCollection C>
-void check_query(const C& collection, Motion_signature_view query, const char* who) {
+void check_query(const C& collection, signatures::Motion_signature_view query, const char* who) {
   if (query.rows == 0) throw invalid_input(std::string(who) + ": the query has no signature");
   if (collection.size() > 0 && query.width != collection.view(0).width)
     throw invalid_input(std::string(who) + ": the query's signatures have " + std::to_string(query.width) +
@@ -126,4 +126,4 @@ void check_query(const C& collection, Motion_signature_view query, const char* w
 
 }  // namespace internal
 
-}  // namespace deformseg::similarity
+}  // namespace deformseg::search

@@ -1,4 +1,4 @@
-/// @file similarity/motion_signature_view.h
+/// @file signatures/motion_signature_view.h
 /// @brief `Motion_signature_view`: the signatures of one described animation as a read-only block
 /// of floats that it does not own, and the frame dissimilarity of two signatures; what a
 /// description, a motion store, the comparison kernel and the lower bounds of a search share.
@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstddef>
 
-namespace deformseg::similarity {
+namespace deformseg::signatures {
 
 /// @brief The `rows x width` signatures of one described animation (one row per described instant,
 /// `width` values per signature), stored dimension-major: the `rows` values of dimension 0, then
@@ -45,4 +45,4 @@ inline double frame_dissimilarity(double squared_distance, double unit) {
   return -std::expm1(-squared_distance * unit);
 }
 
-}  // namespace deformseg::similarity
+}  // namespace deformseg::signatures
