@@ -22,20 +22,21 @@ namespace deformseg::frontend {
 
 namespace {
 
-// The entry of `entries` named `name`, which a check has found there.
-template <class Entry, std::size_t N>
-const Entry& entry_named(const std::array<Entry, N>& entries, std::string_view name) {
-  const auto at = std::ranges::find(entries, name, &Entry::name);
-  if (at == entries.end()) throw std::logic_error("not a checked choice: '" + std::string(name) + "'");
-  return *at;
+Eigen::Vector3d vector_of(const Axis_direction& direction) {
+  return direction.sign * Eigen::Vector3d::Unit(direction.axis);
 }
 
 }  // namespace
 
 std::optional<Eigen::Vector3d> up_direction(std::string_view name) {
   if (name.empty()) return Eigen::Vector3d::UnitY();
-  if (entry_named(up_directions, name).name == "none") return std::nullopt;  // speeds alone
-  return (name[0] == '-' ? -1.0 : 1.0) * Eigen::Vector3d::Unit(name[1] - 'x');  // "+x" ... "-z"
+  const std::optional<Axis_direction>& direction = entry_named(up_directions, name).value;
+  return direction ? std::optional(vector_of(*direction)) : std::nullopt;  // none: speeds alone
+}
+
+std::optional<Eigen::Vector3d> side_direction(std::string_view name) {
+  if (name.empty()) return std::nullopt;
+  return vector_of(entry_named(side_directions, name).value);
 }
 
 const Policy_entry& policy_entry(const Policy_choice& choice) {
@@ -48,33 +49,77 @@ std::string alignment_name(const Policy_choice& choice) {
 
 namespace {
 
-// The threads of `policy`'s own loops, wherever its type keeps them.
-template <class Policy>
-void set_threads(Policy& policy, int threads) {
-  if constexpr (requires { policy.signatures.threads; }) policy.signatures.threads = threads;
-  if constexpr (requires { policy.histograms.histogram.threads; })
-    policy.histograms.strain.threads = policy.histograms.histogram.threads = threads;
-  if constexpr (requires { policy.segmentation.threads; }) policy.threads = policy.segmentation.threads = threads;
-  if constexpr (requires { policy.clustering.threads; }) policy.clustering.threads = threads;
+// `Policy` aligning by `alignment`'s, its options set by `set(policy)`.
+template <template <alignment::AlignmentPolicy> class Policy, class Set>
+similarity::Any_policy aligned_policy(const similarity::Any_alignment& alignment, const Set& set) {
+  return std::visit(
+      [&](const auto& aligner) -> similarity::Any_policy {
+        Policy<std::remove_cvref_t<decltype(aligner)>> policy{};
+        policy.alignment = aligner;
+        set(policy);
+        return policy;
+      },
+      alignment);
+}
+
+// The evolving-graph policy aligning by `alignment`, segmenting as `segmentation` with the
+// threshold of `choice` (given), its segmentation, edit distances and clustering on `threads`.
+similarity::Any_policy graph_policy(const similarity::Any_alignment& alignment,
+                                    const spatiotemporal::Spatiotemporal_options& segmentation,
+                                    const Policy_choice& choice, int threads) {
+  return aligned_policy<similarity::Graph_similarity>(alignment, [&](auto& policy) {
+    policy.segmentation = segmentation;
+    policy.segmentation.threshold = *choice.threshold;
+    policy.threads = policy.segmentation.threads = policy.clustering.threads = threads;
+  });
 }
 
 }  // namespace
+
+similarity::Any_policy signature_policy(const similarity::Any_alignment& alignment, const Policy_choice& choice,
+                                        int threads) {
+  return aligned_policy<similarity::Motion_signature_similarity>(alignment, [&](auto& policy) {
+    policy.signatures.up = up_direction(choice.up);
+    policy.signatures.bands = choice.bands.value_or(1);
+    policy.signatures.sides = side_direction(choice.sides);
+    policy.signatures.threads = threads;
+  });
+}
+
+similarity::Any_policy histogram_policy(const similarity::Any_alignment& alignment, const Policy_choice&,
+                                        int threads) {
+  return aligned_policy<similarity::Strain_distribution_similarity>(alignment, [&](auto& policy) {
+    policy.histograms.strain.threads = policy.histograms.histogram.threads = threads;
+  });
+}
+
+similarity::Any_policy thesis_graph_policy(const similarity::Any_alignment& alignment, const Policy_choice& choice,
+                                           int threads) {
+  return graph_policy(alignment, similarity::thesis_segmentation(), choice, threads);
+}
+
+similarity::Any_policy character_graph_policy(const similarity::Any_alignment& alignment,
+                                              const Policy_choice& choice, int threads) {
+  return graph_policy(alignment, similarity::character_segmentation(), choice, threads);
+}
+
+similarity::Any_policy self_similarity_policy(const similarity::Any_alignment& alignment, const Policy_choice&,
+                                              int) {  // its loops are its alignment's, on one thread
+  return aligned_policy<similarity::Self_similarity_matching>(alignment, [](auto&) {});
+}
 
 similarity::Any_policy make_policy(const Policy_choice& choice, int threads) {
   const Policy_entry& entry = policy_entry(choice);
   Policy_choice given = choice;
   if (entry.threshold) given.threshold = choice.threshold.value_or(*entry.threshold);
-  const similarity::Any_alignment& alignment = entry_named(similarity_alignments, alignment_name(choice)).alignment;
-  similarity::Any_policy policy = entry.make(alignment, given);
-  std::visit([&](auto& chosen) { set_threads(chosen, threads); }, policy);
-  return policy;
+  return entry.make(entry_named(similarity_alignments, alignment_name(choice)).value, given, threads);
 }
 
 void check(const Policy_choice& choice, Front front) {
   check_choice("policy", choice.policy, policy_choices, front);
   if (!choice.alignment.empty()) check_choice("alignment", choice.alignment, alignment_choices, front);
-  if (!choice.up.empty()) check_choice("up", choice.up, up_directions, front);
-  if (!choice.sides.empty()) check_choice("sides", choice.sides, side_directions, front);
+  if (!choice.up.empty()) check_choice("up", choice.up, up_direction_choices, front);
+  if (!choice.sides.empty()) check_choice("sides", choice.sides, side_direction_choices, front);
   const Policy_entry& policy = policy_entry(choice);
   const auto name = [&](const char* parameter) { return spelled(parameter, front); };
   if (choice.threshold && !policy.threshold)
@@ -86,9 +131,9 @@ void check(const Policy_choice& choice, Front front) {
     if (given && !policy.up)
       refuse(name(parameter) + " applies to the motion-signature policy only, not to the " + choice.policy +
              " policy");
-  if (choice.bands.value_or(1) > 1 && choice.up == "none")
+  if (choice.bands.value_or(1) > 1 && !up_direction(choice.up))
     refuse(name("bands") + " " + std::to_string(*choice.bands) + " needs an up direction, not " +
-           spelled("up", "none", front));
+           spelled("up", name_of(up_directions, std::optional<Axis_direction>()), front));
 }
 
 void check(const Comparison_request& r, const Policy_choice& choice, Front front) {

@@ -5,6 +5,7 @@
 
 #include "inputs.h"
 #include "parameters.h"
+#include "registry.h"
 
 #include <deformseg/mesh/default_mesh.h>
 #include <deformseg/similarity/any_policy.h>
@@ -32,138 +33,21 @@ namespace deformseg::frontend {
 /// --policy, --alignment, --threshold, --up, --bands and --sides; Python's keywords of the same names); every other
 /// parameter is the policy's default. An aggregate, for designated initializers.
 struct Policy_choice {
-  std::string policy = "motion-signature";  ///< one of `similarity_policies`; default: the first
-  std::string alignment{};                  ///< one of `similarity_alignments`; empty: the policy's own
-  std::optional<double> threshold{};        ///< a graph policy's deformed threshold; none: the policy's own
-  std::string up{};                         ///< one of `up_directions`; empty: +y
-  std::optional<std::size_t> bands{};       ///< the motion signatures' height bands; none: 1
-  std::string sides{};                      ///< one of `side_directions`; empty: the whole width
-};
-
-/// A similarity policy the front end offers: its name and help, which options apply to it, its
-/// defaults, and the library's policy it makes.
-struct Policy_entry {
-  std::string_view name;
-  std::string_view help;
-  std::string_view alignment;  ///< the alignment's name when none is given
-  /// The deformed threshold when none is given; none: the policy takes no threshold.
-  std::optional<double> threshold = std::nullopt;
-  bool up = false;          ///< whether the policy takes the signatures' up direction, bands and sides
-  bool key_frames = false;  ///< whether its frames are key-frame labels, which no shuffle may test
-  /// The policy aligning by `alignment`, with the options of `choice` (its threshold given).
-  similarity::Any_policy (*make)(const similarity::Any_alignment& alignment, const Policy_choice& choice) = nullptr;
+  std::string policy{similarity_policies[0].name};  ///< one of `similarity_policies`; default: the first
+  std::string alignment{};            ///< one of `similarity_alignments`; empty: the policy's own
+  std::optional<double> threshold{};  ///< a graph policy's deformed threshold; none: the policy's own
+  std::string up{};                   ///< one of `up_directions`; empty: +y
+  std::optional<std::size_t> bands{};  ///< the motion signatures' height bands; none: 1
+  std::string sides{};                 ///< one of `side_directions`; empty: the whole width
 };
 
 /// The up direction a name of `up_directions` gives (+y for an empty name), none for "none".
 /// @pre `name` is empty or one of `up_directions`.
 std::optional<Eigen::Vector3d> up_direction(std::string_view name);
 
-/// The directions across the body that keep its sides apart (`side_direction`); none given: the
-/// whole width, a motion and its mirror image alike.
-inline constexpr std::array side_directions{
-    Choice{"+x", "x across (glTF characters, facing +z)"}, Choice{"-x", "x across, the other way"},
-    Choice{"+y", "y across"}, Choice{"-y", "y across, the other way"},
-    Choice{"+z", "z across"}, Choice{"-z", "z across, the other way"},
-};
-
 /// The direction across the body a name of `side_directions` gives; none for an empty name.
 /// @pre `name` is empty or one of `side_directions`.
-inline std::optional<Eigen::Vector3d> side_direction(const std::string& name) {
-  return name.empty() ? std::nullopt : up_direction(name);
-}
-
-/// `Policy` aligning by `alignment`'s, its options set by `set(policy)`.
-template <template <alignment::AlignmentPolicy> class Policy, class Set>
-similarity::Any_policy aligned_policy(const similarity::Any_alignment& alignment, const Set& set) {
-  return std::visit(
-      [&](const auto& aligner) -> similarity::Any_policy {
-        Policy<std::remove_cvref_t<decltype(aligner)>> policy{};
-        policy.alignment = aligner;
-        set(policy);
-        return policy;
-      },
-      alignment);
-}
-
-/// The evolving-graph policy aligning by `alignment`, segmenting as `segmentation()` with the
-/// threshold of `choice` (given).
-template <spatiotemporal::Spatiotemporal_options (*segmentation)()>
-similarity::Any_policy graph_policy(const similarity::Any_alignment& alignment, const Policy_choice& choice) {
-  return aligned_policy<similarity::Graph_similarity>(alignment, [&](auto& policy) {
-    policy.segmentation = segmentation();
-    policy.segmentation.threshold = *choice.threshold;
-  });
-}
-
-/// The similarity policies: the one table of their names, help, rules and defaults, whose names the
-/// tool's --policy and Python's policy= take; the first is the default.
-inline constexpr std::array similarity_policies{
-    Policy_entry{.name = "motion-signature",
-                 .help = "per-frame distributions of how fast, and how fast up or down, the surface moves at "
-                         "several time scales, no correspondence needed (default)",
-                 .alignment = "dtw",
-                 .up = true,
-                 .make = [](const similarity::Any_alignment& alignment, const Policy_choice& choice) {
-                   return aligned_policy<similarity::Motion_signature_similarity>(
-                       alignment, [&](auto& policy) {
-                         policy.signatures.up = up_direction(choice.up);
-                         policy.signatures.bands = choice.bands.value_or(1);
-                         policy.signatures.sides = side_direction(choice.sides);
-                       });
-                 }},
-    Policy_entry{.name = "histogram",
-                 .help = "per-frame histograms of the strain, no correspondence needed; its values crowd near 1 "
-                         "(chapter 7 of the manual gives figures): read the z-score or a rank, not the value",
-                 .alignment = "smith-waterman",
-                 .make = [](const similarity::Any_alignment& alignment, const Policy_choice&) {
-                   return aligned_policy<similarity::Strain_distribution_similarity>(alignment, [](auto&) {});
-                 }},
-    Policy_entry{.name = "graph",
-                 .help = "the thesis' method: evolving graphs, graph edit distances, clustering and label "
-                         "alignment (Smith-Waterman); for bodies that deform alike, as the thesis' animals",
-                 .alignment = "smith-waterman",
-                 .threshold = 0.5,  // thesis_segmentation()'s
-                 .key_frames = true,
-                 .make = graph_policy<similarity::thesis_segmentation>},
-    Policy_entry{.name = "self-similarity",
-                 .help = "each animation's own frame x frame distances after rigid alignment",
-                 .alignment = "smith-waterman",
-                 .make = [](const similarity::Any_alignment& alignment, const Policy_choice&) {
-                   return aligned_policy<similarity::Self_similarity_matching>(alignment, [](auto&) {});
-                 }},
-    Policy_entry{.name = "graph-characters",
-                 .help = "the evolving graphs with settings tuned on game characters (a fixed strain scale, "
-                         "threshold 0.3, parts linked, segments of 6 frames, DTW); not the thesis' method",
-                 .alignment = "dtw",
-                 .threshold = 0.3,  // character_segmentation()'s
-                 .key_frames = true,
-                 .make = graph_policy<similarity::character_segmentation>},
-};
-
-/// An alignment the front end offers: its name, its help and the library's alignment.
-struct Alignment_entry {
-  std::string_view name;
-  std::string_view help;
-  similarity::Any_alignment alignment;
-};
-
-/// The alignments, whose names the tool's --alignment and Python's alignment= take; none given: the
-/// policy's own (`Policy_entry::alignment`).
-inline constexpr std::array similarity_alignments{
-    Alignment_entry{"smith-waterman", "local: the best matching parts", alignment::Smith_waterman{}},
-    Alignment_entry{"dtw", "global: both whole", alignment::Dtw{}},
-    Alignment_entry{"subsequence-dtw", "open begin and end", alignment::Subsequence_dtw{}},
-};
-
-/// The names and helps of `similarity_policies` and `similarity_alignments`, for their parameters.
-inline constexpr std::array policy_choices = choices_of(similarity_policies);
-inline constexpr std::array alignment_choices = choices_of(similarity_alignments);
-
-/// The up directions of the motion signatures (`up_direction`); none given: +y (glTF's up).
-inline constexpr std::array up_directions{
-    Choice{"+x", "x up"},     Choice{"-x", "x down"}, Choice{"+y", "y up (default, glTF's)"}, Choice{"-y", "y down"},
-    Choice{"+z", "z up"},     Choice{"-z", "z down"}, Choice{"none", "speeds alone, blind to direction"},
-};
+std::optional<Eigen::Vector3d> side_direction(std::string_view name);
 
 /// The policy choice's table.
 inline constexpr std::tuple policy_parameters{
@@ -179,7 +63,7 @@ inline constexpr std::tuple policy_parameters{
     choice_parameter("up", &Policy_choice::up,
                      "motion-signature: the animations' up axis, whose rises and falls the signatures tell apart. "
                      "Default: +y",
-                     up_directions),
+                     up_direction_choices),
     numeric_parameter("bands", &Policy_choice::bands,
                       "motion-signature: the surface cut into this many bands of equal height in the first pose, "
                       "each compared with the band at its height, so that a big head does not outweigh the legs "
@@ -189,7 +73,7 @@ inline constexpr std::tuple policy_parameters{
                      "motion-signature: keep the two sides of the body apart, cut at its centre along this axis "
                      "across it, so that a motion and its mirror image (a left and a right kick) differ. Default: "
                      "none, the two alike",
-                     side_directions),
+                     side_direction_choices),
 };
 
 /// The entry of `similarity_policies` that `choice` names.

@@ -9,16 +9,22 @@
 namespace deformseg::frontend {
 
 void check(const Spatiotemporal_request& r, Front front) {
-  if (!r.reference.empty()) check_choice("reference", r.reference, segmentation_references, front);
-  if (!r.reference_mesh.empty() && r.reference == "previous")
+  if (!r.reference.empty()) check_choice("reference", r.reference, segmentation_reference_choices, front);
+  constexpr auto previous = strain::Strain_reference::previous_pose;
+  if (!r.reference_mesh.empty() && !r.reference.empty() &&
+      entry_named(segmentation_references, r.reference).value == previous)
     refuse(spelled("reference_mesh", front) + " is a rest pose: it excludes " +
-           spelled("reference", "previous", front));
+           spelled("reference", name_of(segmentation_references, previous), front));
 }
 
 spatiotemporal::Spatiotemporal_options segmentation_options(const Spatiotemporal_request& r) {
-  const std::string reference = r.reference.empty() ? (r.reference_mesh.empty() ? "previous" : "rest") : r.reference;
+  // None given: the previous pose, or the rest pose of a reference mesh.
+  const strain::Strain_reference reference =
+      !r.reference.empty()      ? entry_named(segmentation_references, r.reference).value
+      : r.reference_mesh.empty() ? strain::Strain_reference::previous_pose
+                                 : strain::Strain_reference::rest_pose;
   return {
-      .reference = reference == "rest" ? strain::Strain_reference::rest_pose : strain::Strain_reference::previous_pose,
+      .reference = reference,
       .sigma = r.sigma,
       .threshold = r.threshold,
       .min_triangles = r.min_triangles,

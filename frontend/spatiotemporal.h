@@ -3,6 +3,7 @@
 #pragma once
 
 #include "parameters.h"
+#include "registry.h"
 #include "strain.h"
 
 #include <deformseg/io/files.h>
@@ -38,12 +39,6 @@
 
 namespace deformseg::frontend {
 
-/// What a cell's strain is measured against, for the spatio-temporal segmentation.
-inline constexpr std::array segmentation_references{
-    Choice{"previous", "deformed while it moves (default without a reference mesh)"},
-    Choice{"rest", "deformed while away from frame 0, or from the reference mesh (the default with one)"},
-};
-
 /// A spatio-temporal segmentation as the user asks for it.
 struct Spatiotemporal_request {
   double threshold = spatiotemporal::Spatiotemporal_options{}.threshold;
@@ -64,7 +59,7 @@ inline constexpr std::tuple spatiotemporal_parameters{
     numeric_parameter("threshold", &Spatiotemporal_request::threshold,
                       "A cell is deformed above this normalised strain. Default: 0.5", shares),
     choice_parameter("reference", &Spatiotemporal_request::reference, "What the strain is measured against",
-                     segmentation_references),
+                     segmentation_reference_choices),
     reference_mesh_parameter<Spatiotemporal_request>(),
     numeric_parameter("sigma", &Spatiotemporal_request::sigma,
                       "The strain's Gaussian normalisation sigma, fixed for every animation. Default: each "

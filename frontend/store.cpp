@@ -9,7 +9,7 @@
 #include <deformseg/io/frame_stream.h>
 #include <deformseg/io/gltf.h>
 #include <deformseg/io/read_animation.h>
-#include <deformseg/similarity/motion_bounds.h>
+#include <deformseg/search/motion_bounds.h>
 #include <deformseg/store/store_append.h>
 
 #include <sys/stat.h>
@@ -244,8 +244,10 @@ std::size_t signature_width(const similarity::Default_similarity& policy) {
 std::string store_description(const similarity::Default_similarity& policy) {
   const signatures::Motion_signature_options& s = policy.signatures;
   const std::size_t width = signature_width(policy);
+  // The store's policy is the registry's default (store_policy refuses any other).
+  const Policy_entry& stored = similarity_policies[0];
   nlohmann::json description = {
-      {"policy", "motion-signature"}, {"alignment", "dtw"},         {"lags", s.lags},
+      {"policy", stored.name},        {"alignment", stored.alignment}, {"lags", s.lags},
       {"quantiles", s.quantiles},     {"floor", s.floor},           {"up", up_json(s.up)},
       {"vertical_unit", s.vertical_unit}, {"vertical_weight", s.vertical_weight},
       {"signature_rate", policy.signature_rate}, {"scale", policy.scale}, {"width", width}};
@@ -261,11 +263,11 @@ Policy_choice stored_policy_choice(const store::Motion_store& store) {
     throw invalid_input("the store's description is not one of motion signatures: " + store.description(),
                         {.file = manifest});
   Policy_choice choice;
-  for (const Choice& up : up_directions)
+  for (const Choice& up : up_direction_choices)
     if (up_json(up_direction(up.name)) == stored["up"]) choice.up = up.name;
   if (const auto bands = stored.find("bands"); bands != stored.end() && bands->is_number_unsigned())
     choice.bands = bands->get<std::size_t>();
-  for (const Choice& side : side_directions)
+  for (const Choice& side : side_direction_choices)
     if (stored.contains("sides") && up_json(side_direction(std::string(side.name))) == stored["sides"])
       choice.sides = side.name;
   const nlohmann::json expected = nlohmann::json::parse(store_description(store_policy(choice, Front::command_line)));
@@ -353,7 +355,7 @@ struct Described_clip {
   std::uint32_t frame_count = 0;
   double fps = 0;
   similarity::Motion_signature_description description;
-  similarity::Motion_summary summary;
+  search::Motion_summary summary;
   std::string warning;  ///< of outlying vertices (`Outliers::warning`), said when it is appended
 };
 
@@ -378,7 +380,7 @@ invalid_input of_clip(const Clip_source& clip, const invalid_input& error) {
 }
 
 Described_clip summarized(std::size_t frames, double fps, similarity::Motion_signature_description description) {
-  similarity::Motion_summary summary = similarity::summarize(similarity::view(description), store_summary_chunks);
+  search::Motion_summary summary = search::summarize(similarity::view(description), store_summary_chunks);
   return {std::uint32_t(frames), fps, std::move(description), std::move(summary), {}};
 }
 
@@ -565,7 +567,7 @@ std::size_t describe_batch(int threads) { return std::max<std::size_t>(32, 4 * s
 // Appends `described` as clip `clip` of `record` (replacing the clip's old description, if any).
 void append_clip(store::Store_append& append, const Clip_source& clip, const store::Store_record& record,
                  const Described_clip& described, Describe_report& report) {
-  const similarity::Motion_signature_view view = similarity::view(described.description);
+  const signatures::Motion_signature_view view = similarity::view(described.description);
   const std::vector<std::uint32_t> frames(described.description.frames.begin(), described.description.frames.end());
   if (const std::optional<std::size_t> at = append.store().find(record.path, record.clip, record.body)) {
     append.replace(*at, record, view, frames, described.summary.floats);
@@ -657,7 +659,7 @@ Describe_report describe_clips(const std::string& folder, const std::vector<Clip
                                Listed_parses* listed) {
   const auto start_append = [&] {
     return std::make_unique<store::Store_append>(folder, store_description(policy),
-                                              similarity::summary_width(signature_width(policy), store_summary_chunks),
+                                              search::summary_width(signature_width(policy), store_summary_chunks),
                                               store::motion_summary_layout(store_summary_chunks));
   };
   std::unique_ptr<store::Store_append> append = start_append();

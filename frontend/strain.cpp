@@ -6,38 +6,28 @@
 namespace deformseg::frontend {
 
 void check(const Strain_request& r, Front front) {
-  check_choice("reference", r.reference, strain_references, front);
-  check_choice("measure", r.measure, strain_measures, front);
-  check_choice("normalize", r.normalize, strain_normalizations, front);
+  check_choice("reference", r.reference, strain_reference_choices, front);
+  check_choice("measure", r.measure, strain_measure_choices, front);
+  check_choice("normalize", r.normalize, strain_normalization_choices, front);
   const auto name = [&](const char* parameter) { return spelled(parameter, front); };
-  if (r.sigma && r.normalize != "gaussian")
-    refuse(name("sigma") + " asks for " + spelled("normalize", "gaussian", front));
-  if (r.reference == "previous" && r.rest_frame != 0)
-    refuse(name("rest_frame") + " asks for " + spelled("reference", "rest", front));
-  if (!r.reference_mesh.empty() && (r.reference == "previous" || r.rest_frame != 0))
+  constexpr auto rest = strain::Strain_reference::rest_pose, previous = strain::Strain_reference::previous_pose;
+  if (r.sigma && !entry_named(strain_normalizations, r.normalize).value)
+    refuse(name("sigma") + " asks for " + spelled("normalize", name_of(strain_normalizations, true), front));
+  const bool against_previous = entry_named(strain_references, r.reference).value == previous;
+  if (against_previous && r.rest_frame != 0)
+    refuse(name("rest_frame") + " asks for " + spelled("reference", name_of(strain_references, rest), front));
+  if (!r.reference_mesh.empty() && (against_previous || r.rest_frame != 0))
     refuse(name("reference_mesh") + " takes the place of the rest frame: it excludes " +
-           spelled("reference", "previous", front) + " and " + name("rest_frame"));
+           spelled("reference", name_of(strain_references, previous), front) + " and " + name("rest_frame"));
 }
-
-namespace {
-
-strain::Strain_measure_choice measure_of(const std::string& name) {
-  if (name == "green-lagrange") return strain::Green_lagrange_strain{};
-  if (name == "frobenius") return strain::Frobenius_strain{};
-  if (name == "area-ratio") return strain::Area_ratio_strain{};
-  return strain::Max_principal_strain{};
-}
-
-}  // namespace
 
 strain::Strain_options strain_options(const Strain_request& r, int threads) {
-  return {.reference = r.reference == "previous" ? strain::Strain_reference::previous_pose
-                                                 : strain::Strain_reference::rest_pose,
+  return {.reference = entry_named(strain_references, r.reference).value,
           .rest_frame = r.rest_frame,
-          .measure = measure_of(r.measure),
-          .normalization = r.normalize == "none"
-                               ? strain::Strain_normalization_choice(strain::No_normalization{})
-                               : strain::Gaussian_normalization{.sigma = r.sigma},
+          .measure = entry_named(strain_measures, r.measure).value,
+          .normalization = entry_named(strain_normalizations, r.normalize).value
+                               ? strain::Strain_normalization_choice(strain::Gaussian_normalization{.sigma = r.sigma})
+                               : strain::No_normalization{},
           .degenerate_tolerance = r.degenerate_tolerance,
           .threads = threads};
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "parameters.h"
+#include "registry.h"
 
 #include <deformseg/mesh/default_mesh.h>
 #include <deformseg/strain/strain.h>
@@ -15,33 +16,13 @@
 
 namespace deformseg::frontend {
 
-/// The built-in strain measures.
-inline constexpr std::array strain_measures{
-    Choice{"max-principal", "max |l - 1| over the principal stretches l (default)"},
-    Choice{"green-lagrange", "the Green-Lagrange strain of largest magnitude, max |l^2 - 1| / 2"},
-    Choice{"frobenius", "the Frobenius norm of U - I, U the right stretch tensor"},
-    Choice{"area-ratio", "the change of area |J - 1|, J = l1 l2: blind to shape"},
-};
-
-/// The normalisations of the strain.
-inline constexpr std::array strain_normalizations{
-    Choice{"gaussian", "1 - exp(-s^2 / 2 sigma^2), sigma the 95th percentile of the strains unless given (default)"},
-    Choice{"none", "the raw strains"},
-};
-
-/// What the strain is measured against.
-inline constexpr std::array strain_references{
-    Choice{"rest", "one pose: a frame (the rest frame) or the reference mesh (default)"},
-    Choice{"previous", "the frame before (frame 0's strain is 0)"},
-};
-
 /// A strain as the user asks for it.
 struct Strain_request {
-  std::string reference = "rest";
+  std::string reference{strain_references[0].name};
   std::size_t rest_frame = 0;
   std::string reference_mesh{};  ///< a mesh file in the place of the rest frame; empty: none
-  std::string measure = "max-principal";
-  std::string normalize = "gaussian";
+  std::string measure{strain_measures[0].name};
+  std::string normalize{strain_normalizations[0].name};
   std::optional<double> sigma{};
   double degenerate_tolerance = 1e-12;
 };
@@ -59,12 +40,12 @@ constexpr Parameter<Request, std::string> reference_mesh_parameter() {
 /// The strain request's table.
 inline constexpr std::tuple strain_parameters{
     choice_parameter("reference", &Strain_request::reference, "What the strain is measured against",
-                     strain_references),
+                     strain_reference_choices),
     numeric_parameter("rest_frame", &Strain_request::rest_frame, "The rest frame, with reference rest. Default: 0",
                       counts()),
     reference_mesh_parameter<Strain_request>(),
-    choice_parameter("measure", &Strain_request::measure, "The strain measure", strain_measures),
-    choice_parameter("normalize", &Strain_request::normalize, "The normalisation", strain_normalizations),
+    choice_parameter("measure", &Strain_request::measure, "The strain measure", strain_measure_choices),
+    choice_parameter("normalize", &Strain_request::normalize, "The normalisation", strain_normalization_choices),
     numeric_parameter("sigma", &Strain_request::sigma,
                       "The Gaussian normalisation's sigma. Default: the 95th percentile", positive),
     numeric_parameter("degenerate_tolerance", &Strain_request::degenerate_tolerance,

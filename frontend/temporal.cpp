@@ -1,19 +1,23 @@
 #include "temporal.h"
 
+#include <algorithm>
+#include <optional>
+
 namespace deformseg::frontend {
 
 void check(const Frame_distance_request& r, Front front) {
-  check_choice("metric", r.metric, frame_metrics, front);
+  check_choice("metric", r.metric, frame_metric_choices, front);
   if (!r.reference_mesh.empty() && r.rest_frame != 0)
     refuse(spelled("reference_mesh", front) + " takes the place of the rest frame: it excludes " +
            spelled("rest_frame", front));
 }
 
 void check(const Temporal_request& r, Front front) {
-  check_choice("method", r.method, temporal_methods, front);
+  check_choice("method", r.method, temporal_method_choices, front);
   check(distance_request(r), front);
-  const auto name = [&](const char* parameter) { return spelled(parameter, front); };
-  if (r.segments && r.method != "optimal") refuse(name("segments") + " asks for " + spelled("method", "optimal", front));
+  if (r.segments && !entry_named(temporal_methods, r.method).counts)
+    refuse(spelled("segments", front) + " asks for " +
+           spelled("method", std::ranges::find_if(temporal_methods, &Temporal_method::counts)->name, front));
 }
 
 Frame_distance_request distance_request(const Temporal_request& r) {
@@ -22,31 +26,43 @@ Frame_distance_request distance_request(const Temporal_request& r) {
 
 Eigen::MatrixXf frame_distances(const mesh::Surface_mesh_animation& animation, const Frame_distance_request& r,
                                 int threads) {
-  const strain::Frame_metric metric = r.metric == "l1"       ? strain::Frame_metric::l1
-                                      : r.metric == "cosine" ? strain::Frame_metric::cosine
-                                                             : strain::Frame_metric::euclidean;
+  const strain::Frame_metric metric = entry_named(frame_metrics, r.metric).value;
   const auto field = strain_against(animation, r.reference_mesh, {.rest_frame = r.rest_frame, .threads = threads});
   return strain::frame_distances(field, {.metric = metric, .threads = threads});
 }
 
-Temporal_result segment(const Eigen::MatrixXf& distances, const Temporal_request& r) {
-  const temporal::Segment_cost cost(distances);
-  const auto threshold_or = [&](temporal::Segmentation_threshold fallback) {
-    return r.threshold ? temporal::Segmentation_threshold{.value = *r.threshold, .relative = !r.absolute} : fallback;
-  };
-  if (r.method == "binary-split") {
-    const temporal::Binary_split policy{.threshold = threshold_or(temporal::Binary_split{}.threshold),
-                                        .min_length = r.min_length};
-    return {temporal::segment_frames(cost, policy), policy.threshold};
-  }
-  if (r.method == "greedy") {
-    const temporal::Thesis_greedy policy{.threshold = threshold_or(temporal::Thesis_greedy{}.threshold)};
-    return {temporal::segment_frames(cost, policy), policy.threshold};
-  }
-  if (r.method == "barbic") return {temporal::segment_frames(cost, temporal::Barbic_pca{}), std::nullopt};
-  const temporal::Optimal_partition policy{.penalty = threshold_or(temporal::Optimal_partition{}.penalty),
+namespace {
+
+// The request's threshold (relative unless absolute), or `fallback`, the method's own.
+temporal::Segmentation_threshold threshold_or(const Temporal_request& r, temporal::Segmentation_threshold fallback) {
+  return r.threshold ? temporal::Segmentation_threshold{.value = *r.threshold, .relative = !r.absolute} : fallback;
+}
+
+}  // namespace
+
+Temporal_result optimal_segments(const temporal::Segment_cost& cost, const Temporal_request& r) {
+  const temporal::Optimal_partition policy{.penalty = threshold_or(r, temporal::Optimal_partition{}.penalty),
                                            .segments = r.segments, .min_length = r.min_length};
   return {temporal::segment_frames(cost, policy), r.segments ? std::nullopt : std::optional(policy.penalty)};
+}
+
+Temporal_result binary_split_segments(const temporal::Segment_cost& cost, const Temporal_request& r) {
+  const temporal::Binary_split policy{.threshold = threshold_or(r, temporal::Binary_split{}.threshold),
+                                      .min_length = r.min_length};
+  return {temporal::segment_frames(cost, policy), policy.threshold};
+}
+
+Temporal_result greedy_segments(const temporal::Segment_cost& cost, const Temporal_request& r) {
+  const temporal::Thesis_greedy policy{.threshold = threshold_or(r, temporal::Thesis_greedy{}.threshold)};
+  return {temporal::segment_frames(cost, policy), policy.threshold};
+}
+
+Temporal_result barbic_segments(const temporal::Segment_cost& cost, const Temporal_request&) {
+  return {temporal::segment_frames(cost, temporal::Barbic_pca{}), std::nullopt};
+}
+
+Temporal_result segment(const Eigen::MatrixXf& distances, const Temporal_request& r) {
+  return entry_named(temporal_methods, r.method).segment(temporal::Segment_cost(distances), r);
 }
 
 nlohmann::json temporal_record(const Temporal_result& result, const Temporal_request& r) {

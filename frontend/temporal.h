@@ -4,6 +4,7 @@
 #pragma once
 
 #include "parameters.h"
+#include "registry.h"
 #include "strain.h"
 
 #include <deformseg/strain/frame_distances.h>
@@ -21,37 +22,22 @@
 
 namespace deformseg::frontend {
 
-/// The segmentation methods.
-inline constexpr std::array temporal_methods{
-    Choice{"optimal", "least length-weighted cost, with a penalty per segment or a count of segments (default)"},
-    Choice{"binary-split", "split where the within-segment dissimilarity is largest, while above the threshold"},
-    Choice{"greedy", "the thesis' Algorithm 4-1"},
-    Choice{"barbic", "PCA change detection (Barbic et al. 2004)"},
-};
-
-/// The distances between frames' strains.
-inline constexpr std::array frame_metrics{
-    Choice{"euclidean", "the Euclidean distance (default)"},
-    Choice{"l1", "the sum of absolute differences"},
-    Choice{"cosine", "one minus the cosine of the angle"},
-};
-
 /// The frame distances as the user asks for them: the default strain against a rest frame or a
 /// reference mesh.
 struct Frame_distance_request {
-  std::string metric = "euclidean";
+  std::string metric{frame_metrics[0].name};
   std::size_t rest_frame = 0;
   std::string reference_mesh{};
 };
 
 /// A temporal segmentation as the user asks for it.
 struct Temporal_request {
-  std::string method = "optimal";
+  std::string method{temporal_methods[0].name};
   std::optional<double> threshold{};
   bool absolute = false;
   std::optional<std::size_t> segments{};
   std::size_t min_length = 1;
-  std::string metric = "euclidean";
+  std::string metric{frame_metrics[0].name};
   std::size_t rest_frame = 0;
   std::string reference_mesh{};
 };
@@ -61,7 +47,8 @@ template <class Request>
 constexpr std::tuple<Parameter<Request, std::string>, Parameter<Request, std::size_t>,
                      Parameter<Request, std::string>>
 frame_distance_parameters() {
-  return {choice_parameter("metric", &Request::metric, "The distance between the frames' strains", frame_metrics),
+  return {choice_parameter("metric", &Request::metric, "The distance between the frames' strains",
+                           frame_metric_choices),
           numeric_parameter("rest_frame", &Request::rest_frame, "The rest pose of the strain. Default: 0", counts()),
           reference_mesh_parameter<Request>()};
 }
@@ -72,7 +59,7 @@ inline constexpr auto frame_distance_table = frame_distance_parameters<Frame_dis
 /// The temporal segmentation's table.
 inline constexpr auto temporal_parameters = std::tuple_cat(
     std::tuple{
-        choice_parameter("method", &Temporal_request::method, "The segmentation method", temporal_methods),
+        choice_parameter("method", &Temporal_request::method, "The segmentation method", temporal_method_choices),
         numeric_parameter(
             "threshold", &Temporal_request::threshold,
             "binary-split and greedy: the largest within-segment dissimilarity (default 0.5 and 0.2); optimal: the "

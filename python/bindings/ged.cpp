@@ -4,9 +4,8 @@
 #include "common.h"
 #include "pickling.h"
 
-#include <deformseg/ged/bipartite_ged.h>
-#include <deformseg/ged/exact_ged.h>
-#include <deformseg/ged/lower_bound.h>
+#include "frontend/ged.h"
+
 #include <deformseg/io/graphviz.h>
 
 #include <pybind11/stl.h>
@@ -16,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace py = pybind11;
@@ -41,15 +41,14 @@ ged::Ged_result graph_edit_distance(const std::vector<std::string>& labels_a,
                                     const std::vector<std::string>& labels_b,
                                     const std::vector<std::pair<std::size_t, std::size_t>>& edges_b,
                                     const std::string& method, long long max_expanded, double max_seconds) {
-  if (method != "exact" && method != "bipartite" && method != "lower")
-    refuse("method must be 'exact', 'bipartite' or 'lower', got '" + method + "'");
-  const std::size_t expansions = whole_argument("max_expanded", max_expanded, frontend::expansion_counts);
-  number_argument("max_seconds", max_seconds, frontend::non_negative);
+  const frontend::Ged_request request{
+      .method = method,
+      .max_expanded = whole_argument("max_expanded", max_expanded, frontend::expansion_counts),
+      .max_seconds = number_argument("max_seconds", max_seconds, frontend::non_negative)};
+  frontend::check(request, frontend::Front::python);
   const io::Labelled_graph a = labelled_graph(labels_a, edges_a, "g1"), b = labelled_graph(labels_b, edges_b, "g2");
   Interruptible_call call;
-  if (method == "bipartite") return ged::Bipartite_ged{}(a, b, ged::Unit_costs{});
-  if (method == "lower") return ged::Assignment_lower_bound{}(a, b, ged::Unit_costs{});
-  return ged::Exact_ged{.max_expanded = expansions, .max_seconds = max_seconds}(a, b, ged::Unit_costs{});
+  return std::visit([&](const auto& policy) { return policy(a, b, ged::Unit_costs{}); }, frontend::make_ged(request));
 }
 
 std::optional<double> bound_or_none(double x) { return std::isinf(x) ? std::nullopt : std::optional(x); }
@@ -83,7 +82,8 @@ void bind_ged(py::module_& m) {
         return "<deformseg.GedResult distance=" + std::to_string(r.distance) + (r.exact ? " exact>" : ">");
       });
 
-  m.def("_ged", &graph_edit_distance, "labels_a"_a, "edges_a"_a, "labels_b"_a, "edges_b"_a, "method"_a = "exact",
+  m.def("_ged", &graph_edit_distance, "labels_a"_a, "edges_a"_a, "labels_b"_a, "edges_b"_a,
+        "method"_a = std::string(frontend::ged_methods[0].name),
         "max_expanded"_a = ged::Exact_ged{}.max_expanded, "max_seconds"_a = 0.0,
         "The graph edit distance of two graphs given as node labels and edges; `deformseg.ged` takes graphs. "
         "Releases the GIL.");

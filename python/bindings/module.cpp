@@ -26,12 +26,16 @@ namespace {
 pybind11::dict choices() {
   using namespace deformseg::frontend;
   const std::pair<const char*, std::span<const Choice>> tables[] = {
-      {"measure", strain_measures},     {"normalize", strain_normalizations},
-      {"reference", strain_references}, {"method", temporal_methods},
-      {"metric", frame_metrics},        {"policy", policy_choices},
-      {"alignment", alignment_choices},        {"up", up_directions},
-      {"sides", side_directions},
-      {"segmentation_reference", segmentation_references},
+      {"measure", strain_measure_choices},
+      {"normalize", strain_normalization_choices},
+      {"reference", strain_reference_choices},
+      {"method", temporal_method_choices},
+      {"metric", frame_metric_choices},
+      {"policy", policy_choices},
+      {"alignment", alignment_choices},
+      {"up", up_direction_choices},
+      {"sides", side_direction_choices},
+      {"segmentation_reference", segmentation_reference_choices},
       {"verify", deformseg::python::store_verifications}};
   pybind11::dict out;
   for (const auto& [parameter, table] : tables) {

@@ -2,60 +2,38 @@
 // labelled graphs (Graphviz DOT or GraphML, nodes with a `label` attribute).
 #include "command.h"
 
+#include <frontend/ged.h>
 #include <frontend/outputs.h>
 
-#include <deformseg/ged/exact_ged.h>
 #include <deformseg/ged/ged_matrix.h>
-#include <deformseg/ged/lower_bound.h>
 #include <deformseg/io/graphviz.h>
 
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <variant>
 
 namespace deformseg::tool {
 namespace {
 
-struct Ged_method_options {
-  std::string method = "exact";
-  std::size_t max_expanded = ged::Exact_ged{}.max_expanded;
-  double max_seconds = 0;
-};
-
 struct Ged_command_options {
   std::string a, b;
-  Ged_method_options method;
+  frontend::Ged_request method;
   std::string json;
 };
 
 struct Ged_matrix_command_options {
   std::vector<std::string> files;
-  Ged_method_options method;
+  frontend::Ged_request method;
   int threads = 0;
   std::string json;
   std::string csv;
 };
 
-void add_method_options(CLI::App& command, Ged_method_options& o) {
-  command.add_option("--method", o.method,
-                     "exact: branch and bound, exact unless --max-expanded is hit (default); bipartite: "
-                     "Riesen & Bunke's assignment approximation, an upper bound; lower: an assignment "
-                     "lower bound")
-      ->check(CLI::IsMember({"exact", "bipartite", "lower"}));
-  command.add_option("--max-expanded", o.max_expanded,
-                     "exact: the most partial mappings expanded before reporting bounds. Default: " +
-                         std::to_string(o.max_expanded))
-      ->check(whole_numbers(frontend::expansion_counts));
-  command.add_option("--max-seconds", o.max_seconds, "exact: a time limit per pair in seconds (0: none, the default)")
-      ->check(numbers(frontend::non_negative));
-}
-
-// Runs the policy the options name on a pair.
+// Runs the policy the request names on a pair.
 template <class Work>
-auto with_policy(const Ged_method_options& o, const Work& work) {
-  if (o.method == "bipartite") return work(ged::Bipartite_ged{});
-  if (o.method == "lower") return work(ged::Assignment_lower_bound{});
-  return work(ged::Exact_ged{.max_expanded = o.max_expanded, .max_seconds = o.max_seconds});
+auto with_policy(const frontend::Ged_request& request, const Work& work) {
+  return std::visit(work, frontend::make_ged(request));
 }
 
 nlohmann::json number_or_null(double value) {
@@ -135,7 +113,7 @@ void add_ged_command(CLI::App& app) {
              "'label' attribute; unit costs): the distance, its bounds and the node mapping");
   command->add_option("a", options->a, "The first graph (.dot, .gv, .graphml)")->required();
   command->add_option("b", options->b, "The second graph")->required();
-  add_method_options(*command, options->method);
+  add_parameters(*command, frontend::ged_parameters, options->method);
   add_json_option(*command, options->json,
                   "distance, exact, lower, upper (null: none) and mapping [[i, j], ...] (j = -1: node i deleted)");
   command->callback([options] { run_ged(*options); });
@@ -147,7 +125,7 @@ void add_ged_matrix_command(CLI::App& app) {
       "ged-matrix", "Graph edit distances between every two of the labelled graphs given, in parallel: a "
                     "symmetric matrix, pair i < j computed as i -> j");
   command->add_option("files", options->files, "The graphs (.dot, .gv, .graphml)")->required();
-  add_method_options(*command, options->method);
+  add_parameters(*command, frontend::ged_parameters, options->method);
   command->add_option("--threads", options->threads, "Threads to use (0: all)")
       ->check(whole_numbers(frontend::thread_counts));
   command->add_option("--csv", options->csv, "Write the distance matrix as CSV to FILE ('-': standard output)")

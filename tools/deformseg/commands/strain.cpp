@@ -120,7 +120,9 @@ nlohmann::json summary(const Strain_command_options& o, const frontend::Read_inp
                              {"sigma", nullptr},
                              {"degenerate_count", field.degenerate_count()},
                              {"per_frame", frames}};
-  if (r.reference == "rest" && r.reference_mesh.empty()) document["rest_frame"] = r.rest_frame;
+  const bool against_rest = frontend::entry_named(frontend::strain_references, r.reference).value ==
+                            strain::Strain_reference::rest_pose;
+  if (against_rest && r.reference_mesh.empty()) document["rest_frame"] = r.rest_frame;
   if (!r.reference_mesh.empty()) document["reference_mesh"] = r.reference_mesh;
   if (field.sigma()) document["sigma"] = *field.sigma();
   return document;
