@@ -23,6 +23,19 @@ covariance, shrunk towards the identity by S. Two rows re-rank the default's mat
 no label: `body-centred` takes from each similarity the query's mean similarity to the candidate's
 body (the body's offset), `hubs` half the candidate's mean similarity to its 10 nearest clips of
 other bodies.
+
+Six rows match body regions before comparing them (issue 57's last direction). `limbs-R` cuts the
+first frame's pose into the trunk (within R RMS radii of the centroid) and the limbs beyond it by their
+offset's largest component: legs (down), arms (across), head (up), front and back (z), the legs'
+and the arms' halves either side of the centroid, the one that moves more first.
+`bands-N-inner-outer` halves each of N height bands at its median distance from the vertical
+axis. `motion-parts-K` clusters the vertices of each clip by their frame-to-frame displacements
+(the centroid's out; k-means, K parts) and orders the parts by their rest height, then their
+distance from the axis. Each region's 4 area-weighted quantiles are side by side. Four rows
+normalise 4 height bands by the clip's own period (the strongest autocorrelation of its surface
+speed over lags of 6 frames to half the clip, kept above 0.5): `bands-4-per-cycle-C` plays the
+clip so that a period lasts C frames, `bands-4-rows-per-cycle-C` only interpolates its rows to
+that length.
 """
 import argparse
 import json
@@ -169,8 +182,16 @@ def describe(name, p, faces):
         structure = alternation(p, w, height, side) if name.endswith("alternation") else homecoming(p, w, radius)
         banded = rows(p, regions_of(cut(height, 3), w, 3), 1 / radius)
         return np.hstack([banded, np.full((len(p), 1), (8.0 if name.endswith("alternation") else 4.0) * structure)])
+    if name.startswith("bands-") and name.endswith("-inner-outer"):
+        return inner_outer(p, w, radius, int(name[6:-12]))
+    if name.startswith("bands-4-") and "per-cycle-" in name:
+        return per_cycle(p, w, radius, int(name.rsplit("-", 1)[1]), "rows-per-cycle" in name)
     if name.startswith("bands-"):
         return rows(p, regions_of(cut(height, int(name[6:])), w, int(name[6:])), 1 / radius)
+    if name.startswith("limbs-"):
+        return limbs(p, w, radius, float(name[6:]))
+    if name.startswith("motion-parts-"):
+        return motion_parts(p, w, radius, int(name[13:]))
     raise SystemExit(f"unknown description {name}")
 
 
@@ -228,6 +249,121 @@ def homecoming(p, w, radius):
     return float(np.log(max(np.sqrt(((p[-1] - p[0]) ** 2).sum(-1) @ w) / radius, 1e-3)))
 
 
+# ---- body regions matched before they are compared ---------------------------------------------
+
+def moving_first(p, w, labels, pairs):
+    """`labels` with each pair's two labels swapped where the second's surface moves more over the
+    clip (area-weighted mean speed at lag 4), so that a motion and its mirror image match."""
+    speed = np.linalg.norm(displacements(p, 4, 1.0), axis=2).mean(0) * w
+    out = labels.copy()
+    for a, b in pairs:
+        if speed[labels == b].sum() / max(w[labels == b].sum(), 1e-300) > \
+                speed[labels == a].sum() / max(w[labels == a].sum(), 1e-300):
+            out[labels == a], out[labels == b] = b, a
+    return out
+
+
+def limb_labels(first, w, radius, reach):
+    """Regions of the rest pose that correspond across bodies: 0 the trunk (within `reach` RMS radii
+    of the centroid), else by the offset's largest component: 1 and 2 down (legs, x below or above
+    the centroid), 3 and 4 across (arms, wings, fins), 5 up (head), 6 forward (z), 7 backward (tail)."""
+    o = (first - w @ first) / radius
+    side = (o[:, 0] >= 0).astype(int)
+    direction = np.argmax(np.stack([-o[:, 1], np.abs(o[:, 0]), o[:, 1], o[:, 2], -o[:, 2]], 1), 1)
+    labels = np.choose(direction, [1 + side, 3 + side] + [np.full(len(o), label) for label in (5, 6, 7)])
+    labels[np.linalg.norm(o, axis=1) < reach] = 0
+    return labels
+
+
+def limbs(p, w, radius, reach):
+    """The 8 limb regions' rows side by side (4 quantiles each), of each pair of legs and of arms
+    the one that moves more first; an empty region takes the whole surface's rows."""
+    labels = moving_first(p, w, limb_labels(p[0], w, radius, reach), [(1, 2), (3, 4)])
+    return rows(p, regions_of(labels, w, 8), 1 / radius, k=4)
+
+
+def inner_outer(p, w, radius, count):
+    """`count` height bands, each halved at its area-weighted median horizontal distance from the
+    vertical axis through the rest centroid: trunk and head inside, arms, hands and tails outside."""
+    first = p[0]
+    centre = w @ first
+    distance = np.hypot(first[:, 0] - centre[0], first[:, 2] - centre[2])
+    bands, outer = cut(first[:, 1], count), np.zeros(len(w), dtype=int)
+    for band in range(count):
+        on = bands == band
+        if w[on].sum() > 0:
+            outer[on] = distance[on] > quantiles(distance[on][None], w[on], 1)[0, 0]
+    return rows(p, regions_of(bands * 2 + outer, w, 2 * count), 1 / radius, k=4)
+
+
+def kmeans(x, w, count, iterations=25):
+    """Labels of area-weighted k-means of the rows of `x` from a k-means++ start of seed 0."""
+    rng = np.random.default_rng(0)
+    centres = [x[rng.choice(len(x), p=w / w.sum())]]
+    nearest = ((x - centres[0]) ** 2).sum(1)
+    for _ in range(1, count):
+        chance = w * nearest
+        centres.append(x[rng.choice(len(x), p=chance / chance.sum())] if chance.sum() > 0 else x[0])
+        nearest = np.minimum(nearest, ((x - centres[-1]) ** 2).sum(1))
+    centres = np.array(centres)
+    for _ in range(iterations):
+        labels = np.argmin((x ** 2).sum(1)[:, None] - 2 * x @ centres.T + (centres ** 2).sum(1)[None], 1)
+        for j in range(count):
+            if w[labels == j].sum() > 0:
+                centres[j] = w[labels == j] @ x[labels == j] / w[labels == j].sum()
+    return labels
+
+
+def motion_parts(p, w, radius, count):
+    """Near-rigid parts of the clip: vertices clustered (k-means, `count`) by their frame-to-frame
+    displacements less the centroid's, in RMS radii; the parts ordered by their rest centroid's
+    height (in 2 `count` equal bands), then its distance from the vertical axis; each part's rows
+    side by side (4 quantiles)."""
+    steps = np.diff(p, axis=0) / radius
+    steps -= np.einsum("tvi,v->ti", steps, w)[:, None]
+    labels = kmeans(steps.transpose(1, 0, 2).reshape(len(w), -1), w, count)
+    first, centre = p[0], w @ p[0]
+    centroids = np.array([w[labels == j] @ first[labels == j] / w[labels == j].sum()
+                          if w[labels == j].sum() > 0 else centre for j in range(count)])
+    span = max(np.ptp(first[:, 1]), 1e-300)
+    level = np.floor((centroids[:, 1] - first[:, 1].min()) / span * 2 * count)
+    distance = np.hypot(centroids[:, 0] - centre[0], centroids[:, 2] - centre[2])
+    rank = np.empty(count, dtype=int)
+    rank[np.lexsort((distance, level))] = np.arange(count)
+    return rows(p, regions_of(rank[labels], w, count), 1 / radius, k=4)
+
+
+def dominant_period(p, w, shortest=6, least=0.5):
+    """The clip's period in frames: the lag in [shortest, T/2] where the autocorrelation of its
+    surface speed (area-weighted mean over vertices, frame to frame) is greatest, if above `least`;
+    else None (a death, a hit: no cycle)."""
+    speed = np.linalg.norm(np.diff(p, axis=0), axis=2) @ w
+    speed = speed - speed.mean()
+    best, period = least, None
+    for lag in range(shortest, len(speed) // 2 + 1):
+        a, b = speed[:-lag], speed[lag:]
+        norm = np.sqrt((a @ a) * (b @ b))
+        if norm > 0 and a @ b / norm > best:
+            best, period = a @ b / norm, lag
+    return period
+
+
+def per_cycle(p, w, radius, cycle, rows_only):
+    """4 height bands' rows with the clip played so that its period (`dominant_period`) lasts
+    `cycle` frames (speeds then per cycle, not per second), or with only its rows interpolated in
+    time to that length (`rows_only`: speeds per second); a clip without a period as it is."""
+    period, banded = dominant_period(p, w), regions_of(cut(p[0][:, 1], 4), w, 4)
+    if period is None:
+        return rows(p, banded, 1 / radius)
+    if not rows_only:
+        return rows(resampled(p, period / cycle)[0], banded, 1 / radius)
+    described = rows(p, banded, 1 / radius)
+    times = np.arange(0, len(described) - 1 + 1e-9, period / cycle)
+    i = np.minimum(np.floor(times).astype(int), max(len(described) - 2, 0))
+    f = (times - i)[:, None]
+    return (1 - f) * described[i] + f * described[np.minimum(i + 1, len(described) - 1)]
+
+
 # ---- a metric learned from augmented copies -----------------------------------------------------
 
 def resampled(p, speed):
@@ -282,7 +418,9 @@ def learned_matrices(sets, pool, program, shrink):
 DESCRIPTIONS = ["default", "bands-3", "bands-4", "bands-3x2-front-back", "bands-3-left-right",
                 "bands-3-equal-weights", "vertex-weights", "height-unit", "local", "local-and-travel",
                 "amplitude-0", "amplitude-0.5", "bands-3-and-alternation", "bands-3-and-return",
-                "vertical-0.6", "axes-0.25"]
+                "vertical-0.6", "axes-0.25", "limbs-1", "limbs-1.5", "bands-3-inner-outer",
+                "bands-4-inner-outer", "motion-parts-6", "motion-parts-8", "bands-4-per-cycle-12",
+                "bands-4-per-cycle-16", "bands-4-per-cycle-24", "bands-4-rows-per-cycle-16"]
 LEARNED = ["learned-1", "learned-3"]
 RERANKINGS = ["body-centred", "hubs"]
 
