@@ -10,13 +10,7 @@ if(NOT HAS_COMPILED)
   return()
 endif()
 file(REMOVE_RECURSE ${WORK_DIR})
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE output)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "failed (${status}): ${ARGN}\n${output}")
-  endif()
-  set(output "${output}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/run.cmake)
 
 # The entry points deformseg::compiled holds, as nm -C names them.
 set(entry_points "strain::compute_strain<float," "strain::compute_strain<double,"

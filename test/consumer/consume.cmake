@@ -12,13 +12,7 @@
 # TinyGLTF hidden: the package must not look for it. The readers' consumer reads GLTF_FILE: the
 # animation when HAS_GLTF (deformseg found TinyGLTF), the refusal that names tinygltf otherwise.
 file(REMOVE_RECURSE ${WORK_DIR})
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE output)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "failed (${status}): ${ARGN}\n${output}")
-  endif()
-  set(output "${output}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/run.cmake)
 
 # The consumers unoptimised (no build type): they run in no time, and most of the test's time is
 # their compilation, a third shorter at -O0.
@@ -52,7 +46,9 @@ endif()
 function(build_consumer target)
   set(build ${WORK_DIR}/consumer_${target})
   run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${build} -DCONSUMER_TARGET=${target} ${consumer_options} ${ARGN})
-  run(${CMAKE_COMMAND} --build ${build} --verbose)
+  # The consumer alone, not `all`: added as a subdirectory, deformseg's own targets are in `all`, and
+  # the readers' library would be compiled for the algorithms' consumer too, which does not link it.
+  run(${CMAKE_COMMAND} --build ${build} --target consumer --verbose)
   set(output "${output}" PARENT_SCOPE)
 endfunction()
 
