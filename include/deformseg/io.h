@@ -25,3 +25,4 @@
 #include <deformseg/io/read_animation.h>
 #include <deformseg/io/read_mesh.h>
 #include <deformseg/io/triangle_soup.h>
+#include <deformseg/io/write_ply.h>

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <deformseg/signatures/motion_signature_kernel.h>
+#include <deformseg/signatures/motion_signature_options.h>
 #include <deformseg/signatures/motion_signature_stream.h>
 #include <deformseg/signatures/motion_signature_view.h>
 #include <deformseg/signatures/motion_signatures.h>

@@ -29,6 +29,21 @@ struct Gltf_frame_sampler::Impl {
   internal::gltf::Pose_scratch scratch{};
 };
 
+namespace {
+
+// What `work()` returns; an invalid_input it throws is located in `path`, the file its error is in,
+// which the parsed file's functions do not know.
+template <class Work>
+decltype(auto) located_in(const std::filesystem::path& path, Work&& work) {
+  try {
+    return work();
+  } catch (const invalid_input& e) {
+    throw e.located({.file = path.string()});
+  }
+}
+
+}  // namespace
+
 Gltf_frame_sampler::Gltf_frame_sampler(std::unique_ptr<Impl> impl) noexcept : impl_(std::move(impl)) {}
 Gltf_frame_sampler::Gltf_frame_sampler(Gltf_frame_sampler&&) noexcept = default;
 Gltf_frame_sampler& Gltf_frame_sampler::operator=(Gltf_frame_sampler&&) noexcept = default;
@@ -48,23 +63,19 @@ void Gltf_frame_sampler::sample_frame(std::size_t t, std::span<double> out) {
     throw invalid_input("Gltf_frame_sampler: no frame " + std::to_string(t) + " of " + std::to_string(out.size()) +
                             " coordinates in a clip of " + std::to_string(s.frames) + " frames",
                         {.file = s.path.string(), .frame = t});
-  try {
+  located_in(s.path, [&] {
     internal::gltf::pose_frame(*s.rig, s.clip ? &*s.clip : nullptr, s.fps, s.frames, t,
                                s.selection ? &*s.selection : nullptr, s.scratch, out.data());
-  } catch (const invalid_input& e) {
-    throw e.located({.file = s.path.string()});
-  }
+  });
 }
 
 namespace {
 
 // The parsed file of `path`; errors name it.
 std::unique_ptr<internal::gltf::Loaded_file> load(const std::filesystem::path& path) {
-  try {
+  return located_in(path, [&] {
     return std::make_unique<internal::gltf::Loaded_file>(internal::gltf::load_file(internal::gltf::load_model(path)));
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path.string()});
-  }
+  });
 }
 
 }  // namespace
@@ -72,15 +83,13 @@ std::unique_ptr<internal::gltf::Loaded_file> load(const std::filesystem::path& p
 Gltf_file::Gltf_file(const std::filesystem::path& path) : path_(path), file_(load(path)) {}
 
 Gltf_file::Gltf_file(std::filesystem::path name, tinygltf::Model model) : path_(std::move(name)) {
-  try {
+  located_in(path_, [&] {
     file_ = std::make_unique<internal::gltf::Loaded_file>(internal::gltf::load_file(std::move(model)));
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path_.string()});
-  }
+  });
 }
 
 Gltf_file::Gltf_file(const std::filesystem::path& body, const std::filesystem::path& clips) : Gltf_file(body) {
-  try {
+  located_in(clips, [&] {
     auto model = std::make_shared<const tinygltf::Model>(internal::gltf::load_model(clips));
     internal::gltf::check_extensions(*model);
     internal::gltf::Loaded_file& file = *file_;
@@ -89,9 +98,7 @@ Gltf_file::Gltf_file(const std::filesystem::path& body, const std::filesystem::p
     internal::gltf::make_animatable(file.model, file.rig.rest, *model, body_node);
     file.clips = internal::gltf::Bound_clips{.model = model, .file = clips.string(), .body_file = body.string(),
                                              .body_node = std::move(body_node), .change = std::move(change)};
-  } catch (const invalid_input& e) {
-    throw e.located({.file = clips.string()});
-  }
+  });
 }
 
 Gltf_file::Gltf_file(Gltf_file&&) noexcept = default;
@@ -107,58 +114,35 @@ std::vector<std::string> Gltf_file::clip_names() const {
 std::size_t Gltf_file::num_vertices() const noexcept { return file_->rig.geometry.vertices; }
 
 Gltf_contents Gltf_file::contents(double fps) const {
-  try {
-    return internal::gltf::contents(file_->model, fps);
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path_.string()});
-  }
+  return located_in(path_, [&] { return internal::gltf::contents(file_->model, fps); });
 }
 
 Sampled_gltf Gltf_file::sample(const Gltf_read_options& options) const {
-  try {
-    return internal::gltf::sample(*file_, options);
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path_.string()});
-  }
+  return located_in(path_, [&] { return internal::gltf::sample(*file_, options); });
 }
 
 Sampled_gltf Gltf_file::sample_sources(const Repaired_triangles& repaired, const Gltf_read_options& options) const {
-  try {
-    return internal::gltf::sample(*file_, options, &repaired.source_vertex);
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path_.string()});
-  }
+  return located_in(path_, [&] { return internal::gltf::sample(*file_, options, &repaired.source_vertex); });
 }
 
 Repaired_triangles Gltf_file::repair(const Repair_options& options) const {
-  try {
-    return internal::gltf::repair_scene(file_->rig, options);
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path_.string()});
-  }
+  return located_in(path_, [&] { return internal::gltf::repair_scene(file_->rig, options); });
 }
 
 Gltf_frame_sampler Gltf_file::frame_sampler(const Gltf_read_options& options) const {
-  try {
+  return located_in(path_, [&] {
     auto [clip, frames] = internal::gltf::clip_and_frames(*file_, options);
     return Gltf_frame_sampler(std::unique_ptr<Gltf_frame_sampler::Impl>(new Gltf_frame_sampler::Impl{
         .path = path_, .rig = &file_->rig, .clip = std::move(clip), .frames = frames, .fps = options.fps,
         .selection = std::nullopt}));
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path_.string()});
-  }
+  });
 }
 
 Gltf_frame_sampler Gltf_file::frame_sampler(const Gltf_read_options& options,
                                             std::span<const std::uint32_t> vertices) const {
-  try {
-    auto [clip, frames] = internal::gltf::clip_and_frames(*file_, options);
-    return Gltf_frame_sampler(std::unique_ptr<Gltf_frame_sampler::Impl>(new Gltf_frame_sampler::Impl{
-        .path = path_, .rig = &file_->rig, .clip = std::move(clip), .frames = frames, .fps = options.fps,
-        .selection = internal::gltf::select_vertices(file_->rig.geometry, vertices)}));
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path_.string()});
-  }
+  Gltf_frame_sampler sampler = frame_sampler(options);
+  located_in(path_, [&] { sampler.impl_->selection = internal::gltf::select_vertices(file_->rig.geometry, vertices); });
+  return sampler;
 }
 
 void require_clip_choice(const Gltf_file& file, const std::string& clip) {
@@ -177,11 +161,7 @@ Sampled_gltf sample_gltf(const std::filesystem::path& path, const Gltf_read_opti
 }
 
 Gltf_contents gltf_contents(const std::filesystem::path& path, double fps) {
-  try {
-    return internal::gltf::contents(path, fps);
-  } catch (const invalid_input& e) {
-    throw e.located({.file = path.string()});
-  }
+  return located_in(path, [&] { return internal::gltf::contents(path, fps); });
 }
 
 template mesh::Deforming_mesh<mesh::Surface_mesh, double>

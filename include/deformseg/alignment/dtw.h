@@ -240,8 +240,7 @@ struct Dtw {
   /// @par Complexity O(n m) time (O(n w + m w) cells with a window). Memory: up to
   /// `max_trace_bytes` cells, n m bytes plus O(m) doubles; above, `max_trace_bytes` bytes (or m)
   /// plus O(n + m log n) doubles, in at most about 3 n m cells (each rectangle's area is at most
-  /// half its parent's) instead of n m: 1.04 times the time of a byte per cell on two 6,601-frame
-  /// descriptions with the default budget, 2.2 times with 2^18 (test/bench/dtw_path_memory.cpp).
+  /// half its parent's) instead of n m (what it costs in time: @ref section_dtw_linear_space).
   /// @par Example
   /// @include dtw_linear_space.cpp
   template <Dissimilarity D>

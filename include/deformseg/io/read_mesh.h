@@ -89,7 +89,8 @@ inline Triangle_soup read_mesh(const std::filesystem::path& path, const Mesh_rea
 /// an OBJ or OFF) when it is missing or unreadable, has another vertex count ("has N vertices
 /// instead of V"), a `v` line with fewer than 3 coordinates, a malformed or non-finite number, or
 /// an unknown extension. `xyz` may then be partly written.
-/// @par Complexity O(size of the file); for OBJ about 2 to 3 times as fast as `read_obj`.
+/// @par Complexity O(size of the file); for OBJ faster than `read_obj`, which parses every line
+/// (@ref section_reading_speed).
 /// @sa read_mesh
 inline void read_mesh_points(const std::filesystem::path& path, std::span<double> xyz) {
   internal::read_points_as(path, xyz);

@@ -7,7 +7,6 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/parallel_for.h>
 #include <deformseg/search/motion_collection.h>
-#include <deformseg/signatures/motion_signature_kernel.h>
 #include <deformseg/signatures/motion_signature_view.h>
 #include <deformseg/similarity/find_motion.h>
 #include <deformseg/similarity/motion_signature_similarity.h>
@@ -94,17 +93,14 @@ std::vector<Clip_match> find_motion_in_collection(const similarity::Motion_signa
                                                   const C& collection, const Find_in_collection_options& options = {},
                                                   const similarity::Motion_signature_similarity<>& policy = {}) {
   const similarity::Find_motion_options per_clip{.count = options.count, .shortest = options.shortest};
-  similarity::internal::check_find_options(per_clip);
+  similarity::check_find_motion_options(per_clip);  // before any clip, so that an empty collection checks too
   const signatures::Motion_signature_view q = similarity::view(query);
   internal::check_query(collection, q, "find_motion_in_collection");
   if (!(policy.scale > 0)) throw invalid_input("find_motion_in_collection: the scale must be positive");
-  const double unit = signatures::frame_dissimilarity_unit(q.width, policy.scale);
   std::vector<std::vector<similarity::Motion_match>> per(collection.size());
   deformseg::internal::parallel_for(collection.size(), options.threads, [&](std::size_t i) {
-    per[i] = similarity::internal::find_windows_in(
-        similarity::internal::dissimilarity_matrix<double>(
-            signatures::Motion_signature_dissimilarity(q, collection.view(i), unit)),
-        [&](std::size_t row) { return similarity::internal::frame_of_row(query, row); },
+    per[i] = similarity::find_motion_windows(
+        policy.frame_dissimilarities(q, collection.view(i)), query,
         [&](std::size_t row) { return internal::clip_frame(collection, i, row); }, per_clip);
   });
   std::vector<Clip_match> found;

@@ -72,10 +72,10 @@ inline spatiotemporal::Spatiotemporal_options character_segmentation() { return 
 /// graphs' nodes, and costs that price area shares besides kinds (`Segment_costs`).
 ///
 /// What to expect of it: the graphs describe where an animation deforms, not how it moves as a
-/// whole. It sees the same motion on shapes that deform alike (a horse's gallop and an elephant's),
-/// the data the thesis measured it on; on game characters, whose separate meshes and rigid parts
-/// barely strain, it ranks near chance (@ref chapter_07). `character_graph_similarity` gives the
-/// settings tuned on those characters.
+/// whole. It sees the same motion on shapes that deform alike, as the thesis' animals; on game
+/// characters, whose separate meshes and rigid parts barely strain, it sees little
+/// (@ref section_graph_policies). `character_graph_similarity` gives the settings tuned on those
+/// characters.
 /// @tparam Ged a `ged::GedPolicy` for `Segment_graph` (default `ged::Bipartite_ged`: the exact
 /// distance is exponential, and key-frame graphs of real data reach a dozen nodes).
 /// @tparam Costs a `ged::GedCostModel` for `Segment_node` (default `Segment_costs`).
@@ -95,8 +95,9 @@ struct Evolving_graph_similarity {
   spatiotemporal::Spatiotemporal_options segmentation = thesis_segmentation();
   /// @brief Whether each key-frame graph's detached rigid nodes (rigid pieces touching no other
   /// segment: a character's separate meshes) are merged into one before the edit distances
-  /// (`compact_segment_graph`). Default true: real characters' graphs shrink from 40-140 nodes to
-  /// a few, and the edit distances with them; a single connected mesh is unchanged.
+  /// (`compact_segment_graph`). Default true: a character's separate meshes would each be a node,
+  /// counted by the edit distances as parts rather than motion, and would make them slower
+  /// (@ref section_compact_graphs); a single connected mesh is unchanged.
   bool compact_graphs = true;
   /// @brief The graph edit distance. Default: `ged::Bipartite_ged`.
   Ged ged{};
@@ -233,8 +234,8 @@ private:
 /// @brief The graph policy tuned on the shared game characters, not the thesis' method:
 /// `Evolving_graph_similarity` with `character_segmentation()` and the label sequences aligned by
 /// `Alignment` (default DTW), both chosen leaving each body out. It ranks those characters' motions
-/// better than the thesis' defaults, and loses the thesis' own result on the thesis' data (a horse's
-/// gallop comes nearer a samba than an elephant's gallop): @ref chapter_07 gives both figures.
+/// better than the thesis' defaults and loses the thesis' own result on the thesis' data
+/// (@ref section_graph_policies).
 /// @tparam Alignment an `alignment::AlignmentPolicy` (default `alignment::Dtw`).
 /// @par Complexity O(1).
 /// @par Example

@@ -59,6 +59,17 @@ struct Find_motion_options {
   int threads = 0;
 };
 
+/// @brief Throws unless `options` are those of a search: `shortest` in (0, 1], `threads` 0 or 1 to
+/// `max_threads`. What `find_motion`, `find_motion_in` and `search::find_motion_in_collection` check
+/// first.
+/// @throws invalid_input naming `find_motion` and the option.
+/// @par Complexity O(1).
+inline void check_find_motion_options(const Find_motion_options& options) {
+  if (!(options.shortest > 0 && options.shortest <= 1))
+    throw invalid_input("find_motion: shortest must be in (0, 1], not " + std::to_string(options.shortest));
+  thread_count(options.threads, "find_motion");
+}
+
 namespace internal {
 
 /// The frame of each row of a description: its `frames` where it has them (descriptions sampled
@@ -170,12 +181,6 @@ inline std::pair<std::size_t, std::size_t> window_lengths(double length, const F
   return {std::max<std::size_t>(1, shortest), std::max<std::size_t>(1, std::max(shortest, longest))};
 }
 
-inline void check_find_options(const Find_motion_options& options) {
-  if (!(options.shortest > 0 && options.shortest <= 1))
-    throw invalid_input("find_motion: shortest must be in (0, 1], not " + std::to_string(options.shortest));
-  thread_count(options.threads, "find_motion");
-}
-
 /// How many candidate windows `find_motion_in` and `find_motion` take from each stretch of frames
 /// for each window they report.
 inline constexpr std::size_t find_motion_candidates = 6;
@@ -230,6 +235,25 @@ std::vector<Motion_match> find_windows_in(const Eigen::MatrixXd& d, const QueryF
 
 }  // namespace internal
 
+/// @brief The windows `find_motion_in` finds, from the dissimilarities of the query's rows to the
+/// long rows, wherever these come from (two descriptions, or a description and a stored clip, as
+/// `search::find_motion_in_collection` searches each clip).
+/// @param dissimilarities the `Tq x Tl` dissimilarities in [0, 1] of the query's rows to the long
+/// rows (a policy's `frame_dissimilarities`).
+/// @param query the query's description, whose rows' frames (`frames`, else the rows) the
+/// alignments name.
+/// @param long_frame `long_frame(row)`: the frame of a long row, increasing with the row.
+/// @param options count (default 3), shortest (default 0.5); `threads` is only checked.
+/// @return and @throws as `find_motion_in`.
+/// @par Complexity as `find_motion_in`, without the dissimilarities' cost.
+template <class Description, std::invocable<std::size_t> LongFrame>
+std::vector<Motion_match> find_motion_windows(const Eigen::MatrixXd& dissimilarities, const Description& query,
+                                              const LongFrame& long_frame, const Find_motion_options& options = {}) {
+  check_find_motion_options(options);
+  return internal::find_windows_in(
+      dissimilarities, [&](std::size_t row) { return internal::frame_of_row(query, row); }, long_frame, options);
+}
+
 /// @brief The best non-overlapping windows of `long_animation`'s description that match `query`'s,
 /// from the descriptions as given (what `find_motion` starts from; it then re-describes the windows).
 ///
@@ -261,10 +285,8 @@ template <FrameDissimilarityPolicy Policy>
 std::vector<Motion_match> find_motion_in(const Policy& policy, const typename Policy::Description& query,
                                          const typename Policy::Description& long_animation,
                                          const Find_motion_options& options = {}) {
-  internal::check_find_options(options);
-  return internal::find_windows_in(
-      policy.frame_dissimilarities(query, long_animation),
-      [&](std::size_t row) { return internal::frame_of_row(query, row); },
+  return find_motion_windows(
+      policy.frame_dissimilarities(query, long_animation), query,
       [&](std::size_t row) { return internal::frame_of_row(long_animation, row); }, options);
 }
 
@@ -419,7 +441,7 @@ std::vector<Motion_match> find_cut_windows(const Policy& policy, const typename 
 /// candidates, a window's neighbours) are described at once, one per thread (`options.threads`);
 /// the result does not depend on their number. A search, not an exhaustive scan:
 /// where every window is alike (a steady wave), the window found may be another than the copy,
-/// with a value as high within a few thousandths.
+/// with a value nearly as high (@ref section_find_motion).
 /// @tparam Mesh a `DeformingMesh` (both animations of one type; they need not share a mesh).
 /// @tparam Policy a `SimilarityPolicy` that is a `FrameDissimilarityPolicy`.
 /// @return at most `options.count` matches, best value first (ties: the earlier window first),
@@ -430,14 +452,13 @@ std::vector<Motion_match> find_cut_windows(const Policy& policy, const typename 
 /// windows, then per window 6 s' + 6 (r + 1) descriptions and compares of windows of at most Tq /
 /// shortest frames, s' the free stretches and r the moves of the six hill climbs (a few each, at
 /// most 2 Tq); O(Tq Tl) memory, plus a copy of the long animation when `Mesh` is not a
-/// `Deforming_mesh`. On the shared samba (175 frames, 9,971 vertices), 10 frames searched with
-/// `count` 3 take 103 re-descriptions of windows, 3 times the description of the whole samba.
+/// `Deforming_mesh`. What a search costs on the shared data: @ref section_find_motion.
 template <mesh::DeformingMesh Mesh, class Policy = Default_similarity>
   requires SimilarityPolicy<Policy, Mesh> && FrameDissimilarityPolicy<Policy> &&
            SimilarityPolicy<Policy, typename internal::Frames_type<Mesh>::type>
 std::vector<Motion_match> find_motion(const Mesh& query, const Mesh& long_animation,
                                       const Find_motion_options& options = {}, const Policy& policy = {}) {
-  internal::check_find_options(options);
+  check_find_motion_options(options);
   if (query.num_frames() == 0 || long_animation.num_frames() == 0)
     throw invalid_input("find_motion: an animation without frames");
   const typename Policy::Description described = policy.describe(query);

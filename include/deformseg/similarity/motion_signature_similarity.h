@@ -177,8 +177,8 @@ private:
 /// +Y by default; about any axis with `std::nullopt`), and (up to the linear interpolation between
 /// frames) for the same motion sampled at another frame rate, each animation's own
 /// (`frames_per_second`). A motion played faster, such as the same frames shown at twice the rate,
-/// is a faster motion and scores lower, as a run against a walk. Chapter 7 of the manual gives the
-/// calibration and what values to expect on real characters.
+/// is a faster motion and scores lower, as a run against a walk. The calibration, and what values
+/// to expect on real characters: @ref section_signature_calibration.
 ///
 /// What it cannot see: which part of the body moves (a signature is a distribution over the
 /// surface, not a map), nor any direction but up and down.
@@ -190,18 +190,19 @@ private:
 /// O(Ra Rb L k) for the row dissimilarities plus the alignment's O(Ra Rb).
 /// @par Precision The signatures are computed in double and kept in float; the frame
 /// dissimilarities are computed in float by one vectorised kernel (`Motion_signature_dissimilarity`),
-/// the alignment and the value in double. Values are within about 1e-6 of an all-double
-/// computation (chapter 7), identical however a comparison is reached (`compare`,
-/// `similarity_matrix`, `frame_dissimilarities`, the significance's shuffled copies), and may differ
-/// in the last bits between builds for other instruction sets.
+/// the alignment and the value in double. Values are within the kernel's bound of an all-double
+/// computation (`Motion_signature_dissimilarity`, @ref section_signature_precision), identical
+/// however a comparison is reached (`compare`, `similarity_matrix`, `frame_dissimilarities`, the
+/// significance's shuffled copies), and may differ in the last bits between builds for other
+/// instruction sets.
 template <alignment::AlignmentPolicy Alignment = alignment::Dtw, class Normalization = Best_score_normalization>
 struct Motion_signature_similarity {
   /// @brief The lags, quantiles, floor and up direction of the signatures. Default:
   /// `Motion_signature_options{}`.
   signatures::Motion_signature_options signatures{};
   /// @brief The RMS difference of two frames' signatures at which their dissimilarity is 1 - 1/e.
-  /// Default 1.77, chosen so that the same motion on different bodies scores above 0.7 and
-  /// different motions below 0.5 at the median (chapter 7).
+  /// It sets where values fall between 0 and 1: the same motion on different bodies high, different
+  /// motions low. Default 1.77 (how it was chosen: @ref section_signature_calibration).
   double scale = 1.77;
   /// @brief How the two frame sequences are aligned. Default: dynamic time warping, no window.
   Alignment alignment{};
@@ -210,8 +211,8 @@ struct Motion_signature_similarity {
   /// @brief The fewest signatures per second: an animation sampled more slowly is described every
   /// 1 / `signature_rate` seconds (and at its last frame), its positions interpolated between
   /// frames, so that its signatures meet those of the same motion sampled faster at the same
-  /// instants; one sampled at least this fast, at its frames. Default 30 (the lags' unit; chapter 7
-  /// gives what it changes).
+  /// instants; one sampled at least this fast, at its frames. Default 30, the lags' unit (what it
+  /// changes: @ref section_signature_frame_rate).
   double signature_rate = 30;
 
   /// @brief What is compared of one animation: its signatures and the frame of each.
@@ -265,8 +266,8 @@ struct Motion_signature_similarity {
     const std::size_t frames = source.num_frames();
     const std::vector<double> instants = internal::signature_instants(frames, fps, signature_rate);
     Description d;
-    d.signatures =
-        signatures::motion_signatures_streamed(source, signatures, std::span<const double>(instants)).template cast<float>();
+    d.signatures = signatures::motion_signatures_streamed(source, signatures, std::span<const double>(instants))
+                       .template cast<float>();
     d.frames = internal::nearest_frames(instants, fps, frames);
     return d;
   }
@@ -281,7 +282,15 @@ struct Motion_signature_similarity {
   /// @par Complexity O(1), plus a copy of `described_b`'s signatures when it has fewer than 16 rows.
   signatures::Motion_signature_dissimilarity dissimilarity(const Description& described_a,
                                                            const Description& described_b) const {
-    const signatures::Motion_signature_view a = view(described_a), b = view(described_b);
+    return dissimilarity(view(described_a), view(described_b));
+  }
+
+  /// @brief `dissimilarity` of two views of signatures (a description's, a stored clip's: a
+  /// `search::MotionCollection`'s `view(i)`), which it refers to: they must outlive it.
+  /// @throws invalid_input as `dissimilarity` of descriptions.
+  /// @par Complexity O(1), plus a copy of `b`'s signatures when it has fewer than 16 rows.
+  signatures::Motion_signature_dissimilarity dissimilarity(signatures::Motion_signature_view a,
+                                                           signatures::Motion_signature_view b) const {
     if (a.width != b.width || a.width == 0)
       throw invalid_input("Motion_signature_similarity: signatures of " + std::to_string(a.width) + " and " +
                           std::to_string(b.width) + " values per frame");
@@ -294,7 +303,15 @@ struct Motion_signature_similarity {
   /// @throws invalid_input as `dissimilarity`.
   /// @par Complexity O(Ra Rb width) time, O(Ra Rb) memory.
   Eigen::MatrixXd frame_dissimilarities(const Description& described_a, const Description& described_b) const {
-    return internal::dissimilarity_matrix<double>(dissimilarity(described_a, described_b));
+    return frame_dissimilarities(view(described_a), view(described_b));
+  }
+
+  /// @brief `frame_dissimilarities` of two views of signatures (a description's, a stored clip's).
+  /// @throws invalid_input as `dissimilarity`.
+  /// @par Complexity O(Ra Rb width) time, O(Ra Rb) memory.
+  Eigen::MatrixXd frame_dissimilarities(signatures::Motion_signature_view a,
+                                        signatures::Motion_signature_view b) const {
+    return internal::dissimilarity_matrix<double>(dissimilarity(a, b));
   }
 
   /// @brief The similarity of two animations from their signatures: the alignment of their rows

@@ -36,9 +36,8 @@ struct Self_similarity_description {
   Eigen::MatrixXd profiles;
 };
 
-/// @brief The options of `Self_similarity_matching`. The defaults were chosen on the shared
-/// characters (`test/bench/similarity_evaluation`) with the robot (RobotExpressive) left out,
-/// and checked with the Knight left out instead.
+/// @brief The options of `Self_similarity_matching` (how the defaults were chosen:
+/// @ref section_self_similarity_defaults).
 struct Self_similarity_options {
   /// @brief Frames on either side of a frame whose distances make its profile: 0 for the whole
   /// row. A finite window lets a motion found inside a longer one keep its profiles. Default 30

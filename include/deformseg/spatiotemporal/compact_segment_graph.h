@@ -3,8 +3,8 @@
 /// touch no other segment) merged into one, as real characters need before graph edit distances.
 ///
 /// A game character is many separate meshes (body, head, eyes, hands, weapons, a cape on bones):
-/// each piece that does not deform is a rigid node with no edge, and a KayKit adventurer's frame
-/// graphs have 40 to 140 nodes, most of them such pieces. They say nothing about the motion beyond
+/// each piece that does not deform is a rigid node with no edge, and such pieces make most of a
+/// character's frame graph (@ref section_compact_graphs). They say nothing about the motion beyond
 /// their count and area, yet they make every edit distance cubic in their number.
 #pragma once
 
