@@ -8,12 +8,24 @@
 ///
 /// | expression | type | meaning |
 /// |---|---|---|
-/// | `M::Face_graph` | a model of CGAL's `FaceGraph` | the connectivity type; every face a triangle |
+/// | `M::Face_graph` | a model of \ref FaceGraphConcept "FaceGraph" | the connectivity type; every face a triangle |
 /// | `m.face_graph()` | `const M::Face_graph&` | the connectivity |
 /// | `m.num_frames()` | convertible to `std::size_t` | the number of frames T |
-/// | `m.frame_point_map(t)` | a readable property map, vertex descriptor to point | the positions at frame t |
+/// | `m.frame_point_map(t)` | a `ReadablePointMap`: vertex descriptor to point | the positions at frame t |
+///
+/// A `ReadablePointMap` (deformseg::mesh::ReadablePointMap) is a readable Boost property map
+/// (`boost::property_traits<Map>::value_type`, `get(map, v)`) whose value `p` gives its coordinates
+/// as `p[0]`, `p[1]`, `p[2]`, each converted by `CGAL::to_double`: a CGAL `Point_3`, an
+/// `Eigen::Vector3d`, a `std::array<double, 3>`.
 ///
 /// Frames are counted from 0. The positions must be finite.
+///
+/// These are all the expressions the algorithms use of a model: a model that is not a
+/// deformseg::mesh::Deforming_mesh is copied into one (deformseg::mesh::make_deforming_mesh), which
+/// reads the connectivity through the \ref FaceGraphConcept "FaceGraph" expressions only and the
+/// positions through the frame point maps only. The graph's own vertex point map, if it has one, is
+/// never read. `test/concept_archetype.cpp` checks it: every public algorithm compiles against an
+/// archetype with only these expressions, and gives the default model's result to the last bit.
 ///
 /// Optionally, `m.frames_per_second()` (convertible to `double`) gives the frame rate; the
 /// descriptors that count time in seconds (deformseg::signatures::motion_signatures) read it through

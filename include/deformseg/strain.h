@@ -7,6 +7,7 @@
 #include <deformseg/strain/frame_distances.h>
 #include <deformseg/strain/histogram_distance.h>
 #include <deformseg/strain/strain.h>
+#include <deformseg/strain/strain_field.h>
 #include <deformseg/strain/strain_field_files.h>
 #include <deformseg/strain/strain_histograms.h>
 #include <deformseg/strain/strain_measures.h>

@@ -1,12 +1,14 @@
 /// @file mesh/deforming_mesh.h
-/// @brief The `DeformingMesh` concept and its default model `Deforming_mesh`.
+/// @brief The default model `Deforming_mesh` of the `DeformingMesh` concept (mesh/concepts.h),
+/// and `make_deforming_mesh`, which copies any model into one.
 #pragma once
 
 #include <deformseg/exceptions.h>
+#include <deformseg/mesh/concepts.h>
 #include <deformseg/mesh/coordinate_buffer.h>
+#include <deformseg/mesh/make_face_graph.h>
 
 #include <CGAL/Kernel_traits.h>
-#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
@@ -21,59 +23,15 @@
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace deformseg::mesh {
-
-/// @brief A graph with faces in the sense of CGAL's BGL extension (`CGAL::Surface_mesh`,
-/// `CGAL::Polyhedron_3`, OpenMesh, ...): vertices, halfedges and faces reachable through
-/// `boost::graph_traits` and free functions found by argument-dependent lookup.
-template <class G>
-concept FaceGraph = requires(const G& g, typename boost::graph_traits<G>::face_descriptor f,
-                             typename boost::graph_traits<G>::halfedge_descriptor h) {
-  typename boost::graph_traits<G>::vertex_descriptor;
-  vertices(g);
-  faces(g);
-  { num_vertices(g) } -> std::convertible_to<std::size_t>;
-  { num_faces(g) } -> std::convertible_to<std::size_t>;
-  { halfedge(f, g) } -> std::convertible_to<typename boost::graph_traits<G>::halfedge_descriptor>;
-  { next(h, g) } -> std::convertible_to<typename boost::graph_traits<G>::halfedge_descriptor>;
-  { target(h, g) } -> std::convertible_to<typename boost::graph_traits<G>::vertex_descriptor>;
-};
-
-/// @brief A Boost readable property map from `Key`: `get(map, key)` gives its value.
-template <class Map, class Key>
-concept ReadablePropertyMap = requires(const Map& map, const Key& key) {
-  typename boost::property_traits<Map>::value_type;
-  { get(map, key) } -> std::convertible_to<typename boost::property_traits<Map>::value_type>;
-};
-
-/// @brief An animation of one triangle mesh: fixed connectivity, vertex positions per frame.
-///
-/// A type `M` models `DeformingMesh` when, for `const M& m` and a frame `t` in `[0, m.num_frames())`:
-/// - `M::Face_graph` models `FaceGraph`, every face a triangle;
-/// - `m.face_graph()` gives the connectivity as a `const M::Face_graph&`;
-/// - `m.num_frames()` gives the number of frames;
-/// - `m.frame_point_map(t)` gives a readable property map from the graph's vertex descriptors to
-///   the vertex positions at frame `t`.
-///
-/// An animation may also give its frame rate, `m.frames_per_second()` (see `frames_per_second`); the
-/// concept does not require it.
-///
-/// Has models: `deformseg::mesh::Deforming_mesh`. See `doc/Concepts/DeformingMesh.h`.
-template <class M>
-concept DeformingMesh =
-    FaceGraph<typename M::Face_graph> &&
-    requires(const M& m, std::size_t frame) {
-      { m.face_graph() } -> std::same_as<const typename M::Face_graph&>;
-      { m.num_frames() } -> std::convertible_to<std::size_t>;
-      { m.frame_point_map(frame) } -> ReadablePropertyMap<
-          typename boost::graph_traits<typename M::Face_graph>::vertex_descriptor>;
-    };
 
 /// @brief The frame rate of an animation that does not say its own: 30 frames per second.
 inline constexpr double default_frames_per_second = 30;
@@ -109,7 +67,8 @@ inline void check_frames_per_second(double fps, const std::string& where = {}, c
 /// The animation carries its frame rate (`frames_per_second`, default 30), which the readers set
 /// and descriptors that measure time in seconds read (`motion_signatures`).
 ///
-/// @tparam Graph a `FaceGraph` whose faces are all triangles, with a vertex point property map.
+/// @tparam Graph a `FaceGraph` whose faces are all triangles. Its vertex and face indices are its
+/// internal index maps, or, for a graph without them, the order of `vertices(g)` and `faces(g)`.
 /// @tparam Coordinate the stored coordinate type: `double` (default, exact for any input) or
 /// `float` (half the memory; about 7 significant digits).
 template <FaceGraph Graph, std::floating_point Coordinate = double>
@@ -121,9 +80,9 @@ public:
   using vertex_descriptor = typename boost::graph_traits<Graph>::vertex_descriptor;
   /// @brief The graph's face descriptor.
   using face_descriptor = typename boost::graph_traits<Graph>::face_descriptor;
-  /// @brief The point type of the graph's vertex point map, which the frame point maps give.
-  using Point_3 = typename boost::property_traits<
-      typename boost::property_map<Graph, CGAL::vertex_point_t>::const_type>::value_type;
+  /// @brief The point type the frame point maps give: the value type of the graph's vertex point
+  /// map, or `CGAL::Simple_cartesian<double>::Point_3` for a graph without one.
+  using Point_3 = typename internal::Graph_point<Graph>::type;
   /// @brief A triangle as the indices of its three vertices, counter-clockwise seen from outside.
   using Triangle = std::array<std::uint32_t, 3>;
   /// @brief A map from vertex descriptors to their indices in `[0, num_vertices())`.
@@ -199,7 +158,7 @@ public:
   /// the graph's own `get(CGAL::vertex_point, g)`).
   /// @pre every coordinate is finite; otherwise throws `invalid_input`.
   /// @par Complexity O(V) amortised.
-  template <ReadablePropertyMap<vertex_descriptor> VertexPointMap>
+  template <ReadablePointMap<vertex_descriptor> VertexPointMap>
   void add_frame_from(const VertexPointMap& points) {
     add_frame_from(points, vertex_descriptors());
   }
@@ -208,7 +167,7 @@ public:
   /// vertex `i` is at `get(points, keys[i])`.
   /// @pre `keys.size() == V` and every coordinate is finite; otherwise throws `invalid_input`.
   /// @par Complexity O(V) amortised.
-  template <class Key, ReadablePropertyMap<Key> PointMap>
+  template <class Key, ReadablePointMap<Key> PointMap>
   void add_frame_from(const PointMap& points, std::span<const Key> keys) {
     std::vector<Coordinate> xyz(3 * keys.size());
     for (std::size_t i = 0; i < keys.size(); ++i) {
@@ -401,72 +360,6 @@ double frames_per_second(const M& animation) {
     return animation.frames_per_second();
   else
     return default_frames_per_second;
-}
-
-namespace internal {
-
-// Sets the point of vertex `v` of `g` to `p`. Through the graph's vertex point map, except for a
-// graph that holds points of its own type and sets them with `g.set_point(v, point)` (OpenMesh):
-// CGAL's point map for OpenMesh rounds every coordinate to float on the way in, whatever the mesh's
-// point type (unless CGAL_USE_OM_POINTS), so that a TriMesh of Vec3d would hold other points than
-// those given. Its own point type keeps them (Vec3d to the last bit; Vec3f rounds, as it must).
-template <class Point, class Graph, class PointMap, class Vertex, class P>
-void set_vertex_point(Graph& g, const PointMap& point_map, Vertex v, const P& p) {
-  if constexpr (requires { typename Graph::Point::value_type; } &&
-                requires(Graph& m, const typename Graph::Point& q) { m.set_point(v, q); }) {
-    using Scalar = typename Graph::Point::value_type;
-    g.set_point(v, typename Graph::Point(static_cast<Scalar>(p[0]), static_cast<Scalar>(p[1]),
-                                         static_cast<Scalar>(p[2])));
-  } else {
-    put(point_map, v, Point(p[0], p[1], p[2]));
-  }
-}
-
-}  // namespace internal
-
-/// @brief Builds a `FaceGraph` from points and triangles given by vertex indices, keeping the
-/// points' order as the vertex index order and the triangles' order as the face index order.
-///
-/// The points are kept as the graph's point type holds them: to the last bit for double points
-/// (`Surface_mesh`, `Polyhedron_3` on an inexact kernel, an OpenMesh mesh of `Vec3d`, which is
-/// written through its own `set_point`, as CGAL's point map for OpenMesh would round to float).
-///
-/// @tparam Graph a default-constructible `FaceGraph` with a writable vertex point map.
-/// @param points the vertex positions, any range of 3-element indexable values.
-/// @param triangles any range of 3 vertex indices each.
-/// @pre every index is in range and the triangles form an oriented 2-manifold (with or without
-/// boundary); otherwise throws `invalid_input` naming the first triangle that breaks it.
-/// @par Complexity O(V + F) expected.
-template <FaceGraph Graph, class PointRange, class TriangleRange>
-Graph make_face_graph(const PointRange& points, const TriangleRange& triangles) {
-  using vertex_descriptor = typename boost::graph_traits<Graph>::vertex_descriptor;
-  using Point = typename boost::property_traits<
-      typename boost::property_map<Graph, CGAL::vertex_point_t>::type>::value_type;
-  Graph g;
-  auto point_map = get(CGAL::vertex_point, g);
-  std::vector<vertex_descriptor> vertex;
-  vertex.reserve(std::size(points));
-  for (const auto& p : points) {
-    vertex.push_back(add_vertex(g));
-    internal::set_vertex_point<Point>(g, point_map, vertex.back(), p);
-  }
-  std::size_t j = 0;
-  for (const auto& tri : triangles) {
-    std::array<vertex_descriptor, 3> corners;
-    for (int k = 0; k < 3; ++k) {
-      if (std::size_t(tri[k]) >= vertex.size())
-        throw invalid_input("triangle " + std::to_string(j) + " has vertex index " +
-                            std::to_string(tri[k]) + " out of range [0, " +
-                            std::to_string(vertex.size()) + ")");
-      corners[k] = vertex[tri[k]];
-    }
-    if (CGAL::Euler::add_face(corners, g) == boost::graph_traits<Graph>::null_face())
-      throw invalid_input("triangle " + std::to_string(j) +
-                          " cannot be added: it repeats a vertex, or makes an edge or a vertex "
-                          "non-manifold, or is oriented against its neighbours");
-    ++j;
-  }
-  return g;
 }
 
 /// @brief A `Deforming_mesh` copy of any model of `DeformingMesh`, for algorithms that want

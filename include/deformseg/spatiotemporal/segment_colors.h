@@ -9,6 +9,8 @@
 #include <deformseg/spatiotemporal/frame_segments.h>
 #include <deformseg/strain/strain.h>
 
+#include <CGAL/Named_function_parameters.h>
+
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -56,7 +58,7 @@ inline std::vector<color::Rgb> segment_face_colors(const Frame_segments& frames,
 
 /// @brief Writes the node of each face in frame `t`'s segment graph (`Frame_segments::graph`, and
 /// so the key frame's graph of `evolving_graph`) into a face property map: face f gets the node of
-/// triangle `index(f)`, with `index` the graph's initialized face index map.
+/// triangle `index(f)`, with `index` the face index map of `np` (default: the graph's initialized one).
 /// @tparam FacePropertyMap a writable property map from the graph's face descriptors to an
 /// integer type that holds the node count.
 /// @param frames the frames' segments.
@@ -64,14 +66,16 @@ inline std::vector<color::Rgb> segment_face_colors(const Frame_segments& frames,
 /// @param graph the connectivity (`animation.face_graph()`), or a mesh with the same faces in the
 /// same order.
 /// @param map where to write.
+/// @param np optional CGAL named parameters: `face_index_map`, as for `strain::put_strain_frame`.
 /// @throws invalid_input when `t` is out of range or the graph has another number of faces.
 /// @par Complexity O(F + E), as `Frame_segments::face_nodes`.
-template <mesh::FaceGraph Graph, class FacePropertyMap>
-void put_face_segments(const Frame_segments& frames, std::size_t t, const Graph& graph,
-                       FacePropertyMap map) {
+template <mesh::FaceGraph Graph, class FacePropertyMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+void put_face_segments(const Frame_segments& frames, std::size_t t, const Graph& graph, FacePropertyMap map,
+                       const NamedParameters& np = CGAL::parameters::default_values()) {
   const std::vector<std::uint32_t> nodes = frames.face_nodes(t);
-  deformseg::strain::internal::for_each_face_index(graph, nodes.size(),
-                                                   [&](auto f, std::size_t j) { put(map, f, nodes[j]); });
+  deformseg::strain::internal::for_each_face_index(
+      graph, nodes.size(), [&](auto f, std::size_t j) { put(map, f, nodes[j]); }, np);
 }
 
 }  // namespace deformseg::spatiotemporal

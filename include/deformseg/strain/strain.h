@@ -7,11 +7,14 @@
 #include <deformseg/mesh/deforming_mesh.h>
 #include <deformseg/exceptions.h>
 #include <deformseg/strain/internal/strain_kernel.h>
+#include <deformseg/strain/strain_field.h>
 #include <deformseg/strain/strain_measures.h>
 #include <deformseg/strain/strain_normalization.h>
 #include <deformseg/threads.h>
 
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -86,112 +89,6 @@ struct Strain_options {
   int threads = 0;
 };
 
-/// @brief The strain of every triangle at every frame: an `F x T` matrix, column-major so that a
-/// frame is a contiguous vector of F values (the frame descriptor of temporal segmentation), with
-/// the principal directions when they were asked for.
-///
-/// Triangle `j` is the face of index `j` in the animation's face index map (for a
-/// `Deforming_mesh`, `face_descriptors()[j]`), frames are counted from 0.
-/// @tparam Value `float` (default) or `double`.
-template <std::floating_point Value = float>
-class Strain_field {
-public:
-  using value_type = Value;  ///< the type of a strain
-  /// @brief How the values are stored: a `std::vector` of `Value` whose allocator leaves new
-  /// elements uninitialised (the kernel writes every one, and a large field is then first touched
-  /// in parallel).
-  using Storage = std::vector<Value, mesh::Uninitialized_allocator<Value>>;
-  /// @brief The whole field as an `F x T` column-major Eigen matrix, without copy.
-  using Matrix_map = Eigen::Map<const Eigen::Matrix<Value, Eigen::Dynamic, Eigen::Dynamic>>;
-  /// @brief The principal directions of one frame as an `F x 3` Eigen matrix (row j: the unit
-  /// vector of triangle j), without copy.
-  using Directions_map = Eigen::Map<const Eigen::Matrix<Value, Eigen::Dynamic, 3>>;
-
-  /// @brief An empty field: no triangle, no frame.
-  Strain_field() = default;
-
-  /// @brief A field from its parts, as `compute_strain` makes it.
-  /// @param faces the number of triangles F.
-  /// @param frames the number of frames T.
-  /// @param values `F T` strains, frame after frame.
-  /// @param directions empty, or `3 F T` values: per frame, the x of every triangle's direction,
-  /// then the y, then the z.
-  /// @param sigma the normalisation's parameter, if any.
-  /// @param degenerate_count the number of triangle-frames with a degenerate reference triangle.
-  /// @throws invalid_input when the sizes do not match.
-  /// @par Complexity O(1).
-  Strain_field(std::size_t faces, std::size_t frames, Storage values, Storage directions,
-               std::optional<double> sigma, std::size_t degenerate_count)
-      : faces_(faces), frames_(frames), values_(std::move(values)), directions_(std::move(directions)),
-        sigma_(sigma), degenerate_count_(degenerate_count) {
-    if (values_.size() != faces * frames || !(directions_.empty() || directions_.size() == 3 * faces * frames))
-      throw invalid_input("Strain_field: expected " + std::to_string(faces * frames) + " values and 0 or " +
-                          std::to_string(3 * faces * frames) + " direction components, got " +
-                          std::to_string(values_.size()) + " and " + std::to_string(directions_.size()));
-  }
-
-  /// @brief The number of triangles F.
-  std::size_t num_faces() const noexcept { return faces_; }
-  /// @brief The number of frames T.
-  std::size_t num_frames() const noexcept { return frames_; }
-
-  /// @brief The strain of triangle `face` at frame `frame`, unchecked.
-  /// @pre `face < num_faces()` and `frame < num_frames()`.
-  Value operator()(std::size_t face, std::size_t frame) const noexcept { return values_[frame * faces_ + face]; }
-
-  /// @brief The strains of all triangles at frame `t`, contiguous.
-  /// @throws invalid_input when `t >= num_frames()`.
-  std::span<const Value> frame(std::size_t t) const {
-    check_frame(t);
-    return std::span<const Value>(values_).subspan(t * faces_, faces_);
-  }
-  /// @brief All strains, frame after frame (`F T` values).
-  std::span<const Value> values() const noexcept { return values_; }
-  /// @brief The field as an `F x T` Eigen matrix, without copy.
-  Matrix_map matrix() const { return Matrix_map(values_.data(), Eigen::Index(faces_), Eigen::Index(frames_)); }
-
-  /// @brief Whether the principal directions were computed (`Strain_options::principal_directions`).
-  bool has_principal_directions() const noexcept { return !directions_.empty(); }
-  /// @brief The principal direction of every triangle at frame `t`, as an `F x 3` matrix.
-  ///
-  /// Row j is the unit vector, in the plane of triangle j as deformed at frame t, along which it
-  /// is stretched most (the image of the eigenvector of C for l1, see `compute_strain`); its sign
-  /// has no meaning. Where no direction stretches more than another (`l1^2 - l2^2 <= 1e-6 l1^2`:
-  /// a rigid or uniformly scaled triangle, and every triangle of a frame whose strain is 0 by
-  /// definition), it is the direction of the triangle's edge from its vertex of smallest index to
-  /// the next one along the face; for a degenerate reference triangle, or a triangle collapsed to a
-  /// point, it is 0.
-  /// @throws invalid_input when `t >= num_frames()` or the directions were not computed.
-  Directions_map principal_directions(std::size_t t) const {
-    check_frame(t);
-    if (!has_principal_directions())
-      throw invalid_input("principal directions were not computed: set Strain_options::principal_directions");
-    return Directions_map(directions_.data() + 3 * t * faces_, Eigen::Index(faces_), 3);
-  }
-
-  /// @brief The sigma of the Gaussian normalisation (given, or from the data; 0 when every
-  /// sample was 0), or what another normalisation reported; none without normalisation.
-  std::optional<double> sigma() const noexcept { return sigma_; }
-  /// @brief The number of triangle-frames whose reference triangle is degenerate (zero area, see
-  /// `Strain_options::degenerate_tolerance`), whose strain is 0. For a fixed reference, the number
-  /// of degenerate triangles times the number of frames other than the reference frame.
-  std::size_t degenerate_count() const noexcept { return degenerate_count_; }
-
-private:
-  void check_frame(std::size_t t) const {
-    if (t >= frames_)
-      throw invalid_input("strain of frame " + std::to_string(t) + " asked of a field of " +
-                          std::to_string(frames_) + " frames");
-  }
-
-  std::size_t faces_ = 0;
-  std::size_t frames_ = 0;
-  Storage values_{};
-  Storage directions_{};
-  std::optional<double> sigma_{};
-  std::size_t degenerate_count_ = 0;
-};
-
 namespace internal {
 
 // A FaceGraph given as a reference mesh. Strain_options is ruled out first: boost::graph_traits,
@@ -264,21 +161,53 @@ Strain_field<Value> strain_field(const mesh::Deforming_mesh<Graph, Coordinate>& 
   return Strain_field<Value>(faces, frames, std::move(values), std::move(directions), sigma, degenerate);
 }
 
+// The point map of `reference`: the `vertex_point_map` of `np`, else the graph's own. Chosen
+// without naming the graph's own map's type when one is given, as a graph may have none.
+template <class ReferenceGraph, class NamedParameters>
+auto reference_point_map(const ReferenceGraph& reference, const NamedParameters& np) {
+  if constexpr (CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_point_t>::value)
+    return get(CGAL::vertex_point, reference);
+  else
+    return CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point);
+}
+
+// The triangles of `reference` by its face index, as its vertex indices in the order of each
+// face's halfedge cycle; throws for a face that is not a triangle or an index out of range.
+template <mesh::FaceGraph ReferenceGraph, class VertexIndexMap, class FaceIndexMap>
+std::vector<Triangle_indices> reference_triangles(const ReferenceGraph& reference, const VertexIndexMap& vertex_index,
+                                                  const FaceIndexMap& face_index, std::size_t vertex_count) {
+  std::vector<Triangle_indices> triangles(num_faces(reference));
+  for (auto f : faces(reference)) {
+    const std::size_t j = std::size_t(get(face_index, f));
+    std::size_t k = 0;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, reference), reference)) {
+      const std::size_t i = std::size_t(get(vertex_index, v));
+      if (j >= triangles.size() || k == 3 || i >= vertex_count)
+        throw invalid_input("compute_strain: the reference mesh's face " + std::to_string(j) +
+                            " is not a triangle of indexed vertices");
+      triangles[j][k++] = std::uint32_t(i);
+    }
+    if (k != 3)
+      throw invalid_input("compute_strain: the reference mesh's face " + std::to_string(j) + " is not a triangle");
+  }
+  return triangles;
+}
+
 // The positions of `reference` in its vertex index order, after checking that its triangles are
-// those of `animation`.
-template <class Graph, class Coordinate, mesh::FaceGraph ReferenceGraph>
+// those of `animation` (up to the rotation of each, which does not change the strain). Its points
+// and indices are those of `np`, else its own.
+template <class Graph, class Coordinate, mesh::FaceGraph ReferenceGraph, class NamedParameters>
 std::vector<double> reference_positions(const mesh::Deforming_mesh<Graph, Coordinate>& animation,
-                                        const ReferenceGraph& reference) {
-  const std::size_t vertices = num_vertices(reference);
+                                        const ReferenceGraph& reference, const NamedParameters& np) {
+  const std::size_t vertex_count = num_vertices(reference);
   const std::size_t faces = num_faces(reference);
-  if (vertices != animation.num_vertices() || faces != animation.num_faces())
-    throw invalid_input("compute_strain: the reference mesh has " + std::to_string(vertices) + " vertices and " +
+  if (vertex_count != animation.num_vertices() || faces != animation.num_faces())
+    throw invalid_input("compute_strain: the reference mesh has " + std::to_string(vertex_count) + " vertices and " +
                         std::to_string(faces) + " faces, the animation " + std::to_string(animation.num_vertices()) +
                         " and " + std::to_string(animation.num_faces()));
-  // Its own index table, through a Deforming_mesh of it, compared triangle by triangle (up to the
-  // rotation of each, which does not change the strain).
-  const mesh::Deforming_mesh<ReferenceGraph> copy(reference);
-  const auto mine = canonical_triangles(copy.triangles());
+  const auto vertex_index = CGAL::get_initialized_vertex_index_map(reference, np);
+  const auto mine = canonical_triangles(
+      reference_triangles(reference, vertex_index, CGAL::get_initialized_face_index_map(reference, np), vertex_count));
   const auto theirs = canonical_triangles(animation.triangles());
   for (std::size_t j = 0; j < faces; ++j)
     if (mine[j] != theirs[j])
@@ -286,12 +215,11 @@ std::vector<double> reference_positions(const mesh::Deforming_mesh<Graph, Coordi
                           std::to_string(mine[j][0]) + " " + std::to_string(mine[j][1]) + " " +
                           std::to_string(mine[j][2]) + ", the animation's " + std::to_string(theirs[j][0]) + " " +
                           std::to_string(theirs[j][1]) + " " + std::to_string(theirs[j][2]));
-  std::vector<double> xyz(3 * vertices);
-  const auto points = get(CGAL::vertex_point, reference);
-  const auto index = copy.vertex_index_map();
-  for (auto v : copy.vertex_descriptors()) {
+  std::vector<double> xyz(3 * vertex_count);
+  const auto points = reference_point_map(reference, np);
+  for (auto v : vertices(reference)) {
     const auto& p = get(points, v);
-    for (int k = 0; k < 3; ++k) xyz[3 * get(index, v) + std::size_t(k)] = CGAL::to_double(p[k]);
+    for (int k = 0; k < 3; ++k) xyz[3 * std::size_t(get(vertex_index, v)) + std::size_t(k)] = CGAL::to_double(p[k]);
   }
   for (std::size_t i = 0; i < xyz.size(); ++i)
     if (!std::isfinite(xyz[i]))
@@ -314,19 +242,20 @@ Strain_field<Value> strain_of(const Mesh& animation, const Strain_options& optio
 
 // The same against a reference mesh.
 template <std::floating_point Value, mesh::DeformingMesh Mesh, class ReferenceGraph, class Measure,
-          class Normalization>
+          class Normalization, class NamedParameters>
 Strain_field<Value> strain_against(const Mesh& animation, const ReferenceGraph& reference,
                                    const Strain_options& options, const Measure& measure,
-                                   const Normalization& normalization) {
+                                   const Normalization& normalization, const NamedParameters& np) {
   if constexpr (mesh::is_deforming_mesh_v<Mesh>) {
     if (options.reference != Strain_reference::rest_pose || options.rest_frame != 0)
       throw invalid_input("compute_strain: a reference mesh takes the place of the rest pose; leave "
                           "options.reference and options.rest_frame at their defaults");
     check_strain_options(options, animation.num_frames(), animation.num_faces());
-    const std::vector<double> xyz = reference_positions(animation, reference);
+    const std::vector<double> xyz = reference_positions(animation, reference, np);
     return strain_field<Value>(animation, xyz.data(), options, measure, normalization);
   } else {
-    return strain_against<Value>(mesh::make_deforming_mesh(animation), reference, options, measure, normalization);
+    return strain_against<Value>(mesh::make_deforming_mesh(animation), reference, options, measure, normalization,
+                                 np);
   }
 }
 
@@ -414,11 +343,17 @@ Strain_field<Value> compute_strain(const Mesh& animation, const Strain_options& 
 ///
 /// As the first overload with `Strain_reference::rest_pose` and the reference mesh's positions in
 /// place of the rest frame; no frame is 0 by definition, so every frame counts in sigma.
-/// @tparam ReferenceGraph a `FaceGraph` with a vertex point map.
+/// @tparam ReferenceGraph a `FaceGraph`, with a vertex point map unless `np` gives one.
 /// @param animation the animation.
 /// @param reference the reference mesh: vertex i (in its vertex index map) is the animation's
 /// vertex i, and its faces are the animation's, in the same order.
 /// @param options as for the first overload; `reference` must be `rest_pose` and `rest_frame` 0.
+/// @param np optional CGAL named parameters for reading `reference`, each defaulting to the
+/// graph's own: `vertex_point_map`, a readable property map from its vertex descriptors to points
+/// (`mesh::ReadablePointMap`; default `get(CGAL::vertex_point, reference)`); `vertex_index_map` and
+/// `face_index_map`, readable property maps giving each vertex and face its index in
+/// `[0, num_vertices)` and `[0, num_faces)` (default: the graph's initialized index maps,
+/// `CGAL::get_initialized_vertex_index_map`).
 /// @return the `F x T` field.
 /// @pre as the first overload; `reference` has the animation's vertex and face counts, the same
 /// triangles (face j has the vertices of the animation's triangle j, in the same order) and
@@ -426,16 +361,20 @@ Strain_field<Value> compute_strain(const Mesh& animation, const Strain_options& 
 /// @throws invalid_input naming the first mismatch (counts, or the first face that differs), or
 /// when `options` asks for another reference.
 /// @par Complexity O(T F + V).
-template <std::floating_point Value = float, mesh::DeformingMesh Mesh, internal::Reference_face_graph ReferenceGraph>
+/// @par Example
+/// @include strain_vertex_point_map.cpp
+template <std::floating_point Value = float, mesh::DeformingMesh Mesh, internal::Reference_face_graph ReferenceGraph,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
 Strain_field<Value> compute_strain(const Mesh& animation, const ReferenceGraph& reference,
-                                   const Strain_options& options = {}) {
-  return internal::strain_against<Value>(animation, reference, options, options.measure, options.normalization);
+                                   const Strain_options& options = {},
+                                   const NamedParameters& np = CGAL::parameters::default_values()) {
+  return internal::strain_against<Value>(animation, reference, options, options.measure, options.normalization, np);
 }
 
 /// @brief The strain against a reference mesh of its own, with a measure and a normalisation of
 /// one's own: as the overload without `reference` that takes them, against `reference` as the
 /// overload without policies.
-/// @tparam ReferenceGraph a `FaceGraph` with a vertex point map.
+/// @tparam ReferenceGraph a `FaceGraph`, with a vertex point map unless `np` gives one.
 /// @tparam Measure a `StrainMeasure`.
 /// @tparam Normalization a `StrainNormalization`.
 /// @param animation the animation.
@@ -443,34 +382,39 @@ Strain_field<Value> compute_strain(const Mesh& animation, const ReferenceGraph& 
 /// @param options as for that overload; its `measure` and `normalization` are ignored.
 /// @param measure the scalar each triangle's stretches become.
 /// @param normalization how the raw strains are normalised.
+/// @param np the named parameters of the overload without policies, with their defaults.
 /// @return the `F x T` field.
 /// @pre as the overload without policies.
 /// @throws invalid_input as the overload without policies, or what the policies throw.
 /// @par Complexity O(T F + V), with the policies' own costs.
 template <std::floating_point Value = float, mesh::DeformingMesh Mesh, internal::Reference_face_graph ReferenceGraph,
-          StrainMeasure Measure, StrainNormalization Normalization>
+          StrainMeasure Measure, StrainNormalization Normalization,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
 Strain_field<Value> compute_strain(const Mesh& animation, const ReferenceGraph& reference,
                                    const Strain_options& options, const Measure& measure,
-                                   const Normalization& normalization) {
-  return internal::strain_against<Value>(animation, reference, options, measure, normalization);
+                                   const Normalization& normalization,
+                                   const NamedParameters& np = CGAL::parameters::default_values()) {
+  return internal::strain_against<Value>(animation, reference, options, measure, normalization, np);
 }
 
 namespace internal {
 
-// Calls put(face descriptor, j) for each face of `graph`, j its index.
-template <mesh::FaceGraph Graph, class Put>
-void for_each_face_index(const Graph& graph, std::size_t expected_faces, const Put& put) {
+// Calls put(face descriptor, j) for each face of `graph`, j its index in the `face_index_map` of
+// `np`, else in the graph's own.
+template <mesh::FaceGraph Graph, class Put, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void for_each_face_index(const Graph& graph, std::size_t expected_faces, const Put& put,
+                         const NamedParameters& np = CGAL::parameters::default_values()) {
   if (num_faces(graph) != expected_faces)
     throw invalid_input("the graph has " + std::to_string(num_faces(graph)) + " faces, the strain field " +
                         std::to_string(expected_faces));
-  const auto index = CGAL::get_initialized_face_index_map(graph);
+  const auto index = CGAL::get_initialized_face_index_map(graph, np);
   for (auto f : faces(graph)) put(f, std::size_t(get(index, f)));
 }
 
 }  // namespace internal
 
 /// @brief Writes the strains of frame `t` into a face property map: face f gets the strain of
-/// triangle `index(f)`, with `index` the graph's initialized face index map.
+/// triangle `index(f)`, with `index` the face index map of `np` (default: the graph's initialized one).
 ///
 /// `graph` is the animation's connectivity (`animation.face_graph()`) or a mesh with the same
 /// faces in the same order.
@@ -480,13 +424,19 @@ void for_each_face_index(const Graph& graph, std::size_t expected_faces, const P
 /// @param t the frame.
 /// @param graph the connectivity.
 /// @param map where to write.
+/// @param np optional CGAL named parameters: `face_index_map`, a readable property map giving each
+/// face of `graph` its triangle's index in `[0, F)`. Default: the graph's initialized face index
+/// map (`CGAL::get_initialized_face_index_map`).
 /// @throws invalid_input when `t` is out of range or the graph has another number of faces.
 /// @par Complexity O(F).
 /// @sa put_principal_directions
-template <std::floating_point Value, mesh::FaceGraph Graph, class FacePropertyMap>
-void put_strain_frame(const Strain_field<Value>& field, std::size_t t, const Graph& graph, FacePropertyMap map) {
+template <std::floating_point Value, mesh::FaceGraph Graph, class FacePropertyMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+void put_strain_frame(const Strain_field<Value>& field, std::size_t t, const Graph& graph, FacePropertyMap map,
+                      const NamedParameters& np = CGAL::parameters::default_values()) {
   const auto strains = field.frame(t);
-  internal::for_each_face_index(graph, field.num_faces(), [&](auto f, std::size_t j) { put(map, f, strains[j]); });
+  internal::for_each_face_index(
+      graph, field.num_faces(), [&](auto f, std::size_t j) { put(map, f, strains[j]); }, np);
 }
 
 /// @brief Writes the principal directions of frame `t` into a face property map of vectors: face
@@ -498,18 +448,23 @@ void put_strain_frame(const Strain_field<Value>& field, std::size_t t, const Gra
 /// @param t the frame.
 /// @param graph the connectivity, as for `put_strain_frame`.
 /// @param map where to write.
+/// @param np as for `put_strain_frame`: `face_index_map`, default the graph's initialized one.
 /// @throws invalid_input when `t` is out of range, the directions were not computed, or the graph
 /// has another number of faces.
 /// @par Complexity O(F).
-template <std::floating_point Value, mesh::FaceGraph Graph, class FacePropertyMap>
+template <std::floating_point Value, mesh::FaceGraph Graph, class FacePropertyMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
 void put_principal_directions(const Strain_field<Value>& field, std::size_t t, const Graph& graph,
-                              FacePropertyMap map) {
+                              FacePropertyMap map, const NamedParameters& np = CGAL::parameters::default_values()) {
   using Vector = typename boost::property_traits<FacePropertyMap>::value_type;
   const auto directions = field.principal_directions(t);
-  internal::for_each_face_index(graph, field.num_faces(), [&](auto f, std::size_t j) {
-    put(map, f, Vector(double(directions(Eigen::Index(j), 0)), double(directions(Eigen::Index(j), 1)),
-                       double(directions(Eigen::Index(j), 2))));
-  });
+  internal::for_each_face_index(
+      graph, field.num_faces(),
+      [&](auto f, std::size_t j) {
+        put(map, f, Vector(double(directions(Eigen::Index(j), 0)), double(directions(Eigen::Index(j), 1)),
+                           double(directions(Eigen::Index(j), 2))));
+      },
+      np);
 }
 
 }  // namespace deformseg::strain
