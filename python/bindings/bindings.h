@@ -10,7 +10,8 @@ namespace deformseg::python {
 
 void bind_errors(pybind11::module_& m);          // errors.cpp: InvalidInput, SimilarityStopped
 void bind_animation(pybind11::module_& m);       // animation.cpp: Animation, read_animation, clips
-void bind_store(pybind11::module_& m);           // store.cpp: MotionStore, open_store, describe_to_store
+void bind_store(pybind11::module_& m);           // store.cpp: MotionStore, open_store
+void bind_store_describe(pybind11::module_& m);  // store_describe.cpp: describe_to_store
 void bind_strain(pybind11::module_& m);          // strain.cpp: strain
 void bind_temporal(pybind11::module_& m);        // temporal.cpp: frame_distances, temporal_segmentation
 void bind_spatiotemporal(pybind11::module_& m);  // spatiotemporal.cpp: _evolving_graph

@@ -54,6 +54,7 @@ PYBIND11_MODULE(_deformseg, m) {
   bind_errors(m);
   bind_animation(m);
   bind_store(m);
+  bind_store_describe(m);
   bind_strain(m);
   bind_temporal(m);
   bind_spatiotemporal(m);

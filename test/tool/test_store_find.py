@@ -21,6 +21,15 @@ SCHEDULES = {
 
 
 @pytest.fixture(scope="session")
+def scratch(scratch):
+    """This file's own folder in the session's scratch: test_store.py, in the same session, writes
+    tubes of the same names and a store of its own under the same names there."""
+    folder = scratch / "store-find"
+    folder.mkdir(exist_ok=True)
+    return folder
+
+
+@pytest.fixture(scope="session")
 def clips(tool, scratch):
     """The tubes' folders, in a fixed order."""
     return [synth(tool, scratch, f"tube-{name}", "--format", "obj", "--rings", "10", "--sectors", "6",

@@ -3,6 +3,7 @@
 #include "command.h"
 #include "policy_options.h"
 
+#include <frontend/clip_cache.h>
 #include <frontend/store_search.h>
 
 #include <deformseg/color/strain_colors.h>
@@ -50,33 +51,6 @@ struct Compared_clips {
   std::vector<std::string> skipped;  // "FILE clip NAME: MESSAGE"
 };
 
-// A character file opened for its clips: parsed on its body and repaired once, or why not (then
-// each of its clips fails so, as reading it alone would).
-struct Opened_file {
-  std::optional<io::Gltf_file> gltf;
-  std::optional<io::Repaired_triangles> repaired;
-  std::optional<invalid_input> parse_failed, repair_failed;
-};
-
-Opened_file open_character_file(const std::filesystem::path& file, const std::filesystem::path& body,
-                                const Evaluate_options& o) {
-  Opened_file opened;
-  try {
-    Input_options read = o.read;
-    if (!body.empty()) read.body = body.string();
-    opened.gltf.emplace(frontend::character_file(file.string(), read));
-  } catch (const invalid_input& e) {
-    opened.parse_failed = e;
-    return opened;
-  }
-  try {
-    opened.repaired = opened.gltf->repair(frontend::repair_options(file.string(), o.read));
-  } catch (const invalid_input& e) {
-    opened.repair_failed = e;
-  }
-  return opened;
-}
-
 // The rows of the labels that name one file on one body, in their order.
 struct File_rows {
   std::filesystem::path file, body;
@@ -101,12 +75,13 @@ std::vector<File_rows> rows_by_file(const std::vector<evaluation::Labelled_clip>
 }
 
 // The labelled clips in the order they are compared (a file's rows together, the files in the
-// order of their first rows), read one at a time from any thread: a character file is opened by
-// the first of its clips to be read and freed after the last, so that few are held at once; a
-// row without a clip takes --clip's.
+// order of their first rows), read one at a time from any thread: a character file is parsed and
+// repaired by the first of its clips to be read and freed after the last (`frontend::Clip_cache`),
+// so that few are held at once; a row without a clip takes --clip's.
 class Clip_reader {
 public:
-  Clip_reader(std::vector<evaluation::Labelled_clip> rows, const Evaluate_options& o) : rows_(std::move(rows)), o_(o) {
+  Clip_reader(std::vector<evaluation::Labelled_clip> rows, const Evaluate_options& o)
+      : rows_(std::move(rows)), o_(o), cache_(files_of(rows_, o), o.read) {
     for (File_rows& of : rows_by_file(rows_, o)) {
       for (const std::size_t row : of.rows) order_.push_back({files_.size(), row});
       files_.push_back(std::make_unique<File>(std::move(of)));
@@ -125,58 +100,53 @@ public:
   // @throws invalid_input as the reader (the file's, for every clip of a file that cannot be opened).
   mesh::Surface_mesh_animation read(std::size_t k) {
     File& file = *files_[order_[k].file];
-    const std::shared_ptr<const Opened_file> opened = acquire(file);
-    struct Release {
-      Clip_reader& reader;
-      File& file;
-      ~Release() { reader.release(file); }
-    } release{*this, file};
+    announce(file);
     const std::string path = file.of.file.string();
-    if (!opened) {
+    if (!io::is_character_file(file.of.file)) {
       Input_options frames = o_.read;
       frames.clip.clear();  // --clip is for the glTF rows
       return frontend::read_input(path, frames, frontend::Front::command_line).animation;
     }
-    if (opened->parse_failed) throw *opened->parse_failed;
+    const frontend::Character_on_body character{path, file.of.body.string()};
+    const frontend::Clip_cache::Release release(cache_, character);
+    const std::shared_ptr<const io::Gltf_file> gltf = cache_.acquire(character);
     const std::string clip = rows_[order_[k].row].item.clip.empty() ? o_.read.clip : rows_[order_[k].row].item.clip;
-    io::require_clip_choice(*opened->gltf, clip);  // an empty clip names a file's only one
-    if (opened->repair_failed) throw *opened->repair_failed;
-    return opened->gltf->read(*opened->repaired, {.clip = clip, .fps = o_.read.fps, .threads = o_.read.threads});
+    io::require_clip_choice(*gltf, clip);  // an empty clip names a file's only one
+    return gltf->read(cache_.connectivity(character)->repaired(),
+                      {.clip = clip, .fps = o_.read.fps, .threads = o_.read.threads});
   }
 
 private:
   struct File {
-    explicit File(File_rows rows) : of(std::move(rows)), left(of.rows.size()) {}
+    explicit File(File_rows rows) : of(std::move(rows)) {}
     File_rows of;
-    std::mutex mutex;
-    bool announced = false;
-    std::shared_ptr<const Opened_file> opened;  // while clips of a character file are left
-    std::size_t left;
+    std::once_flag announced;
   };
   struct Clip_at {
     std::size_t file, row;
   };
 
-  // The file opened (null for a file of another format), said once.
-  std::shared_ptr<const Opened_file> acquire(File& file) {
-    const std::lock_guard lock(file.mutex);
-    if (!file.announced) {
-      const std::lock_guard say(say_mutex_);
-      progress("reading " + std::to_string(file.of.rows.size()) + " clip(s) of " + file.of.file.string());
-      file.announced = true;
-      if (io::is_character_file(file.of.file))
-        file.opened = std::make_shared<const Opened_file>(open_character_file(file.of.file, file.of.body, o_));
-    }
-    return file.opened;
+  // The character files of the rows, a row each, on its body_file, named as `read` names them: by
+  // the first row of each file and body (`rows_by_file`).
+  static std::vector<frontend::Character_on_body> files_of(const std::vector<evaluation::Labelled_clip>& rows,
+                                                           const Evaluate_options& o) {
+    std::vector<frontend::Character_on_body> files;
+    for (const File_rows& of : rows_by_file(rows, o))
+      files.insert(files.end(), of.rows.size(), frontend::Character_on_body{of.file.string(), of.body.string()});
+    return files;
   }
 
-  void release(File& file) {
-    const std::lock_guard lock(file.mutex);
-    if (--file.left == 0) file.opened.reset();
+  // Says, once per file, that its clips are being read.
+  void announce(File& file) {
+    std::call_once(file.announced, [&] {
+      const std::lock_guard say(say_mutex_);
+      progress("reading " + std::to_string(file.of.rows.size()) + " clip(s) of " + file.of.file.string());
+    });
   }
 
   const std::vector<evaluation::Labelled_clip> rows_;
   const Evaluate_options& o_;
+  frontend::Clip_cache cache_;
   std::vector<std::unique_ptr<File>> files_;
   std::vector<Clip_at> order_;
   std::mutex say_mutex_;
