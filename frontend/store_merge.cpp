@@ -35,7 +35,7 @@ Describe_report merge_stores(const std::string& folder, const std::vector<std::s
       const store::Store_record record = part.record(i);
       const std::vector<std::uint32_t> frames(part.frames(i).begin(), part.frames(i).end());
       const std::string clip_name = stored_clip_name(part, i);
-      if (const std::optional<std::size_t> at = append.store().find(record.path, record.clip, record.body)) {
+      if (const std::optional<std::size_t> at = append.find(record.path, record.clip, record.body)) {
         append.replace(*at, record, part.view(i), frames, part.summary(i));
         report.redescribed.push_back(clip_name);
       } else {

@@ -468,6 +468,18 @@ def test_a_missing_truncated_or_corrupted_store_is_refused_naming_the_file(descr
         deformseg.open_store(described[1], verify="all")
 
 
+def test_a_merge_of_parts_that_hold_the_same_clip_replaces_it(described, tmp_path):
+    # Parts described apart may overlap (a task retried on another worker): the clip met again
+    # replaces the one of the part before it at its index, as in a store that held it already.
+    store = deformseg.open_store(described[1])
+    merged = deformseg._deformseg._merge_stores(tmp_path / "merged", [described[1], described[1]])
+    assert merged["clips"] == len(store)
+    assert len(merged["described"]) == len(store) and merged["redescribed"] == merged["described"]
+    again = deformseg.open_store(tmp_path / "merged")
+    assert [again.signatures(i).tobytes() for i in range(len(again))] == \
+        [store.signatures(i).tobytes() for i in range(len(store))]
+
+
 # ---- pickling ---------------------------------------------------------------------------------------
 
 def test_a_store_pickles_as_its_folder(described):

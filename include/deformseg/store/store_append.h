@@ -23,6 +23,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -96,6 +97,16 @@ public:
 
   /// @brief The number of clips the store will hold once committed.
   std::size_t size() const noexcept { return base_.size() + added_.size(); }
+
+  /// @brief The index of the clip of this path, clip and body, in the store or among the clips this
+  /// append added (so that a clip met twice in one append is replaced, not added twice); none if absent.
+  /// @par Complexity O(log n) string comparisons.
+  std::optional<std::size_t> find(std::string_view path, std::string_view clip, std::string_view body = {}) const {
+    if (const std::optional<std::size_t> at = base_.find(path, clip, body)) return at;
+    const auto added = added_keys_.find(Key{path, clip, body});
+    if (added == added_keys_.end()) return std::nullopt;
+    return added->second;
+  }
 
   /// @brief Adds a clip at the end: its record (strings and source fields; `rows` and `block` are
   /// set by the store), its signatures, one frame number per row, and its summary.
