@@ -5,17 +5,16 @@
 #include <deformseg/exceptions.h>
 #include <deformseg/internal/utf8.h>
 #include <deformseg/io/character_files.h>
+#include <deformseg/io/internal/assimp_import.h>
 #include <deformseg/io/internal/assimp_model.h>
 #include <deformseg/io/internal/bvh_checks.h>
 #include <deformseg/io/internal/file_io.h>
 
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/scene.h>
 #include <tiny_gltf.h>
 
 #include <cstddef>
-#include <exception>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -54,22 +53,15 @@ inline void leave_out_made_up_channels(tinygltf::Model& model, const Recorded& r
 // Parses a BVH file's bytes into a glTF model, as `bvh_model` does.
 inline tinygltf::Model model_from_bytes(std::string_view bytes) {
   const Recorded recorded = check_text(bytes);
-  Assimp::Importer importer;
   // Assimp would add a mesh of pyramids along the bones; deformseg makes its own body (see
-  // skeleton_body.h), the same for BVH as for any file without a mesh.
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
-  const aiScene* scene = nullptr;
-  try {
-    // No post-processing: Assimp's validation refuses a scene without a mesh.
-    scene = importer.ReadFileFromMemory(bytes.data(), bytes.size(), 0, "bvh");
-  } catch (const std::exception& e) {
-    throw invalid_input("Assimp could not parse the file: " + deformseg::internal::printable_text(e.what()));
-  }
+  // skeleton_body.h), the same for BVH as for any file without a mesh. No post-processing:
+  // Assimp's validation refuses a scene without a mesh.
+  const assimp::Import_result imported =
+      assimp::import_from_memory(bytes, 0, "bvh", {{AI_CONFIG_IMPORT_NO_SKELETON_MESHES, 1}});
   // Assimp quotes the file's bytes ("Unknown keyword '...'"), which may be anything in a damaged file.
-  if (!scene)
-    throw invalid_input("not a valid BVH file: " +
-                        deformseg::internal::printable_text(assimp_message(importer.GetErrorString())));
-  tinygltf::Model model = assimp::model_of(*scene, 1.0);
+  if (!imported.scene)
+    throw invalid_input("not a valid BVH file: " + deformseg::internal::printable_text(assimp_message(imported.error)));
+  tinygltf::Model model = assimp::model_of(*imported.scene, 1.0);
   leave_out_made_up_channels(model, recorded);
   return model;
 }

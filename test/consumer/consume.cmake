@@ -34,6 +34,7 @@ elseif(ROUTE STREQUAL "build_tree")
   run(${CMAKE_COMMAND} --build ${WORK_DIR}/deformseg)
   list(APPEND consumer_options -Ddeformseg_DIR=${WORK_DIR}/deformseg -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON)
   set(HAS_GLTF OFF)
+  set(HAS_ASSIMP OFF)  # Assimp is read only with tinygltf
 elseif(ROUTE STREQUAL "add_subdirectory")
   list(APPEND consumer_options -DDEFORMSEG_SOURCE_DIR=${SOURCE_DIR})
   set(hide_tinygltf "")  # deformseg's own CMakeLists looks for it, for deformseg::io
@@ -73,4 +74,22 @@ endif()
 if(NOT output MATCHES "${expected}")
   message(FATAL_ERROR "the consumer of deformseg::io read ${GLTF_FILE} (status ${status}):\n${output}\n"
                       "expected: ${expected}")
+endif()
+# With Assimp, the readers' consumer reads BVH_FILE. Unless deformseg::io links Assimp (ASSIMP_LINKED:
+# its target gave no soname), it opens Assimp's library on the first FBX, Collada or BVH read
+# (src/io/assimp_import.cpp): the consumer starts without it (glibc's LD_DEBUG=files lists what the
+# loader opens), and the package looked for no Assimp.
+if(HAS_ASSIMP AND NOT ASSIMP_LINKED)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env LD_DEBUG=files ${WORK_DIR}/consumer_io/consumer ${GLTF_FILE}
+                  OUTPUT_QUIET ERROR_VARIABLE loaded)
+  if(NOT loaded MATCHES "file=" OR loaded MATCHES "file=[^ ]*libassimp")
+    message(FATAL_ERROR "the consumer of deformseg::io loaded Assimp, or LD_DEBUG listed nothing, at a glTF read:\n"
+                        "${loaded}")
+  endif()
+endif()
+if(HAS_ASSIMP)
+  execute_process(COMMAND ${WORK_DIR}/consumer_io/consumer ${BVH_FILE} RESULT_VARIABLE status OUTPUT_VARIABLE output)
+  if(NOT output MATCHES "^read [1-9][0-9]* frames of [1-9][0-9]* triangles\n$")
+    message(FATAL_ERROR "the consumer of deformseg::io read ${BVH_FILE} (status ${status}):\n${output}")
+  endif()
 endif()

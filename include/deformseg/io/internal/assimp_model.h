@@ -5,12 +5,12 @@
 
 #include <deformseg/exceptions.h>
 #include <deformseg/io/internal/assimp_clips.h>
+#include <deformseg/io/internal/assimp_import.h>
 #include <deformseg/io/internal/assimp_model_writer.h>
 #include <deformseg/io/internal/assimp_scene.h>
 #include <deformseg/io/internal/collada_checks.h>
 #include <deformseg/io/internal/fbx_local_transforms.h>
 
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/metadata.h>
 #include <assimp/postprocess.h>
@@ -18,7 +18,6 @@
 #include <tiny_gltf.h>
 
 #include <cmath>
-#include <exception>
 #include <string>
 #include <utility>
 #include <vector>
@@ -64,29 +63,24 @@ inline tinygltf::Model model_of(const aiScene& scene, double metres, Bind_rule r
   return model;
 }
 
-/// The settings of the import: Assimp's FBX reader keeps a pivot's pre-rotation both in the keys
-/// and in a helper node unless PRESERVE_PIVOTS is off, which applies it twice.
-inline const aiScene* read_scene(Assimp::Importer& importer, const std::string& bytes, const std::string& extension) {
-  importer.SetPropertyBool(AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, false);
+/// Imports a file's bytes, `extension` "fbx" or "dae". The settings: Assimp's FBX reader keeps a
+/// pivot's pre-rotation both in the keys and in a helper node unless PRESERVE_PIVOTS is off, which
+/// applies it twice.
+inline Import_result read_scene(const std::string& bytes, const std::string& extension) {
   constexpr unsigned steps = aiProcess_Triangulate | aiProcess_ValidateDataStructure;
-  return importer.ReadFileFromMemory(bytes.data(), bytes.size(), steps, extension.c_str());
+  return import_from_memory(bytes, steps, extension.c_str(), {{AI_CONFIG_IMPORT_FBX_PRESERVE_PIVOTS, 0}});
 }
 
 /// Parses a file's bytes, `format` "fbx" or "dae", as `fbx_collada_model` does.
 inline tinygltf::Model model_from_bytes(const std::string& bytes, const std::string& format) {
-  Assimp::Importer importer;
-  const aiScene* scene = nullptr;
-  try {
-    scene = read_scene(importer, bytes, format);
-  } catch (const std::exception& e) {
-    throw invalid_input(std::string("Assimp could not parse the file: ") + e.what());
-  }
+  const Import_result imported = read_scene(bytes, format);
   const std::string what = format == "fbx" ? "FBX" : "Collada";
-  if (!scene) {
-    std::string error = importer.GetErrorString();
+  if (!imported.scene) {
+    std::string error = imported.error;
     while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
     throw invalid_input("not a valid " + what + " file: " + (error.empty() ? "Assimp refused it" : error));
   }
+  const aiScene* scene = imported.scene.get();
   if (format == "dae") collada::check_channel_targets(bytes);
   if (format == "dae" && collada::has_morph(bytes)) {
     bool targets = false;
