@@ -52,7 +52,13 @@ std::string bound_text(double bound) {
 
 std::string range_text(const Range& range) {
   const bool min_open = range.min_open || std::isinf(range.min), max_open = range.max_open || std::isinf(range.max);
-  return (min_open ? "(" : "[") + bound_text(range.min) + ", " + bound_text(range.max) + (max_open ? ")" : "]");
+  // Appended to one string: GCC 12 warns falsely (-Wrestrict) on `"(" + std::string&&` at -O3.
+  std::string text = min_open ? "(" : "[";
+  text += bound_text(range.min);
+  text += ", ";
+  text += bound_text(range.max);
+  text += max_open ? ")" : "]";
+  return text;
 }
 
 std::string range_message(double value, const Range& range, bool whole) {

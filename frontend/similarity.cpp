@@ -50,7 +50,7 @@ std::string alignment_name(const Policy_choice& choice) {
 namespace {
 
 // `Policy` aligning by `alignment`'s, its options set by `set(policy)`.
-template <template <alignment::AlignmentPolicy> class Policy, class Set>
+template <template <alignment::AlignmentPolicy, class...> class Policy, class Set>
 similarity::Any_policy aligned_policy(const similarity::Any_alignment& alignment, const Set& set) {
   return std::visit(
       [&](const auto& aligner) -> similarity::Any_policy {
