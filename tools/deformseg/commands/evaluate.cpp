@@ -81,12 +81,7 @@ std::vector<File_rows> rows_by_file(const std::vector<evaluation::Labelled_clip>
 class Clip_reader {
 public:
   Clip_reader(std::vector<evaluation::Labelled_clip> rows, const Evaluate_options& o)
-      : rows_(std::move(rows)), o_(o), cache_(files_of(rows_, o), o.read) {
-    for (File_rows& of : rows_by_file(rows_, o)) {
-      for (const std::size_t row : of.rows) order_.push_back({files_.size(), row});
-      files_.push_back(std::make_unique<File>(std::move(of)));
-    }
-  }
+      : Clip_reader(std::move(rows), rows_by_file(rows, o), o) {}  // binds, not moves: the grouping reads rows
 
   std::size_t size() const { return order_.size(); }
   const evaluation::Labelled_clip& clip(std::size_t k) const { return rows_[order_[k].row]; }
@@ -117,6 +112,15 @@ public:
   }
 
 private:
+  // `grouped`: the rows by file and body (`rows_by_file`), grouped once for the cache and the order.
+  Clip_reader(std::vector<evaluation::Labelled_clip>&& rows, std::vector<File_rows> grouped, const Evaluate_options& o)
+      : rows_(std::move(rows)), o_(o), cache_(characters_of(grouped), o.read) {
+    for (File_rows& of : grouped) {
+      for (const std::size_t row : of.rows) order_.push_back({files_.size(), row});
+      files_.push_back(std::make_unique<File>(std::move(of)));
+    }
+  }
+
   struct File {
     explicit File(File_rows rows) : of(std::move(rows)) {}
     File_rows of;
@@ -127,11 +131,10 @@ private:
   };
 
   // The character files of the rows, a row each, on its body_file, named as `read` names them: by
-  // the first row of each file and body (`rows_by_file`).
-  static std::vector<frontend::Character_on_body> files_of(const std::vector<evaluation::Labelled_clip>& rows,
-                                                           const Evaluate_options& o) {
+  // the first row of each file and body.
+  static std::vector<frontend::Character_on_body> characters_of(const std::vector<File_rows>& grouped) {
     std::vector<frontend::Character_on_body> files;
-    for (const File_rows& of : rows_by_file(rows, o))
+    for (const File_rows& of : grouped)
       files.insert(files.end(), of.rows.size(), frontend::Character_on_body{of.file.string(), of.body.string()});
     return files;
   }
