@@ -3,6 +3,7 @@
 // to the last bit; and the named parameters of the entry points that read a graph's own points and
 // indices (vertex_point_map, vertex_index_map, face_index_map) are honoured.
 #include "mesh_archetype.h"
+#include "same_similarity.h"
 
 #include <deformseg/mesh/default_mesh.h>
 #include <deformseg/mesh/synthetic.h>
@@ -61,11 +62,6 @@ bool same_segments(const temporal::Temporal_segmentation& a, const temporal::Tem
   return std::ranges::equal(a.segments, b.segments, [](const auto& x, const auto& y) {
     return x.first == y.first && x.last == y.last && x.cost == y.cost;
   });
-}
-
-bool same_similarity(const similarity::Similarity& a, const similarity::Similarity& b) {
-  return a.value == b.value && a.score == b.score && a.alignment == b.alignment && a.labels_a == b.labels_a &&
-         a.labels_b == b.labels_b && a.compared == b.compared;
 }
 
 std::vector<std::int32_t> labels_of(const spatiotemporal::Spatiotemporal_segmentation& s) {
@@ -190,16 +186,11 @@ TEST_CASE("archetype: motion signatures, every similarity policy, the matrices, 
   const auto a = bending_tube(), b = bending_tube(right_angle / 2);
   const archetype::Model_on on_a(a), on_b(b);
   CHECK(signatures::motion_signatures(on_a.model()) == signatures::motion_signatures(a));
-  const auto check = [&](const auto& policy) {
-    CHECK(same_similarity(similarity::motion_similarity(on_a.model(), on_b.model(), policy),
-                          similarity::motion_similarity(a, b, policy)));
-  };
-  check(similarity::Motion_signature_similarity<>{});
-  check(similarity::Strain_distribution_similarity<>{});
-  check(similarity::Evolving_graph_similarity<>{});
-  check(similarity::Self_similarity_matching<>{});
+  test::check_every_policy_same(on_a.model(), on_b.model(), a, b);
   similarity::visit_policy(similarity::Any_policy{similarity::Strain_distribution_similarity<alignment::Dtw>{}},
-                           check);
+                           [&](const auto& policy) {
+                             test::check_same_similarity(on_a.model(), on_b.model(), a, b, policy);
+                           });
   const std::vector<archetype::Animation> models{on_a.model(), on_b.model()};
   const std::vector<mesh::Surface_mesh_animation> defaults{a, b};
   CHECK(similarity::similarity_matrix(models) == similarity::similarity_matrix(defaults));
@@ -222,7 +213,7 @@ TEST_CASE("point maps of one's own: the algorithms follow the user's map, not th
   REQUIRE(own.graph.point(*vertices(own.graph).begin()) != frame_points(a, 0)[0]);
   CHECK(same_field(strain::compute_strain(own), strain::compute_strain(a)));
   CHECK(signatures::motion_signatures(own) == signatures::motion_signatures(a));
-  CHECK(same_similarity(similarity::motion_similarity(own, own), similarity::motion_similarity(a, a)));
+  CHECK(test::same_similarity(similarity::motion_similarity(own, own), similarity::motion_similarity(a, a)));
 
   // A reference mesh whose own points are garbage, its true points in a vector of the user's.
   const std::vector<mesh::Kernel::Point_3> rest = frame_points(a, 0);

@@ -7,6 +7,7 @@
 #include "similarity_tubes.h"
 #include "test_support.h"
 #include "mesh_types.h"
+#include "same_similarity.h"
 
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/io/frame_sequence.h>
@@ -149,30 +150,13 @@ TEST_CASE("motion similarity: an animation and itself, or a moved, turned, scale
   CHECK(g.labels_a.size() == tube(bend_hold_unbend).num_frames());
 }
 
-namespace {
-
-// Two similarities alike to the last bit.
-bool same_similarity(const similarity::Similarity& a, const similarity::Similarity& b) {
-  return a.value == b.value && a.score == b.score && a.alignment == b.alignment && a.labels_a == b.labels_a &&
-         a.labels_b == b.labels_b && a.compared == b.compared;
-}
-
-}  // namespace
-
 TEMPLATE_LIST_TEST_CASE("motion similarity: every policy on every mesh type gives the default model's value, to the "
                         "last bit",
                         "[similarity][mesh_types]", test::Mesh_types) {
   const mesh::Tube_shape small{.sectors = 8, .rings = 24};
   const auto a = tube(bend_hold_unbend, small), b = tube(other_timing, small);
   const TestType on_a(a), on_b(b);
-  const auto check = [&](const auto& policy) {
-    CHECK(same_similarity(similarity::motion_similarity(on_a.model(), on_b.model(), policy),
-                          similarity::motion_similarity(a, b, policy)));
-  };
-  check(similarity::Motion_signature_similarity<>{});
-  check(similarity::Strain_distribution_similarity<>{});
-  check(similarity::Evolving_graph_similarity<>{});
-  check(similarity::Self_similarity_matching<>{});
+  check_every_policy_same(on_a.model(), on_b.model(), a, b);
 }
 
 TEST_CASE("motion similarity: tubes, the same schedule on another tube is nearer than other schedules",
