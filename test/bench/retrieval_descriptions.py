@@ -35,7 +35,8 @@ distance from the axis. Each region's 4 area-weighted quantiles are side by side
 normalise 4 height bands by the clip's own period (the strongest autocorrelation of its surface
 speed over lags of 6 frames to half the clip, kept above 0.5): `bands-4-per-cycle-C` plays the
 clip so that a period lasts C frames, `bands-4-rows-per-cycle-C` only interpolates its rows to
-that length.
+that length. `mean-A+B...` averages the similarity matrices of the descriptions A, B, ... (a
+fusion of their values, each pair compared under each).
 """
 import argparse
 import json
@@ -423,6 +424,7 @@ DESCRIPTIONS = ["default", "bands-3", "bands-4", "bands-3x2-front-back", "bands-
                 "bands-4-per-cycle-16", "bands-4-per-cycle-24", "bands-4-rows-per-cycle-16"]
 LEARNED = ["learned-1", "learned-3"]
 RERANKINGS = ["body-centred", "hubs"]
+FUSED = ["mean-default+bands-4", "mean-default+bands-4-per-cycle-12", "mean-default+bands-4+bands-4-per-cycle-12"]
 
 
 def described(job):
@@ -508,29 +510,31 @@ def report(name, sets, matrices):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("names", nargs="*", default=DESCRIPTIONS + LEARNED + RERANKINGS)
+    parser.add_argument("names", nargs="*", default=DESCRIPTIONS + LEARNED + RERANKINGS + FUSED)
     parser.add_argument("--matrix", default="build-bench/test/bench/described_matrix")
     parser.add_argument("--cache", type=Path, default=Path(tempfile.gettempdir()) / "deformseg-descriptions")
     args = parser.parse_args()
     sets = read_sets(args.cache)
-    default_matrices = None
+    computed = {}  # each description's matrices per set, kept for the rows built on them
+
+    def matrices_of(name):
+        if name not in computed:
+            computed[name] = [similarity_matrix(pool.map(described, [(name, c["path"]) for c in clips], chunksize=4),
+                                                args.matrix) for _, clips in sets]
+        return computed[name]
+
     with Pool(2) as pool:
         for name in args.names:
             if name in LEARNED:
                 report(name, sets, learned_matrices(sets, pool, args.matrix, float(name[8:])))
-                continue
-            if name in RERANKINGS:
-                if default_matrices is None:
-                    default_matrices = [similarity_matrix(pool.map(described, [("default", c["path"]) for c in clips]),
-                                                          args.matrix) for _, clips in sets]
+            elif name in RERANKINGS:
                 rerank = body_centred if name == "body-centred" else hubs
-                report(name, sets, [rerank(m, clips) for m, (_, clips) in zip(default_matrices, sets)])
-                continue
-            matrices = [similarity_matrix(pool.map(described, [(name, c["path"]) for c in clips], chunksize=4),
-                                          args.matrix) for _, clips in sets]
-            if name == "default":
-                default_matrices = matrices
-            report(name, sets, matrices)
+                report(name, sets, [rerank(m, clips) for m, (_, clips) in zip(matrices_of("default"), sets)])
+            elif name.startswith("mean-"):
+                parts = [matrices_of(part) for part in name[5:].split("+")]
+                report(name, sets, [sum(ms) / len(ms) for ms in zip(*parts)])
+            else:
+                report(name, sets, matrices_of(name))
 
 
 if __name__ == "__main__":
