@@ -31,11 +31,25 @@ struct Choice {
 
 /// How a parameter's value is given, where the two fronts differ.
 enum class Parameter_kind {
-  value,   ///< a number, a flag or a text
-  choice,  ///< a name among `choices`
-  file,    ///< a path; empty: none (Python: None)
-  clip,    ///< a glTF clip's name or index; empty: the file's only one (Python: a str or an int)
+  value,            ///< a number, a flag or a text
+  choice,           ///< a name among `choices`
+  optional_choice,  ///< a name among `choices`; empty: a default that depends on others (Python: None)
+  file,             ///< a path; empty: none (Python: None)
+  clip,             ///< a glTF clip's name or index; empty: the file's only one (Python: a str or an int)
 };
+
+/// Whether a parameter of `kind` takes a name among its choices.
+constexpr bool is_choice(Parameter_kind kind) {
+  return kind == Parameter_kind::choice || kind == Parameter_kind::optional_choice;
+}
+
+/// Whether a text parameter of `kind` is empty by default, which Python gives as None. The Python
+/// module reads it from the kind, not from the default itself, which it cannot read at compile time
+/// with every compiler (Clang 16 cannot construct GCC 12's `std::string` in a constant expression);
+/// test/frontend/parameter_defaults.cpp checks that every table's defaults agree.
+constexpr bool is_empty_by_default(Parameter_kind kind) {
+  return kind == Parameter_kind::optional_choice || kind == Parameter_kind::file || kind == Parameter_kind::clip;
+}
 
 /// The values a numeric parameter takes: from `min` to `max`, each end in the range unless said
 /// open. An integral parameter takes whole numbers in it; an infinite end is open.
@@ -85,7 +99,8 @@ std::string range_message(double value, const Range& range, bool whole);
 
 /// A parameter: a member of the request `Request` that a command and a Python function fill.
 /// `name` is in snake_case, as Python spells it; the tool spells it `--rest-frame`. A text
-/// parameter whose default is empty is None by default in Python.
+/// parameter is empty by default exactly when its kind says so (`is_empty_by_default`), and then
+/// None by default in Python.
 template <class Request, class Value>
 struct Parameter {
   using request_type = Request;
@@ -103,6 +118,13 @@ template <class Request, class Value>
 constexpr Parameter<Request, Value> choice_parameter(const char* name, Value Request::*member, std::string_view help,
                                                      std::span<const Choice> choices) {
   return {name, member, help, Parameter_kind::choice, choices};
+}
+
+/// A parameter among `choices`, empty by default: a default that depends on other parameters.
+template <class Request, class Value>
+constexpr Parameter<Request, Value> optional_choice_parameter(const char* name, Value Request::*member,
+                                                              std::string_view help, std::span<const Choice> choices) {
+  return {name, member, help, Parameter_kind::optional_choice, choices};
 }
 
 /// Whether a parameter of type `Value` is numeric: an integral (not bool) or floating-point

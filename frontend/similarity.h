@@ -52,28 +52,28 @@ std::optional<Eigen::Vector3d> side_direction(std::string_view name);
 /// The policy choice's table.
 inline constexpr std::tuple policy_parameters{
     choice_parameter("policy", &Policy_choice::policy, "The similarity policy", policy_choices),
-    choice_parameter("alignment", &Policy_choice::alignment,
-                     "The alignment of the frames. Default: dtw for motion-signature and graph-characters, "
-                     "smith-waterman for the others",
-                     alignment_choices),
+    optional_choice_parameter("alignment", &Policy_choice::alignment,
+                              "The alignment of the frames. Default: dtw for motion-signature and graph-characters, "
+                              "smith-waterman for the others",
+                              alignment_choices),
     numeric_parameter("threshold", &Policy_choice::threshold,
                       "graph, graph-characters: the deformed threshold of the segmentation. Default: 0.5 for graph, "
                       "0.3 for graph-characters",
                       shares),
-    choice_parameter("up", &Policy_choice::up,
-                     "motion-signature: the animations' up axis, whose rises and falls the signatures tell apart. "
-                     "Default: +y",
-                     up_direction_choices),
+    optional_choice_parameter("up", &Policy_choice::up,
+                              "motion-signature: the animations' up axis, whose rises and falls the signatures "
+                              "tell apart. Default: +y",
+                              up_direction_choices),
     numeric_parameter("bands", &Policy_choice::bands,
                       "motion-signature: the surface cut into this many bands of equal height in the first pose, "
                       "each compared with the band at its height, so that a big head does not outweigh the legs "
                       "(3 or 4 for a library of many studios or body plans: chapter 7 of the manual). Default: 1",
                       positive_counts(double(signatures::max_bands))),
-    choice_parameter("sides", &Policy_choice::sides,
-                     "motion-signature: keep the two sides of the body apart, cut at its centre along this axis "
-                     "across it, so that a motion and its mirror image (a left and a right kick) differ. Default: "
-                     "none, the two alike",
-                     side_direction_choices),
+    optional_choice_parameter("sides", &Policy_choice::sides,
+                              "motion-signature: keep the two sides of the body apart, cut at its centre along "
+                              "this axis across it, so that a motion and its mirror image (a left and a right "
+                              "kick) differ. Default: none, the two alike",
+                              side_direction_choices),
 };
 
 /// The entry of `similarity_policies` that `choice` names.

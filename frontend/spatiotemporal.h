@@ -58,8 +58,8 @@ struct Spatiotemporal_request {
 inline constexpr std::tuple spatiotemporal_parameters{
     numeric_parameter("threshold", &Spatiotemporal_request::threshold,
                       "A cell is deformed above this normalised strain. Default: 0.5", shares),
-    choice_parameter("reference", &Spatiotemporal_request::reference, "What the strain is measured against",
-                     segmentation_reference_choices),
+    optional_choice_parameter("reference", &Spatiotemporal_request::reference, "What the strain is measured against",
+                              segmentation_reference_choices),
     reference_mesh_parameter<Spatiotemporal_request>(),
     numeric_parameter("sigma", &Spatiotemporal_request::sigma,
                       "The strain's Gaussian normalisation sigma, fixed for every animation. Default: each "

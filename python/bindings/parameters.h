@@ -38,17 +38,6 @@ inline std::string clip_text(const Clip& clip) {
   return std::to_string(index);
 }
 
-// Whether the parameter `I` of `table` is a text empty by default, which Python gives as None.
-template <const auto& table, std::size_t I>
-constexpr bool none_by_default() {
-  constexpr const auto& parameter = std::get<I>(table);
-  using Parameter = std::remove_cvref_t<decltype(parameter)>;
-  if constexpr (std::is_same_v<typename Parameter::value_type, std::string>)
-    return (typename Parameter::request_type{}.*parameter.member).empty();
-  else
-    return false;
-}
-
 // A numeric value as Python gives it: an integral one as a signed integer (so that -1 reaches the
 // range check instead of pybind11's refusal of the type), an optional one as an optional.
 template <class Value>
@@ -74,13 +63,14 @@ struct Argument {
   static constexpr bool is_text = std::is_same_v<Value, std::string>;
   static constexpr bool is_file = is_text && parameter.kind == frontend::Parameter_kind::file;
   static constexpr bool is_clip = is_text && parameter.kind == frontend::Parameter_kind::clip;
+  static constexpr bool is_none_by_default = is_text && frontend::is_empty_by_default(parameter.kind);
   static constexpr bool is_number = frontend::is_numeric_v<Value>;
 
   using type = std::conditional_t<
       is_file, std::optional<std::filesystem::path>,
       std::conditional_t<
           is_clip, std::optional<Clip>,
-          std::conditional_t<none_by_default<table, I>(), std::optional<std::string>,
+          std::conditional_t<is_none_by_default, std::optional<std::string>,
                              std::conditional_t<is_number, typename Python_number<Value>::type, Value>>>>;
 
   static pybind11::arg_v annotation() {

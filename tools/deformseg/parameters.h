@@ -70,7 +70,7 @@ void add_parameter(CLI::App& command, const frontend::Parameter<Request, Value>&
   } else {
     CLI::Option* option = command.add_option(name, value, help_of(p));
     if constexpr (frontend::is_numeric_v<Value>) option->check(in_range(p.range, frontend::is_whole_v<Value>));
-    if (p.kind == frontend::Parameter_kind::choice) option->check(among(p.choices));
+    if (frontend::is_choice(p.kind)) option->check(among(p.choices));
   }
 }
 
