@@ -97,8 +97,9 @@ def pybind11_arguments():
 def require_wheel_support():
     """Refuses, saying what to install, to build a wheel in a Python that cannot: setuptools before
     70.1 builds wheels through the `wheel` package, which `pip install --no-build-isolation` does
-    not bring (a pyenv or python.org Python then fails with "invalid command 'bdist_wheel'")."""
-    if "bdist_wheel" not in sys.argv:
+    not bring (a pyenv or python.org Python then fails with "invalid command 'bdist_wheel'"), already
+    at pip's metadata step (`dist_info`, which runs bdist_wheel's options)."""
+    if not {"bdist_wheel", "dist_info"} & set(sys.argv):
         return
     try:
         import setuptools.command.bdist_wheel  # noqa: F401 (setuptools 70.1 and later)
