@@ -3,7 +3,7 @@
 // to the last bit; and the named parameters of the entry points that read a graph's own points and
 // indices (vertex_point_map, vertex_index_map, face_index_map) are honoured.
 #include "mesh_archetype.h"
-#include "same_similarity.h"
+#include "same_as_default_model.h"
 
 #include <deformseg/mesh/default_mesh.h>
 #include <deformseg/mesh/synthetic.h>
@@ -17,10 +17,6 @@
 #include <deformseg/spatiotemporal/spatiotemporal_segments.h>
 #include <deformseg/strain/strain.h>
 #include <deformseg/strain/strain_histograms.h>
-#include <deformseg/temporal/barbic_pca.h>
-#include <deformseg/temporal/binary_split.h>
-#include <deformseg/temporal/temporal_segmentation.h>
-#include <deformseg/temporal/thesis_greedy.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -56,12 +52,6 @@ template <class Value>
 bool same_field(const strain::Strain_field<Value>& a, const strain::Strain_field<Value>& b) {
   return std::ranges::equal(a.values(), b.values()) && a.sigma() == b.sigma() &&
          a.degenerate_count() == b.degenerate_count();
-}
-
-bool same_segments(const temporal::Temporal_segmentation& a, const temporal::Temporal_segmentation& b) {
-  return std::ranges::equal(a.segments, b.segments, [](const auto& x, const auto& y) {
-    return x.first == y.first && x.last == y.last && x.cost == y.cost;
-  });
 }
 
 std::vector<std::int32_t> labels_of(const spatiotemporal::Spatiotemporal_segmentation& s) {
@@ -148,14 +138,7 @@ TEST_CASE("archetype: strain, its overloads and its face property maps", "[arche
 TEST_CASE("archetype: temporal segmentation with each method", "[archetype][temporal]") {
   const auto a = bending_tube();
   const archetype::Model_on on(a);
-  const auto& model = on.model();
-  CHECK(same_segments(temporal::temporal_segmentation(model), temporal::temporal_segmentation(a)));
-  CHECK(same_segments(temporal::temporal_segmentation(model, temporal::Binary_split{}),
-                      temporal::temporal_segmentation(a, temporal::Binary_split{})));
-  CHECK(same_segments(temporal::temporal_segmentation(model, temporal::Thesis_greedy{}),
-                      temporal::temporal_segmentation(a, temporal::Thesis_greedy{})));
-  CHECK(same_segments(temporal::temporal_segmentation(model, temporal::Barbic_pca{}),
-                      temporal::temporal_segmentation(a, temporal::Barbic_pca{})));
+  test::check_every_method_same(on.model(), a);
 }
 
 TEST_CASE("archetype: spatio-temporal segmentation, evolving graph, body layout, part links",

@@ -7,7 +7,7 @@
 #include "similarity_tubes.h"
 #include "test_support.h"
 #include "mesh_types.h"
-#include "same_similarity.h"
+#include "same_as_default_model.h"
 
 #include <deformseg/alignment/dtw.h>
 #include <deformseg/io/frame_sequence.h>

@@ -2,6 +2,7 @@
 // motion on another tube, the optimum against brute force, thresholds, the horse gallop.
 #include "test_support.h"
 #include "mesh_types.h"
+#include "same_as_default_model.h"
 
 #include <deformseg/io/frame_sequence.h>
 #include <deformseg/mesh/synthetic.h>
@@ -122,31 +123,11 @@ TEST_CASE("temporal segmentation: the same motion on another tube segments the s
         starts_of(temporal::temporal_segmentation(other.animation, temporal::Barbic_pca{})));
 }
 
-namespace {
-
-// Two segmentations alike to the last bit: the same frames, segments and costs.
-bool same_segments(const temporal::Temporal_segmentation& a, const temporal::Temporal_segmentation& b) {
-  return a.frames == b.frames &&
-         std::ranges::equal(a.segments, b.segments, [](const auto& x, const auto& y) {
-           return x.first == y.first && x.last == y.last && x.cost == y.cost;
-         });
-}
-
-}  // namespace
-
 TEMPLATE_LIST_TEST_CASE("temporal segmentation: every mesh type gives the default model's segments, to the last bit",
                         "[temporal][mesh_types]", test::Mesh_types) {
   const auto tube = three_poses({.sectors = 8, .rings = 24});
   const TestType on(tube.animation);
-  const auto& model = on.model();
-  const auto& reference = tube.animation;
-  CHECK(same_segments(temporal::temporal_segmentation(model), temporal::temporal_segmentation(reference)));
-  CHECK(same_segments(temporal::temporal_segmentation(model, temporal::Binary_split{}),
-                      temporal::temporal_segmentation(reference, temporal::Binary_split{})));
-  CHECK(same_segments(temporal::temporal_segmentation(model, temporal::Thesis_greedy{}),
-                      temporal::temporal_segmentation(reference, temporal::Thesis_greedy{})));
-  CHECK(same_segments(temporal::temporal_segmentation(model, temporal::Barbic_pca{}),
-                      temporal::temporal_segmentation(reference, temporal::Barbic_pca{})));
+  test::check_every_method_same(on.model(), tube.animation);
 }
 
 TEST_CASE("Optimal_partition equals brute force over all partitions, T <= 12", "[temporal]") {

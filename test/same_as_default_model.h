@@ -1,15 +1,40 @@
-// What the tests of other mesh models check against the default model: the same similarity, to
-// the last bit, under every built-in policy.
+// What the tests of other mesh models check against the default model: the same temporal
+// segments under every method and the same similarity under every built-in policy, to the last bit.
 #pragma once
 
 #include <deformseg/similarity/evolving_graph_similarity.h>
 #include <deformseg/similarity/motion_similarity.h>
 #include <deformseg/similarity/self_similarity_matching.h>
 #include <deformseg/similarity/strain_distribution_similarity.h>
+#include <deformseg/temporal/barbic_pca.h>
+#include <deformseg/temporal/binary_split.h>
+#include <deformseg/temporal/temporal_segmentation.h>
+#include <deformseg/temporal/thesis_greedy.h>
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 namespace deformseg::test {
+
+/// Whether two segmentations are alike to the last bit: the same frames, segments and costs.
+inline bool same_segments(const temporal::Temporal_segmentation& a, const temporal::Temporal_segmentation& b) {
+  return a.frames == b.frames && std::ranges::equal(a.segments, b.segments, [](const auto& x, const auto& y) {
+           return x.first == y.first && x.last == y.last && x.cost == y.cost;
+         });
+}
+
+/// Checks that each temporal method, with its defaults, segments `model` as it segments `animation`.
+template <class Model, class Default>
+void check_every_method_same(const Model& model, const Default& animation) {
+  CHECK(same_segments(temporal::temporal_segmentation(model), temporal::temporal_segmentation(animation)));
+  CHECK(same_segments(temporal::temporal_segmentation(model, temporal::Binary_split{}),
+                      temporal::temporal_segmentation(animation, temporal::Binary_split{})));
+  CHECK(same_segments(temporal::temporal_segmentation(model, temporal::Thesis_greedy{}),
+                      temporal::temporal_segmentation(animation, temporal::Thesis_greedy{})));
+  CHECK(same_segments(temporal::temporal_segmentation(model, temporal::Barbic_pca{}),
+                      temporal::temporal_segmentation(animation, temporal::Barbic_pca{})));
+}
 
 /// Whether two similarities are equal in every field, to the last bit.
 inline bool same_similarity(const similarity::Similarity& a, const similarity::Similarity& b) {
