@@ -24,14 +24,18 @@ no label: `body-centred` takes from each similarity the query's mean similarity 
 body (the body's offset), `hubs` half the candidate's mean similarity to its 10 nearest clips of
 other bodies.
 
-Six rows match body regions before comparing them (issue 57's last direction). `limbs-R` cuts the
+Eleven rows match body regions before comparing them (issue 57's last direction). `limbs-R` cuts the
 first frame's pose into the trunk (within R RMS radii of the centroid) and the limbs beyond it by their
 offset's largest component: legs (down), arms (across), head (up), front and back (z), the legs'
 and the arms' halves either side of the centroid, the one that moves more first.
 `bands-N-inner-outer` halves each of N height bands at its median distance from the vertical
 axis. `motion-parts-K` clusters the vertices of each clip by their frame-to-frame displacements
 (the centroid's out; k-means, K parts) and orders the parts by their rest height, then their
-distance from the axis. Each region's 4 area-weighted quantiles are side by side. Four rows
+distance from the axis. Five rows match each pair's parts instead: `matched-motion-parts-K` (the
+parts of `motion-parts-K`) and `matched-rest-parts-K` (k-means of the first pose's positions) give
+each part's place, its rest centroid's offset from the body's in the pose's extent along each axis,
+and `described_matrix --regions` assigns each pair's parts to each other by place before comparing.
+Each region's 4 area-weighted quantiles are side by side. Four rows
 normalise 4 height bands by the clip's own period (the strongest autocorrelation of its surface
 speed over lags of 6 frames to half the clip, kept above 0.5): `bands-4-per-cycle-C` plays the
 clip so that a period lasts C frames, `bands-4-rows-per-cycle-C` only interpolates its rows to
@@ -193,6 +197,8 @@ def describe(name, p, faces):
         return limbs(p, w, radius, float(name[6:]))
     if name.startswith("motion-parts-"):
         return motion_parts(p, w, radius, int(name[13:]))
+    if name.startswith("matched-"):
+        return matched_parts(p, w, radius, name[8:].startswith("motion"), int(name.rsplit("-", 1)[1]))
     raise SystemExit(f"unknown description {name}")
 
 
@@ -334,6 +340,25 @@ def motion_parts(p, w, radius, count):
     return rows(p, regions_of(rank[labels], w, count), 1 / radius, k=4)
 
 
+def matched_parts(p, w, radius, by_motion, count):
+    """`count` parts of the clip, from its motion (as `motion_parts`) or from its first pose (k-means of
+    the rest positions, each axis in the pose's extent along it), each part's rows side by side (4
+    quantiles), and each part's place: its rest centroid's offset from the body's, each axis in the
+    pose's extent. `described_matrix --regions` matches each pair's parts by place before comparing."""
+    first = p[0]
+    extent = np.maximum(np.ptp(first, axis=0), 1e-300)
+    offsets = (first - w @ first) / extent
+    if by_motion:
+        steps = np.diff(p, axis=0) / radius
+        steps -= np.einsum("tvi,v->ti", steps, w)[:, None]
+        labels = kmeans(steps.transpose(1, 0, 2).reshape(len(w), -1), w, count)
+    else:
+        labels = kmeans(offsets, w, count)
+    places = np.array([w[labels == j] @ offsets[labels == j] / w[labels == j].sum()
+                       if w[labels == j].sum() > 0 else np.zeros(3) for j in range(count)])
+    return rows(p, regions_of(labels, w, count), 1 / radius, k=4), places
+
+
 def dominant_period(p, w, shortest=6, least=0.5):
     """The clip's period in frames: the lag in [shortest, T/2] where the autocorrelation of its
     surface speed (area-weighted mean over vertices, frame to frame) is greatest, if above `least`;
@@ -421,7 +446,9 @@ DESCRIPTIONS = ["default", "bands-3", "bands-4", "bands-3x2-front-back", "bands-
                 "amplitude-0", "amplitude-0.5", "bands-3-and-alternation", "bands-3-and-return",
                 "vertical-0.6", "axes-0.25", "limbs-1", "limbs-1.5", "bands-3-inner-outer",
                 "bands-4-inner-outer", "motion-parts-6", "motion-parts-8", "bands-4-per-cycle-12",
-                "bands-4-per-cycle-16", "bands-4-per-cycle-24", "bands-4-rows-per-cycle-16"]
+                "bands-4-per-cycle-16", "bands-4-per-cycle-24", "bands-4-rows-per-cycle-16",
+                "matched-rest-parts-4", "matched-rest-parts-6", "matched-rest-parts-8", "matched-motion-parts-6",
+                "matched-motion-parts-8"]
 LEARNED = ["learned-1", "learned-3"]
 RERANKINGS = ["body-centred", "hubs"]
 FUSED = ["mean-default+bands-4", "mean-default+bands-4-per-cycle-12", "mean-default+bands-4+bands-4-per-cycle-12"]
@@ -436,14 +463,21 @@ def described(job):
 # ---- the matrix and the figures ----------------------------------------------------------------
 
 def similarity_matrix(descriptions, program):
+    """The matrix of `descriptions`, each its rows, or its rows and its regions' places (matched per pair)."""
     with tempfile.TemporaryDirectory() as folder:
         rows_path, matrix_path = os.path.join(folder, "rows"), os.path.join(folder, "matrix")
+        regions_path = os.path.join(folder, "regions")
+        matched = isinstance(descriptions[0], tuple)
         with open(rows_path, "wb") as f:
             f.write(struct.pack("<Q", len(descriptions)))
             for d in descriptions:
-                d = np.ascontiguousarray(d, dtype=np.float32)
+                d = np.ascontiguousarray(d[0] if matched else d, dtype=np.float32)
                 f.write(struct.pack("<QQ", *d.shape) + d.tobytes())
-        subprocess.run([program, rows_path, matrix_path], check=True)
+        if matched:
+            with open(regions_path, "wb") as f:
+                for _, places in descriptions:
+                    f.write(struct.pack("<Q", len(places)) + np.ascontiguousarray(places, dtype=np.float64).tobytes())
+        subprocess.run([program, rows_path, matrix_path] + (["--regions", regions_path] if matched else []), check=True)
         n = len(descriptions)
         return np.fromfile(matrix_path, dtype=np.float64).reshape(n, n, order="F")
 
