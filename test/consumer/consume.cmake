@@ -15,14 +15,15 @@ file(REMOVE_RECURSE ${WORK_DIR})
 include(${CMAKE_CURRENT_LIST_DIR}/run.cmake)
 
 # The consumers unoptimised (no build type): they run in no time, and most of the test's time is
-# their compilation, a third shorter at -O0.
+# their compilation, a third shorter at -O0. So is the build tree's library (ROUTE=build_tree), which
+# the add_subdirectory route compiles unoptimised too.
 set(consumer_options "")
 set(hide_tinygltf -DCMAKE_DISABLE_FIND_PACKAGE_TinyGLTF=ON)
 if(ROUTE STREQUAL "installed")
   run(${CMAKE_COMMAND} --install ${BINARY_DIR} --prefix ${WORK_DIR}/prefix)
   list(APPEND consumer_options -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix)
 elseif(ROUTE STREQUAL "build_tree")
-  run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/deformseg -DCMAKE_BUILD_TYPE=Release
+  run(${CMAKE_COMMAND} -S ${SOURCE_DIR} -B ${WORK_DIR}/deformseg
       -DDEFORMSEG_BUILD_TESTS=OFF -DDEFORMSEG_BUILD_EXAMPLES=OFF
       -DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
       -DCMAKE_DISABLE_FIND_PACKAGE_Catch2=ON -DCMAKE_DISABLE_FIND_PACKAGE_Doxygen=ON)
