@@ -14,14 +14,15 @@
 // B's regions to A's least in squared distance between places (ged::solve_assignment), B's blocks
 // permuted so, then compared as above.
 #include <deformseg/ged/assignment.h>
-#include <deformseg/internal/parallel_for.h>
 #include <deformseg/similarity/motion_similarity.h>
 
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -69,41 +70,34 @@ std::vector<Eigen::MatrixXd> read_places(const std::string& path, std::size_t co
   return out;
 }
 
-// b's signature columns reordered so that its region matched to a's region r sits where r does.
-ds::similarity::Motion_signature_description matched(const ds::similarity::Motion_signature_description& b,
-                                                      const std::vector<int>& a_to_b, Eigen::Index block) {
-  ds::similarity::Motion_signature_description out = b;
-  const auto k = Eigen::Index(a_to_b.size());
-  for (Eigen::Index group = 0; group * k * block < b.signatures.cols(); ++group)
-    for (Eigen::Index r = 0; r < k; ++r)
-      out.signatures.middleCols((group * k + r) * block, block) =
-          b.signatures.middleCols((group * k + a_to_b[std::size_t(r)]) * block, block);
-  return out;
-}
+// The default policy on descriptions whose regions are matched per pair (--regions): each pair's
+// regions assigned by place, b's blocks permuted so, then compared as the default compares.
+struct Region_matched_similarity {
+  struct Description {
+    ds::similarity::Motion_signature_description signatures;
+    Eigen::MatrixXd places;  // K x 3
+  };
+  ds::similarity::Default_similarity policy;
 
-Eigen::MatrixXd region_matched_matrix(const std::vector<ds::similarity::Motion_signature_description>& descriptions,
-                                      const std::vector<Eigen::MatrixXd>& places,
-                                      const ds::similarity::Default_similarity& policy, int threads) {
-  const std::size_t n = descriptions.size();
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i; j < n; ++j) pairs.emplace_back(i, j);
-  Eigen::MatrixXd m{Eigen::Index(n), Eigen::Index(n)};
-  ds::internal::parallel_for(pairs.size(), threads, [&](std::size_t p) {
-    const auto [i, j] = pairs[p];
-    const Eigen::MatrixXd& a = places[i];
-    const Eigen::MatrixXd& b = places[j];
-    if (a.rows() != b.rows()) throw std::runtime_error("descriptions of different region counts");
-    Eigen::MatrixXd cost(a.rows(), b.rows());
-    for (Eigen::Index r = 0; r < a.rows(); ++r)
-      for (Eigen::Index c = 0; c < b.rows(); ++c) cost(r, c) = (a.row(r) - b.row(c)).squaredNorm();
-    const auto assignment = ds::ged::solve_assignment(cost);
-    const Eigen::Index block = descriptions[j].signatures.cols() / (2 * 4 * a.rows());  // 2 kinds x 4 lags
-    const double v = policy.compare(descriptions[i], matched(descriptions[j], assignment.row_to_column, block)).value;
-    m(Eigen::Index(i), Eigen::Index(j)) = m(Eigen::Index(j), Eigen::Index(i)) = v;
-  });
-  return m;
-}
+  ds::similarity::Similarity compare(const Description& a, const Description& b) const {
+    if (a.places.rows() != b.places.rows()) throw std::runtime_error("descriptions of different region counts");
+    const Eigen::Index k = a.places.rows();
+    Eigen::MatrixXd cost(k, k);
+    for (Eigen::Index r = 0; r < k; ++r)
+      for (Eigen::Index c = 0; c < k; ++c) cost(r, c) = (a.places.row(r) - b.places.row(c)).squaredNorm();
+    const std::vector<int> a_to_b = ds::ged::solve_assignment(cost).row_to_column;
+    // b's columns reordered so that its region matched to a's region r sits where r does: per
+    // kind and lag (2 x 4 groups), K blocks of quantiles.
+    const Eigen::MatrixXf& from = b.signatures.signatures;
+    const Eigen::Index block = from.cols() / (2 * 4 * k);
+    ds::similarity::Motion_signature_description matched = b.signatures;
+    for (Eigen::Index group = 0; group * k * block < from.cols(); ++group)
+      for (Eigen::Index r = 0; r < k; ++r)
+        matched.signatures.middleCols((group * k + r) * block, block) =
+            from.middleCols((group * k + a_to_b[std::size_t(r)]) * block, block);
+    return policy.compare(a.signatures, matched);
+  }
+};
 
 }  // namespace
 
@@ -124,11 +118,16 @@ int main(int argc, char** argv) {
       regions_path = argv[i + 1];
   try {
     const auto descriptions = read_descriptions(argv[1]);
-    const Eigen::MatrixXd m =
-        regions_path.empty()
-            ? ds::similarity::described_similarity_matrix<ds::similarity::Default_similarity>(descriptions, policy, {},
-                                                                                             threads)
-            : region_matched_matrix(descriptions, read_places(regions_path, descriptions.size()), policy, threads);
+    Eigen::MatrixXd m;
+    if (regions_path.empty()) {
+      m = ds::similarity::described_similarity_matrix(std::span(descriptions), policy, {}, threads);
+    } else {
+      const auto places = read_places(regions_path, descriptions.size());
+      std::vector<Region_matched_similarity::Description> matched;
+      for (std::size_t i = 0; i < descriptions.size(); ++i) matched.push_back({descriptions[i], places[i]});
+      m = ds::similarity::described_similarity_matrix(std::span(std::as_const(matched)),
+                                                      Region_matched_similarity{policy}, {}, threads);
+    }
     std::ofstream out(argv[2], std::ios::binary);
     out.write(reinterpret_cast<const char*>(m.data()), std::streamsize(sizeof(double) * std::size_t(m.size())));
     if (!out) throw std::runtime_error(std::string(argv[2]) + ": cannot write");
