@@ -401,20 +401,24 @@ def resampled(p, speed):
     return (1 - f) * p[i] + f * p[np.minimum(i + 1, len(p) - 1)], times
 
 
+def copies_of(p):
+    """A clip's four copies, each a copy of the same motion, and the original's time of each of
+    their frames: played 0.8x and 1.25x, and its motion scaled 0.75 and 1.25 from its first pose
+    (each vertex's path about where it starts)."""
+    for speed in (0.8, 1.25):
+        yield resampled(p, speed)
+    for scale in (0.75, 1.25):
+        yield p[:1] + scale * (p - p[:1]), np.arange(len(p))
+
+
 def augmented(path):
-    """A clip's default rows and the differences of its copies' rows from them, row by row along
-    the time they share: played 0.8x and 1.25x, and its motion scaled 0.75 and 1.25 from its first
-    pose (each vertex's path about where it starts), each a copy of the same motion."""
+    """A clip's default rows and the differences of its copies' rows (`copies_of`) from them, row by
+    row along the time they share."""
     z = np.load(path)
     p, faces = z["positions"].astype(np.float64), z["faces"]
     original = describe("default", p, faces)
-    differences = []
-    for speed in (0.8, 1.25):
-        copy, times = resampled(p, speed)
-        differences.append(describe("default", copy, faces) - original[np.rint(times).astype(int)])
-    for scale in (0.75, 1.25):
-        differences.append(describe("default", p[:1] + scale * (p - p[:1]), faces) - original)
-    return original, np.vstack(differences)
+    return original, np.vstack([describe("default", copy, faces) - original[np.rint(times).astype(int)]
+                                for copy, times in copies_of(p)])
 
 
 def learned_map(training, shrink):

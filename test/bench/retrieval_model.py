@@ -35,7 +35,7 @@ import numpy as np
 import torch
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from retrieval_descriptions import (described, describe, read_sets, resampled, scores,  # noqa: E402
+from retrieval_descriptions import (copies_of, described, describe, read_sets, scores,  # noqa: E402
                                     similarity_matrix, text)
 
 SCALE = 1.77  # the default's kernel scale
@@ -96,12 +96,10 @@ def candidates_of(a, training, by_set, rng):
 
 
 def copies(path):
-    """The default's rows of a clip's four copies: played 0.8x and 1.25x, its motion scaled 0.75 and
-    1.25 from its first pose (each vertex's path about where it starts)."""
+    """The default's rows of a clip's four copies (`copies_of`)."""
     z = np.load(path)
-    p, faces = z["positions"].astype(np.float64), z["faces"]
-    return ([describe("default", resampled(p, speed)[0], faces) for speed in (0.8, 1.25)]
-            + [describe("default", p[:1] + scale * (p - p[:1]), faces) for scale in (0.75, 1.25)])
+    faces = z["faces"]
+    return [describe("default", copy, faces) for copy, _ in copies_of(z["positions"].astype(np.float64))]
 
 
 def train(training, hidden, steps, seed):
